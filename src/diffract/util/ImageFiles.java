@@ -1,0 +1,140 @@
+package diffract.util;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.io.BufferedOutputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+
+/**
+ * Writes images: 8-bit PNG from display-encoded values in [0, 1], and PFM (Portable Float Map) with the raw
+ * floats. Pixels are row-major from the top-left, {@code channels} (1 or 3) interleaved floats per pixel.
+ * Files are written to a temporary sibling and renamed, so a crash never leaves half an image.
+ */
+public final class ImageFiles {
+    private ImageFiles() {
+    }
+
+    /** PNG of values already encoded for display (e.g. sRGB-encoded); clamped to [0, 1], NaN written as 0. */
+    public static void writePng(Path file, float[] pixels, int width, int height, int channels) throws IOException {
+        checkSize(pixels, width, height, channels);
+        BufferedImage image = new BufferedImage(width, height,
+                channels == 1 ? BufferedImage.TYPE_BYTE_GRAY : BufferedImage.TYPE_INT_RGB);
+        for (int y = 0; y < height; y++) {
+            for (int x = 0; x < width; x++) {
+                int i = (y * width + x) * channels;
+                if (channels == 1) {
+                    image.getRaster().setSample(x, y, 0, toByte(pixels[i]));
+                } else {
+                    int rgb = (toByte(pixels[i]) << 16) | (toByte(pixels[i + 1]) << 8) | toByte(pixels[i + 2]);
+                    image.setRGB(x, y, rgb);
+                }
+            }
+        }
+        writeAtomically(file, out -> {
+            if (!ImageIO.write(image, "png", out)) {
+                throw new IOException("no PNG writer in this Java runtime");
+            }
+        });
+    }
+
+    /**
+     * PFM: header "PF" (colour) or "Pf" (grey), width height, scale -1 (little-endian), then rows from the
+     * bottom up as the format requires.
+     */
+    public static void writePfm(Path file, float[] pixels, int width, int height, int channels) throws IOException {
+        checkSize(pixels, width, height, channels);
+        writeAtomically(file, raw -> {
+            DataOutputStream out = new DataOutputStream(new BufferedOutputStream(raw));
+            out.writeBytes((channels == 3 ? "PF" : "Pf") + "\n" + width + " " + height + "\n-1.0\n");
+            ByteBuffer row = ByteBuffer.allocate(width * channels * 4).order(ByteOrder.LITTLE_ENDIAN);
+            for (int y = height - 1; y >= 0; y--) {
+                row.clear();
+                for (int i = 0; i < width * channels; i++) {
+                    row.putFloat(pixels[y * width * channels + i]);
+                }
+                out.write(row.array());
+            }
+            out.flush();
+        });
+    }
+
+    /** Reads a PFM written by {@link #writePfm}; returns top-down row-major floats. */
+    public static float[] readPfm(Path file, int[] widthHeightChannels) throws IOException {
+        byte[] bytes = Files.readAllBytes(file);
+        int pos = 0;
+        String[] tokens = new String[4];
+        for (int t = 0; t < 4; t++) {
+            while (Character.isWhitespace(bytes[pos])) {
+                pos++;
+            }
+            int start = pos;
+            while (!Character.isWhitespace(bytes[pos])) {
+                pos++;
+            }
+            tokens[t] = new String(bytes, start, pos - start, java.nio.charset.StandardCharsets.US_ASCII);
+        }
+        pos++; // the single whitespace after the scale
+        int channels = tokens[0].equals("PF") ? 3 : 1;
+        int width = Integer.parseInt(tokens[1]);
+        int height = Integer.parseInt(tokens[2]);
+        ByteOrder order = Double.parseDouble(tokens[3]) < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
+        ByteBuffer data = ByteBuffer.wrap(bytes, pos, bytes.length - pos).order(order);
+        float[] pixels = new float[width * height * channels];
+        for (int y = height - 1; y >= 0; y--) {
+            for (int i = 0; i < width * channels; i++) {
+                pixels[y * width * channels + i] = data.getFloat();
+            }
+        }
+        widthHeightChannels[0] = width;
+        widthHeightChannels[1] = height;
+        widthHeightChannels[2] = channels;
+        return pixels;
+    }
+
+    private static int toByte(float v) {
+        if (!(v > 0)) {
+            return 0;
+        }
+        return Math.min(255, Math.round(v * 255f));
+    }
+
+    private static void checkSize(float[] pixels, int width, int height, int channels) {
+        if (channels != 1 && channels != 3) {
+            throw new IllegalArgumentException("channels must be 1 or 3, got " + channels);
+        }
+        if (pixels.length != width * height * channels) {
+            throw new IllegalArgumentException("expected " + width * height * channels + " values, got " + pixels.length);
+        }
+    }
+
+    /** Something that writes a whole file to a stream. */
+    public interface StreamWriter {
+        void write(OutputStream out) throws IOException;
+    }
+
+    /** Writes to {@code file.tmp-<pid>-<nanos>} in the same folder, then renames it over {@code file}. */
+    public static void writeAtomically(Path file, StreamWriter writer) throws IOException {
+        Path absolute = file.toAbsolutePath();
+        Path dir = absolute.getParent();
+        if (dir != null) {
+            Files.createDirectories(dir);
+        }
+        Path tmp = absolute.resolveSibling(absolute.getFileName() + ".tmp-" + ProcessHandle.current().pid()
+                + "-" + System.nanoTime());
+        try {
+            try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp))) {
+                writer.write(out);
+            }
+            Files.move(tmp, absolute, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } finally {
+            Files.deleteIfExists(tmp);
+        }
+    }
+}
