@@ -1,0 +1,79 @@
+package diffract.optics.io;
+
+import diffract.optics.HeightField;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+
+import java.math.BigDecimal;
+import java.math.MathContext;
+import java.nio.file.Path;
+
+/** Helpers shared by the per-format readers: number formatting, unit guesses, building a field. */
+final class ReaderSupport {
+    private ReaderSupport() {
+    }
+
+    /** Up to 4 significant digits, no exponent, no trailing zeros: "0.0686", "68.6", "380". */
+    static String num(double value) {
+        if (!Double.isFinite(value)) {
+            return Double.toString(value);
+        }
+        if (value == 0) {
+            return "0";
+        }
+        return new BigDecimal(value).round(new MathContext(4)).stripTrailingZeros().toPlainString();
+    }
+
+    /**
+     * Wraps {@link HeightField#of} so that its (file-agnostic) complaints name the file: the readers check
+     * non-finite values themselves, so this is the last line of defence.
+     */
+    static HeightField build(Path file, int rows, int cols, double[] heightsUm, double pixelSizeXUm,
+                             double pixelSizeYUm) {
+        try {
+            return HeightField.of(rows, cols, heightsUm, pixelSizeXUm, pixelSizeYUm);
+        } catch (UserInputException e) {
+            throw new UserInputException(file + ": " + e.getMessage(), e);
+        }
+    }
+
+    /**
+     * Warns when a length in micrometres lies outside [lowUm, highUm]. A value off by exactly a unit prefix is
+     * the usual mistake (nanometres or metres typed where micrometres were meant), so we name the likely unit
+     * and the value it would have been.
+     *
+     * @param what   e.g. "pixel size", "maximum height"
+     * @param unitOf e.g. "per pixel" or "" (appears after "um")
+     * @param source where the value came from, e.g. "--pixel-size" or "XReal/XRes in the header"
+     */
+    static void warnIfImplausible(Path file, String what, double valueUm, String unitOf, double lowUm,
+                                  double highUm, String source, Reporter reporter) {
+        if (valueUm >= lowUm && valueUm <= highUm) {
+            return;
+        }
+        String shown = num(valueUm) + " um" + (unitOf.isEmpty() ? "" : " " + unitOf);
+        // Candidate misreadings, most common first: value given in nm, in m, in mm.
+        String[] names = {"nanometres", "metres", "millimetres"};
+        double[] factors = {1e-3, 1e6, 1e3};
+        for (int i = 0; i < names.length; i++) {
+            double guess = valueUm * factors[i];
+            if (guess >= lowUm && guess <= highUm) {
+                reporter.warn(file + ": the " + what + " looks like " + names[i] + ": " + shown + " (from " + source
+                        + "); did you mean " + num(guess) + "? Plausible values are " + num(lowUm) + " to "
+                        + num(highUm) + " um");
+                return;
+            }
+        }
+        reporter.warn(file + ": the " + what + " of " + shown + " (from " + source + ") is outside the plausible range "
+                + num(lowUm) + " to " + num(highUm) + " um for a nanostructure; check its unit");
+    }
+
+    /** Thrown for missing samples: AFM software marks them with NaN, so say how many and where the first is. */
+    static UserInputException nonFinite(Path file, int count, int firstRow, int firstCol, double firstValue) {
+        String where = "row " + firstRow + ", column " + firstCol + " (counting from 0)";
+        return new UserInputException(file + ": " + (count == 1
+                ? "1 sample is NaN or infinite (missing data), at " + where + ": " + firstValue
+                : count + " samples are NaN or infinite (missing data), the first at " + where + ": " + firstValue)
+                + "; interpolate or crop the missing data (e.g. in Gwyddion) and export again");
+    }
+}
