@@ -1,0 +1,84 @@
+package diffract.precompute;
+
+import diffract.optics.HeightField;
+import diffract.optics.ShiftedDft;
+import diffract.optics.TaylorTerms;
+import diffract.util.Reporter;
+import pl.edu.icm.jlargearrays.ConcurrencyUtils;
+
+/**
+ * Thesis Algorithm 1 (003 section 1.1) with JTransforms in place of Matlab:
+ * {@code DFT_n = fftshift(ifft2((i h)^n))}, n = 0..N, for a mean-subtracted height field h in micrometres
+ * (see {@link ShiftedDft} for the transform's sign, scale and shift). The powers (i h)^n are formed by repeated
+ * multiplication in double precision; each transformed term is rounded once to float32 for storage.
+ */
+public final class TaylorTermComputer {
+    private TaylorTermComputer() {
+    }
+
+    /** All terms 0..highestOrder as float32, with progress per term. */
+    public static TaylorTerms compute(HeightField meanSubtracted, int highestOrder, Reporter reporter) {
+        if (highestOrder < 0) {
+            throw new IllegalArgumentException("the highest Taylor order must be >= 0, got " + highestOrder);
+        }
+        int rows = meanSubtracted.rows();
+        int cols = meanSubtracted.cols();
+        double[] h = meanSubtracted.heightsUm();
+        ShiftedDft.Plan plan = new ShiftedDft.Plan(rows, cols);
+        double[] power = new double[2 * rows * cols];
+        for (int i = 0; i < h.length; i++) {
+            power[2 * i] = 1.0; // (i h)^0
+        }
+        double[] work = new double[power.length];
+        float[][] terms = new float[highestOrder + 1][];
+        String task = "precompute " + rows + "x" + cols + ", terms 0.." + highestOrder;
+        for (int n = 0; n <= highestOrder; n++) {
+            if (n > 0) {
+                multiplyByIH(power, h);
+            }
+            System.arraycopy(power, 0, work, 0, power.length);
+            plan.inverseInPlace(work);
+            terms[n] = fftshiftToFloat(work, rows, cols);
+            reporter.progress(task, (n + 1) / (double) (highestOrder + 1));
+        }
+        return new TaylorTerms(rows, cols, meanSubtracted.pixelSizeXUm(), meanSubtracted.pixelSizeYUm(),
+                meanSubtracted.maxAbsHeightUm(), terms);
+    }
+
+    /** One term in double precision, fftshifted, interleaved Re/Im: the yardstick for tests. */
+    public static double[] termInDouble(HeightField meanSubtracted, int n) {
+        double[] h = meanSubtracted.heightsUm();
+        double[] a = new double[2 * h.length];
+        for (int i = 0; i < h.length; i++) {
+            a[2 * i] = 1.0;
+        }
+        for (int k = 0; k < n; k++) {
+            multiplyByIH(a, h);
+        }
+        return ShiftedDft.inverse(a, meanSubtracted.rows(), meanSubtracted.cols());
+    }
+
+    /** (re + i im) * (i h) = -h im + i h re, in place. */
+    private static void multiplyByIH(double[] complex, double[] h) {
+        for (int p = 0; p < h.length; p++) {
+            double re = complex[2 * p];
+            double im = complex[2 * p + 1];
+            complex[2 * p] = -h[p] * im;
+            complex[2 * p + 1] = h[p] * re;
+        }
+    }
+
+    private static float[] fftshiftToFloat(double[] a, int rows, int cols) {
+        double[] shifted = ShiftedDft.fftshift(a, rows, cols);
+        float[] out = new float[shifted.length];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = (float) shifted[i];
+        }
+        return out;
+    }
+
+    /** JTransforms keeps a thread pool alive that delays JVM exit by 60 s; the CLI calls this before exiting. */
+    public static void shutdownThreadPool() {
+        ConcurrencyUtils.shutdownThreadPoolAndAwaitTermination();
+    }
+}

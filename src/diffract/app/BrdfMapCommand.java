@@ -1,0 +1,172 @@
+package diffract.app;
+
+import diffract.colour.ColourPath;
+import diffract.colour.Srgb;
+import diffract.colour.Xyz;
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfSettings;
+import diffract.optics.CoherenceWindow;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.optics.io.SamplingCheck;
+import diffract.precompute.Precomputation;
+import diffract.precompute.TermStore;
+import diffract.util.ImageFiles;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+/** {@code diffract brdfmap}: the BRDF of a patch for one light direction, over all viewing directions. */
+@Command(name = "brdfmap", mixinStandardHelpOptions = true,
+        description = {"Render a BRDF map: pixel (i, j) of the S x S map is the viewing direction",
+                "(x, y, sqrt(1 - x^2 - y^2)), x = 2(i + 0.5)/S - 1, y = 1 - 2(j + 0.5)/S; outside the unit disk is black.",
+                "The tangent frame's x axis runs along the height field's columns, y along its rows."})
+final class BrdfMapCommand implements Callable<Integer> {
+    @Mixin
+    PatchInput input;
+
+    @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
+    double thetaIDeg;
+
+    @Option(names = "--phi-i", defaultValue = "0", paramLabel = "DEG", description = "Azimuth of the light (default ${DEFAULT-VALUE}).")
+    double phiIDeg;
+
+    @Option(names = "--lambda", paramLabel = "NM", description = "Monochromatic map of the relative BRDF at this wavelength (grey).")
+    Double lambdaNm;
+
+    @Option(names = "--variant", defaultValue = "reference", paramLabel = "V",
+            description = "reference (exact), flss, nmm or pq (default ${DEFAULT-VALUE}).")
+    String variant;
+
+    @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N for flss/nmm/pq (default ${DEFAULT-VALUE}).")
+    int highestOrder;
+
+    @Option(names = "--window-radius", defaultValue = "1", paramLabel = "R", description = "Window of (2R+1)^2 texels for flss/nmm/pq (default ${DEFAULT-VALUE}).")
+    int windowRadius;
+
+    @Option(names = "--lambda-step", defaultValue = "5", paramLabel = "NM", description = "Wavelength step of flss/pq, nmm's fallback (default ${DEFAULT-VALUE}).")
+    double lambdaStepNm;
+
+    @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
+    double lambdaMinNm;
+
+    @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
+    double lambdaMaxNm;
+
+    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM", description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE}).")
+    double coherenceLengthUm;
+
+    @Option(names = "--refractive-index", defaultValue = "1.5", paramLabel = "N", description = "For Schlick's Fresnel term (default ${DEFAULT-VALUE}).")
+    double refractiveIndex;
+
+    @Option(names = "--pq-replicas", defaultValue = "0", paramLabel = "R", description = "PQ replicas per axis; 0 spans the coherence length.")
+    int pqReplicas;
+
+    @Option(names = "--terms-dir", paramLabel = "DIR", description = "Use terms precomputed by 'diffract precompute' instead of the cache.")
+    Path termsDir;
+
+    @Option(names = "--size", defaultValue = "256", paramLabel = "S", description = "Map size in pixels (default ${DEFAULT-VALUE}).")
+    int size;
+
+    @Option(names = "--exposure", defaultValue = "1", paramLabel = "E", description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}).")
+    double exposure;
+
+    @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH",
+            description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
+    String colour;
+
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
+    Path output;
+
+    @Option(names = "--pfm", paramLabel = "MAP.pfm", description = "Also write floats: linear sRGB (unclipped), or the relative BRDF with --lambda.")
+    Path pfm;
+
+    @Override
+    public Integer call() throws IOException {
+        if (size < 1 || size > 8192) {
+            throw new UserInputException("--size must be between 1 and 8192, got " + size);
+        }
+        if (!(thetaIDeg >= 0 && thetaIDeg < 90)) {
+            throw new UserInputException("--theta-i must be in [0, 90) degrees, got " + thetaIDeg);
+        }
+        if (lambdaNm != null && !(lambdaNm > 0)) {
+            throw new UserInputException("--lambda must be > 0 nm, got " + lambdaNm);
+        }
+        ColourPath colourPath = parseColour(colour);
+        Reporter reporter = Reporter.STDERR;
+        long start = System.nanoTime();
+        HeightField field = input.load(reporter);
+        BrdfSettings settings = new BrdfSettings(Variant.parse(variant), highestOrder, windowRadius, lambdaMinNm,
+                lambdaMaxNm, lambdaStepNm, coherenceLengthUm / 4.0, refractiveIndex, pqReplicas);
+        SamplingCheck.warnAboutAliasing(field, lambdaNm != null ? lambdaNm : lambdaMinNm,
+                lambdaNm != null ? lambdaNm : lambdaMaxNm, reporter);
+        TaylorTerms terms = null;
+        if (settings.variant() != Variant.REFERENCE) {
+            terms = termsDir != null ? TermStore.read(termsDir)
+                    : Precomputation.cached(new Precomputation.Request(field, input.patch.getFileName().toString(),
+                    input.maxHeightUm, highestOrder, null, lambdaMinNm), reporter);
+            if (terms.highestOrder() < highestOrder) {
+                throw new UserInputException(termsDir + " holds terms 0.." + terms.highestOrder() + " but --terms "
+                        + highestOrder + " was asked; pass --terms " + terms.highestOrder() + " or precompute more");
+            }
+        }
+        DiffractionBrdf brdf = DiffractionBrdf.create(settings, field, terms);
+        Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
+        CoherenceWindow window = settings.coherenceWindow();
+        reporter.info(String.format(Locale.ROOT, "%s, %dx%d patch of %.3f x %.3f um, sigma_f = %.3f x %.3f texels",
+                settings.variant().cliName(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
+                window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
+        if (lambdaNm != null) {
+            float[] rho = BrdfMap.monochromatic(brdf, wi, lambdaNm, size, reporter);
+            float[] grey = new float[rho.length];
+            for (int i = 0; i < rho.length; i++) {
+                grey[i] = (float) Srgb.encode(rho[i] * exposure);
+            }
+            ImageFiles.writePng(output, grey, size, size, 1);
+            if (pfm != null) {
+                ImageFiles.writePfm(pfm, rho, size, size, 1);
+            }
+        } else {
+            float[] xyz = BrdfMap.xyz(brdf, wi, size, reporter);
+            float[] display = new float[xyz.length];
+            float[] linear = new float[xyz.length];
+            for (int p = 0; p < xyz.length; p += 3) {
+                Xyz c = new Xyz(xyz[p] * exposure, xyz[p + 1] * exposure, xyz[p + 2] * exposure);
+                float[] rgb = colourPath.displayRgb(c);
+                System.arraycopy(rgb, 0, display, p, 3);
+                double[] lin = Srgb.linearFromXyz(c);
+                for (int k = 0; k < 3; k++) {
+                    linear[p + k] = (float) lin[k];
+                }
+            }
+            ImageFiles.writePng(output, display, size, size, 3);
+            if (pfm != null) {
+                ImageFiles.writePfm(pfm, linear, size, size, 3);
+            }
+        }
+        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s) in %.1f s%n", output, size, size, settings.variant().cliName(),
+                lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
+        return 0;
+    }
+
+    private static ColourPath parseColour(String text) {
+        switch (text.toLowerCase(Locale.ROOT)) {
+            case "srgb":
+                return ColourPath.SRGB;
+            case "thesis":
+                return ColourPath.THESIS;
+            default:
+                throw new UserInputException("unknown --colour '" + text + "': use srgb or thesis");
+        }
+    }
+}

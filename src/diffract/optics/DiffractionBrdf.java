@@ -1,0 +1,100 @@
+package diffract.optics;
+
+import diffract.colour.SpectralIntegrator;
+import diffract.colour.Xyz;
+
+/**
+ * The relative diffraction BRDF of a patch (004): monochromatic, rho_lambda = C(omega_i, omega_r) S |P|^2
+ * (eq. {@code cpterm} with Stam's shadowing S), and integrated to colour,
+ * XYZ = C S sum_j |P(lambda_j)|^2 weights_j (eq. {@code finalexpression}; the weights are CMF x D65 times the
+ * quadrature weights, normalised so a flat mirror seen at normal incidence is exactly D65 white, Y = 1).
+ * Immutable and thread-safe.
+ */
+public final class DiffractionBrdf {
+    private final PatchSpectrum spectrum;
+    private final WavelengthSampling sampling;
+    private final double refractiveIndex;
+
+    public DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex) {
+        this.spectrum = spectrum;
+        this.sampling = sampling;
+        this.refractiveIndex = refractiveIndex;
+    }
+
+    /**
+     * Builds the variant the settings name. {@code terms} (the precomputed float32 Taylor terms) are needed for
+     * FLSS, NMM and PQ; {@code meanSubtracted} for the reference.
+     */
+    public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+        CoherenceWindow window = settings.coherenceWindow();
+        double min = settings.lambdaMinNm();
+        double max = settings.lambdaMaxNm();
+        switch (settings.variant()) {
+            case REFERENCE: {
+                PatchSpectrum exact = new ExactSpectrum(meanSubtracted, window);
+                return new DiffractionBrdf(exact,
+                        WavelengthSampling.uniform(min, max, BrdfSettings.REFERENCE_STEP_NM), settings.refractiveIndex());
+            }
+            case FLSS:
+                return new DiffractionBrdf(
+                        new TaylorGaussianSpectrum(terms, settings.highestOrder(), settings.windowRadius(), window),
+                        WavelengthSampling.uniform(min, max, settings.lambdaStepNm()), settings.refractiveIndex());
+            case NMM: {
+                PatchSpectrum s = new TaylorGaussianSpectrum(terms, settings.highestOrder(), settings.windowRadius(), window);
+                return new DiffractionBrdf(s, WavelengthSampling.nmm(min, max, settings.lambdaStepNm(),
+                        s.extentXUm(), s.extentYUm(), NMM_MAX_NODES), settings.refractiveIndex());
+            }
+            case PQ: {
+                double extentX = terms.cols() * terms.pixelSizeXUm();
+                double extentY = terms.rows() * terms.pixelSizeYUm();
+                int rx = settings.pqReplicas() > 0 ? settings.pqReplicas()
+                        : TaylorSincSpectrum.replicasForCoherence(window, extentX);
+                int ry = settings.pqReplicas() > 0 ? settings.pqReplicas()
+                        : TaylorSincSpectrum.replicasForCoherence(window, extentY);
+                return new DiffractionBrdf(
+                        new TaylorSincSpectrum(terms, settings.highestOrder(), settings.windowRadius(), rx, ry),
+                        WavelengthSampling.uniform(min, max, settings.lambdaStepNm()), settings.refractiveIndex());
+            }
+            default:
+                throw new IllegalStateException("unhandled variant " + settings.variant());
+        }
+    }
+
+    /** NMM's node budget per fragment: beyond it, uniform steps are cheaper anyway. */
+    public static final int NMM_MAX_NODES = 1024;
+
+    /** The relative BRDF at one wavelength (grey BRDF maps, grating-equation tests). */
+    public double relative(Direction wi, Direction wr, double lambdaNm) {
+        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex);
+        if (gain == 0) {
+            return 0;
+        }
+        double u = -wi.x() - wr.x();
+        double v = -wi.y() - wr.y();
+        double w = -wi.z() - wr.z();
+        return gain * spectrum.power(u, v, w, lambdaNm * 1e-3);
+    }
+
+    /** CIE XYZ of the light reflected towards omega_r, relative to D65 white (Y = 1 for a flat mirror at normal incidence). */
+    public Xyz xyz(Direction wi, Direction wr) {
+        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex);
+        if (gain == 0) {
+            return new Xyz(0, 0, 0);
+        }
+        double u = -wi.x() - wr.x();
+        double v = -wi.y() - wr.y();
+        double w = -wi.z() - wr.z();
+        WavelengthSampling.Quadrature q = sampling.quadratureFor(u, v);
+        double[] lambdas = q.lambdasNm();
+        double[] power = new double[lambdas.length];
+        for (int j = 0; j < lambdas.length; j++) {
+            power[j] = spectrum.power(u, v, w, lambdas[j] * 1e-3);
+        }
+        Xyz sum = SpectralIntegrator.weightedSum(q.xyzWeights(), power);
+        return new Xyz(gain * sum.x(), gain * sum.y(), gain * sum.z());
+    }
+
+    public PatchSpectrum spectrum() {
+        return spectrum;
+    }
+}

@@ -1,0 +1,28 @@
+package diffract.optics;
+
+import java.util.Locale;
+
+/** How the BRDF is evaluated: the exact reference, or one of the thesis' three shader approximations. */
+public enum Variant {
+    /** exp(i k w h) exactly, window until weights < 1e-12, lambda at 1 nm: the yardstick. */
+    REFERENCE,
+    /** Full lambda-space sampling (003 Algorithm 3): uniform lambda steps, N Taylor terms, Gaussian window. */
+    FLSS,
+    /** n_min/n_max (003 section 1.5.2): only the wavelengths that land on DFT texel centres, with the Jacobian. */
+    NMM,
+    /** Periodic replication and sinc interpolation (003 section 1.5.3, 004 "PQ factors"). */
+    PQ;
+
+    public String cliName() {
+        return name().toLowerCase(Locale.ROOT);
+    }
+
+    public static Variant parse(String text) {
+        for (Variant v : values()) {
+            if (v.cliName().equalsIgnoreCase(text.trim())) {
+                return v;
+            }
+        }
+        throw new diffract.util.UserInputException("unknown variant '" + text + "': use reference, flss, nmm or pq");
+    }
+}
