@@ -12,7 +12,7 @@ package diffract.colour;
  * The normaliser N is computed with the same nodes and weights as the numerator, so a reflectance of 1 gives
  * Y = 1 exactly (to rounding) for any node set: a flat mirror is D65 white at unit luminance, however coarsely
  * the renderer samples wavelengths. X and Z of that white still depend slightly on the nodes: against the
- * 1 nm result (0.950468, 1, 1.088828) they move by about 1e-4 at 5 nm steps and up to 3e-3 at 25 nm steps
+ * 1 nm result (0.950470, 1, 1.088827) they move by about 1e-4 at 5 nm steps and up to 3e-3 at 25 nm steps
  * (chromaticity by 2e-4).
  */
 public final class SpectralIntegrator {

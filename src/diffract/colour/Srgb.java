@@ -57,7 +57,7 @@ public final class Srgb {
 
     /**
      * The sRGB white, XYZ of chromaticity (0.3127, 0.3290) at Y = 1: (0.950456, 1, 1.089058). Note that this
-     * differs in the 4th digit from the spectrally integrated {@link D65#whiteXyz()} (0.950468, 1, 1.088828),
+     * differs in the 4th digit from the spectrally integrated {@link D65#whiteXyz()} (0.950470, 1, 1.088827),
      * because IEC rounded the white's chromaticity to 4 digits.
      */
     public static Xyz whiteXyz() {

@@ -6,9 +6,9 @@ import org.junit.jupiter.api.Test;
 
 class D65Test {
     @Test
-    void shippedTableIs300To780At5Nm() {
+    void tableIs300To830At1Nm() {
         assertEquals(300.0, D65.firstNm());
-        assertEquals(780.0, D65.lastNm());
+        assertEquals(830.0, D65.lastNm());
     }
 
     @Test
@@ -16,16 +16,19 @@ class D65Test {
         assertEquals(100.0, D65.relativePower(560), 0);
         assertEquals(0.0341, D65.relativePower(300), 0);
         assertEquals(63.3828, D65.relativePower(780), 0);
+        // CIE D-series nodes beyond colour-science's 780 nm (CIE 015:2018 table values)
+        assertEquals(63.8434, D65.relativePower(785), 1e-12);
+        assertEquals(60.3125, D65.relativePower(830), 1e-12);
     }
 
     @Test
-    void interpolatesLinearlyBetween5NmNodesAndIsZeroOutside() {
-        assertEquals((0.0341 + 1.6643) / 2, D65.relativePower(302.5), 1e-14);
+    void oneNanometreNodesAreLinearBetweenTheCie5NmNodesAndZeroOutside() {
+        assertEquals(0.0341 + 0.5 * (1.6643 - 0.0341), D65.relativePower(302.5), 1e-12);
         double at555 = D65.relativePower(555);
         double at560 = D65.relativePower(560);
         assertEquals(at555 + 0.2 * (at560 - at555), D65.relativePower(556), 1e-12);
         assertEquals(0.0, D65.relativePower(299.9));
-        assertEquals(0.0, D65.relativePower(785));
+        assertEquals(0.0, D65.relativePower(830.1));
     }
 
     @Test
@@ -37,9 +40,9 @@ class D65Test {
         // CIE 015:2018 lists the D65 white (2-degree observer) as X = 95.047, Z = 108.883 (Y = 100).
         assertEquals(0.95047, white.x(), 1e-4);
         assertEquals(1.08883, white.z(), 1e-4);
-        // Our exact numbers (trapezoid, 1 nm, 360..830, D65 0 above 780 nm).
-        assertEquals(0.95046829, white.x(), 1e-8);
-        assertEquals(1.08882841, white.z(), 1e-8);
+        // Our exact numbers (trapezoid, 1 nm, 360..830 nm).
+        assertEquals(0.95047042, white.x(), 1e-8);
+        assertEquals(1.08882713, white.z(), 1e-8);
         assertEquals(0.3127, white.chromaticityX(), 1e-4);
         assertEquals(0.3290, white.chromaticityY(), 1e-4);
     }
