@@ -78,8 +78,10 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Option(names = "--size", defaultValue = "256", paramLabel = "S", description = "Map size in pixels (default ${DEFAULT-VALUE}).")
     int size;
 
-    @Option(names = "--exposure", defaultValue = "1", paramLabel = "E", description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}).")
-    double exposure;
+    @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto",
+            description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}); "
+                    + "auto maps the brightest diffracted pixel (not the specular highlight) to 1. The PFM is never scaled.")
+    String exposureText;
 
     @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH",
             description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
@@ -103,6 +105,7 @@ final class BrdfMapCommand implements Callable<Integer> {
             throw new UserInputException("--lambda must be > 0 nm, got " + lambdaNm);
         }
         ColourPath colourPath = parseColour(colour);
+        fixedExposure(); // fail on a bad value now, not after minutes of work
         Reporter reporter = Reporter.STDERR;
         long start = System.nanoTime();
         HeightField field = input.load(reporter);
@@ -128,6 +131,7 @@ final class BrdfMapCommand implements Callable<Integer> {
                 window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
         if (lambdaNm != null) {
             float[] rho = BrdfMap.monochromatic(brdf, wi, lambdaNm, size, reporter);
+            double exposure = exposure(rho, wi, reporter);
             float[] grey = new float[rho.length];
             for (int i = 0; i < rho.length; i++) {
                 grey[i] = (float) Srgb.encode(rho[i] * exposure);
@@ -138,11 +142,16 @@ final class BrdfMapCommand implements Callable<Integer> {
             }
         } else {
             float[] xyz = BrdfMap.xyz(brdf, wi, size, reporter);
+            float[] luminance = new float[size * size];
+            for (int p = 0; p < luminance.length; p++) {
+                luminance[p] = xyz[3 * p + 1];
+            }
+            double exposure = exposure(luminance, wi, reporter);
             float[] display = new float[xyz.length];
             float[] linear = new float[xyz.length];
             for (int p = 0; p < xyz.length; p += 3) {
-                Xyz c = new Xyz(xyz[p] * exposure, xyz[p + 1] * exposure, xyz[p + 2] * exposure);
-                float[] rgb = colourPath.displayRgb(c);
+                Xyz c = new Xyz(xyz[p], xyz[p + 1], xyz[p + 2]);
+                float[] rgb = colourPath.displayRgb(c.scaled(exposure));
                 System.arraycopy(rgb, 0, display, p, 3);
                 double[] lin = Srgb.linearFromXyz(c);
                 for (int k = 0; k < 3; k++) {
@@ -157,6 +166,32 @@ final class BrdfMapCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s) in %.1f s%n", output, size, size, settings.variant().cliName(),
                 lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /** The fixed exposure, or null for auto; checked before any work is done. */
+    private Double fixedExposure() {
+        if (exposureText.equalsIgnoreCase("auto")) {
+            return null;
+        }
+        try {
+            double e = Double.parseDouble(exposureText);
+            if (e > 0 && Double.isFinite(e)) {
+                return e;
+            }
+        } catch (NumberFormatException ignored) {
+            // falls through to the message below
+        }
+        throw new UserInputException("--exposure must be a positive number or auto, got '" + exposureText + "'");
+    }
+
+    private double exposure(float[] luminance, Direction wi, Reporter reporter) {
+        Double fixed = fixedExposure();
+        if (fixed != null) {
+            return fixed;
+        }
+        double e = AutoExposure.of(luminance, size, -wi.x(), -wi.y());
+        reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
+        return e;
     }
 
     private static ColourPath parseColour(String text) {

@@ -1,0 +1,165 @@
+package diffract.app;
+
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.Variant;
+import diffract.optics.io.HeightFieldReader;
+import diffract.util.Reporter;
+import diffract.optics.io.GsfWriter;
+import diffract.util.ImageFiles;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The command line as a user meets it: exit codes, one-line errors, files written, reuse of precomputed terms. */
+class CliTest {
+    @TempDir
+    static Path dir;
+    static Path grating;
+
+    @BeforeAll
+    static void writeGrating() throws Exception {
+        grating = dir.resolve("blazed.gsf");
+        GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.13, 10, 8, 4));
+    }
+
+    /** Runs the CLI in-process and returns {exit code, stdout, stderr}. */
+    static Object[] run(String... args) {
+        PrintStream out = System.out;
+        PrintStream err = System.err;
+        ByteArrayOutputStream o = new ByteArrayOutputStream();
+        ByteArrayOutputStream e = new ByteArrayOutputStream();
+        try {
+            System.setOut(new PrintStream(o, true, StandardCharsets.UTF_8));
+            System.setErr(new PrintStream(e, true, StandardCharsets.UTF_8));
+            int code = Main.execute(args);
+            return new Object[] {code, o.toString(StandardCharsets.UTF_8), e.toString(StandardCharsets.UTF_8)};
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+    }
+
+    @Test
+    void precomputeWritesTermsAndARerunReusesThem() {
+        Path terms = dir.resolve("terms");
+        Object[] first = run("precompute", "--patch", grating.toString(), "--terms", "12", "-o", terms.toString());
+        assertEquals(0, first[0], (String) first[2]);
+        assertTrue(((String) first[1]).startsWith("computed 13 terms"), (String) first[1]);
+        assertTrue(Files.isRegularFile(terms.resolve("terms.f32")));
+        assertTrue(Files.isRegularFile(terms.resolve("terms.json")));
+        Object[] second = run("precompute", "--patch", grating.toString(), "--terms", "12", "-o", terms.toString());
+        assertEquals(0, second[0]);
+        assertTrue(((String) second[1]).startsWith("reused 13 terms"), (String) second[1]);
+    }
+
+    @Test
+    void toleranceChoosesAndPrintsN() {
+        Object[] result = run("precompute", "--patch", grating.toString(), "--tolerance", "1e-6", "-o",
+                dir.resolve("tol").toString());
+        assertEquals(0, result[0], (String) result[2]);
+        assertTrue(((String) result[2]).contains("remainder bound"), (String) result[2]);
+        assertTrue(((String) result[2]).matches("(?s).*Taylor order N = \\d+ .*"), (String) result[2]);
+    }
+
+    @Test
+    void brdfMapWritesPngAndPfmOfTheRequestedSize() throws Exception {
+        Path png = dir.resolve("map.png");
+        Path pfm = dir.resolve("map.pfm");
+        Object[] result = run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "flss",
+                "--terms", "10", "--size", "24", "-o", png.toString(), "--pfm", pfm.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(24, image.getWidth());
+        assertEquals(24, image.getHeight());
+        assertEquals(0, image.getRGB(0, 0) & 0xffffff, "outside the unit disk is black");
+        int[] whc = new int[3];
+        float[] floats = ImageFiles.readPfm(pfm, whc);
+        assertEquals(24, whc[0]);
+        assertEquals(3, whc[2]);
+        for (float f : floats) {
+            assertTrue(Float.isFinite(f));
+        }
+    }
+
+    @Test
+    void monochromaticMapHoldsTheRelativeBrdfOfEachPixelDirectionInItsPfm() throws Exception {
+        Path pfm = dir.resolve("mono.pfm");
+        // a short coherence length (4 sigma_s = 2 um) widens the orders so that many pixels are lit
+        Object[] result = run("brdfmap", "--patch", grating.toString(), "--theta-i", "20", "--lambda", "550",
+                "--coherence-length", "2", "--variant", "reference", "--size", "16",
+                "-o", dir.resolve("mono.png").toString(), "--pfm", pfm.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        int[] whc = new int[3];
+        float[] rho = ImageFiles.readPfm(pfm, whc);
+        assertEquals(1, whc[2]);
+        HeightField patch = HeightFieldReader.load(grating, null, null, Reporter.SILENT);
+        BrdfSettings settings = new BrdfSettings(Variant.REFERENCE, 30, 1, 380, 780, 5, 0.5, 1.5, 0);
+        DiffractionBrdf brdf = DiffractionBrdf.create(settings, patch, null);
+        Direction wi = Direction.fromSphericalDeg(20, 0);
+        int lit = 0;
+        for (int j = 0; j < 16; j++) {
+            for (int i = 0; i < 16; i++) {
+                double x = BrdfMap.xOf(i, 16);
+                double y = BrdfMap.yOf(j, 16);
+                double expected = x * x + y * y < 1 ? brdf.relative(wi, Direction.fromProjected(x, y), 550) : 0;
+                assertEquals((float) expected, rho[j * 16 + i], 1e-6 * Math.max(1e-30, Math.abs(expected)),
+                        "pixel " + i + "," + j);
+                lit += expected > 1e-6 ? 1 : 0;
+            }
+        }
+        assertTrue(lit > 5, "only " + lit + " pixels lit");
+    }
+
+    @Test
+    void badInputEndsWithOneLineAndExitCode2() {
+        Object[] missing = run("brdfmap", "--patch", dir.resolve("nope.png").toString(), "--theta-i", "10",
+                "--max-height", "0.3", "--pixel-size", "0.1", "-o", dir.resolve("x.png").toString());
+        assertEquals(2, missing[0]);
+        String err = (String) missing[2];
+        assertTrue(err.startsWith("diffract: "), err);
+        assertEquals(1, err.strip().lines().count(), err);
+        assertFalse(err.contains("Exception"), err);
+
+        Object[] badVariant = run("brdfmap", "--patch", grating.toString(), "--theta-i", "10", "--variant", "fast",
+                "-o", dir.resolve("x.png").toString());
+        assertEquals(2, badVariant[0]);
+        assertTrue(((String) badVariant[2]).contains("unknown variant 'fast'"), (String) badVariant[2]);
+
+        Object[] badAngle = run("brdfmap", "--patch", grating.toString(), "--theta-i", "95", "-o",
+                dir.resolve("x.png").toString());
+        assertEquals(2, badAngle[0]);
+
+        Object[] bothOrders = run("precompute", "--patch", grating.toString(), "--terms", "3", "--tolerance", "1e-3",
+                "-o", dir.resolve("y").toString());
+        assertEquals(2, bothOrders[0]);
+
+        Object[] noCommand = run();
+        assertEquals(2, noCommand[0]);
+    }
+
+    @Test
+    void everyCommandAnswersHelp() {
+        for (String command : new String[] {"precompute", "brdfmap", "patch"}) {
+            Object[] result = run(command, "--help");
+            assertEquals(0, result[0], command);
+            assertTrue(((String) result[1]).contains("Usage: diffract " + command), (String) result[1]);
+        }
+    }
+}
