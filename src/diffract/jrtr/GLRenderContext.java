@@ -38,11 +38,19 @@ public final class GLRenderContext implements RenderContext {
 
     /** Throws {@link GLVersionException} unless {@code gl} is an OpenGL 3.3+ context usable as GL3. */
     public static void requireVersion(GL gl) {
-        VersionNumber found = gl.getContext().getGLVersionNumber();
-        if (found.compareTo(REQUIRED_VERSION) < 0 || !gl.isGL3()) {
+        requireVersion(gl.getContext().getGLVersionNumber(), gl.isGL3(),
+                gl.glGetString(GL.GL_VERSION) + ", " + gl.glGetString(GL.GL_RENDERER));
+    }
+
+    /**
+     * The version rule on its own: {@code found} must be at least 3.3 and the context usable through the GL3
+     * interface; {@code description} (driver version and renderer strings) goes into the message.
+     */
+    static void requireVersion(VersionNumber found, boolean usableAsGL3, String description) {
+        if (found.compareTo(REQUIRED_VERSION) < 0 || !usableAsGL3) {
             throw new GLVersionException("OpenGL " + REQUIRED_VERSION.getMajor() + "." + REQUIRED_VERSION.getMinor()
-                    + " core or newer required, found OpenGL " + found.getMajor() + "." + found.getMinor() + " ("
-                    + gl.glGetString(GL.GL_VERSION) + ", " + gl.glGetString(GL.GL_RENDERER) + ")");
+                    + " core or newer required, found OpenGL " + found.getMajor() + "." + found.getMinor()
+                    + (usableAsGL3 ? "" : " without GL3 core functions") + " (" + description + ")");
         }
     }
 

@@ -6,7 +6,9 @@ import com.jogamp.opengl.GLEventListener;
 /**
  * Draws a scene graph seen through a camera and frustum. It is a plain JOGL {@link GLEventListener}, so the
  * same object renders into a window ({@link OnscreenWindow}, or any GLWindow/GLCanvas it is added to) or into
- * an {@link OffscreenTarget}. It draws into whatever framebuffer is bound when {@link #display} is called.
+ * an {@link OffscreenTarget}. It draws into whatever framebuffer is bound when {@link #display} is called. It
+ * serves one drawable at a time (it holds that drawable's render context between init and dispose).
+ * Subclasses may override {@link #display} and draw more (e.g. an overlay) after {@code super.display}.
  */
 public class Renderer implements GLEventListener {
     private Node root;

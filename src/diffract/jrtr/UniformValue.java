@@ -9,6 +9,7 @@ public sealed interface UniformValue {
     /** Sets the uniform at {@code location} of the current program. */
     void apply(GL3 gl, int location);
 
+    /** A {@code float} uniform. */
     record FloatValue(float value) implements UniformValue {
         @Override
         public void apply(GL3 gl, int location) {
@@ -16,6 +17,7 @@ public sealed interface UniformValue {
         }
     }
 
+    /** An {@code int} (or sampler unit) uniform. */
     record IntValue(int value) implements UniformValue {
         @Override
         public void apply(GL3 gl, int location) {
@@ -57,6 +59,7 @@ public sealed interface UniformValue {
         }
     }
 
+    /** A {@code mat4} uniform. */
     record MatrixValue(Matrix4f matrix) implements UniformValue {
         public MatrixValue {
             matrix = new Matrix4f(matrix);
