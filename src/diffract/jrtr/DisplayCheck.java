@@ -1,5 +1,7 @@
 package diffract.jrtr;
 
+import diffract.util.UserInputException;
+
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -44,11 +46,14 @@ public final class DisplayCheck {
         return Optional.empty();
     }
 
-    /** Throws {@link IllegalStateException} with the one-line reason when no display is available. */
+    /**
+     * Throws {@link UserInputException} (which the CLI prints as one line, exit code 2) with the reason when no
+     * display is available.
+     */
     public static void requireDisplay() {
         Optional<String> problem = problem();
         if (problem.isPresent()) {
-            throw new IllegalStateException(problem.get());
+            throw new UserInputException(problem.get());
         }
     }
 

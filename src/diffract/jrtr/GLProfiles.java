@@ -11,8 +11,8 @@ public final class GLProfiles {
 
     /**
      * The newest core profile the platform offers, or JOGL's default when there is none (the render context
-     * then reports which version was found). Throws {@link IllegalStateException} with the display hint when no
-     * display is available.
+     * then reports which version was found). Throws {@link diffract.util.UserInputException} with the display
+     * hint when no display is available.
      */
     public static GLProfile coreProfile() {
         DisplayCheck.requireDisplay();

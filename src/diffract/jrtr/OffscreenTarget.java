@@ -31,7 +31,7 @@ public final class OffscreenTarget implements AutoCloseable {
     private boolean listenerInitialized;
     private boolean closed;
 
-    /** Creates the hidden GL context; throws {@link IllegalStateException} when there is no display. */
+    /** Creates the hidden GL context; throws {@link diffract.util.UserInputException} when there is no display. */
     public OffscreenTarget(GLEventListener listener) {
         this.listener = listener;
         GLCapabilities caps = GLProfiles.capabilities();

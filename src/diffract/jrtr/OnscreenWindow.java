@@ -17,7 +17,7 @@ public final class OnscreenWindow implements AutoCloseable {
     private final GLWindow window;
     private Animator animator;
 
-    /** Creates and shows the window; throws {@link IllegalStateException} when there is no display. */
+    /** Creates and shows the window; throws {@link diffract.util.UserInputException} when there is no display. */
     public OnscreenWindow(String title, int width, int height, GLEventListener listener) {
         window = GLWindow.create(GLProfiles.capabilities());
         window.setTitle(title);

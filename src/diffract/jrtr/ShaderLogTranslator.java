@@ -41,7 +41,8 @@ public final class ShaderLogTranslator {
         }
         m = AMD_INTEL.matcher(line);
         if (m.matches()) {
-            return map.locate(Integer.parseInt(m.group(3))) + ": " + m.group(1).toLowerCase(java.util.Locale.ROOT) + ": " + m.group(4);
+            String severity = m.group(1).toLowerCase(java.util.Locale.ROOT);
+            return map.locate(Integer.parseInt(m.group(3))) + ": " + severity + ": " + m.group(4);
         }
         return line.trim();
     }

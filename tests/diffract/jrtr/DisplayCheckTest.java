@@ -23,4 +23,15 @@ class DisplayCheckTest {
         assertEquals(Optional.empty(), DisplayCheck.problem(Map.of(), "Windows 11"));
         assertEquals(Optional.empty(), DisplayCheck.problem(Map.of(), "Mac OS X"));
     }
+
+    @Test
+    void requireDisplayAgreesWithProblem() {
+        if (DisplayCheck.problem().isPresent()) {
+            diffract.util.UserInputException e = org.junit.jupiter.api.Assertions.assertThrows(
+                    diffract.util.UserInputException.class, DisplayCheck::requireDisplay);
+            assertEquals(DisplayCheck.NO_DISPLAY_MESSAGE, e.getMessage());
+        } else {
+            org.junit.jupiter.api.Assertions.assertDoesNotThrow(DisplayCheck::requireDisplay);
+        }
+    }
 }

@@ -77,7 +77,8 @@ class OffscreenRenderTest {
                 root.add(new ShapeNode(far, green), new ShapeNode(near, red));
             }
             float[] rgba = render(root);
-            assertArrayEquals(new float[] {1, 0, 0, 1}, pixel(rgba, SIZE, SIZE / 2, SIZE / 2), "near first: " + nearFirst);
+            assertArrayEquals(new float[] {1, 0, 0, 1}, pixel(rgba, SIZE, SIZE / 2, SIZE / 2),
+                    "near first: " + nearFirst);
             assertArrayEquals(new float[] {0, 1, 0, 1}, pixel(rgba, SIZE, 2, 2), "near first: " + nearFirst);
         }
     }

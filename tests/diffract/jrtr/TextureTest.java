@@ -45,7 +45,8 @@ class TextureTest {
                 "void main() {",
                 "    ivec2 p = ivec2(gl_FragCoord.xy);",
                 "    int layer = p.y / layerHeight;",
-                "    fragColor = vec4(texelFetch(table, ivec3(p.x, p.y % layerHeight, layer), 0).rg, float(layer), 1.0);",
+                "    vec2 texel = texelFetch(table, ivec3(p.x, p.y % layerHeight, layer), 0).rg;",
+                "    fragColor = vec4(texel, float(layer), 1.0);",
                 "}",
                 ""));
         GlTestSupport.write(shaderDir, "table1d.frag", String.join("\n",
