@@ -1,0 +1,101 @@
+package diffract.jrtr;
+
+import com.jogamp.opengl.GL;
+import com.jogamp.opengl.GL2ES2;
+import com.jogamp.opengl.GL2ES3;
+import com.jogamp.opengl.GL3;
+
+import java.nio.FloatBuffer;
+import java.util.List;
+
+/**
+ * A GL_TEXTURE_2D_ARRAY of two-channel floats: width x height texels per layer, one layer per {@code float[]}
+ * slice of width * height * 2 values (RG interleaved, row 0 first, row 0 = texel y 0). Nearest filtering so
+ * shaders read exact values with {@code texelFetch(sampler, ivec3(x, y, layer), 0)}.
+ */
+public final class FloatTextureArray extends Texture {
+    /** Storage precision on the GPU. */
+    public enum Precision {
+        /** RG32F: values round-trip bit-exactly. */
+        FLOAT32(GL.GL_RG32F),
+        /** RG16F: half the memory; values rounded to half precision (11 significant bits). */
+        FLOAT16(GL.GL_RG16F);
+
+        private final int internalFormat;
+
+        Precision(int internalFormat) {
+            this.internalFormat = internalFormat;
+        }
+
+        public int internalFormat() {
+            return internalFormat;
+        }
+    }
+
+    private final int width;
+    private final int height;
+    private final List<float[]> layers;
+    private final Precision precision;
+
+    public FloatTextureArray(int width, int height, List<float[]> layers, Precision precision) {
+        if (width <= 0 || height <= 0 || layers.isEmpty()) {
+            throw new IllegalArgumentException("need width, height and layer count > 0, got " + width + "x" + height
+                    + "x" + layers.size());
+        }
+        for (int i = 0; i < layers.size(); i++) {
+            if (layers.get(i).length != width * height * 2) {
+                throw new IllegalArgumentException("layer " + i + ": expected " + width * height * 2
+                        + " floats (" + width + "x" + height + " x RG), got " + layers.get(i).length);
+            }
+        }
+        this.width = width;
+        this.height = height;
+        this.layers = List.copyOf(layers);
+        this.precision = precision;
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    public int layerCount() {
+        return layers.size();
+    }
+
+    public Precision precision() {
+        return precision;
+    }
+
+    @Override
+    public int glTarget() {
+        return GL2ES3.GL_TEXTURE_2D_ARRAY;
+    }
+
+    @Override
+    protected void fill(GL3 gl) {
+        int target = glTarget();
+        int[] maxLayers = new int[1];
+        gl.glGetIntegerv(GL2ES3.GL_MAX_ARRAY_TEXTURE_LAYERS, maxLayers, 0);
+        if (layers.size() > maxLayers[0]) {
+            throw new IllegalArgumentException(layers.size() + " layers exceed GL_MAX_ARRAY_TEXTURE_LAYERS = "
+                    + maxLayers[0]);
+        }
+        // allocate once, then copy layer by layer, so no buffer of the whole array is ever needed
+        gl.glTexImage3D(target, 0, precision.internalFormat(), width, height, layers.size(), 0,
+                GL2ES2.GL_RG, GL.GL_FLOAT, null);
+        for (int layer = 0; layer < layers.size(); layer++) {
+            gl.glTexSubImage3D(target, 0, 0, 0, layer, width, height, 1, GL2ES2.GL_RG, GL.GL_FLOAT,
+                    FloatBuffer.wrap(layers.get(layer)));
+        }
+        nearestClamp(gl, target);
+    }
+
+    @Override
+    public String toString() {
+        return "FloatTextureArray[" + width + "x" + height + "x" + layers.size() + " " + precision + "]";
+    }
+}

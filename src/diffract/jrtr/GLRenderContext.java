@@ -1,0 +1,193 @@
+package diffract.jrtr;
+
+import com.jogamp.common.util.VersionNumber;
+import com.jogamp.opengl.GL;
+import com.jogamp.opengl.GL3;
+
+import javax.vecmath.Matrix3f;
+import javax.vecmath.Matrix4f;
+import javax.vecmath.Point3f;
+import java.util.IdentityHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/** The JOGL {@link RenderContext}: OpenGL 3.3 core or newer. */
+public final class GLRenderContext implements RenderContext {
+    /** The oldest OpenGL the engine runs on: VAOs, GLSL 3.30, texelFetch, float textures, timer queries. */
+    public static final VersionNumber REQUIRED_VERSION = new VersionNumber(3, 3, 0);
+
+    private final GL3 gl;
+    private final GLInfo info;
+    private final Map<Shape, GLMesh> meshes = new IdentityHashMap<>();
+    private final Set<GpuResource> resources = new LinkedHashSet<>();
+    private boolean disposed;
+
+    /**
+     * Wraps the current context's GL; throws {@link GLVersionException} naming the version found when it is
+     * older than 3.3 or not a GL3-capable (core or compatible) context.
+     */
+    public GLRenderContext(GL gl) {
+        requireVersion(gl);
+        this.gl = gl.getGL3();
+        this.info = GLInfo.of(gl);
+        this.gl.glEnable(GL.GL_DEPTH_TEST);
+        this.gl.glDepthFunc(GL.GL_LESS);
+    }
+
+    /** Throws {@link GLVersionException} unless {@code gl} is an OpenGL 3.3+ context usable as GL3. */
+    public static void requireVersion(GL gl) {
+        requireVersion(gl.getContext().getGLVersionNumber(), gl.isGL3(),
+                gl.glGetString(GL.GL_VERSION) + ", " + gl.glGetString(GL.GL_RENDERER));
+    }
+
+    /**
+     * The version rule on its own: {@code found} must be at least 3.3 and the context usable through the GL3
+     * interface; {@code description} (driver version and renderer strings) goes into the message.
+     */
+    static void requireVersion(VersionNumber found, boolean usableAsGL3, String description) {
+        if (found.compareTo(REQUIRED_VERSION) < 0 || !usableAsGL3) {
+            throw new GLVersionException("OpenGL " + REQUIRED_VERSION.getMajor() + "." + REQUIRED_VERSION.getMinor()
+                    + " core or newer required, found OpenGL " + found.getMajor() + "." + found.getMinor()
+                    + (usableAsGL3 ? "" : " without GL3 core functions") + " (" + description + ")");
+        }
+    }
+
+    /** The GL3 view of the wrapped context, for code that issues its own GL calls. */
+    public GL3 gl() {
+        return gl;
+    }
+
+    @Override
+    public GLInfo info() {
+        return info;
+    }
+
+    @Override
+    public void setViewport(int x, int y, int width, int height) {
+        gl.glViewport(x, y, width, height);
+    }
+
+    @Override
+    public void clear(float red, float green, float blue, float alpha) {
+        gl.glClearColor(red, green, blue, alpha);
+        gl.glClearDepth(1.0);
+        gl.glDepthMask(true);
+        gl.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT);
+    }
+
+    @Override
+    public void draw(RenderList list, Camera camera, Frustum frustum) {
+        requireAlive();
+        gl.glEnable(GL.GL_DEPTH_TEST);
+        Matrix4f view = camera.viewMatrix();
+        Matrix4f projection = frustum.projectionMatrix();
+        List<DirectionalLight> lights = list.lights();
+        if (lights.size() > MAX_LIGHTS) {
+            throw new IllegalStateException(lights.size() + " lights; the engine passes at most " + MAX_LIGHTS);
+        }
+        float[] lightDirections = new float[Math.max(1, lights.size()) * 3];
+        float[] lightRadiances = new float[Math.max(1, lights.size()) * 3];
+        for (int i = 0; i < lights.size(); i++) {
+            putVector(lightDirections, i, lights.get(i).direction());
+            putVector(lightRadiances, i, lights.get(i).radiance());
+        }
+        Point3f eye = camera.eye();
+        for (RenderItem item : list.items()) {
+            Material material = item.material();
+            if (material == null) {
+                throw new IllegalStateException(item.node() + " has no material");
+            }
+            ShaderProgram program = material.program();
+            program.use(gl);
+            resources.add(program);
+            Matrix4f model = item.modelMatrix();
+            setMatrix(program, "model", model);
+            setMatrix(program, "view", view);
+            setMatrix(program, "projection", projection);
+            int location = program.uniformLocation(gl, "normalMatrix");
+            if (location >= 0) {
+                gl.glUniformMatrix3fv(location, 1, false, normalMatrixColumnMajor(model), 0);
+            }
+            location = program.uniformLocation(gl, "cameraPosition");
+            if (location >= 0) {
+                gl.glUniform3f(location, eye.x, eye.y, eye.z);
+            }
+            location = program.uniformLocation(gl, "lightCount");
+            if (location >= 0) {
+                gl.glUniform1i(location, lights.size());
+            }
+            location = program.uniformLocation(gl, "lightDirection");
+            if (location >= 0 && !lights.isEmpty()) {
+                gl.glUniform3fv(location, lights.size(), lightDirections, 0);
+            }
+            location = program.uniformLocation(gl, "lightRadiance");
+            if (location >= 0 && !lights.isEmpty()) {
+                gl.glUniform3fv(location, lights.size(), lightRadiances, 0);
+            }
+            material.apply(gl);
+            resources.addAll(material.textures().values());
+            meshes.computeIfAbsent(item.shape(), shape -> GLMesh.upload(gl, shape.vertexData())).draw(gl);
+            GLErrors.check(gl, "drawing " + item.node() + " with " + program);
+        }
+    }
+
+    private static void putVector(float[] array, int index, javax.vecmath.Tuple3f value) {
+        array[index * 3] = value.x;
+        array[index * 3 + 1] = value.y;
+        array[index * 3 + 2] = value.z;
+    }
+
+    private void setMatrix(ShaderProgram program, String name, Matrix4f matrix) {
+        int location = program.uniformLocation(gl, name);
+        if (location >= 0) {
+            gl.glUniformMatrix4fv(location, 1, false, UniformValue.columnMajor(matrix), 0);
+        }
+    }
+
+    /** Normals transform with the inverse transpose, so non-uniform scaling keeps them perpendicular. */
+    static float[] normalMatrixColumnMajor(Matrix4f model) {
+        Matrix3f m = new Matrix3f();
+        model.getRotationScale(m);
+        if (Math.abs(m.determinant()) > 1e-12f) {
+            m.invert();
+            m.transpose();
+        }
+        // column-major of m: column j holds m.m0j, m.m1j, m.m2j
+        return new float[] {m.m00, m.m10, m.m20, m.m01, m.m11, m.m21, m.m02, m.m12, m.m22};
+    }
+
+    /** Uploads a shape's geometry now instead of at its first draw (e.g. to keep the first frame short). */
+    public void upload(Shape shape) {
+        requireAlive();
+        meshes.computeIfAbsent(shape, s -> GLMesh.upload(gl, s.vertexData()));
+    }
+
+    /** Number of shapes whose geometry is on the GPU: each shape is uploaded once however often it is drawn. */
+    public int uploadedShapeCount() {
+        return meshes.size();
+    }
+
+    @Override
+    public void dispose() {
+        if (disposed) {
+            return;
+        }
+        for (GLMesh mesh : meshes.values()) {
+            mesh.delete(gl);
+        }
+        meshes.clear();
+        for (GpuResource resource : resources) {
+            resource.dispose(gl);
+        }
+        resources.clear();
+        disposed = true;
+    }
+
+    private void requireAlive() {
+        if (disposed) {
+            throw new IllegalStateException("render context already disposed");
+        }
+    }
+}

@@ -1,0 +1,160 @@
+package diffract.jrtr;
+
+import com.jogamp.opengl.GL3;
+import com.jogamp.opengl.GLCapabilities;
+import com.jogamp.opengl.GLContext;
+import com.jogamp.opengl.GLDrawableFactory;
+import com.jogamp.opengl.GLEventListener;
+import com.jogamp.opengl.GLOffscreenAutoDrawable;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.function.Function;
+
+/**
+ * Renders a {@link GLEventListener} (usually a {@link Renderer}) without a window: a hidden GL context from
+ * {@link GLDrawableFactory#createOffscreenAutoDrawable} plus our own RGBA32F framebuffer, so results are read
+ * back as floats. The listener gets the same init/reshape/display/dispose calls as in a window. The context is
+ * made current on the calling thread for each call; use one target from one thread at a time.
+ *
+ * <pre>{@code
+ * try (OffscreenTarget target = new OffscreenTarget(new Renderer(scene, camera, frustum))) {
+ *     float[] rgba = target.renderRgba(128, 128);       // top-down rows, 4 floats per pixel
+ *     target.writePng(Path.of("out/frame.png"), 128, 128);
+ * }
+ * }</pre>
+ */
+public final class OffscreenTarget implements AutoCloseable {
+    private final GLEventListener listener;
+    private final GLOffscreenAutoDrawable drawable;
+    private FloatFramebuffer framebuffer;
+    private boolean listenerInitialized;
+    private boolean closed;
+
+    /** Creates the hidden GL context; throws {@link diffract.util.UserInputException} when there is no display. */
+    public OffscreenTarget(GLEventListener listener) {
+        this.listener = listener;
+        GLCapabilities caps = GLProfiles.capabilities();
+        caps.setOnscreen(false);
+        caps.setDoubleBuffered(false);
+        // the drawable's own (tiny) framebuffer is never drawn into; we render into FloatFramebuffer
+        drawable = GLDrawableFactory.getFactory(caps.getGLProfile())
+                .createOffscreenAutoDrawable(null, caps, null, 16, 16);
+        drawable.display(); // realises the context; no listener is attached, so nothing is drawn
+        withContext(gl -> {
+            GLRenderContext.requireVersion(gl);
+            return null;
+        });
+    }
+
+    /** Runs {@code work} with this target's GL context current on this thread and returns its result. */
+    public <T> T withContext(Function<GL3, T> work) {
+        if (closed) {
+            throw new IllegalStateException("offscreen target already closed");
+        }
+        GLContext context = drawable.getContext();
+        if (context.makeCurrent() == GLContext.CONTEXT_NOT_CURRENT) {
+            throw new IllegalStateException("cannot make the offscreen GL context current");
+        }
+        try {
+            return work.apply(context.getGL().getGL3());
+        } finally {
+            context.release();
+        }
+    }
+
+    /** The driver's version and renderer strings. */
+    public GLInfo info() {
+        return withContext(GLInfo::of);
+    }
+
+    /** Renders one frame of {@code width} x {@code height} pixels; RGBA floats, rows top-down. */
+    public float[] renderRgba(int width, int height) {
+        return withContext(gl -> {
+            drawFrame(gl, width, height);
+            return framebuffer.readRgbaTopDown(gl);
+        });
+    }
+
+    /** Renders one frame and drops alpha: RGB floats, rows top-down (what {@code ImageFiles} takes). */
+    public float[] renderRgb(int width, int height) {
+        return dropAlpha(renderRgba(width, height));
+    }
+
+    /** Renders one frame and writes it as an 8-bit PNG (values clamped to [0, 1], alpha dropped). */
+    public void writePng(Path file, int width, int height) throws IOException {
+        diffract.util.ImageFiles.writePng(file, renderRgb(width, height), width, height, 3);
+    }
+
+    /** Renders one frame and writes the raw float RGB values as PFM. */
+    public void writePfm(Path file, int width, int height) throws IOException {
+        diffract.util.ImageFiles.writePfm(file, renderRgb(width, height), width, height, 3);
+    }
+
+    /**
+     * Median GPU time of one frame at the given size, in milliseconds, over {@code frames} (at least 10)
+     * frames after {@code warmupFrames} unmeasured ones (shader compilation and uploads happen in warm-up).
+     */
+    public double measureMedianMs(int width, int height, int warmupFrames, int frames) {
+        return withContext(gl -> {
+            prepare(gl, width, height);
+            return new GpuTimer(gl).measureMedianMs(() -> listener.display(drawable), warmupFrames, frames);
+        });
+    }
+
+    private void drawFrame(GL3 gl, int width, int height) {
+        prepare(gl, width, height);
+        listener.display(drawable);
+        gl.glFinish();
+    }
+
+    /** Initialises the listener once, (re)creates the float framebuffer when the size changes, binds it. */
+    private void prepare(GL3 gl, int width, int height) {
+        if (!listenerInitialized) {
+            listener.init(drawable);
+            listenerInitialized = true;
+        }
+        if (framebuffer == null || framebuffer.width() != width || framebuffer.height() != height) {
+            if (framebuffer != null) {
+                framebuffer.delete(gl);
+            }
+            framebuffer = new FloatFramebuffer(gl, width, height);
+            framebuffer.bind(gl);
+            listener.reshape(drawable, 0, 0, width, height);
+        }
+        framebuffer.bind(gl);
+    }
+
+    static float[] dropAlpha(float[] rgba) {
+        float[] rgb = new float[rgba.length / 4 * 3];
+        for (int i = 0, j = 0; i < rgba.length; i += 4, j += 3) {
+            rgb[j] = rgba[i];
+            rgb[j + 1] = rgba[i + 1];
+            rgb[j + 2] = rgba[i + 2];
+        }
+        return rgb;
+    }
+
+    /** Disposes the listener's GPU objects and the framebuffer, then destroys the hidden context. */
+    @Override
+    public void close() {
+        if (closed) {
+            return;
+        }
+        try {
+            withContext(gl -> {
+                if (listenerInitialized) {
+                    listener.dispose(drawable);
+                }
+                if (framebuffer != null) {
+                    framebuffer.delete(gl);
+                    framebuffer = null;
+                }
+                return null;
+            });
+        } finally {
+            closed = true;
+            drawable.destroy();
+        }
+    }
+}

@@ -1,0 +1,101 @@
+package diffract.jrtr;
+
+import com.jogamp.newt.opengl.GLWindow;
+import com.jogamp.opengl.GL;
+import com.jogamp.opengl.GL3;
+import com.jogamp.opengl.GLEventListener;
+import com.jogamp.opengl.util.Animator;
+
+import java.nio.FloatBuffer;
+
+/**
+ * A NEWT window showing a {@link GLEventListener} (usually a {@link Renderer}, the same one
+ * {@link OffscreenTarget} drives). Input listeners attach to {@link #glWindow()} ({@code addKeyListener},
+ * {@code addMouseListener}); {@link #setTitle} changes the caption, e.g. to show frame times.
+ */
+public final class OnscreenWindow implements AutoCloseable {
+    private final GLWindow window;
+    private Animator animator;
+
+    /** Creates and shows the window; throws {@link diffract.util.UserInputException} when there is no display. */
+    public OnscreenWindow(String title, int width, int height, GLEventListener listener) {
+        window = GLWindow.create(GLProfiles.capabilities());
+        window.setTitle(title);
+        window.setSize(width, height);
+        window.addGLEventListener(listener);
+        window.setVisible(true);
+    }
+
+    /** The NEWT window, for input listeners and window settings. */
+    public GLWindow glWindow() {
+        return window;
+    }
+
+    public void setTitle(String title) {
+        window.setTitle(title);
+    }
+
+    /** Redraws continuously (as fast as vsync allows) until {@link #stopAnimation} or {@link #close}. */
+    public void startAnimation() {
+        if (animator == null) {
+            animator = new Animator(window);
+            animator.start();
+        }
+    }
+
+    public void stopAnimation() {
+        if (animator != null) {
+            animator.stop();
+            animator = null;
+        }
+    }
+
+    /** Draws one frame now (blocking). */
+    public void display() {
+        window.display();
+    }
+
+    /**
+     * Draws one frame and reads what it drew: RGBA floats, rows top-down, {@code surfaceWidth() x
+     * surfaceHeight()} pixels (window pixels are 8-bit, so values are multiples of 1/255).
+     */
+    public float[] renderRgba() {
+        int width = window.getSurfaceWidth();
+        int height = window.getSurfaceHeight();
+        float[][] result = new float[1][];
+        // runs after the listeners' display and before the buffer swap, so the back buffer holds this frame
+        window.invoke(true, drawable -> {
+            GL3 gl = drawable.getGL().getGL3();
+            FloatBuffer buffer = FloatBuffer.allocate(width * height * 4);
+            gl.glReadBuffer(GL.GL_BACK);
+            gl.glPixelStorei(GL.GL_PACK_ALIGNMENT, 4);
+            gl.glReadPixels(0, 0, width, height, GL.GL_RGBA, GL.GL_FLOAT, buffer);
+            float[] topDown = new float[width * height * 4];
+            int row = width * 4;
+            for (int y = 0; y < height; y++) {
+                System.arraycopy(buffer.array(), y * row, topDown, (height - 1 - y) * row, row);
+            }
+            result[0] = topDown;
+            return true;
+        });
+        if (result[0] == null) {
+            throw new IllegalStateException("window did not draw (not visible or already closed?)");
+        }
+        return result[0];
+    }
+
+    public int surfaceWidth() {
+        return window.getSurfaceWidth();
+    }
+
+    public int surfaceHeight() {
+        return window.getSurfaceHeight();
+    }
+
+    /** Stops animation and destroys the window; the listener's dispose frees its GPU objects. */
+    @Override
+    public void close() {
+        stopAnimation();
+        window.destroy();
+    }
+}

@@ -1,0 +1,32 @@
+/**
+ * jrtr: a small real-time rendering engine over JOGL (OpenGL 3.3 core or newer), after the engine of the same
+ * name used in M. Single's thesis. It knows scenes, cameras, shaders, textures and framebuffers, and nothing of
+ * what the shaders compute.
+ *
+ * <ul>
+ *   <li>Scene graph: {@link diffract.jrtr.Group}, {@link diffract.jrtr.TransformGroup},
+ *       {@link diffract.jrtr.ShapeNode} (a {@link diffract.jrtr.Shape} drawn with a
+ *       {@link diffract.jrtr.Material}), {@link diffract.jrtr.LightNode}; flattened by
+ *       {@link diffract.jrtr.RenderList}.</li>
+ *   <li>Viewing: {@link diffract.jrtr.Camera} (eye, look-at, up) and {@link diffract.jrtr.Frustum}.</li>
+ *   <li>Shaders: {@link diffract.jrtr.ShaderProgram} from the classpath ({@code /shaders}) or a directory, with
+ *       injected {@code #define}s, {@code #include "file.glsl"} and errors reported as {@code file.glsl:LINE}.</li>
+ *   <li>Textures, uploaded once: {@link diffract.jrtr.Texture2D}, {@link diffract.jrtr.FloatTextureArray},
+ *       {@link diffract.jrtr.FloatTexture1D}.</li>
+ *   <li>Drawing: {@link diffract.jrtr.Renderer} (a GLEventListener) into an
+ *       {@link diffract.jrtr.OffscreenTarget} (RGBA32F, read back as floats) or an
+ *       {@link diffract.jrtr.OnscreenWindow}; {@link diffract.jrtr.GpuTimer} measures GPU time.</li>
+ * </ul>
+ *
+ * <pre>{@code
+ * Material red = new Material(ShaderProgram.fromClasspath("engine/unlit.vert", "engine/unlit.frag", Map.of()))
+ *         .setVec4("color", 1, 0, 0, 1);
+ * Group scene = new Group("scene").add(new ShapeNode(Shapes.cube(1), red));
+ * try (OffscreenTarget target = new OffscreenTarget(new Renderer(scene, new Camera(), new Frustum()))) {
+ *     target.writePng(Path.of("out/cube.png"), 128, 128);
+ * }
+ * }</pre>
+ *
+ * <p>On Linux a GL context needs an X display; {@link diffract.jrtr.DisplayCheck} says so in one line.
+ */
+package diffract.jrtr;
