@@ -155,8 +155,24 @@ class CliTest {
     }
 
     @Test
+    void compareReportsZeroForAMapAgainstItselfAndAnErrorForAGreyMap() {
+        Path pfm = dir.resolve("self.pfm");
+        assertEquals(0, run("brdfmap", "--patch", grating.toString(), "--theta-i", "10", "--variant", "flss",
+                "--terms", "6", "--size", "12", "-o", dir.resolve("self.png").toString(), "--pfm", pfm.toString())[0]);
+        Object[] same = run("compare", pfm.toString(), pfm.toString());
+        assertEquals(0, same[0], (String) same[2]);
+        assertTrue(((String) same[1]).contains("mean 0.000, p95 0.000, p99 0.000, max 0.000"), (String) same[1]);
+        Path grey = dir.resolve("grey.pfm");
+        assertEquals(0, run("brdfmap", "--patch", grating.toString(), "--theta-i", "10", "--lambda", "500",
+                "--size", "12", "-o", dir.resolve("grey.png").toString(), "--pfm", grey.toString())[0]);
+        Object[] wrong = run("compare", pfm.toString(), grey.toString());
+        assertEquals(2, wrong[0]);
+        assertTrue(((String) wrong[2]).contains("grey PFM"), (String) wrong[2]);
+    }
+
+    @Test
     void everyCommandAnswersHelp() {
-        for (String command : new String[] {"precompute", "brdfmap", "patch"}) {
+        for (String command : new String[] {"demo", "precompute", "brdfmap", "compare", "patch"}) {
             Object[] result = run(command, "--help");
             assertEquals(0, result[0], command);
             assertTrue(((String) result[1]).contains("Usage: diffract " + command), (String) result[1]);

@@ -24,6 +24,8 @@ class ElaphePatchTest {
         DiffractionBrdf brdf = DiffractionBrdf.create(BrdfSettings.thesis(Variant.REFERENCE), patch, null);
         // incidence plane along y (phi_i = 90 deg), where the ridge period lies; 75 degrees as the thesis did
         double periodUm = PeakFinder.meanPeriodFromFirstOrderUm(brdf, 75, 90, 380, 780, 20);
+        System.out.printf("Elaphe patch, reference: first-order period %.2f nm (thesis: 1144.26 FLSS, 1144.18 NMM)%n",
+                periodUm * 1e3);
         assertEquals(1.144, periodUm, 0.02 * 1.144, "period " + periodUm + " um");
     }
 }
