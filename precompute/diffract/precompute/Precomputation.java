@@ -100,6 +100,34 @@ public final class Precomputation {
         }
     }
 
+    /** What {@link #intoThesisFolder} did. */
+    public record ThesisResult(int termCount, Path dir, boolean reused) {
+    }
+
+    /**
+     * Precomputes into {@code dir} in the thesis' Octave layout ({@link ThesisFormat}) unless it already holds
+     * the same terms: a diffract.json with the same patch hash and N, and all term files of the right size.
+     */
+    public static ThesisResult intoThesisFolder(Request request, Path dir, Reporter reporter) {
+        TermSidecar.Selection selection = select(request, reporter);
+        int n = highestOrderOf(request, selection);
+        HeightField field = request.meanSubtracted();
+        String sha = field.contentSha256();
+        ThesisExtras existing = java.nio.file.Files.isDirectory(dir) ? ThesisReader.readExtras(dir) : null;
+        if (existing != null && sha.equals(existing.patchSha256()) && existing.highestOrder() == n
+                && ThesisReader.filesLookComplete(dir, existing)) {
+            return new ThesisResult(n + 1, dir, true);
+        }
+        TaylorTerms terms = TaylorTermComputer.compute(field, n, reporter);
+        try {
+            ThesisFormat.write(dir, terms, new ThesisFormat.Provenance(request.source(), sha, request.maxHeightUm()),
+                    reporter);
+        } catch (IOException e) {
+            throw new UserInputException("cannot write thesis-format terms to " + dir + ": " + e.getMessage(), e);
+        }
+        return new ThesisResult(n + 1, dir, false);
+    }
+
     /** Terms from the user cache, computed on first use. */
     public static TaylorTerms cached(Request request, Reporter reporter) {
         TermSidecar.Selection selection = select(request, Reporter.SILENT);

@@ -13,7 +13,8 @@ import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.io.SamplingCheck;
 import diffract.precompute.Precomputation;
-import diffract.precompute.TermStore;
+import diffract.precompute.TermFolders;
+import diffract.precompute.ThesisFormat;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -72,8 +73,13 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Option(names = "--pq-replicas", defaultValue = "0", paramLabel = "R", description = "PQ replicas per axis; 0 spans the coherence length.")
     int pqReplicas;
 
-    @Option(names = "--terms-dir", paramLabel = "DIR", description = "Use terms precomputed by 'diffract precompute' instead of the cache.")
+    @Option(names = "--terms-dir", paramLabel = "DIR",
+            description = "Use precomputed terms instead of the cache: diffract's format or the thesis' Octave format (detected).")
     Path termsDir;
+
+    @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
+            description = "Heights' unit of a --terms-dir from the thesis' script: auto, m or um (default ${DEFAULT-VALUE}).")
+    String termsHeightUnit;
 
     @Option(names = "--size", defaultValue = "256", paramLabel = "S", description = "Map size in pixels (default ${DEFAULT-VALUE}).")
     int size;
@@ -115,7 +121,8 @@ final class BrdfMapCommand implements Callable<Integer> {
                 lambdaNm != null ? lambdaNm : lambdaMaxNm, reporter);
         TaylorTerms terms = null;
         if (settings.variant() != Variant.REFERENCE) {
-            terms = termsDir != null ? TermStore.read(termsDir)
+            terms = termsDir != null
+                    ? TermFolders.read(termsDir, ThesisFormat.HeightUnit.parse(termsHeightUnit), reporter)
                     : Precomputation.cached(new Precomputation.Request(field, input.patch.getFileName().toString(),
                     input.maxHeightUm, highestOrder, null, lambdaMinNm), reporter);
             if (terms.highestOrder() < highestOrder) {

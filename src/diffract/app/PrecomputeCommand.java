@@ -3,6 +3,7 @@ package diffract.app;
 import diffract.optics.HeightField;
 import diffract.optics.io.SamplingCheck;
 import diffract.precompute.Precomputation;
+import diffract.precompute.TermFolders;
 import diffract.util.Reporter;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -39,18 +40,34 @@ final class PrecomputeCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
     Path output;
 
+    @Option(names = "--format", defaultValue = "native", paramLabel = "F",
+            description = "native (terms.f32 + terms.json) or thesis (the Octave script's AmpReIm<n>.txt + extrema.txt,"
+                    + " extrema in micrometres); see docs/formats.md. Default ${DEFAULT-VALUE}.")
+    String format;
+
     @Override
     public Integer call() {
         long start = System.nanoTime();
+        TermFolders.Format target = TermFolders.Format.parse(format); // a typo fails before any work
         Reporter reporter = Reporter.STDERR;
         HeightField field = input.load(reporter);
         SamplingCheck.warnAboutAliasing(field, lambdaMinNm, 780, reporter);
         Precomputation.Request request = new Precomputation.Request(field, input.patch.getFileName().toString(),
                 input.maxHeightUm, order.highestOrder, order.tolerance, lambdaMinNm);
-        Precomputation.Result result = Precomputation.intoFolder(request, output, false, reporter);
+        boolean reused;
+        int termCount;
+        if (target == TermFolders.Format.THESIS) {
+            Precomputation.ThesisResult result = Precomputation.intoThesisFolder(request, output, reporter);
+            reused = result.reused();
+            termCount = result.termCount();
+        } else {
+            Precomputation.Result result = Precomputation.intoFolder(request, output, false, reporter);
+            reused = result.reused();
+            termCount = result.sidecar().termCount();
+        }
         double seconds = (System.nanoTime() - start) * 1e-9;
-        System.out.printf("%s %d terms of %dx%d into %s in %.2f s%n", result.reused() ? "reused" : "computed",
-                result.sidecar().termCount(), field.rows(), field.cols(), output, seconds);
+        System.out.printf("%s %d terms of %dx%d (%s format) into %s in %.2f s%n", reused ? "reused" : "computed",
+                termCount, field.rows(), field.cols(), format.toLowerCase(java.util.Locale.ROOT), output, seconds);
         return 0;
     }
 }

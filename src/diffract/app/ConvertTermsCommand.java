@@ -1,0 +1,84 @@
+package diffract.app;
+
+import diffract.optics.BrdfSettings;
+import diffract.optics.TaylorBound;
+import diffract.optics.TaylorTerms;
+import diffract.precompute.TermFolders;
+import diffract.precompute.TermSidecar;
+import diffract.precompute.TermStore;
+import diffract.precompute.ThesisFormat;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import diffract.util.Version;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+/** {@code diffract convert-terms}: precomputed terms from one on-disk format into the other, without any FFT. */
+@Command(name = "convert-terms", mixinStandardHelpOptions = true,
+        description = {"Convert a folder of precomputed Taylor terms between diffract's format (terms.f32 + terms.json)",
+                "and the thesis' Octave format (AmpReIm<n>.txt + extrema.txt); see docs/formats.md."})
+final class ConvertTermsCommand implements Callable<Integer> {
+    @Option(names = "--from", required = true, paramLabel = "DIR", description = "Folder in either format (detected).")
+    Path from;
+
+    @Option(names = "--to", required = true, paramLabel = "DIR", description = "Folder to write.")
+    Path to;
+
+    @Option(names = "--format", paramLabel = "F",
+            description = "native or thesis; default: the other format than --from's.")
+    String format;
+
+    @Option(names = "--height-unit", defaultValue = "auto", paramLabel = "UNIT",
+            description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
+    String heightUnit;
+
+    @Override
+    public Integer call() throws IOException {
+        Reporter reporter = Reporter.STDERR;
+        ThesisFormat.HeightUnit unit = ThesisFormat.HeightUnit.parse(heightUnit);
+        TermFolders.Format source = TermFolders.detect(from);
+        TermFolders.Format target = format != null ? TermFolders.Format.parse(format)
+                : source == TermFolders.Format.NATIVE ? TermFolders.Format.THESIS : TermFolders.Format.NATIVE;
+        if (Files.exists(to) && Files.isSameFile(from, to)) {
+            throw new UserInputException("--to must differ from --from (" + to + ")");
+        }
+        long start = System.nanoTime();
+        TaylorTerms terms = TermFolders.read(from, unit, reporter);
+        TermSidecar sidecar = source == TermFolders.Format.NATIVE ? TermStore.readSidecar(from) : null;
+        if (target == TermFolders.Format.THESIS) {
+            ThesisFormat.Provenance provenance = sidecar != null
+                    ? new ThesisFormat.Provenance(sidecar.patch().source(), sidecar.patch().sha256(),
+                    sidecar.patch().maxHeightUm())
+                    : new ThesisFormat.Provenance("converted from " + from, null, null);
+            ThesisFormat.write(to, terms, provenance, reporter);
+        } else {
+            TermSidecar.Patch patch = sidecar != null ? sidecar.patch()
+                    : new TermSidecar.Patch("converted from " + from + " (thesis format)", null, terms.rows(),
+                    terms.cols(), terms.pixelSizeXUm(), terms.pixelSizeYUm(), null, terms.maxAbsHeightUm());
+            TermSidecar.Selection selection = sidecar != null ? sidecar.selection() : convertedSelection(terms);
+            TermStore.write(to, terms, patch, selection, Version.VERSION);
+        }
+        System.out.printf(Locale.ROOT, "converted %d terms of %dx%d from %s (%s) to %s (%s) in %.2f s%n",
+                terms.termCount(), terms.rows(), terms.cols(), from, name(source), to, name(target),
+                (System.nanoTime() - start) * 1e-9);
+        return 0;
+    }
+
+    /** A thesis folder does not say how N was chosen: record "converted" and the bound N gives at 380 nm. */
+    private static TermSidecar.Selection convertedSelection(TaylorTerms terms) {
+        double lambdaMinNm = BrdfSettings.LAMBDA_MIN_NM;
+        double x = TaylorBound.maxPhase(lambdaMinNm, terms.maxAbsHeightUm());
+        return new TermSidecar.Selection("converted", null, lambdaMinNm, x,
+                TaylorBound.lagrangeRemainder(x, terms.highestOrder()));
+    }
+
+    private static String name(TermFolders.Format f) {
+        return f.name().toLowerCase(Locale.ROOT);
+    }
+}
