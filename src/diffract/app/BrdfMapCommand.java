@@ -129,6 +129,9 @@ final class BrdfMapCommand implements Callable<Integer> {
                 throw new UserInputException(termsDir + " holds terms 0.." + terms.highestOrder() + " but --terms "
                         + highestOrder + " was asked; pass --terms " + terms.highestOrder() + " or precompute more");
             }
+            if (termsDir != null) {
+                requireTermsMatchPatch(terms, field);
+            }
         }
         DiffractionBrdf brdf = DiffractionBrdf.create(settings, field, terms);
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
@@ -173,6 +176,20 @@ final class BrdfMapCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s) in %.1f s%n", output, size, size, settings.variant().cliName(),
                 lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /** Terms from another patch would render a different surface than the one named: refuse them. */
+    private void requireTermsMatchPatch(TaylorTerms terms, HeightField field) {
+        boolean sameGrid = terms.rows() == field.rows() && terms.cols() == field.cols();
+        boolean samePixels = Math.abs(terms.pixelSizeXUm() / field.pixelSizeXUm() - 1) < 1e-4
+                && Math.abs(terms.pixelSizeYUm() / field.pixelSizeYUm() - 1) < 1e-4;
+        if (!sameGrid || !samePixels) {
+            throw new UserInputException(String.format(Locale.ROOT,
+                    "%s was made from a %dx%d patch of %.4g x %.4g um pixels, but --patch %s is %dx%d of %.4g x %.4g um;"
+                            + " precompute the terms of this patch", termsDir, terms.cols(), terms.rows(),
+                    terms.pixelSizeXUm(), terms.pixelSizeYUm(), input.patch, field.cols(), field.rows(),
+                    field.pixelSizeXUm(), field.pixelSizeYUm()));
+        }
     }
 
     /** The fixed exposure, or null for auto; checked before any work is done. */

@@ -171,8 +171,20 @@ class CliTest {
     }
 
     @Test
+    void termsOfAnotherPatchAreRefused() throws Exception {
+        Path other = dir.resolve("other.gsf");
+        GsfWriter.write(other, SyntheticPatches.blazed(2.5, 0.13, 10, 4, 4));
+        Path terms = dir.resolve("other-terms");
+        assertEquals(0, run("precompute", "--patch", other.toString(), "--terms", "4", "-o", terms.toString())[0]);
+        Object[] result = run("brdfmap", "--patch", grating.toString(), "--theta-i", "10", "--variant", "flss",
+                "--terms", "4", "--terms-dir", terms.toString(), "--size", "8", "-o", dir.resolve("z.png").toString());
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("was made from a 40x4 patch"), (String) result[2]);
+    }
+
+    @Test
     void everyCommandAnswersHelp() {
-        for (String command : new String[] {"demo", "precompute", "brdfmap", "compare", "patch"}) {
+        for (String command : new String[] {"demo", "precompute", "brdfmap", "compare", "convert-terms", "patch"}) {
             Object[] result = run(command, "--help");
             assertEquals(0, result[0], command);
             assertTrue(((String) result[1]).contains("Usage: diffract " + command), (String) result[1]);
