@@ -11,76 +11,32 @@ package diffract.optics;
  * edge texels). Reads the float32 terms, sums in double: the GPU does the same in float32.
  */
 public final class TaylorGaussianSpectrum implements PatchSpectrum {
-    private final TaylorTerms terms;
-    private final int highestOrder;
-    private final int windowRadius;
-    private final double sigmaTexelsX;
-    private final double sigmaTexelsY;
+    private final WindowedTaylorSum sum;
 
     /**
      * @param highestOrder  N, the last Taylor order used (at most terms.highestOrder())
      * @param windowRadius  R: the window covers (2R + 1)^2 texels; the thesis used R = 1
      */
     public TaylorGaussianSpectrum(TaylorTerms terms, int highestOrder, int windowRadius, CoherenceWindow window) {
-        if (highestOrder < 0 || highestOrder > terms.highestOrder()) {
-            throw new IllegalArgumentException("Taylor order " + highestOrder + " requested, the terms hold 0.."
-                    + terms.highestOrder());
-        }
-        if (windowRadius < 0) {
-            throw new IllegalArgumentException("window radius must be >= 0, got " + windowRadius);
-        }
-        this.terms = terms;
-        this.highestOrder = highestOrder;
-        this.windowRadius = windowRadius;
-        this.sigmaTexelsX = window.sigmaTexels(extentXUm());
-        this.sigmaTexelsY = window.sigmaTexels(extentYUm());
+        double sigmaX = window.sigmaTexels(terms.cols() * terms.pixelSizeXUm());
+        double sigmaY = window.sigmaTexels(terms.rows() * terms.pixelSizeYUm());
+        this.sum = new WindowedTaylorSum(terms, highestOrder, windowRadius,
+                d -> CoherenceWindow.weight(d, sigmaX), d -> CoherenceWindow.weight(d, sigmaY));
     }
 
     @Override
     public double extentXUm() {
-        return terms.cols() * terms.pixelSizeXUm();
+        return sum.extentXUm();
     }
 
     @Override
     public double extentYUm() {
-        return terms.rows() * terms.pixelSizeYUm();
+        return sum.extentYUm();
     }
 
     @Override
     public double power(double u, double v, double w, double lambdaUm) {
-        double sx = u * extentXUm() / lambdaUm; // eq. 1.8
-        double sy = v * extentYUm() / lambdaUm;
-        double[] coefficients = TaylorCoefficients.of(2.0 * Math.PI / lambdaUm * w, highestOrder);
-        int anchorX = (int) Math.floor(sx + 0.5);
-        int anchorY = (int) Math.floor(sy + 0.5);
-        int cols = terms.cols();
-        int rows = terms.rows();
-        double re = 0;
-        double im = 0;
-        for (int j = anchorY - windowRadius; j <= anchorY + windowRadius; j++) {
-            int row = j + terms.centreRow();
-            if (row < 0 || row >= rows) {
-                continue;
-            }
-            double weightY = CoherenceWindow.weight(j - sy, sigmaTexelsY);
-            for (int i = anchorX - windowRadius; i <= anchorX + windowRadius; i++) {
-                int col = i + terms.centreCol();
-                if (col < 0 || col >= cols) {
-                    continue;
-                }
-                double weight = weightY * CoherenceWindow.weight(i - sx, sigmaTexelsX);
-                int index = 2 * (row * cols + col);
-                double sumRe = 0;
-                double sumIm = 0;
-                for (int n = 0; n <= highestOrder; n++) {
-                    float[] term = terms.termUnsafe(n);
-                    sumRe += coefficients[n] * term[index];
-                    sumIm += coefficients[n] * term[index + 1];
-                }
-                re += weight * sumRe;
-                im += weight * sumIm;
-            }
-        }
-        return re * re + im * im;
+        // eq. 1.8: s = u L / lambda; Taylor factor a = k w
+        return sum.power(u * extentXUm() / lambdaUm, v * extentYUm() / lambdaUm, 2.0 * Math.PI / lambdaUm * w);
     }
 }

@@ -14,23 +14,16 @@ package diffract.optics;
  * At integer s the kernel's 0/0 is replaced by its limit cos(R pi s) / cos(pi s), never divided.
  */
 public final class TaylorSincSpectrum implements PatchSpectrum {
-    private final TaylorTerms terms;
-    private final int highestOrder;
-    private final int windowRadius;
+    private final WindowedTaylorSum sum;
     private final int replicasX;
     private final int replicasY;
 
     public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, int windowRadius, int replicasX, int replicasY) {
-        if (highestOrder < 0 || highestOrder > terms.highestOrder()) {
-            throw new IllegalArgumentException("Taylor order " + highestOrder + " requested, the terms hold 0.."
-                    + terms.highestOrder());
+        if (replicasX < 1 || replicasY < 1) {
+            throw new IllegalArgumentException("need replicas >= 1");
         }
-        if (windowRadius < 0 || replicasX < 1 || replicasY < 1) {
-            throw new IllegalArgumentException("need window radius >= 0 and replicas >= 1");
-        }
-        this.terms = terms;
-        this.highestOrder = highestOrder;
-        this.windowRadius = windowRadius;
+        this.sum = new WindowedTaylorSum(terms, highestOrder, windowRadius, TaylorSincSpectrum::sinc,
+                TaylorSincSpectrum::sinc);
         this.replicasX = replicasX;
         this.replicasY = replicasY;
     }
@@ -42,52 +35,21 @@ public final class TaylorSincSpectrum implements PatchSpectrum {
 
     @Override
     public double extentXUm() {
-        return terms.cols() * terms.pixelSizeXUm();
+        return sum.extentXUm();
     }
 
     @Override
     public double extentYUm() {
-        return terms.rows() * terms.pixelSizeYUm();
+        return sum.extentYUm();
     }
 
     @Override
     public double power(double u, double v, double w, double lambdaUm) {
-        double sx = u * extentXUm() / lambdaUm;
+        double sx = u * extentXUm() / lambdaUm; // eq. 1.8
         double sy = v * extentYUm() / lambdaUm;
-        double[] coefficients = TaylorCoefficients.of(2.0 * Math.PI / lambdaUm * w, highestOrder);
-        int anchorX = (int) Math.floor(sx + 0.5);
-        int anchorY = (int) Math.floor(sy + 0.5);
-        int cols = terms.cols();
-        int rows = terms.rows();
-        double re = 0;
-        double im = 0;
-        for (int j = anchorY - windowRadius; j <= anchorY + windowRadius; j++) {
-            int row = j + terms.centreRow();
-            if (row < 0 || row >= rows) {
-                continue;
-            }
-            double weightY = sinc(sy - j);
-            for (int i = anchorX - windowRadius; i <= anchorX + windowRadius; i++) {
-                int col = i + terms.centreCol();
-                if (col < 0 || col >= cols) {
-                    continue;
-                }
-                double weight = weightY * sinc(sx - i);
-                int index = 2 * (row * cols + col);
-                double sumRe = 0;
-                double sumIm = 0;
-                for (int n = 0; n <= highestOrder; n++) {
-                    float[] term = terms.termUnsafe(n);
-                    sumRe += coefficients[n] * term[index];
-                    sumIm += coefficients[n] * term[index + 1];
-                }
-                re += weight * sumRe;
-                im += weight * sumIm;
-            }
-        }
         double px = normalisedDirichlet(sx, replicasX);
         double py = normalisedDirichlet(sy, replicasY);
-        return (re * re + im * im) * px * px * py * py;
+        return sum.power(sx, sy, 2.0 * Math.PI / lambdaUm * w) * px * px * py * py;
     }
 
     /** sin(pi x) / (pi x), 1 at 0. */
