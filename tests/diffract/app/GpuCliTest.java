@@ -78,6 +78,32 @@ class GpuCliTest {
         assertEquals(2, time[0]);
     }
 
+    /** compare: a map against itself is 0 everywhere; against a dimmer copy it is not. */
+    @Test
+    void compareReportsCiede2000OverTheDiskAndTheLitPixels() throws Exception {
+        int size = 8;
+        float[] map = new float[size * size * 3];
+        float[] dimmer = new float[map.length];
+        for (int i = 0; i < map.length; i++) {
+            map[i] = 0.5f;
+            dimmer[i] = 0.25f;
+        }
+        Path a = dir.resolve("a.pfm");
+        Path b = dir.resolve("b.pfm");
+        ImageFiles.writePfm(a, map, size, size, 3);
+        ImageFiles.writePfm(b, dimmer, size, size, 3);
+        Object[] same = CliTest.run("compare", a.toString(), a.toString());
+        assertEquals(0, same[0], (String) same[2]);
+        assertTrue(((String) same[1]).startsWith("CIEDE2000 mean 0.000, p95 0.000, p99 0.000, max 0.00 over 52 pixels; "
+                + "lit: mean 0.000"), (String) same[1]);
+        Object[] different = CliTest.run("compare", a.toString(), b.toString(), "--exposure", "2");
+        assertEquals(0, different[0], (String) different[2]);
+        assertTrue(((String) different[1]).matches("CIEDE2000 mean [1-9]\\d*\\.\\d+, .*lit: .* over 52 pixels.*\\s*"),
+                (String) different[1]);
+        Object[] missing = CliTest.run("compare", a.toString(), dir.resolve("nope.pfm").toString());
+        assertEquals(2, missing[0]);
+    }
+
     private static String[] concat(String[] a, String... b) {
         String[] r = java.util.Arrays.copyOf(a, a.length + b.length);
         System.arraycopy(b, 0, r, a.length, b.length);
