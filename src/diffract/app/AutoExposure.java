@@ -5,8 +5,8 @@ package diffract.app;
  * pixels within 3 pixels of the mirror direction), is mapped to 1. Diffraction orders are typically 10-1000 times
  * dimmer than the specular peak, so exposure 1 shows mostly black; this keeps their colours visible.
  */
-final class AutoExposure {
-    static final int SPECULAR_RADIUS_PX = 3;
+public final class AutoExposure {
+    public static final int SPECULAR_RADIUS_PX = 3;
 
     private AutoExposure() {
     }
@@ -16,7 +16,7 @@ final class AutoExposure {
      * @param specularX  tangent-frame x of the mirror direction, -sin(theta_i) cos(phi_i)
      * @param specularY  tangent-frame y of the mirror direction
      */
-    static double of(float[] luminance, int size, double specularX, double specularY) {
+    public static double of(float[] luminance, int size, double specularX, double specularY) {
         double specularColumn = (specularX + 1) * size / 2 - 0.5;
         double specularRow = (1 - specularY) * size / 2 - 0.5;
         double max = 0;

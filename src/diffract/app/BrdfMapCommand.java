@@ -12,6 +12,9 @@ import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.io.SamplingCheck;
+import diffract.jrtr.FloatTextureArray;
+import diffract.render.DiffractionShaders;
+import diffract.render.GpuBrdfMap;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
@@ -93,6 +96,17 @@ final class BrdfMapCommand implements Callable<Integer> {
             description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
     String colour;
 
+    @Option(names = "--engine", defaultValue = "cpu", paramLabel = "E",
+            description = "cpu (default) or gpu: the GLSL shaders of flss, nmm and pq, rendered offscreen (OpenGL 3.3).")
+    String engine;
+
+    @Option(names = "--time", description = "With --engine gpu: print the median GPU time per frame (GL timer queries).")
+    boolean time;
+
+    @Option(names = "--texture-format", defaultValue = "rg32f", paramLabel = "F",
+            description = "With --engine gpu: rg32f (default, exact) or rg16f (half precision) Taylor-term textures.")
+    String textureFormat;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
     Path output;
 
@@ -112,6 +126,14 @@ final class BrdfMapCommand implements Callable<Integer> {
         }
         ColourPath colourPath = parseColour(colour);
         fixedExposure(); // fail on a bad value now, not after minutes of work
+        boolean gpu = parseEngine(engine);
+        FloatTextureArray.Precision precision = parseTextureFormat(textureFormat);
+        if (gpu && Variant.parse(variant) == Variant.REFERENCE) {
+            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+        }
+        if (time && !gpu) {
+            throw new UserInputException("--time measures the GPU: add --engine gpu");
+        }
         Reporter reporter = Reporter.STDERR;
         long start = System.nanoTime();
         HeightField field = input.load(reporter);
@@ -133,14 +155,36 @@ final class BrdfMapCommand implements Callable<Integer> {
                 requireTermsMatchPatch(terms, field);
             }
         }
-        DiffractionBrdf brdf = DiffractionBrdf.create(settings, field, terms);
+        DiffractionBrdf brdf = gpu ? null : DiffractionBrdf.create(settings, field, terms);
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
         CoherenceWindow window = settings.coherenceWindow();
         reporter.info(String.format(Locale.ROOT, "%s, %dx%d patch of %.3f x %.3f um, sigma_f = %.3f x %.3f texels",
                 settings.variant().cliName(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
                 window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
+        float[] rho = null;
+        float[] xyz = null;
+        if (gpu) {
+            try (GpuBrdfMap map = new GpuBrdfMap(terms, settings, precision)) {
+                reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
+                if (lambdaNm != null) {
+                    rho = map.monochromatic(wi, lambdaNm, size);
+                } else {
+                    xyz = map.xyz(wi, size);
+                }
+                if (time) {
+                    double ms = lambdaNm != null ? map.medianMsPerFrameMonochromatic(wi, lambdaNm, size, 2, 10)
+                            : map.medianMsPerFrame(wi, size, 2, 10);
+                    System.out.printf(Locale.ROOT, "gpu %.1f ms/frame (%s, %dx%d, median of 10, %s, %s)%n", ms,
+                            settings.variant().cliName(), size, size, textureFormat.toLowerCase(Locale.ROOT),
+                            map.info().renderer());
+                }
+            }
+        } else if (lambdaNm != null) {
+            rho = BrdfMap.monochromatic(brdf, wi, lambdaNm, size, reporter);
+        } else {
+            xyz = BrdfMap.xyz(brdf, wi, size, reporter);
+        }
         if (lambdaNm != null) {
-            float[] rho = BrdfMap.monochromatic(brdf, wi, lambdaNm, size, reporter);
             double exposure = exposure(rho, wi, reporter);
             float[] grey = new float[rho.length];
             for (int i = 0; i < rho.length; i++) {
@@ -151,7 +195,6 @@ final class BrdfMapCommand implements Callable<Integer> {
                 ImageFiles.writePfm(pfm, rho, size, size, 1);
             }
         } else {
-            float[] xyz = BrdfMap.xyz(brdf, wi, size, reporter);
             float[] luminance = new float[size * size];
             for (int p = 0; p < luminance.length; p++) {
                 luminance[p] = xyz[3 * p + 1];
@@ -173,7 +216,8 @@ final class BrdfMapCommand implements Callable<Integer> {
                 ImageFiles.writePfm(pfm, linear, size, size, 3);
             }
         }
-        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s) in %.1f s%n", output, size, size, settings.variant().cliName(),
+        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, size, size, settings.variant().cliName(),
+                gpu ? ", gpu" : "",
                 lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
     }
@@ -216,6 +260,28 @@ final class BrdfMapCommand implements Callable<Integer> {
         double e = AutoExposure.of(luminance, size, -wi.x(), -wi.y());
         reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
         return e;
+    }
+
+    private static boolean parseEngine(String text) {
+        switch (text.toLowerCase(Locale.ROOT)) {
+            case "cpu":
+                return false;
+            case "gpu":
+                return true;
+            default:
+                throw new UserInputException("unknown --engine '" + text + "': use cpu or gpu");
+        }
+    }
+
+    private static FloatTextureArray.Precision parseTextureFormat(String text) {
+        switch (text.toLowerCase(Locale.ROOT)) {
+            case "rg32f":
+                return FloatTextureArray.Precision.FLOAT32;
+            case "rg16f":
+                return FloatTextureArray.Precision.FLOAT16;
+            default:
+                throw new UserInputException("unknown --texture-format '" + text + "': use rg32f or rg16f");
+        }
     }
 
     private static ColourPath parseColour(String text) {

@@ -1,9 +1,7 @@
 package diffract.app;
 
-import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
-import diffract.optics.BrdfMap;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
@@ -13,76 +11,64 @@ import picocli.CommandLine.Parameters;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Locale;
+import java.util.Arrays;
 import java.util.concurrent.Callable;
 
-/** {@code diffract compare}: CIEDE2000 between two colour BRDF maps written with {@code brdfmap --pfm}. */
+/** {@code diffract compare}: CIEDE2000 between two colour BRDF maps written by {@code brdfmap --pfm}. */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"CIEDE2000 between two colour PFMs of linear sRGB (e.g. a variant's BRDF map and the reference's),",
-                "over the pixels inside the BRDF map's unit disk, after the same exposure for both."})
+        description = {"CIEDE2000 between two colour BRDF maps (the linear sRGB PFMs of brdfmap --pfm), pixel by pixel",
+                "inside the unit disk: both are turned back into XYZ, multiplied by the same exposure and converted",
+                "to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over the whole disk",
+                "and over the lit pixels (exposed Y above 1 % of white in either map)."})
 final class CompareCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "A.pfm")
-    Path a;
+    Path first;
 
     @Parameters(index = "1", paramLabel = "B.pfm")
-    Path b;
+    Path second;
 
     @Option(names = "--exposure", defaultValue = "1", paramLabel = "E",
-            description = "Scale both maps before comparing, as for display (default ${DEFAULT-VALUE}).")
+            description = "Multiplies both maps' XYZ before L*a*b* (use the exposure the pictures were shown with).")
     double exposure;
 
     @Override
     public Integer call() throws IOException {
-        if (!(exposure > 0)) {
-            throw new UserInputException("--exposure must be > 0, got " + exposure);
+        if (!(exposure > 0) || !Double.isFinite(exposure)) {
+            throw new UserInputException("--exposure must be a positive number, got " + exposure);
         }
-        int[] sizeA = new int[3];
-        int[] sizeB = new int[3];
-        float[] rgbA = read(a, sizeA);
-        float[] rgbB = read(b, sizeB);
-        if (sizeA[0] != sizeB[0] || sizeA[1] != sizeB[1]) {
-            throw new UserInputException(a + " is " + sizeA[0] + "x" + sizeA[1] + " but " + b + " is " + sizeB[0] + "x" + sizeB[1]);
+        int[] a = new int[3];
+        int[] b = new int[3];
+        float[] mapA = readXyz(first, a);
+        float[] mapB = readXyz(second, b);
+        if (!Arrays.equals(a, b) || a[0] != a[1]) {
+            throw new UserInputException("the maps must be square and of one size: " + a[0] + "x" + a[1] + " and "
+                    + b[0] + "x" + b[1]);
         }
-        int width = sizeA[0];
-        int height = sizeA[1];
-        boolean[] insideDisk = new boolean[width * height];
-        for (int j = 0; j < height; j++) {
-            for (int i = 0; i < width; i++) {
-                double x = BrdfMap.xOf(i, width);
-                double y = BrdfMap.yOf(j, height);
-                insideDisk[j * width + i] = width != height || x * x + y * y < 1;
-            }
-        }
-        DeltaEStatistics stats = DeltaEStatistics.of(toXyz(rgbA), toXyz(rgbB), insideDisk);
-        System.out.printf(Locale.ROOT, "CIEDE2000 over %d pixels: mean %.3f, p95 %.3f, p99 %.3f, max %.3f%n",
-                stats.pixels(), stats.mean(), stats.p95(), stats.p99(), stats.max());
+        System.out.println(BrdfMapDifference.of(mapA, mapB, a[0], exposure).summary());
         return 0;
     }
 
-    private float[] toXyz(float[] rgb) {
+    /** The PFM's linear sRGB turned back into XYZ. */
+    private static float[] readXyz(Path file, int[] whc) throws IOException {
+        if (!Files.isRegularFile(file)) {
+            throw new UserInputException("no such file: " + file);
+        }
+        float[] rgb;
+        try {
+            rgb = ImageFiles.readPfm(file, whc);
+        } catch (RuntimeException e) {
+            throw new UserInputException(file + " is not a PFM image (" + e.getMessage() + ")", e);
+        }
+        if (whc[2] != 3) {
+            throw new UserInputException(file + " is a grey PFM; compare needs colour maps (brdfmap without --lambda)");
+        }
         float[] xyz = new float[rgb.length];
         for (int p = 0; p < rgb.length; p += 3) {
-            Xyz c = Srgb.xyzFromLinear(new double[] {rgb[p] * exposure, rgb[p + 1] * exposure, rgb[p + 2] * exposure});
+            Xyz c = Srgb.xyzFromLinear(new double[] {rgb[p], rgb[p + 1], rgb[p + 2]});
             xyz[p] = (float) c.x();
             xyz[p + 1] = (float) c.y();
             xyz[p + 2] = (float) c.z();
         }
         return xyz;
-    }
-
-    private static float[] read(Path file, int[] size) throws IOException {
-        if (!Files.isRegularFile(file)) {
-            throw new UserInputException("no such file: " + file);
-        }
-        float[] pixels;
-        try {
-            pixels = ImageFiles.readPfm(file, size);
-        } catch (RuntimeException e) {
-            throw new UserInputException(file + " is not a PFM image (" + e.getMessage() + ")", e);
-        }
-        if (size[2] != 3) {
-            throw new UserInputException(file + " is a grey PFM; compare needs colour maps (brdfmap without --lambda)");
-        }
-        return pixels;
     }
 }

@@ -16,9 +16,12 @@ import java.util.concurrent.Callable;
 /** {@code diffract patch}: writes a synthetic height field made by code as a Gwyddion .gsf file. */
 @Command(name = "patch", mixinStandardHelpOptions = true,
         description = {"Write a synthetic grating as a Gwyddion Simple Field (.gsf, heights and pixel size in metres).",
-                "Grooves run along y (rows); the period lies along x (columns)."})
+                "Grating grooves run along y (rows); the period lies along x (columns).",
+                "The elaphe-like patch's ridges run along x; its period lies along y (view it with --phi-i 90)."})
 final class PatchCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "KIND", description = "blazed (sawtooth) or sinusoid")
+    @Parameters(index = "0", paramLabel = "KIND",
+            description = "blazed (sawtooth), sinusoid, or elaphe-like (a procedural snake-skin patch: 128 x 128 pixels "
+                    + "of 0.0715 um, ridges along x with period 1.144 um along y, 0.3 um high; only --seed applies)")
     String kind;
 
     @Option(names = "--period", defaultValue = "2.5", paramLabel = "UM", description = "Grating period d (default ${DEFAULT-VALUE}).")
@@ -36,6 +39,9 @@ final class PatchCommand implements Callable<Integer> {
     @Option(names = "--rows", defaultValue = "16", paramLabel = "R", description = "Rows (default ${DEFAULT-VALUE}).")
     int rows;
 
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Noise seed of elaphe-like (default ${DEFAULT-VALUE}).")
+    long seed;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf")
     Path output;
 
@@ -49,8 +55,11 @@ final class PatchCommand implements Callable<Integer> {
             case "sinusoid":
                 field = SyntheticPatches.sinusoid(periodUm, heightUm, samplesPerPeriod, periods, rows);
                 break;
+            case "elaphe-like":
+                field = SyntheticPatches.elapheLike(128, 8, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, seed);
+                break;
             default:
-                throw new UserInputException("unknown patch kind '" + kind + "': use blazed or sinusoid");
+                throw new UserInputException("unknown patch kind '" + kind + "': use blazed, sinusoid or elaphe-like");
         }
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gsf")) {
             throw new UserInputException("patch writes Gwyddion .gsf files; name the output FILE.gsf");

@@ -1,0 +1,213 @@
+// Shared by every diffraction shader (flss.frag, nmm.frag, pq.frag): colour, Fresnel, shadowing, the gain factor,
+// the Taylor coefficients, the Taylor-term lookup and texture blending. Everything here mirrors a CPU class of
+// diffract.optics / diffract.colour; the CPU code is the specification, the GPU computes the same in float32.
+#ifndef DIFFRACTION_COMMON_GLSL
+#define DIFFRACTION_COMMON_GLSL
+
+// Compile-time configuration, injected as #defines by diffract.render.DiffractionShaders:
+//   TAYLOR_HIGHEST_ORDER  N, the last Taylor order (N + 1 terms; BrdfSettings.highestOrder)
+//   WINDOW_RADIUS         R, the window covers (2R + 1)^2 texels (BrdfSettings.windowRadius)
+//   NMM_MAX_NODES         NMM's node budget (DiffractionBrdf.NMM_MAX_NODES)
+//   XYZ_TO_LINEAR_SRGB    mat3(...) constructor of Srgb.xyzToLinearMatrix()
+//   BRDF_MAP | SURFACE    which vertex shader feeds the fragment shader
+//   MONOCHROMATIC         BRDF map of the relative BRDF at lambdaNm instead of XYZ
+//   PIGMENTATION          surface path: blend with a pigmentation texture (Algorithm 4)
+#if !defined(TAYLOR_HIGHEST_ORDER) || !defined(WINDOW_RADIUS) || !defined(XYZ_TO_LINEAR_SRGB)
+#error "TAYLOR_HIGHEST_ORDER, WINDOW_RADIUS and XYZ_TO_LINEAR_SRGB must be defined (see DiffractionShaders)"
+#endif
+
+const float PI = 3.14159265358979;
+const int TERM_COUNT = TAYLOR_HIGHEST_ORDER + 1;
+
+// DFT_n = fftshift(ifft2((i h)^n)) for n = 0..N, layer n, texel (x = col, y = row), RG = (Re, Im) (TaylorTerms).
+uniform sampler2DArray taylorTerms;
+// L = (cols dH_x, rows dH_y): the patch extent, the DFT's period (PatchSpectrum.extentXUm/extentYUm).
+uniform vec2 patchExtentUm;
+// Snake skin: 1.5 (GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX).
+uniform float refractiveIndex;
+
+// ---------------------------------------------------------------------------------------------------------
+// Small guards: no fragment may become NaN or Inf.
+
+// normalize() of a zero vector is undefined (0/0); a degenerate direction becomes (0, 0, 0), i.e. "below the
+// horizon", which every caller maps to black.
+vec3 safeNormalize(vec3 v) {
+    float len2 = dot(v, v);
+    return len2 > 1e-30 ? v * inversesqrt(len2) : vec3(0.0);
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Colour: CIE XYZ (white Y = 1) to display sRGB (Srgb, IEC 61966-2-1).
+
+// Srgb.linearFromXyz: the matrix derived in double from the sRGB primaries, passed in as a #define.
+vec3 linearSrgbFromXyz(vec3 xyz) {
+    return XYZ_TO_LINEAR_SRGB * xyz;
+}
+
+// Srgb.encode for one channel: clip to [0, 1], then 12.92 c below 0.0031308, 1.055 c^(1/2.4) - 0.055 above.
+float srgbEncode(float linear) {
+    float c = clamp(linear, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
+vec3 srgbEncode(vec3 linear) {
+    return vec3(srgbEncode(linear.r), srgbEncode(linear.g), srgbEncode(linear.b));
+}
+
+// Srgb.decode: pigmentation textures hold display-encoded bytes; blending happens in linear light.
+float srgbDecode(float encoded) {
+    return encoded <= 12.92 * 0.0031308 ? encoded / 12.92 : pow((encoded + 0.055) / 1.055, 2.4);
+}
+
+vec3 srgbDecode(vec3 encoded) {
+    return vec3(srgbDecode(encoded.r), srgbDecode(encoded.g), srgbDecode(encoded.b));
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The wavelength-independent factors of the relative BRDF (GainFactor).
+
+// Schlick's R_0 = ((1 - n) / (1 + n))^2, thesis eq. B.2 (GainFactor.schlickR0).
+float schlickR0(float n) {
+    float r = (1.0 - n) / (1.0 + n);
+    return r * r;
+}
+
+// Schlick's R = R_0 + (1 - R_0)(1 - cos beta)^5, eq. B.1 (GainFactor.schlickFresnel).
+float schlickFresnel(float cosHalfToView, float r0) {
+    float m = 1.0 - clamp(cosHalfToView, 0.0, 1.0);
+    float m2 = m * m;
+    return r0 + (1.0 - r0) * m2 * m2 * m;
+}
+
+// cos of the angle between the half vector and omega_r (GainFactor.cosHalfToView); 0 for omega_i = -omega_r.
+float cosHalfToView(vec3 wi, vec3 wr) {
+    vec3 h = wi + wr;
+    float len = length(h);
+    return len > 1e-30 ? dot(wr, h) / len : 0.0;
+}
+
+bool aboveHorizon(vec3 wi, vec3 wr) {
+    return wi.z > 0.0 && wr.z > 0.0;
+}
+
+// The gain factor C of 004 eq. cfact: F^2 (1 + wi.wr)^2 / (F(0)^2 w^2 cos theta_r), w = cos theta_i + cos theta_r
+// (GainFactor.gain). Callers check aboveHorizon first, so w^2 cos theta_r > 0: w >= cos theta_r > 0.
+float gainFactor(vec3 wi, vec3 wr) {
+    float r0 = schlickR0(refractiveIndex);
+    float f = schlickFresnel(cosHalfToView(wi, wr), r0);
+    float onePlusDot = 1.0 + dot(wi, wr);
+    float w = wi.z + wr.z;
+    return (f * f * onePlusDot * onePlusDot) / (r0 * r0 * w * w * wr.z);
+}
+
+// Stam's V-cavity shadowing and masking, min(1, 2 (n.h)(n.v)/(v.h), 2 (n.h)(n.l)/(v.h)) (GainFactor.shadowing;
+// 003 Algorithm 3 line 27). Above the horizon |h| >= h.z > 0 and v.h = cos(half angle) > 0.
+float shadowing(vec3 wi, vec3 wr) {
+    vec3 h = wi + wr;
+    float len = length(h);
+    float nDotH = h.z / len;
+    float vDotH = max(dot(wr, h) / len, 1e-30);
+    float masking = 2.0 * nDotH * wr.z / vDotH;
+    float shadow = 2.0 * nDotH * wi.z / vDotH;
+    return min(1.0, min(masking, shadow));
+}
+
+// C times the shadowing factor, 0 at or below the horizon (GainFactor.gainTimesShadowing; 003 Alg. 3 line 27).
+float gainTimesShadowing(vec3 wi, vec3 wr) {
+    if (!aboveHorizon(wi, wr)) {
+        return 0.0;
+    }
+    return gainFactor(wi, wr) * shadowing(wi, wr);
+}
+
+// (u, v, w) = -omega_i - omega_r (004; 003 Algorithm 3 line 3).
+vec3 uvwOf(vec3 wi, vec3 wr) {
+    return -wi - wr;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// The Taylor series of 004 eq. finalexpression and its texture lookup (003 eq. 1.5-1.10).
+
+// Wavenumber k = 2 pi / lambda in 1/um.
+float waveNumberPerUm(float lambdaNm) {
+    return 2.0 * PI / (lambdaNm * 1e-3);
+}
+
+// 003 eq. 1.8: s = (u L_x / lambda, v L_y / lambda), in texels from the centre texel.
+vec2 lookupTexels(vec2 uv, float lambdaNm) {
+    return uv * patchExtentUm / (lambdaNm * 1e-3);
+}
+
+// (k w)^n / n! by the recurrence c_n = c_{n-1} k w / n, so n! never overflows (TaylorCoefficients.of).
+void taylorCoefficients(float kw, out float c[TERM_COUNT]) {
+    c[0] = 1.0;
+    for (int n = 1; n < TERM_COUNT; n++) {
+        c[n] = c[n - 1] * kw / float(n);
+    }
+}
+
+// The centre texel of eq. 1.5, floor(size / 2) per axis (TaylorTerms.centreCol/centreRow).
+ivec2 termCentre() {
+    return textureSize(taylorTerms, 0).xy / 2;
+}
+
+// Whether frequency index m (texels from the centre) lies inside the stored band; outside, the band-limited
+// patch has no energy and the texel contributes 0 (TaylorGaussianSpectrum: never clamped to the edge).
+bool inBand(ivec2 m) {
+    ivec2 texel = m + termCentre();
+    ivec2 size = textureSize(taylorTerms, 0).xy;
+    return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
+}
+
+// sum_n c_n DFT_n(m) at the exact texel of frequency index m (texelFetch: no filtering), 0 out of band.
+vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT]) {
+    if (!inBand(m)) {
+        return vec2(0.0);
+    }
+    ivec2 texel = m + termCentre();
+    vec2 sum = vec2(0.0);
+    for (int n = 0; n < TERM_COUNT; n++) {
+        sum += c[n] * texelFetch(taylorTerms, ivec3(texel, n), 0).rg;
+    }
+    return sum;
+}
+
+// The interpolation kernel of a variant along one axis (0 = x, 1 = y): the Gaussian window (FLSS, NMM) or sinc
+// (PQ). Defined by spectrum_gaussian.glsl or spectrum_sinc.glsl.
+float windowWeight(float offsetTexels, int axis);
+
+// P = sum_{m in window} K(s - m) sum_n c_n DFT_n(m) over the (2R+1)^2 texels around the nearest texel
+// floor(s + 0.5) (TaylorGaussianSpectrum.power / TaylorSincSpectrum.power before |.|^2; 003 Algorithm 3
+// lines 9-24 with the loops exchanged, which changes nothing but the order of the float sums).
+vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
+    vec2 s = lookupTexels(uvw.xy, lambdaNm);
+    float c[TERM_COUNT];
+    taylorCoefficients(waveNumberPerUm(lambdaNm) * uvw.z, c);
+    ivec2 anchor = ivec2(floor(s + 0.5));
+    vec2 p = vec2(0.0);
+    for (int j = -WINDOW_RADIUS; j <= WINDOW_RADIUS; j++) {
+        int my = anchor.y + j;
+        float weightY = windowWeight(float(my) - s.y, 1);
+        for (int i = -WINDOW_RADIUS; i <= WINDOW_RADIUS; i++) {
+            int mx = anchor.x + i;
+            p += weightY * windowWeight(float(mx) - s.x, 0) * taylorSumAt(ivec2(mx, my), c);
+        }
+    }
+    return p;
+}
+
+// ---------------------------------------------------------------------------------------------------------
+// Texture blending (003 Algorithm 4, read as physics; the printed algorithm is garbled, see DiffractionShaders):
+// of the light reaching the skin a fraction alpha = clamp(F, 0, 1) is reflected at the interface (the structural
+// colour, whose gain factor already contains F^2 / F(0)^2) and 1 - alpha enters the skin, where the pigment
+// scatters it diffusely (Lambert: times cos theta_i). A constant weight w_d mixes in the pigment as ambient light:
+//   c_total = (1 - w_d) (c_diffraction + (1 - alpha) cos(theta_i) c_pigment) + w_d c_pigment,
+// all in linear light. w_d = 0 shows pure structural colour; w_d = 1 pure pigment.
+vec3 blendPigmentation(vec3 diffractionLinear, vec3 pigmentLinear, float fresnel, float cosThetaI,
+                       float diffuseWeight) {
+    float alpha = clamp(fresnel, 0.0, 1.0);
+    vec3 diffuse = (1.0 - alpha) * max(cosThetaI, 0.0) * pigmentLinear;
+    return (1.0 - diffuseWeight) * (diffractionLinear + diffuse) + diffuseWeight * pigmentLinear;
+}
+
+#endif

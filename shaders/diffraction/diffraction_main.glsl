@@ -1,0 +1,85 @@
+// main() of the three variant shaders. A variant file includes its spectrum (spectrum_gaussian.glsl or
+// spectrum_sinc.glsl), defines spectralXyz(uvw) and then includes this file.
+#ifndef DIFFRACTION_MAIN_GLSL
+#define DIFFRACTION_MAIN_GLSL
+#include "diffraction_common.glsl"
+
+#if defined(BRDF_MAP) == defined(SURFACE)
+#error "define exactly one of BRDF_MAP and SURFACE"
+#endif
+
+// sum_j |P(lambda_j)|^2 weights_j over the variant's wavelength nodes (unnormalised by the gain).
+vec3 spectralXyz(vec3 uvw);
+float patchPower(vec3 uvw, float lambdaNm);
+
+// CIE XYZ of the light reflected towards omega_r, D65 white at Y = 1 (DiffractionBrdf.xyz; eq. finalexpression).
+vec3 diffractionXyz(vec3 wi, vec3 wr) {
+    float gain = gainTimesShadowing(wi, wr);
+    if (gain == 0.0) {
+        return vec3(0.0);
+    }
+    return gain * spectralXyz(uvwOf(wi, wr));
+}
+
+// The relative BRDF at one wavelength (DiffractionBrdf.relative; eq. cpterm).
+float relativeBrdf(vec3 wi, vec3 wr, float lambdaNm) {
+    float gain = gainTimesShadowing(wi, wr);
+    if (gain == 0.0) {
+        return 0.0;
+    }
+    return gain * patchPower(uvwOf(wi, wr), lambdaNm);
+}
+
+out vec4 fragColor;
+
+#ifdef BRDF_MAP
+// ---- BRDF maps (BrdfMap): linear XYZ, or the monochromatic relative BRDF in .r, into an RGBA32F target.
+uniform vec3 omegaI;      // towards the light, unit, tangent frame
+uniform float mapSizePx;  // S
+#ifdef MONOCHROMATIC
+uniform float lambdaNm;
+#endif
+
+void main() {
+    // Pixel (i, j), j counted from the top, has its centre at gl_FragCoord = (i + 0.5, S - j - 0.5), so
+    // BrdfMap's x = 2 (i + 0.5) / S - 1 and y = 1 - 2 (j + 0.5) / S become 2 gl_FragCoord / S - 1.
+    vec2 xy = 2.0 * gl_FragCoord.xy / mapSizePx - 1.0;
+    float zz = 1.0 - xy.x * xy.x - xy.y * xy.y;
+    if (!(zz > 0.0)) {
+        fragColor = vec4(0.0); // outside the unit disk (x^2 + y^2 >= 1): black, as BrdfMap
+        return;
+    }
+    vec3 wr = vec3(xy, sqrt(zz)); // Direction.fromProjected
+#ifdef MONOCHROMATIC
+    fragColor = vec4(relativeBrdf(omegaI, wr, lambdaNm), 0.0, 0.0, 1.0);
+#else
+    fragColor = vec4(diffractionXyz(omegaI, wr), 1.0);
+#endif
+}
+#endif
+
+#ifdef SURFACE
+// ---- Meshes (003 Algorithm 3 after Algorithm 2): display sRGB.
+in vec3 omegaITangent;   // towards the light, tangent frame (surface.vert)
+in vec3 toViewerTangent; // towards the eye, tangent frame, unnormalised (interpolates exactly on flat triangles)
+in vec2 surfaceTexcoord;
+uniform float exposure;  // multiplies linear XYZ before display encoding
+#ifdef PIGMENTATION
+uniform sampler2D pigmentation;   // display-encoded sRGB bytes
+uniform float diffuseWeight;      // w_d of Algorithm 4
+#endif
+
+void main() {
+    vec3 wi = safeNormalize(omegaITangent);
+    vec3 wr = safeNormalize(toViewerTangent);
+    vec3 linear = max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
+#ifdef PIGMENTATION
+    vec3 pigment = srgbDecode(texture(pigmentation, surfaceTexcoord).rgb);
+    float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
+    linear = blendPigmentation(linear, pigment, fresnel, wi.z, diffuseWeight);
+#endif
+    fragColor = vec4(srgbEncode(linear), 1.0);
+}
+#endif
+
+#endif

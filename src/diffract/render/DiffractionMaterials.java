@@ -1,0 +1,69 @@
+package diffract.render;
+
+import diffract.jrtr.Material;
+import diffract.jrtr.Texture2D;
+import diffract.optics.BrdfSettings;
+import diffract.optics.CoherenceWindow;
+import diffract.optics.Direction;
+import diffract.optics.TaylorSincSpectrum;
+
+/**
+ * {@link Material}s of the diffraction shaders: program, textures and the uniforms that mirror
+ * {@link diffract.optics.DiffractionBrdf#create}'s parameters (extent, coherence window in texels, PQ replicas,
+ * refractive index, wavelength interval).
+ */
+public final class DiffractionMaterials {
+    private DiffractionMaterials() {
+    }
+
+    /**
+     * A BRDF-map material (draw it on {@link diffract.jrtr.Shapes#fullScreenQuad()}); set {@code omegaI} with
+     * {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm} when monochromatic.
+     */
+    public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
+        Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP,
+                monochromatic, false));
+        return common(m, textures, settings);
+    }
+
+    /**
+     * A mesh material (003 Algorithms 2-4): display sRGB of exposure x XYZ, blended with {@code pigmentation}
+     * (display-encoded sRGB, or null for pure structural colour) with diffuse weight w_d.
+     */
+    public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
+                                   Texture2D pigmentation, float diffuseWeight) {
+        Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.SURFACE, false,
+                pigmentation != null));
+        common(m, textures, settings).setFloat("exposure", exposure);
+        if (pigmentation != null) {
+            m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
+        }
+        return m;
+    }
+
+    /** omega_i of a BRDF map (towards the light, tangent frame). */
+    public static Material setLight(Material brdfMap, Direction wi) {
+        return brdfMap.setVec3("omegaI", (float) wi.x(), (float) wi.y(), (float) wi.z());
+    }
+
+    private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings) {
+        double extentX = textures.extentXUm();
+        double extentY = textures.extentYUm();
+        CoherenceWindow window = settings.coherenceWindow();
+        // the replica counts of DiffractionBrdf.create(PQ)
+        int replicasX = settings.pqReplicas() > 0 ? settings.pqReplicas()
+                : TaylorSincSpectrum.replicasForCoherence(window, extentX);
+        int replicasY = settings.pqReplicas() > 0 ? settings.pqReplicas()
+                : TaylorSincSpectrum.replicasForCoherence(window, extentY);
+        m.setTexture("taylorTerms", textures.terms())
+                .setTexture("uniformNodeTable", textures.uniformNodeTable())
+                .setTexture("spectralTable", textures.spectralTable());
+        return m.setVec2("patchExtentUm", (float) extentX, (float) extentY)
+                .setFloat("refractiveIndex", (float) settings.refractiveIndex())
+                .setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY))
+                .setVec2("pqReplicas", replicasX, replicasY)
+                .setFloat("lambdaMinNm", (float) settings.lambdaMinNm())
+                .setFloat("lambdaMaxNm", (float) settings.lambdaMaxNm())
+                .setFloat("spectralTableFirstNm", (float) textures.spectralTableFirstNm());
+    }
+}

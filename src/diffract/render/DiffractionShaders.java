@@ -1,0 +1,104 @@
+package diffract.render;
+
+import diffract.colour.Srgb;
+import diffract.jrtr.ShaderProgram;
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Variant;
+import diffract.util.UserInputException;
+
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * The GLSL programs of {@code shaders/diffraction/}: one thin fragment shader per variant ({@code flss.frag},
+ * {@code nmm.frag}, {@code pq.frag}) over shared includes, specialised by compile-time {@code #define}s.
+ *
+ * <p>Texture blending on meshes (003 Algorithm 4) is printed garbled in the thesis (section 1.4.2: alpha = |F| is
+ * called "the fraction which goes into the skin", and c_texture and c_pigmentation appear without a definition).
+ * We implement it as the physics it describes, in linear light: the interface reflects the fraction
+ * alpha = clamp(F, 0, 1) (the structural colour, whose gain factor already holds the Fresnel term), 1 - alpha enters
+ * the skin and is scattered by the pigment diffusely (Lambert, times cos theta_i), and a constant weight w_d mixes
+ * the pigment in as ambient light: c_total = (1 - w_d)(c_diffraction + (1 - alpha) cos(theta_i) c_pigment)
+ * + w_d c_pigment (see {@code blendPigmentation} in {@code diffraction_common.glsl}).
+ */
+public final class DiffractionShaders {
+    /** Where the fragment shader's directions come from. */
+    public enum Target {
+        /** A full-screen quad; omega_r from the map pixel (BrdfMap's convention), output linear XYZ. */
+        BRDF_MAP,
+        /** A mesh through surface.vert (003 Algorithm 2); output display sRGB. */
+        SURFACE
+    }
+
+    /** One line for the CLI and the API when the exact reference is asked of the GPU. */
+    public static final String REFERENCE_IS_CPU_ONLY =
+            "the reference variant runs on the CPU only (--engine cpu); the GPU renders flss, nmm and pq";
+
+    private DiffractionShaders() {
+    }
+
+    /** The variant's fragment shader under {@code /shaders}; the reference has none. */
+    public static String fragmentPath(Variant variant) {
+        if (variant == Variant.REFERENCE) {
+            throw new UserInputException(REFERENCE_IS_CPU_ONLY);
+        }
+        return "diffraction/" + variant.cliName() + ".frag";
+    }
+
+    public static String vertexPath(Target target) {
+        return target == Target.BRDF_MAP ? "diffraction/brdfmap.vert" : "diffraction/surface.vert";
+    }
+
+    /**
+     * The compile-time constants: Taylor order, window radius, NMM node budget, the XYZ to linear sRGB matrix,
+     * the target and the optional switches.
+     */
+    public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
+                                              boolean pigmentation) {
+        Map<String, String> defines = new TreeMap<>();
+        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(settings.highestOrder()));
+        defines.put("WINDOW_RADIUS", Integer.toString(settings.windowRadius()));
+        defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
+        defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
+        defines.put(target.name(), "1");
+        if (monochromatic) {
+            if (target != Target.BRDF_MAP) {
+                throw new IllegalArgumentException("monochromatic output exists for BRDF maps only");
+            }
+            defines.put("MONOCHROMATIC", "1");
+        }
+        if (pigmentation) {
+            if (target != Target.SURFACE) {
+                throw new IllegalArgumentException("pigmentation blending exists for surfaces only");
+            }
+            defines.put("PIGMENTATION", "1");
+        }
+        return defines;
+    }
+
+    /** The program of a variant for a target (compiled on first use in a GL context). */
+    public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
+                                        boolean pigmentation) {
+        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
+                defines(settings, target, monochromatic, pigmentation));
+    }
+
+    /**
+     * A GLSL {@code mat3(...)} constructor of a row-major matrix. GLSL fills constructors column by column, so
+     * the entries are written column-major; 9 significant digits keep the float32 value exact.
+     */
+    static String glslMat3(double[][] rowMajor) {
+        StringBuilder b = new StringBuilder("mat3(");
+        for (int col = 0; col < 3; col++) {
+            for (int row = 0; row < 3; row++) {
+                if (col + row > 0) {
+                    b.append(", ");
+                }
+                b.append(String.format(Locale.ROOT, "%.9e", rowMajor[row][col]));
+            }
+        }
+        return b.append(')').toString();
+    }
+}

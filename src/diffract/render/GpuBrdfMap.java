@@ -1,0 +1,114 @@
+package diffract.render;
+
+import diffract.jrtr.Camera;
+import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.Frustum;
+import diffract.jrtr.GLInfo;
+import diffract.jrtr.Group;
+import diffract.jrtr.Material;
+import diffract.jrtr.OffscreenTarget;
+import diffract.jrtr.Renderer;
+import diffract.jrtr.ShapeNode;
+import diffract.jrtr.Shapes;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.util.UserInputException;
+
+/**
+ * BRDF maps on the GPU, with the pixel convention of {@link diffract.optics.BrdfMap}: pixel (i, j) of an S x S map
+ * (j from the top) shows omega_r = (x, y, sqrt(1 - x^2 - y^2)), x = 2 (i + 0.5) / S - 1, y = 1 - 2 (j + 0.5) / S,
+ * black outside the unit disk. Rendered offscreen into an RGBA32F target and read back, so the result goes through
+ * the same colour pipeline ({@link diffract.colour.ColourPath}) as the CPU's map. Holds a hidden GL context: close it.
+ * Not thread-safe.
+ */
+public final class GpuBrdfMap implements AutoCloseable {
+    private final BrdfSettings settings;
+    private final DiffractionTextures textures;
+    private final ShapeNode quad;
+    private final OffscreenTarget target;
+    private Material xyzMaterial;
+    private Material monochromaticMaterial;
+
+    /**
+     * @param terms     the precomputed float32 Taylor terms (at least settings.highestOrder())
+     * @param precision how the terms are stored on the GPU (FLOAT32 = bit-exact)
+     * @throws UserInputException for the reference variant, or when no GL context can be opened
+     */
+    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
+        if (settings.variant() == Variant.REFERENCE) {
+            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+        }
+        this.settings = settings;
+        this.textures = DiffractionTextures.of(terms, settings, precision);
+        this.xyzMaterial = DiffractionMaterials.brdfMap(textures, settings, false);
+        this.quad = new ShapeNode(Shapes.fullScreenQuad(), xyzMaterial);
+        this.target = new OffscreenTarget(new Renderer(new Group("brdf map").add(quad), new Camera(), new Frustum()));
+    }
+
+    /** CIE XYZ per pixel (D65 white at Y = 1), 3 floats per pixel, rows from the top, as BrdfMap.xyz. */
+    public float[] xyz(Direction wi, int size) {
+        use(xyzMaterial, wi, size);
+        float[] rgba = target.renderRgba(size, size);
+        float[] xyz = new float[size * size * 3];
+        for (int p = 0; p < size * size; p++) {
+            xyz[3 * p] = rgba[4 * p];
+            xyz[3 * p + 1] = rgba[4 * p + 1];
+            xyz[3 * p + 2] = rgba[4 * p + 2];
+        }
+        return xyz;
+    }
+
+    /** The relative BRDF at {@code lambdaNm} per pixel, as BrdfMap.monochromatic. */
+    public float[] monochromatic(Direction wi, double lambdaNm, int size) {
+        useMonochromatic(wi, lambdaNm, size);
+        float[] rgba = target.renderRgba(size, size);
+        float[] rho = new float[size * size];
+        for (int p = 0; p < rho.length; p++) {
+            rho[p] = rgba[4 * p];
+        }
+        return rho;
+    }
+
+    /**
+     * Median GPU time (GL timer queries) of one S x S colour map, over {@code frames} >= 10 frames after
+     * {@code warmupFrames} unmeasured ones (compilation and uploads happen in warm-up).
+     */
+    public double medianMsPerFrame(Direction wi, int size, int warmupFrames, int frames) {
+        use(xyzMaterial, wi, size);
+        return target.measureMedianMs(size, size, warmupFrames, frames);
+    }
+
+    /** As {@link #medianMsPerFrame} for the monochromatic map at {@code lambdaNm}. */
+    public double medianMsPerFrameMonochromatic(Direction wi, double lambdaNm, int size, int warmupFrames, int frames) {
+        useMonochromatic(wi, lambdaNm, size);
+        return target.measureMedianMs(size, size, warmupFrames, frames);
+    }
+
+    /** The GL driver's version and renderer strings. */
+    public GLInfo info() {
+        return target.info();
+    }
+
+    private void useMonochromatic(Direction wi, double lambdaNm, int size) {
+        if (monochromaticMaterial == null) {
+            monochromaticMaterial = DiffractionMaterials.brdfMap(textures, settings, true);
+        }
+        use(monochromaticMaterial, wi, size);
+        monochromaticMaterial.setFloat("lambdaNm", (float) lambdaNm);
+    }
+
+    private void use(Material material, Direction wi, int size) {
+        if (size < 1) {
+            throw new IllegalArgumentException("map size must be >= 1, got " + size);
+        }
+        DiffractionMaterials.setLight(material, wi).setFloat("mapSizePx", size);
+        quad.setMaterial(material);
+    }
+
+    @Override
+    public void close() {
+        target.close();
+    }
+}

@@ -1,0 +1,86 @@
+package diffract.render;
+
+import diffract.colour.Srgb;
+import diffract.jrtr.ShaderProgram;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Variant;
+import diffract.util.UserInputException;
+import org.junit.jupiter.api.Test;
+
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** Shader selection, defines and preprocessing, without a GL context. */
+class DiffractionShadersTest {
+    @Test
+    void everyVariantAndTargetPreprocessesWithItsDefines() {
+        for (Variant variant : new Variant[] {Variant.FLSS, Variant.NMM, Variant.PQ}) {
+            BrdfSettings settings = BrdfSettings.thesis(variant);
+            ShaderProgram map = DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP, false, false);
+            String fragment = map.fragmentShader().source().text();
+            assertTrue(fragment.startsWith("#version 330 core"), fragment.substring(0, 40));
+            assertTrue(fragment.contains("#define TAYLOR_HIGHEST_ORDER 30"));
+            assertTrue(fragment.contains("#define WINDOW_RADIUS 1"));
+            assertTrue(fragment.contains("#define BRDF_MAP 1"));
+            assertTrue(fragment.contains("float gainTimesShadowing("), "shared include expanded");
+            assertEquals(variant == Variant.PQ, fragment.contains("normalisedDirichlet"), variant.toString());
+            assertEquals(variant == Variant.NMM, fragment.contains("nmmSpectralXyz"), variant.toString());
+            assertEquals(1, count(fragment, "float taylorCoefficients") + count(fragment, "void taylorCoefficients"),
+                    "the shared code appears once");
+            ShaderProgram surface = DiffractionShaders.program(settings, DiffractionShaders.Target.SURFACE, false, true);
+            assertTrue(surface.fragmentShader().source().text().contains("#define PIGMENTATION 1"));
+            assertTrue(surface.vertexShader().source().text().contains("lightDirection[8]"));
+            ShaderProgram mono = DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP, true, false);
+            assertTrue(mono.fragmentShader().source().text().contains("#define MONOCHROMATIC 1"));
+        }
+    }
+
+    @Test
+    void theReferenceIsRefusedWithOneLine() {
+        UserInputException e = assertThrows(UserInputException.class,
+                () -> DiffractionShaders.fragmentPath(Variant.REFERENCE));
+        assertFalse(e.getMessage().contains("\n"));
+        assertTrue(e.getMessage().contains("CPU only"), e.getMessage());
+    }
+
+    @Test
+    void switchesBelongToTheirTarget() {
+        BrdfSettings s = BrdfSettings.thesis(Variant.FLSS);
+        assertThrows(IllegalArgumentException.class,
+                () -> DiffractionShaders.defines(s, DiffractionShaders.Target.SURFACE, true, false));
+        assertThrows(IllegalArgumentException.class,
+                () -> DiffractionShaders.defines(s, DiffractionShaders.Target.BRDF_MAP, false, true));
+        Map<String, String> d = DiffractionShaders.defines(s.withHighestOrder(12).withWindowRadius(2),
+                DiffractionShaders.Target.BRDF_MAP, false, false);
+        assertEquals("12", d.get("TAYLOR_HIGHEST_ORDER"));
+        assertEquals("2", d.get("WINDOW_RADIUS"));
+        assertEquals("1024", d.get("NMM_MAX_NODES"));
+    }
+
+    /** GLSL's mat3(a, b, c, ...) fills column 0 first: the constructor must list Srgb's matrix column by column. */
+    @Test
+    void xyzToSrgbMatrixIsWrittenColumnMajor() {
+        double[][] m = Srgb.xyzToLinearMatrix();
+        String glsl = DiffractionShaders.glslMat3(m);
+        String[] entries = glsl.substring(5, glsl.length() - 1).split(", ");
+        assertEquals(9, entries.length);
+        for (int col = 0; col < 3; col++) {
+            for (int row = 0; row < 3; row++) {
+                assertEquals((float) m[row][col], Float.parseFloat(entries[3 * col + row]), 0.0,
+                        "entry (" + row + ", " + col + ")");
+            }
+        }
+    }
+
+    private static int count(String text, String needle) {
+        int n = 0;
+        for (int i = text.indexOf(needle); i >= 0; i = text.indexOf(needle, i + 1)) {
+            n++;
+        }
+        return n;
+    }
+}

@@ -1,0 +1,133 @@
+package diffract.render;
+
+import diffract.app.AutoExposure;
+import diffract.colour.ColourPath;
+import diffract.colour.Xyz;
+import diffract.jrtr.FloatTextureArray;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.Variant;
+import diffract.util.ImageFiles;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.stream.Stream;
+
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+/**
+ * Screenshot regression: GPU BRDF maps (256 x 256, theta_i = 30 degrees, settings of {@link RenderTestSupport})
+ * of the blazed grating and the Elaphe-like patch for each variant, displayed as the CLI displays them (auto
+ * exposure from the map itself, {@link ColourPath#SRGB}, 8-bit PNG), against the PNGs in {@code tests/goldens/}.
+ *
+ * <p>Tolerance: a pixel matches when no channel differs by more than {@value #CHANNEL_TOLERANCE} of 255, and at most
+ * {@value #PIXEL_BUDGET_PERCENT} % of the pixels may fail. On one machine llvmpipe is deterministic (measured: 0
+ * differing pixels over repeated runs). Another Mesa or LLVM version may evaluate sin, exp and pow a few ulps
+ * differently and reassociate sums: a relative change near 1e-6, which moves an 8-bit value by at most one step
+ * where it lies on a rounding boundary (hence 2 steps of tolerance); a lookup that lands on a half-texel tie
+ * (floor(s + 0.5)) or a pixel at the edge of a sharp order can change more, and those few pixels are what the
+ * budget (0.5 %, 327 pixels) absorbs. A real regression (a sign, a wrong texel, a missing term) changes whole orders:
+ * thousands of pixels by tens of steps.
+ *
+ * <p>On failure the rendered picture and an amplified difference (|a - b| x 16) go to {@code target/golden-diffs/}.
+ * Regenerate the goldens after an intended change with
+ * {@code xvfb-run -a mvn test -Dtest=GoldenImageTest -Ddiffract.updateGoldens=true}.
+ */
+@Tag("gl")
+class GoldenImageTest {
+    static final int SIZE = 256;
+    static final int CHANNEL_TOLERANCE = 2;
+    static final double PIXEL_BUDGET_PERCENT = 0.5;
+    static final Path GOLDENS = Path.of("tests", "goldens");
+    static final Path DIFFS = Path.of("target", "golden-diffs");
+
+    static Stream<Arguments> scenes() {
+        Stream.Builder<Arguments> scenes = Stream.builder();
+        for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
+            for (Variant variant : new Variant[] {Variant.FLSS, Variant.NMM, Variant.PQ}) {
+                scenes.add(Arguments.of(RenderTestSupport.name(patch) + "-" + variant.cliName() + "-30", patch, variant));
+            }
+        }
+        return scenes.build();
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    void gpuBrdfMapMatchesItsGolden(String name, HeightField patch, Variant variant) throws IOException {
+        RenderTestSupport.assumeDisplay();
+        Direction wi = RenderTestSupport.light(patch, 30);
+        float[] xyz;
+        try (GpuBrdfMap gpu = new GpuBrdfMap(RenderTestSupport.terms(patch), RenderTestSupport.settings(variant),
+                FloatTextureArray.Precision.FLOAT32)) {
+            xyz = gpu.xyz(wi, SIZE);
+        }
+        Path actualPng = DIFFS.resolve(name + "-actual.png");
+        Files.createDirectories(DIFFS);
+        ImageFiles.writePng(actualPng, display(xyz, wi), SIZE, SIZE, 3);
+        Path golden = GOLDENS.resolve(name + ".png");
+        if (Boolean.getBoolean("diffract.updateGoldens")) {
+            Files.createDirectories(GOLDENS);
+            Files.copy(actualPng, golden, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+            System.out.println("golden updated: " + golden);
+            return;
+        }
+        if (!Files.isRegularFile(golden)) {
+            fail("no golden " + golden + "; create it with -Ddiffract.updateGoldens=true");
+        }
+        BufferedImage expected = ImageIO.read(golden.toFile());
+        BufferedImage actual = ImageIO.read(actualPng.toFile());
+        BufferedImage diff = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
+        int failing = 0;
+        int worst = 0;
+        for (int y = 0; y < SIZE; y++) {
+            for (int x = 0; x < SIZE; x++) {
+                int a = expected.getRGB(x, y);
+                int b = actual.getRGB(x, y);
+                int pixelWorst = 0;
+                int amplified = 0;
+                for (int shift = 0; shift <= 16; shift += 8) {
+                    int d = Math.abs(((a >> shift) & 0xff) - ((b >> shift) & 0xff));
+                    pixelWorst = Math.max(pixelWorst, d);
+                    amplified |= Math.min(255, 16 * d) << shift;
+                }
+                diff.setRGB(x, y, amplified);
+                worst = Math.max(worst, pixelWorst);
+                failing += pixelWorst > CHANNEL_TOLERANCE ? 1 : 0;
+            }
+        }
+        double percent = 100.0 * failing / (SIZE * SIZE);
+        String summary = String.format(Locale.ROOT, "%s: %d pixels (%.3f %%) differ by more than %d/255, largest "
+                + "difference %d/255", name, failing, percent, CHANNEL_TOLERANCE, worst);
+        System.out.println("golden " + summary);
+        if (percent > PIXEL_BUDGET_PERCENT) {
+            Path diffPng = DIFFS.resolve(name + "-diff.png");
+            ImageIO.write(diff, "png", diffPng.toFile());
+            fail(summary + " (budget " + PIXEL_BUDGET_PERCENT + " %); see " + actualPng + " and " + diffPng);
+        }
+        assertTrue(expected.getWidth() == SIZE && expected.getHeight() == SIZE, "golden size");
+    }
+
+    /** As the CLI: auto exposure (brightest diffracted pixel to Y = 1), then ColourPath.SRGB. */
+    static float[] display(float[] xyz, Direction wi) {
+        float[] luminance = new float[SIZE * SIZE];
+        for (int p = 0; p < luminance.length; p++) {
+            luminance[p] = xyz[3 * p + 1];
+        }
+        double exposure = AutoExposure.of(luminance, SIZE, -wi.x(), -wi.y());
+        float[] rgb = new float[xyz.length];
+        for (int p = 0; p < xyz.length; p += 3) {
+            float[] c = ColourPath.SRGB.displayRgb(new Xyz(xyz[p], xyz[p + 1], xyz[p + 2]).scaled(exposure));
+            System.arraycopy(c, 0, rgb, p, 3);
+        }
+        return rgb;
+    }
+}

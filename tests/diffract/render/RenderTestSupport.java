@@ -1,0 +1,75 @@
+package diffract.render;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.precompute.TaylorTermComputer;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Assumptions;
+
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+/** Patches, settings and the display assumption shared by the GPU tests. */
+final class RenderTestSupport {
+    /**
+     * A blazed grating of period 2.5 um, 0.13 um high (no blaze extinction in 380-780 nm, as GratingEquationTest),
+     * 4 periods of 20 pixels across, 16 rows: 80 x 16 pixels of 0.125 um, a 10 x 2 um patch.
+     */
+    static final HeightField BLAZED = SyntheticPatches.blazed(2.5, 0.13, 20, 4, 16).meanSubtracted();
+    /** The procedural Elaphe-like patch: 128 x 128 pixels of 0.0715 um, ridges along x, period 1.144 um along y. */
+    static final HeightField ELAPHE_LIKE = SyntheticPatches.elapheLike().meanSubtracted();
+
+    private static final Map<HeightField, TaylorTerms> TERMS = new ConcurrentHashMap<>();
+
+    private RenderTestSupport() {
+    }
+
+    /** GL tests are skipped, not failed, where no X display exists. */
+    static void assumeDisplay() {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
+                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+    }
+
+    /** Terms 0..30 of a patch, computed once per test run. */
+    static TaylorTerms terms(HeightField patch) {
+        return TERMS.computeIfAbsent(patch, p -> TaylorTermComputer.compute(p, 30, Reporter.SILENT));
+    }
+
+    /**
+     * The thesis' configuration (30 terms, 3 x 3 window, 5 nm over 380-780 nm, n = 1.5) except two choices that
+     * make the pictures worth comparing on small maps: a coherence length 4 sigma_s of 10 um instead of 65 um
+     * (the orders of a 10 um patch are then a few map pixels wide instead of far below one, so many pixels are
+     * lit), and 3 PQ replicas per axis (the automatic count, round(10 um / extent), would be 1 for the
+     * 10 um patches and switch the replication factor off).
+     */
+    static BrdfSettings settings(Variant variant) {
+        return new BrdfSettings(variant, 30, 1, 380, 780, 5, 2.5, 1.5, 3);
+    }
+
+    /** Light in the plane of the period: along x for the grating, along y for the Elaphe-like ridges. */
+    static Direction light(HeightField patch, double thetaIDeg) {
+        return Direction.fromSphericalDeg(thetaIDeg, patch == ELAPHE_LIKE ? 90 : 0);
+    }
+
+    /**
+     * Both maps through the exposure {@link diffract.app.AutoExposure} picks for the first (the CPU's): its
+     * brightest diffracted pixel maps to Y = 1, so the orders, not the specular peak, fill the display range.
+     */
+    static diffract.app.BrdfMapDifference difference(float[] cpuXyz, float[] gpuXyz, int size, Direction wi) {
+        float[] luminance = new float[size * size];
+        for (int p = 0; p < luminance.length; p++) {
+            luminance[p] = cpuXyz[3 * p + 1];
+        }
+        double exposure = diffract.app.AutoExposure.of(luminance, size, -wi.x(), -wi.y());
+        return diffract.app.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
+    }
+
+    static String name(HeightField patch) {
+        return patch == ELAPHE_LIKE ? "elaphe-like" : "blazed";
+    }
+}
