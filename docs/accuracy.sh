@@ -9,7 +9,7 @@ mkdir -p "$out"
 patches=("blazed|--patch $out/blazed.gsf|0|15")
 ELAPHE=../shared/data/patches/elaphe-100px.png
 [ -f "$ELAPHE" ] && patches+=("elaphe|--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686|90|25")
-echo "| patch | theta_i | variant | seconds | CIEDE2000 to reference (exposure) |"
+echo "| patch | theta_i | variant | seconds | CIEDE2000 to reference: unit disk; lit pixels (exposure) |"
 echo "|---|---|---|---|---|"
 for entry in "${patches[@]}"; do
     IFS='|' read -r name args phi exposure <<<"$entry"
@@ -24,7 +24,7 @@ for entry in "${patches[@]}"; do
                 printf '| %s | %s | %s | %.1f | - |\n' "$name" "$theta" "$variant" "$seconds"
             else
                 result=$(./diffract compare "$out/$name-$theta-$variant.pfm" "$out/$name-$theta-reference.pfm" --exposure "$exposure")
-                printf '| %s | %s | %s | %.1f | %s (x%s) |\n' "$name" "$theta" "$variant" "$seconds" "${result#CIEDE2000 over }" "$exposure"
+                printf '| %s | %s | %s | %.1f | %s |\n' "$name" "$theta" "$variant" "$seconds" "${result#CIEDE2000 }"
             fi
         done
     done
