@@ -8,6 +8,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
+import diffract.optics.Float32Cancellation;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
@@ -155,6 +156,9 @@ final class BrdfMapCommand implements Callable<Integer> {
                 requireTermsMatchPatch(terms, field);
             }
         }
+        if (gpu) {
+            warnAboutFloat32Cancellation(terms, lambdaNm != null ? lambdaNm : lambdaMinNm, reporter);
+        }
         DiffractionBrdf brdf = gpu ? null : DiffractionBrdf.create(settings, field, terms);
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
         CoherenceWindow window = settings.coherenceWindow();
@@ -221,6 +225,24 @@ final class BrdfMapCommand implements Callable<Integer> {
                 lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
     }
+
+    /**
+     * The GPU sums the Taylor series in float32: tall structures (large k |w| max|h|) turn it into rounding noise
+     * that looks plausible. Say so, with the patch's own error estimate, rather than render noise silently.
+     */
+    private static void warnAboutFloat32Cancellation(TaylorTerms terms, double shortestLambdaNm, Reporter reporter) {
+        double a = 2 * 2 * Math.PI / (shortestLambdaNm * 1e-3); // k |w| with |w| = 2, the largest phase factor
+        double error = Float32Cancellation.expectedAbsoluteError(terms, a);
+        if (error > FLOAT32_TOLERANCE_IN_P) {
+            reporter.warn(String.format(Locale.ROOT, "the float32 Taylor sum on the GPU may err by up to %.2g in P "
+                    + "(|P| <= 1) at %.0f nm (x = k|w|max|h| = %.1f): dim orders will be rounding noise; "
+                    + "use --engine cpu, a longer --lambda-min, or a lower patch", error, shortestLambdaNm,
+                    a * terms.maxAbsHeightUm()));
+        }
+    }
+
+    /** Errors in P below this stay below one 8-bit display step at the exposures BRDF maps are shown with. */
+    static final double FLOAT32_TOLERANCE_IN_P = 1e-3;
 
     /** Terms from another patch would render a different surface than the one named: refuse them. */
     private void requireTermsMatchPatch(TaylorTerms terms, HeightField field) {
