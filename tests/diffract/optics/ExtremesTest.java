@@ -75,6 +75,29 @@ class ExtremesTest {
     }
 
     @Test
+    void a4096By4096PatchPrecomputesAndEvaluates() {
+        int size = 4096;
+        double[] h = new double[size * size];
+        for (int r = 0; r < size; r++) {
+            for (int c = 0; c < size; c++) {
+                h[r * size + c] = 0.1 * Math.sin(2 * Math.PI * c / 16.0) + 0.05 * Math.cos(2 * Math.PI * r / 64.0);
+            }
+        }
+        HeightField patch = HeightField.of(size, size, h, 0.05).meanSubtracted();
+        TaylorTerms terms = TaylorTermComputer.compute(patch, 1, Reporter.SILENT);
+        assertEquals(1.0, terms.re(0, size / 2, size / 2), 1e-6, "DC of term 0");
+        DiffractionBrdf brdf = DiffractionBrdf.create(BrdfSettings.thesis(Variant.FLSS).withHighestOrder(1), patch, terms);
+        for (Direction wi : directions()) {
+            assertSane(brdf.relative(wi, wi.specular(), 550), "4096^2 specular " + wi);
+            assertSane(brdf.xyz(wi, Direction.fromSphericalDeg(45, 90)).y(), "4096^2 " + wi);
+        }
+        // the first order of the 16-pixel (0.8 um) ripple at normal incidence: x = lambda / d
+        Direction normal = new Direction(0, 0, 1);
+        double order = brdf.relative(normal, Direction.fromProjected(-0.55 / 0.8, 0), 550);
+        assertTrue(order > 1e-3, "first order of the ripple: " + order);
+    }
+
+    @Test
     void zeroTaylorTermsIsTheFlatMirror() {
         // N = 0 keeps only DFT_0 = delta at zero frequency: every patch looks like a mirror
         HeightField patch = NaiveDft.randomPatch(8, 8, 0.3, 0.1, 5);
