@@ -37,8 +37,13 @@ final class ViewCommand implements Callable<Integer> {
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
     Path screenshotDir;
 
+    @Option(names = "--screenshot-after-frames", hidden = true, paramLabel = "N",
+            description = "Save one screenshot of the window (as the S key does) once N frames are drawn, then quit "
+                    + "(docs/viewer-screenshot.sh).")
+    Integer screenshotAfterFrames;
+
     @Override
-    public Integer call() throws InterruptedException {
+    public Integer call() throws Exception {
         options.validate();
         int[] widthHeight = ViewerOptions.parseSize(size);
         Optional<String> problem = noDisplayProblem(System.getenv(), System.getProperty("os.name", ""));
@@ -51,6 +56,13 @@ final class ViewCommand implements Callable<Integer> {
         System.out.print(KeyBindings.helpText());
         try (ViewerWindow window = new ViewerWindow(model, widthHeight[0], widthHeight[1], screenshotDir)) {
             window.start();
+            if (screenshotAfterFrames != null) {
+                while (window.renderer().stats().frameCount() < screenshotAfterFrames) {
+                    Thread.sleep(50);
+                }
+                window.controller().screenshot().get();
+                return 0;
+            }
             window.awaitCloseRequest();
         }
         return 0;

@@ -34,6 +34,8 @@ public final class ViewerRenderer extends Renderer {
     private final Group surfaceScene;
     private final ShapeNode mapQuad;
     private final Group mapScene;
+    private volatile boolean drawingStopped;
+    private volatile boolean inFrame;
     private int widthPx;
     private int heightPx;
 
@@ -65,8 +67,32 @@ public final class ViewerRenderer extends Renderer {
         super.reshape(drawable, x, y, width, height);
     }
 
+    /**
+     * Makes later frames return at once and waits (up to {@code timeoutMs}) for the frame under way: JOGL's animator
+     * gives a frame 1 s to finish when stopped, and a diffraction frame on llvmpipe may take longer.
+     */
+    public void stopDrawing(long timeoutMs) throws InterruptedException {
+        drawingStopped = true;
+        long end = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (inFrame && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+    }
+
     @Override
     public void display(GLAutoDrawable drawable) {
+        if (drawingStopped) {
+            return;
+        }
+        inFrame = true;
+        try {
+            drawFrame(drawable);
+        } finally {
+            inFrame = false;
+        }
+    }
+
+    private void drawFrame(GLAutoDrawable drawable) {
         long start = System.nanoTime();
         ViewerState state = model.state();
         Material material = materials.materialFor(state, context());

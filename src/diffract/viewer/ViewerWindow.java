@@ -123,6 +123,11 @@ public final class ViewerWindow implements AutoCloseable {
         titleUpdater.shutdownNow();
         controller.close();
         precomputer.close();
+        try {
+            renderer.stopDrawing(30_000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
         window.close();
     }
 }
