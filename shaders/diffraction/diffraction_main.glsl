@@ -36,14 +36,18 @@ out vec4 fragColor;
 // ---- BRDF maps (BrdfMap): linear XYZ, or the monochromatic relative BRDF in .r, into an RGBA32F target.
 uniform vec3 omegaI;      // towards the light, unit, tangent frame
 uniform float mapSizePx;  // S
+uniform vec2 mapOriginPx; // lower-left corner of the map in the viewport (0 unless a window centres it)
 #ifdef MONOCHROMATIC
 uniform float lambdaNm;
+#endif
+#ifdef DISPLAY_SRGB
+uniform float exposure;   // a window shows display sRGB of exposure x XYZ instead of storing linear XYZ
 #endif
 
 void main() {
     // Pixel (i, j), j counted from the top, has its centre at gl_FragCoord = (i + 0.5, S - j - 0.5), so
     // BrdfMap's x = 2 (i + 0.5) / S - 1 and y = 1 - 2 (j + 0.5) / S become 2 gl_FragCoord / S - 1.
-    vec2 xy = 2.0 * gl_FragCoord.xy / mapSizePx - 1.0;
+    vec2 xy = 2.0 * (gl_FragCoord.xy - mapOriginPx) / mapSizePx - 1.0;
     float zz = 1.0 - xy.x * xy.x - xy.y * xy.y;
     if (!(zz > 0.0)) {
         fragColor = vec4(0.0); // outside the unit disk (x^2 + y^2 >= 1): black, as BrdfMap
@@ -52,6 +56,8 @@ void main() {
     vec3 wr = vec3(xy, sqrt(zz)); // Direction.fromProjected
 #ifdef MONOCHROMATIC
     fragColor = vec4(relativeBrdf(omegaI, wr, lambdaNm), 0.0, 0.0, 1.0);
+#elif defined(DISPLAY_SRGB)
+    fragColor = vec4(srgbEncode(max(linearSrgbFromXyz(exposure * diffractionXyz(omegaI, wr)), vec3(0.0))), 1.0);
 #else
     fragColor = vec4(diffractionXyz(omegaI, wr), 1.0);
 #endif

@@ -164,6 +164,17 @@ public final class GLRenderContext implements RenderContext {
         meshes.computeIfAbsent(shape, s -> GLMesh.upload(gl, s.vertexData()));
     }
 
+    /**
+     * Frees a program or texture this context uploaded and forgets it, for callers that replace materials while
+     * the context lives (an interactive viewer switching shaders): without this the context would keep every
+     * replaced resource, and its CPU data, until {@link #dispose()}.
+     */
+    public void release(GpuResource resource) {
+        requireAlive();
+        resource.dispose(gl);
+        resources.remove(resource);
+    }
+
     /** Number of shapes whose geometry is on the GPU: each shape is uploaded once however often it is drawn. */
     public int uploadedShapeCount() {
         return meshes.size();

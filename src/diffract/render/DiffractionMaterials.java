@@ -27,6 +27,16 @@ public final class DiffractionMaterials {
     }
 
     /**
+     * A BRDF-map material that outputs display sRGB of {@code exposure} x XYZ, for windows (8-bit framebuffers).
+     * Set {@code omegaI} with {@link #setLight}, {@code mapSizePx}, and {@code mapOriginPx} (the map's lower-left
+     * corner in the viewport, to centre it) before drawing.
+     */
+    public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
+        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings));
+        return common(m, textures, settings).setFloat("exposure", exposure);
+    }
+
+    /**
      * A mesh material (003 Algorithms 2-4): display sRGB of exposure x XYZ, blended with {@code pigmentation}
      * (display-encoded sRGB, or null for pure structural colour) with diffuse weight w_d.
      */

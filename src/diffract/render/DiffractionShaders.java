@@ -86,6 +86,16 @@ public final class DiffractionShaders {
     }
 
     /**
+     * The BRDF-map program for a window: display sRGB of {@code exposure} x XYZ (define {@code DISPLAY_SRGB})
+     * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
+     */
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings) {
+        Map<String, String> defines = defines(settings, Target.BRDF_MAP, false, false);
+        defines.put("DISPLAY_SRGB", "1");
+        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
+    }
+
+    /**
      * A GLSL {@code mat3(...)} constructor of a row-major matrix. GLSL fills constructors column by column, so
      * the entries are written column-major; 9 significant digits keep the float32 value exact.
      */

@@ -1,0 +1,54 @@
+package diffract.app;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.OffscreenTarget;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import diffract.viewer.ViewerModel;
+import diffract.viewer.ViewerRenderer;
+import diffract.viewer.ViewerSetup;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+/** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
+@Command(name = "render", mixinStandardHelpOptions = true,
+        description = {"Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and",
+                "shaders as 'diffract view', without a window (runs under xvfb-run; the launcher starts one)."})
+final class RenderCommand implements Callable<Integer> {
+    @Mixin
+    ViewerOptions options;
+
+    @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default ${DEFAULT-VALUE}).")
+    String size;
+
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png", description = "PNG to write.")
+    Path output;
+
+    @Override
+    public Integer call() throws IOException {
+        options.validate();
+        int[] widthHeight = ViewerOptions.parseSize(size);
+        if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+            throw new UserInputException("render writes PNG files; name the output OUT.png");
+        }
+        DisplayCheck.requireDisplay();
+        long start = System.nanoTime();
+        Reporter reporter = Reporter.STDERR;
+        ViewerSetup setup = options.setup(reporter);
+        ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
+            target.writePng(output, widthHeight[0], widthHeight[1]);
+        }
+        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
+                widthHeight[0], widthHeight[1], setup.mode() == diffract.viewer.DisplayMode.BRDF_MAP ? "BRDF map"
+                        : setup.shape().name(), setup.settings().variant().cliName(), setup.settings().highestOrder(),
+                setup.settings().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
+        return 0;
+    }
+}

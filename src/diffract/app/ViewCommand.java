@@ -1,0 +1,82 @@
+package diffract.app;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import diffract.viewer.KeyBindings;
+import diffract.viewer.ViewerModel;
+import diffract.viewer.ViewerSetup;
+import diffract.viewer.ViewerWindow;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+
+/** {@code diffract view}: the interactive viewer (issue #4). */
+@Command(name = "view", mixinStandardHelpOptions = true,
+        description = {"Open the interactive viewer: a shape covered with the patch's structural colour, lit by a",
+                "distant light, seen from a camera you orbit with the mouse. Press H in the window for the keys.",
+                "Without a display, use 'diffract render' with the same options."})
+final class ViewCommand implements Callable<Integer> {
+    /** Set by the launcher when it runs a command under its own private Xvfb, which nobody can see. */
+    static final String PRIVATE_XVFB_VARIABLE = "DIFFRACT_PRIVATE_XVFB";
+    static final String NO_DISPLAY_MESSAGE =
+            "no display: the viewer needs a screen; use ./diffract render [the same options] -o OUT.png";
+
+    @Mixin
+    ViewerOptions options;
+
+    @Option(names = "--size", defaultValue = "800x600", paramLabel = "WxH", description = "Window size (default ${DEFAULT-VALUE}).")
+    String size;
+
+    @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
+            description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
+    Path screenshotDir;
+
+    @Option(names = "--screenshot-after-frames", hidden = true, paramLabel = "N",
+            description = "Save one screenshot of the window (as the S key does) once N frames are drawn, then quit "
+                    + "(docs/viewer-screenshot.sh).")
+    Integer screenshotAfterFrames;
+
+    @Override
+    public Integer call() throws Exception {
+        options.validate();
+        int[] widthHeight = ViewerOptions.parseSize(size);
+        Optional<String> problem = noDisplayProblem(System.getenv(), System.getProperty("os.name", ""));
+        if (problem.isPresent()) {
+            throw new UserInputException(problem.get());
+        }
+        Reporter reporter = Reporter.STDERR;
+        ViewerSetup setup = options.setup(reporter);
+        ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        System.out.print(KeyBindings.helpText());
+        try (ViewerWindow window = new ViewerWindow(model, widthHeight[0], widthHeight[1], screenshotDir)) {
+            window.start();
+            if (screenshotAfterFrames != null) {
+                while (window.renderer().stats().frameCount() < screenshotAfterFrames) {
+                    Thread.sleep(50);
+                }
+                window.controller().screenshot().get();
+                return 0;
+            }
+            window.awaitCloseRequest();
+        }
+        return 0;
+    }
+
+    /**
+     * Why the viewer cannot open a window here: no X display at all, or only the launcher's private Xvfb (an
+     * invisible screen: a window there helps nobody, a picture from {@code render} does).
+     */
+    static Optional<String> noDisplayProblem(Map<String, String> environment, String osName) {
+        if ("1".equals(environment.get(PRIVATE_XVFB_VARIABLE))
+                || DisplayCheck.problem(environment, osName).isPresent()) {
+            return Optional.of(NO_DISPLAY_MESSAGE);
+        }
+        return Optional.empty();
+    }
+}

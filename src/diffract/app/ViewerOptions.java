@@ -1,0 +1,238 @@
+package diffract.app;
+
+import diffract.jrtr.Shape;
+import diffract.optics.BrdfSettings;
+import diffract.optics.GainFactor;
+import diffract.optics.HeightField;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.Variant;
+import diffract.optics.io.HeightFieldReader;
+import diffract.optics.io.SamplingCheck;
+import diffract.precompute.Precomputation;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import diffract.viewer.DisplayMode;
+import diffract.viewer.LightDirection;
+import diffract.viewer.OrbitCamera;
+import diffract.viewer.TermSource;
+import diffract.viewer.ViewerSetup;
+import diffract.viewer.ViewerShapes;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * What {@code view} and {@code render} show, as options: they fill a {@link ViewerSetup}. The positional SCENE is
+ * where a scene file will fill the same setup (the options then override what they name); until scene files exist
+ * it is refused with one line.
+ */
+final class ViewerOptions {
+    static final String SCENES_NOT_SUPPORTED = "scene files are not supported yet: describe the view with options "
+            + "(--patch FILE or --synthetic elaphe-like|blazed, --shape, --variant, ...; see --help)";
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE",
+            description = "A scene file (reserved: scene files are not supported yet; use the options below).")
+    Path scene;
+
+    @Option(names = "--patch", paramLabel = "FILE",
+            description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix or Gwyddion .gsf.")
+    Path patch;
+
+    @Option(names = "--max-height", paramLabel = "UM", description = "Height of the brightest grey value (images).")
+    Double maxHeightUm;
+
+    @Option(names = "--pixel-size", paramLabel = "UM", description = "Pixel size dH in micrometres (images and text).")
+    Double pixelSizeUm;
+
+    @Option(names = "--synthetic", paramLabel = "KIND",
+            description = "A patch made by code instead of --patch: elaphe-like (default) or blazed (d = 2.5 um, 65 um wide).")
+    String synthetic;
+
+    @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S",
+            description = "sphere, plane or cylinder (default ${DEFAULT-VALUE}).")
+    String shape;
+
+    @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z",
+            description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
+    String tangent;
+
+    @Option(names = "--pigmentation", paramLabel = "IMAGE",
+            description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
+    Path pigmentation;
+
+    @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
+            description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
+    double diffuseWeight;
+
+    @Option(names = "--variant", defaultValue = "flss", paramLabel = "V", description = "flss, nmm or pq (default ${DEFAULT-VALUE}).")
+    String variant;
+
+    @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N (default ${DEFAULT-VALUE}).")
+    int highestOrder;
+
+    @Option(names = "--lambda-step", defaultValue = "5", paramLabel = "NM", description = "Wavelength step (default ${DEFAULT-VALUE}).")
+    double lambdaStepNm;
+
+    @Option(names = "--window-radius", defaultValue = "1", paramLabel = "R", description = "Window of (2R+1)^2 texels (default ${DEFAULT-VALUE}).")
+    int windowRadius;
+
+    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM", description = "4 sigma_s (default ${DEFAULT-VALUE}).")
+    double coherenceLengthUm;
+
+    @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
+    double thetaIDeg;
+
+    @Option(names = "--phi-i", paramLabel = "DEG",
+            description = "Light azimuth from the world x axis (default: 90 for elaphe-like, whose period runs along y; else 0).")
+    Double phiIDeg;
+
+    @Option(names = "--exposure", defaultValue = "10", paramLabel = "E", description = "Multiplies linear XYZ before display (default ${DEFAULT-VALUE}).")
+    double exposure;
+
+    @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
+    boolean brdfMap;
+
+    @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
+    double azimuthDeg;
+
+    @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}).")
+    double elevationDeg;
+
+    @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
+    double distance;
+
+    /** Everything checked that needs no file and no GL: bad usage fails before any work. */
+    void validate() {
+        if (scene != null) {
+            throw new UserInputException(SCENES_NOT_SUPPORTED);
+        }
+        if (patch != null && synthetic != null) {
+            throw new UserInputException("give --patch FILE or --synthetic KIND, not both");
+        }
+        if (synthetic != null) {
+            syntheticPatch(synthetic); // names a known kind
+        }
+        ViewerShapes.Kind.parse(shape);
+        parseTangent(tangent);
+        settings();
+        if (!(distance >= OrbitCamera.MIN_DISTANCE && distance <= OrbitCamera.MAX_DISTANCE)) {
+            throw new UserInputException("--distance must be in [" + OrbitCamera.MIN_DISTANCE + ", "
+                    + OrbitCamera.MAX_DISTANCE + "], got " + distance);
+        }
+        if (!(thetaIDeg >= 0 && thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
+            throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG + "] degrees, got "
+                    + thetaIDeg);
+        }
+        if (!Double.isFinite(azimuthDeg) || !Double.isFinite(elevationDeg) || (phiIDeg != null && !Double.isFinite(phiIDeg))) {
+            throw new UserInputException("angles must be finite numbers");
+        }
+    }
+
+    BrdfSettings settings() {
+        if (highestOrder < 0 || highestOrder > diffract.viewer.ViewerController.MAX_HIGHEST_ORDER) {
+            throw new UserInputException("--terms must be between 0 and "
+                    + diffract.viewer.ViewerController.MAX_HIGHEST_ORDER + ", got " + highestOrder);
+        }
+        if (!(coherenceLengthUm > 0)) {
+            throw new UserInputException("--coherence-length must be > 0 um, got " + coherenceLengthUm);
+        }
+        Variant v = Variant.parse(variant);
+        if (v == Variant.REFERENCE) {
+            throw new UserInputException("the viewer draws on the GPU: use --variant flss, nmm or pq "
+                    + "(the reference runs on the CPU: ./diffract brdfmap)");
+        }
+        return new BrdfSettings(v, highestOrder, windowRadius, BrdfSettings.LAMBDA_MIN_NM, BrdfSettings.LAMBDA_MAX_NM,
+                lambdaStepNm, coherenceLengthUm / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX, 0);
+    }
+
+    /** Reads the patch and the pigmentation image and builds the setup (validate() first). */
+    ViewerSetup setup(Reporter reporter) {
+        HeightField field;
+        String name;
+        if (patch != null) {
+            field = HeightFieldReader.load(patch, maxHeightUm, pixelSizeUm, reporter);
+            name = patch.getFileName().toString();
+        } else {
+            name = synthetic == null ? "elaphe-like" : synthetic.toLowerCase(Locale.ROOT);
+            field = syntheticPatch(name);
+        }
+        field = field.meanSubtracted();
+        BrdfSettings settings = settings();
+        SamplingCheck.warnAboutAliasing(field, settings.lambdaMinNm(), settings.lambdaMaxNm(), reporter);
+        Shape mesh = ViewerShapes.Kind.parse(shape).build(parseTangent(tangent));
+        BufferedImage pigment = pigmentation == null ? null : readImage(pigmentation);
+        double phi = phiIDeg != null ? phiIDeg : name.equals("elaphe-like") ? 90 : 0;
+        return new ViewerSetup(field, name, mesh, pigment, diffuseWeight, settings,
+                new OrbitCamera(azimuthDeg, elevationDeg, distance, 0, 0, 0), new LightDirection(thetaIDeg, phi),
+                exposure, brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, pigment != null);
+    }
+
+    /** Terms from the user cache (computed and stored on first use), keyed by patch content and N. */
+    TermSource termSource(ViewerSetup setup) {
+        return (n, reporter) -> Precomputation.cached(new Precomputation.Request(setup.patch(), setup.patchName(),
+                maxHeightUm, n, null, setup.settings().lambdaMinNm()), reporter);
+    }
+
+    static HeightField syntheticPatch(String kind) {
+        switch (kind.toLowerCase(Locale.ROOT)) {
+            case "elaphe-like":
+                return SyntheticPatches.elapheLike();
+            case "blazed":
+                return SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16);
+            default:
+                throw new UserInputException("unknown --synthetic '" + kind + "': use elaphe-like or blazed");
+        }
+    }
+
+    static double[] parseTangent(String text) {
+        String[] parts = text.split(",");
+        if (parts.length == 3) {
+            try {
+                double[] v = {Double.parseDouble(parts[0].trim()), Double.parseDouble(parts[1].trim()),
+                    Double.parseDouble(parts[2].trim())};
+                if (Double.isFinite(v[0] + v[1] + v[2]) && v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 1e-12) {
+                    return v;
+                }
+            } catch (NumberFormatException ignored) {
+                // falls through to the message below
+            }
+        }
+        throw new UserInputException("--tangent must be a non-zero vector X,Y,Z, got '" + text + "'");
+    }
+
+    /** WxH or S (square); 16..4096 pixels per side. */
+    static int[] parseSize(String text) {
+        String[] parts = text.toLowerCase(Locale.ROOT).split("x");
+        try {
+            int w = Integer.parseInt(parts[0].trim());
+            int h = parts.length == 1 ? w : Integer.parseInt(parts[1].trim());
+            if (parts.length <= 2 && w >= 16 && h >= 16 && w <= 4096 && h <= 4096) {
+                return new int[] {w, h};
+            }
+        } catch (NumberFormatException ignored) {
+            // falls through to the message below
+        }
+        throw new UserInputException("--size must be WxH (or S) with 16..4096 pixels per side, got '" + text + "'");
+    }
+
+    private static BufferedImage readImage(Path file) {
+        if (!Files.isRegularFile(file)) {
+            throw new UserInputException("pigmentation image " + file + " not found");
+        }
+        try {
+            BufferedImage image = ImageIO.read(file.toFile());
+            if (image == null) {
+                throw new UserInputException(file + " is not an image Java can read (use PNG, JPEG or BMP)");
+            }
+            return image;
+        } catch (IOException e) {
+            throw new UserInputException("cannot read pigmentation image " + file + ": " + e.getMessage(), e);
+        }
+    }
+}

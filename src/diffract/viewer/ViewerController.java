@@ -1,0 +1,241 @@
+package diffract.viewer;
+
+import com.jogamp.newt.event.KeyAdapter;
+import com.jogamp.newt.event.KeyEvent;
+import com.jogamp.newt.event.MouseAdapter;
+import com.jogamp.newt.event.MouseEvent;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Variant;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+
+/**
+ * Maps input to the model. Every handler only replaces the model's snapshot or hands work to a background thread
+ * (a precompute of more Taylor terms, writing a screenshot), so the input thread and the render thread never wait
+ * for it. The NEWT listeners ({@link #keyListener()}, {@link #mouseListener()}) translate events into the public
+ * actions, which tests may also call directly.
+ */
+public final class ViewerController implements AutoCloseable {
+    /** Highest Taylor order the keys go to; float32 terms of tall patches overflow long before 200 (README). */
+    public static final int MAX_HIGHEST_ORDER = 100;
+    /** The lambda steps [ and ] walk through, in nm. */
+    static final double[] LAMBDA_STEPS_NM = {1, 2, 5, 10, 20, 40};
+    static final double ORBIT_DEG_PER_PX = 0.4;
+    static final double LIGHT_DEG_PER_PX = 0.3;
+    static final double ZOOM_PER_WHEEL_STEP = 0.9;
+    static final double EXPOSURE_STEP = 1.5;
+
+    /** Takes a screenshot of the real window and returns where it went (run off the input thread). */
+    @FunctionalInterface
+    public interface Screenshotter {
+        Path save() throws IOException;
+    }
+
+    private final ViewerModel model;
+    private final TermPrecomputer precomputer;
+    private final Screenshotter screenshotter;
+    private final Runnable quit;
+    private final ExecutorService screenshotWriter = Executors.newSingleThreadExecutor(runnable -> {
+        Thread thread = new Thread(runnable, "diffract-viewer-screenshot");
+        thread.setDaemon(true);
+        return thread;
+    });
+
+    public ViewerController(ViewerModel model, TermPrecomputer precomputer, Screenshotter screenshotter,
+                            Runnable quit) {
+        this.model = model;
+        this.precomputer = precomputer;
+        this.screenshotter = screenshotter;
+        this.quit = quit;
+    }
+
+    // ---- actions
+
+    public void orbitByPixels(int dxPx, int dyPx) {
+        // dragging right turns the object to the right: the camera moves left around it
+        model.update(s -> s.withCamera(s.camera().orbitedBy(-dxPx * ORBIT_DEG_PER_PX, dyPx * ORBIT_DEG_PER_PX)));
+    }
+
+    /** Positive steps (wheel up) zoom in. */
+    public void zoomBySteps(double steps) {
+        model.update(s -> s.withCamera(s.camera().zoomedBy(Math.pow(ZOOM_PER_WHEEL_STEP, steps))));
+    }
+
+    public void moveLightByPixels(int dxPx, int dyPx) {
+        model.update(s -> s.withLight(s.light().movedBy(dyPx * LIGHT_DEG_PER_PX, dxPx * LIGHT_DEG_PER_PX)));
+    }
+
+    public void moveLightBy(double deltaThetaDeg, double deltaPhiDeg) {
+        model.update(s -> s.withLight(s.light().movedBy(deltaThetaDeg, deltaPhiDeg)));
+    }
+
+    public void selectVariant(Variant variant) {
+        model.update(s -> s.withSettings(s.settings().withVariant(variant)));
+    }
+
+    /** N + delta within [0, {@value #MAX_HIGHEST_ORDER}]; more terms than at hand start a background precompute. */
+    public void changeTaylorOrderBy(int delta) {
+        ViewerState state = model.update(s -> s.withSettings(s.settings().withHighestOrder(
+                Math.max(0, Math.min(MAX_HIGHEST_ORDER, s.settings().highestOrder() + delta)))));
+        precomputer.ensureTermsFor(state);
+    }
+
+    /** One rung up (+1) or down (-1) the lambda-step ladder. */
+    public void changeLambdaStep(int direction) {
+        model.update(s -> s.withSettings(s.settings().withLambdaStepNm(nextLambdaStep(s.settings(), direction))));
+    }
+
+    static double nextLambdaStep(BrdfSettings settings, int direction) {
+        double current = settings.lambdaStepNm();
+        if (direction > 0) {
+            for (double step : LAMBDA_STEPS_NM) {
+                if (step > current + 1e-9) {
+                    return step;
+                }
+            }
+            return current;
+        }
+        for (int i = LAMBDA_STEPS_NM.length - 1; i >= 0; i--) {
+            if (LAMBDA_STEPS_NM[i] < current - 1e-9) {
+                return LAMBDA_STEPS_NM[i];
+            }
+        }
+        return current;
+    }
+
+    public void changeExposure(int direction) {
+        model.update(s -> s.withExposure(s.exposure() * Math.pow(EXPOSURE_STEP, direction)));
+    }
+
+    public void toggleBrdfMap() {
+        model.update(s -> s.withMode(s.mode() == DisplayMode.BRDF_MAP ? DisplayMode.SURFACE : DisplayMode.BRDF_MAP));
+    }
+
+    public void togglePigmentation() {
+        if (model.pigmentationImage().isEmpty()) {
+            model.update(s -> s.withNotice(Notice.forSeconds("no pigmentation image: start with --pigmentation FILE", 4)));
+            return;
+        }
+        model.update(s -> s.withPigmentationOn(!s.pigmentationOn()));
+    }
+
+    public void reset() {
+        model.reset(Notice.forSeconds("reset", 2));
+    }
+
+    /** Prints the controls and shows them in the title for a few seconds. */
+    public void showHelp() {
+        System.out.print(KeyBindings.helpText());
+        System.out.flush();
+        model.update(s -> s.withNotice(Notice.forSeconds(KeyBindings.oneLine(), 8)));
+    }
+
+    /** Saves a PNG of the window on a background thread; the path is printed and shown in the title. */
+    public Future<Path> screenshot() {
+        return screenshotWriter.submit(() -> {
+            try {
+                Path file = screenshotter.save();
+                System.out.println("screenshot: " + file.toAbsolutePath());
+                model.update(s -> s.withNotice(Notice.forSeconds("saved " + file, 4)));
+                return file;
+            } catch (IOException | RuntimeException e) {
+                System.err.println("diffract: screenshot failed: " + e.getMessage());
+                model.update(s -> s.withNotice(Notice.forSeconds("screenshot failed: " + e.getMessage(), 6)));
+                throw e;
+            }
+        });
+    }
+
+    public void quit() {
+        quit.run();
+    }
+
+    // ---- NEWT input
+
+    /** Keys as in {@link KeyBindings}. */
+    public KeyAdapter keyListener() {
+        return new KeyAdapter() {
+            @Override
+            public void keyPressed(KeyEvent e) {
+                handleKey(e.getKeyCode(), e.getKeyChar());
+            }
+        };
+    }
+
+    /** Dispatches one key press; returns whether it was a control. */
+    boolean handleKey(short keyCode, char keyChar) {
+        switch (keyCode) {
+            case KeyEvent.VK_UP: moveLightBy(-5, 0); return true;
+            case KeyEvent.VK_DOWN: moveLightBy(5, 0); return true;
+            case KeyEvent.VK_LEFT: moveLightBy(0, -15); return true;
+            case KeyEvent.VK_RIGHT: moveLightBy(0, 15); return true;
+            case KeyEvent.VK_PAGE_UP: changeExposure(1); return true;
+            case KeyEvent.VK_PAGE_DOWN: changeExposure(-1); return true;
+            case KeyEvent.VK_F1: showHelp(); return true;
+            case KeyEvent.VK_ESCAPE: quit(); return true;
+            case KeyEvent.VK_ADD: changeTaylorOrderBy(1); return true;
+            case KeyEvent.VK_SUBTRACT: changeTaylorOrderBy(-1); return true;
+            default: break;
+        }
+        switch (Character.toLowerCase(keyChar)) {
+            case '1': selectVariant(Variant.FLSS); return true;
+            case '2': selectVariant(Variant.NMM); return true;
+            case '3': selectVariant(Variant.PQ); return true;
+            case '+': case '=': changeTaylorOrderBy(1); return true; // '=' is '+' without shift on US keyboards
+            case '-': case '_': changeTaylorOrderBy(-1); return true;
+            case '[': changeLambdaStep(-1); return true;
+            case ']': changeLambdaStep(1); return true;
+            case 'b': toggleBrdfMap(); return true;
+            case 'p': togglePigmentation(); return true;
+            case 's': screenshot(); return true;
+            case 'r': reset(); return true;
+            case 'h': showHelp(); return true;
+            case 'q': quit(); return true;
+            default: return false;
+        }
+    }
+
+    /** Left drag orbits, right drag moves the light, the wheel zooms. */
+    public MouseAdapter mouseListener() {
+        return new MouseAdapter() {
+            private int lastX;
+            private int lastY;
+            private short button;
+
+            @Override
+            public void mousePressed(MouseEvent e) {
+                lastX = e.getX();
+                lastY = e.getY();
+                button = e.getButton();
+            }
+
+            @Override
+            public void mouseDragged(MouseEvent e) {
+                int dx = e.getX() - lastX;
+                int dy = e.getY() - lastY;
+                lastX = e.getX();
+                lastY = e.getY();
+                if (button == MouseEvent.BUTTON3) {
+                    moveLightByPixels(dx, dy);
+                } else {
+                    orbitByPixels(dx, dy);
+                }
+            }
+
+            @Override
+            public void mouseWheelMoved(MouseEvent e) {
+                float[] rotation = e.getRotation();
+                zoomBySteps(rotation[1] != 0 ? rotation[1] : rotation[0]); // shift turns NEWT's wheel sideways
+            }
+        };
+    }
+
+    @Override
+    public void close() {
+        screenshotWriter.shutdown();
+    }
+}

@@ -1,0 +1,90 @@
+package diffract.viewer;
+
+import diffract.jrtr.Shape;
+import diffract.optics.HeightField;
+import diffract.optics.TaylorTerms;
+import diffract.util.Reporter;
+
+import java.awt.image.BufferedImage;
+import java.util.Optional;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.UnaryOperator;
+
+/**
+ * The viewer's model: the fixed {@link ViewerSetup} (patch, shape, pigmentation image), where more Taylor terms
+ * come from, and the current {@link ViewerState}. Thread-safe: the state is an immutable snapshot behind an atomic
+ * reference, replaced by compare-and-set, so the controller (input thread), the precompute worker and the render
+ * thread never see half an update.
+ */
+public final class ViewerModel {
+    private final ViewerSetup setup;
+    private final TermSource termSource;
+    private final AtomicReference<ViewerState> state;
+
+    /**
+     * @param initialTerms terms 0..N of {@code setup.patch()}; when the setup asks for more, the viewer draws with
+     *                     these ({@link ViewerState#drawableSettings}) until more are precomputed
+     */
+    public ViewerModel(ViewerSetup setup, TermSource termSource, TaylorTerms initialTerms) {
+        if (initialTerms.rows() != setup.patch().rows() || initialTerms.cols() != setup.patch().cols()) {
+            throw new IllegalArgumentException("terms of a " + initialTerms.cols() + "x" + initialTerms.rows()
+                    + " patch for a " + setup.patch().cols() + "x" + setup.patch().rows() + " patch");
+        }
+        this.setup = setup;
+        this.termSource = termSource;
+        this.state = new AtomicReference<>(initialState(initialTerms));
+    }
+
+    /** Computes (or loads) the terms the setup asks for on this thread, then builds the model. */
+    public static ViewerModel load(ViewerSetup setup, TermSource termSource, Reporter reporter) {
+        TaylorTerms terms = termSource.terms(setup.settings().highestOrder(), reporter);
+        return new ViewerModel(setup, termSource, terms);
+    }
+
+    private ViewerState initialState(TaylorTerms terms) {
+        return new ViewerState(setup.settings(), setup.camera(), setup.light(), setup.exposure(), setup.mode(),
+                setup.pigmentationOn(), terms, null, null);
+    }
+
+    public ViewerSetup setup() {
+        return setup;
+    }
+
+    public HeightField patch() {
+        return setup.patch();
+    }
+
+    public String patchName() {
+        return setup.patchName();
+    }
+
+    public Shape shape() {
+        return setup.shape();
+    }
+
+    public Optional<BufferedImage> pigmentationImage() {
+        return Optional.ofNullable(setup.pigmentation());
+    }
+
+    public TermSource termSource() {
+        return termSource;
+    }
+
+    /** The current snapshot. */
+    public ViewerState state() {
+        return state.get();
+    }
+
+    /** Replaces the snapshot by {@code change(current)}, atomically (retried if another thread got there first). */
+    public ViewerState update(UnaryOperator<ViewerState> change) {
+        return state.updateAndGet(change);
+    }
+
+    /**
+     * Back to the setup's settings, camera, light and display choices; the terms at hand (and a precompute under
+     * way) are kept, since they cost time and stay valid for the same patch.
+     */
+    public ViewerState reset(Notice notice) {
+        return update(s -> initialState(s.terms()).withPrecompute(s.precompute()).withNotice(notice));
+    }
+}

@@ -1,0 +1,139 @@
+package diffract.viewer;
+
+import com.jogamp.opengl.GLAutoDrawable;
+import diffract.jrtr.Camera;
+import diffract.jrtr.Frustum;
+import diffract.jrtr.Group;
+import diffract.jrtr.LightNode;
+import diffract.jrtr.Material;
+import diffract.jrtr.Renderer;
+import diffract.jrtr.ShapeNode;
+import diffract.jrtr.Shapes;
+import diffract.optics.Direction;
+import diffract.render.DiffractionMaterials;
+
+import javax.vecmath.Point3f;
+import javax.vecmath.Vector3f;
+
+/**
+ * Draws the model: each frame reads one {@link ViewerState} and shows either the shape with the diffraction surface
+ * material seen from the orbit camera (the shader takes omega_r from each fragment to this frame's camera
+ * position, so the shading follows the camera), or the BRDF map of the current light, centred in the viewport.
+ * The same renderer draws into the viewer's window and, for {@code diffract render}, into an offscreen target.
+ */
+public final class ViewerRenderer extends Renderer {
+    /** Grey, not black: a black background would hide where the surface reflects nothing. */
+    public static final float[] CLEAR_COLOUR = {0.12f, 0.12f, 0.14f, 1f};
+    public static final float VERTICAL_FOV_DEG = 45f;
+
+    private final ViewerModel model;
+    private final ViewerMaterials materials;
+    private final FrameStats stats = new FrameStats();
+    private final LightNode light = new LightNode("light", new Vector3f(0, 0, 1), new Vector3f(1, 1, 1));
+    private final ShapeNode surface;
+    private final Group surfaceScene;
+    private final ShapeNode mapQuad;
+    private final Group mapScene;
+    private volatile boolean drawingStopped;
+    private volatile boolean inFrame;
+    private int widthPx;
+    private int heightPx;
+
+    public ViewerRenderer(ViewerModel model) {
+        super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, VERTICAL_FOV_DEG));
+        this.model = model;
+        this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight());
+        // the nodes get their materials on the render thread, at the first frame
+        this.surface = new ShapeNode(model.shape(), null);
+        this.surfaceScene = new Group("surface").add(light, surface);
+        this.mapQuad = new ShapeNode(Shapes.fullScreenQuad(), null);
+        this.mapScene = new Group("brdf map").add(mapQuad);
+        setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+    }
+
+    public FrameStats stats() {
+        return stats;
+    }
+
+    /** Materials built so far: changes only when settings that need a new program or textures change. */
+    public int materialBuildCount() {
+        return materials.rebuildCount();
+    }
+
+    @Override
+    public void reshape(GLAutoDrawable drawable, int x, int y, int width, int height) {
+        widthPx = width;
+        heightPx = height;
+        super.reshape(drawable, x, y, width, height);
+    }
+
+    /**
+     * Makes later frames return at once and waits (up to {@code timeoutMs}) for the frame under way: JOGL's animator
+     * gives a frame 1 s to finish when stopped, and a diffraction frame on llvmpipe may take longer.
+     */
+    public void stopDrawing(long timeoutMs) throws InterruptedException {
+        drawingStopped = true;
+        long end = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (inFrame && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+    }
+
+    @Override
+    public void display(GLAutoDrawable drawable) {
+        if (drawingStopped) {
+            return;
+        }
+        inFrame = true;
+        try {
+            drawFrame(drawable);
+        } finally {
+            inFrame = false;
+        }
+    }
+
+    private void drawFrame(GLAutoDrawable drawable) {
+        long start = System.nanoTime();
+        ViewerState state = model.state();
+        Material material = materials.materialFor(state, context());
+        material.setFloat("exposure", (float) state.exposure());
+        if (state.mode() == DisplayMode.BRDF_MAP) {
+            showBrdfMap(state, material);
+        } else {
+            showSurface(state, material);
+        }
+        super.display(drawable);
+        context().gl().glFinish(); // so the frame time includes the GPU's work, not just issuing it
+        stats.record((System.nanoTime() - start) / 1e6);
+    }
+
+    private void showSurface(ViewerState state, Material material) {
+        double[] eye = state.camera().eye();
+        OrbitCamera orbit = state.camera();
+        camera().set(new Point3f((float) eye[0], (float) eye[1], (float) eye[2]),
+                new Point3f((float) orbit.targetX(), (float) orbit.targetY(), (float) orbit.targetZ()),
+                new Vector3f(0, 1, 0));
+        Direction towardsLight = state.light().direction();
+        light.setDirection(new Vector3f((float) towardsLight.x(), (float) towardsLight.y(), (float) towardsLight.z()));
+        surface.setMaterial(material);
+        setRoot(surfaceScene);
+    }
+
+    /** The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. */
+    private void showBrdfMap(ViewerState state, Material material) {
+        int size = Math.max(1, Math.min(widthPx, heightPx));
+        DiffractionMaterials.setLight(material, state.light().direction())
+                .setFloat("mapSizePx", size)
+                .setVec2("mapOriginPx", (widthPx - size) / 2, (heightPx - size) / 2);
+        mapQuad.setMaterial(material);
+        setRoot(mapScene);
+    }
+
+    @Override
+    public void dispose(GLAutoDrawable drawable) {
+        if (context() != null) {
+            materials.releaseAll(context(), true);
+        }
+        super.dispose(drawable);
+    }
+}

@@ -1,0 +1,45 @@
+package diffract.viewer;
+
+import diffract.optics.BrdfSettings;
+
+import java.util.Locale;
+
+/**
+ * The window title: what is drawn (patch, variant and its parameters, light, mode), how fast, and what is under
+ * way. NEWT windows have no overlay of their own, and the title stays readable whatever the picture shows.
+ */
+public final class ViewerTitle {
+    private ViewerTitle() {
+    }
+
+    public static String of(ViewerModel model, ViewerState state, FrameStats stats, long nowNanos) {
+        BrdfSettings drawn = state.drawableSettings();
+        StringBuilder title = new StringBuilder(String.format(Locale.ROOT,
+                "diffract %s | %s N=%d dlambda=%s nm R=%d | theta_i %.0f phi_i %.0f | %s%s | exposure %s",
+                model.patchName(), drawn.variant().cliName(), drawn.highestOrder(), number(drawn.lambdaStepNm()),
+                drawn.windowRadius(), state.light().thetaDeg(), state.light().phiDeg(),
+                state.mode() == DisplayMode.BRDF_MAP ? "BRDF map" : model.shape().name(),
+                state.pigmentationOn() && state.mode() == DisplayMode.SURFACE ? " + pigment" : "",
+                number(state.exposure())));
+        double ms = stats.msPerFrame();
+        title.append(Double.isNaN(ms) ? " | - ms/frame" : String.format(Locale.ROOT, " | %.0f ms/frame", ms));
+        PrecomputeProgress precompute = state.precompute();
+        if (precompute != null) {
+            title.append(String.format(Locale.ROOT, " | precomputing N=%d %d%%", precompute.targetOrder(),
+                    precompute.percent()));
+        } else if (state.needsMoreTerms()) {
+            title.append(" | N=").append(state.settings().highestOrder()).append(" waiting for terms");
+        }
+        Notice notice = state.notice();
+        if (notice != null && notice.isShowingAt(nowNanos)) {
+            title.append(" | ").append(notice.text());
+        }
+        return title.toString();
+    }
+
+    /** 5 for 5.0, 2.5 for 2.5: no trailing zeros. */
+    static String number(double value) {
+        return value == Math.rint(value) && Math.abs(value) < 1e9 ? Long.toString((long) value)
+                : String.format(Locale.ROOT, "%.3g", value);
+    }
+}

@@ -1,0 +1,97 @@
+package diffract.app;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.viewer.ViewerRenderer;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.nio.file.Path;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** {@code view} and {@code render} as a user meets them: files, exit codes, one-line refusals. */
+class ViewerCliTest {
+    @TempDir
+    static Path dir;
+
+    @Test
+    @Tag("gl")
+    void renderWritesAPictureOfTheShapeAtTheRequestedSize() throws Exception {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        Path png = dir.resolve("sphere.png");
+        Object[] result = CliTest.run("render", "--synthetic", "elaphe-like", "--terms", "8", "--lambda-step", "20",
+                "--coherence-length", "10", "--size", "96x64", "-o", png.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        assertTrue(((String) result[1]).contains("wrote " + png), (String) result[1]);
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(96, image.getWidth());
+        assertEquals(64, image.getHeight());
+        int centre = image.getRGB(48, 32) & 0xffffff;
+        int clear = Math.round(ViewerRenderer.CLEAR_COLOUR[0] * 255) << 16
+                | Math.round(ViewerRenderer.CLEAR_COLOUR[1] * 255) << 8 | Math.round(ViewerRenderer.CLEAR_COLOUR[2] * 255);
+        assertNotEquals(clear, centre, "the centre shows the background, not the sphere");
+        int coloured = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int p = image.getRGB(x, y);
+                int r = p >> 16 & 0xff;
+                int g = p >> 8 & 0xff;
+                int b = p & 0xff;
+                if (Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) > 40) {
+                    coloured++;
+                }
+            }
+        }
+        System.out.println("render 96x64: " + coloured + " coloured pixels");
+        assertTrue(coloured >= 5, "only " + coloured + " coloured pixels: no structural colour on the sphere");
+    }
+
+    @Test
+    void badUsageEndsWithOneLineAndExitCode2() {
+        String out = dir.resolve("x.png").toString();
+        assertOneLine(CliTest.run("view", "scene.json"), "scene files are not supported yet");
+        assertOneLine(CliTest.run("render", "scene.json", "-o", out), "scene files are not supported yet");
+        assertOneLine(CliTest.run("render", "--variant", "reference", "-o", out), "flss, nmm or pq");
+        assertOneLine(CliTest.run("render", "--shape", "teapot", "-o", out), "sphere, plane or cylinder");
+        assertOneLine(CliTest.run("render", "--size", "12x9000", "-o", out), "--size");
+        assertOneLine(CliTest.run("render", "--tangent", "0,0,0", "-o", out), "--tangent");
+        assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "elaphe-like or blazed");
+        assertOneLine(CliTest.run("render", "--patch", "missing.png", "--synthetic", "blazed", "-o", out), "not both");
+        assertOneLine(CliTest.run("render", "-o", dir.resolve("x.jpg").toString()), "PNG");
+        assertOneLine(CliTest.run("view", "--terms", "500"), "--terms");
+        Object[] missingOutput = CliTest.run("render");
+        assertEquals(2, missingOutput[0]);
+    }
+
+    @Test
+    void helpAnswersWithExitCode0() {
+        for (String command : new String[] {"view", "render"}) {
+            Object[] help = CliTest.run(command, "--help");
+            assertEquals(0, help[0]);
+            assertTrue(((String) help[1]).contains("--variant"), (String) help[1]);
+        }
+    }
+
+    @Test
+    void viewWithoutAVisibleDisplaySuggestsRender() {
+        String linux = "Linux";
+        assertTrue(ViewCommand.noDisplayProblem(Map.of(), linux).orElseThrow().contains("./diffract render"));
+        assertTrue(ViewCommand.noDisplayProblem(Map.of("DISPLAY", ":99", "DIFFRACT_PRIVATE_XVFB", "1"), linux)
+                .orElseThrow().contains("./diffract render"));
+        assertTrue(ViewCommand.noDisplayProblem(Map.of("DISPLAY", ":0"), linux).isEmpty());
+    }
+
+    private static void assertOneLine(Object[] result, String expected) {
+        String err = (String) result[2];
+        assertEquals(2, result[0], err);
+        assertEquals(1, err.strip().lines().count(), err);
+        assertTrue(err.contains(expected), err);
+    }
+}

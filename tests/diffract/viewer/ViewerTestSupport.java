@@ -1,0 +1,79 @@
+package diffract.viewer;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.optics.BrdfSettings;
+import diffract.optics.HeightField;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.precompute.TaylorTermComputer;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Assumptions;
+
+/** Small, fast viewer models for the tests: llvmpipe runs the shaders on the CPU. */
+final class ViewerTestSupport {
+    /** An Elaphe-like patch of 32 x 32 pixels (2 ridges of 1.144 um): cheap terms, cheap shading. */
+    static final HeightField PATCH = SyntheticPatches.elapheLike(32, 2, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L)
+            .meanSubtracted();
+
+    private ViewerTestSupport() {
+    }
+
+    static void assumeDisplay() {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
+                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+    }
+
+    /** 8 terms, 20 nm steps, coherence length 10 um so the orders are wide enough to light many pixels. */
+    static BrdfSettings settings() {
+        return new BrdfSettings(Variant.FLSS, 8, 1, 380, 780, 20, 2.5, 1.5, 0);
+    }
+
+    static ViewerSetup setup() {
+        return new ViewerSetup(PATCH, "test-patch", ViewerShapes.sphere(new double[] {1, 0, 0}), null, 0.2,
+                settings(), new OrbitCamera(0, 20, 3.0, 0, 0, 0), new LightDirection(30, 90), 10,
+                DisplayMode.SURFACE, false);
+    }
+
+    static TermSource directTerms() {
+        return (n, reporter) -> TaylorTermComputer.compute(PATCH, n, reporter);
+    }
+
+    /**
+     * Terms computed directly, but only after {@code seconds} of reported progress: a precompute slow enough to
+     * count the frames the window draws meanwhile.
+     */
+    static TermSource slowTerms(double seconds) {
+        return (n, reporter) -> {
+            int steps = 10;
+            for (int i = 0; i < steps; i++) {
+                reporter.progress("test precompute", i / (double) steps);
+                try {
+                    Thread.sleep((long) (seconds * 1000 / steps));
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new IllegalStateException("interrupted", e);
+                }
+            }
+            TaylorTerms terms = TaylorTermComputer.compute(PATCH, n, Reporter.SILENT);
+            reporter.progress("test precompute", 1);
+            return terms;
+        };
+    }
+
+    static ViewerModel model(TermSource source) {
+        return ViewerModel.load(setup(), source, Reporter.SILENT);
+    }
+
+    /** Waits up to {@code seconds} for {@code condition}; returns whether it came true. */
+    static boolean waitFor(java.util.function.BooleanSupplier condition, double seconds) throws InterruptedException {
+        long end = System.nanoTime() + (long) (seconds * 1e9);
+        while (System.nanoTime() < end) {
+            if (condition.getAsBoolean()) {
+                return true;
+            }
+            Thread.sleep(20);
+        }
+        return condition.getAsBoolean();
+    }
+}

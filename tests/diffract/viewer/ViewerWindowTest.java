@@ -1,0 +1,202 @@
+package diffract.viewer;
+
+import com.jogamp.newt.event.KeyEvent;
+import com.jogamp.newt.event.MouseEvent;
+import diffract.optics.Variant;
+import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The viewer's real window under Xvfb, driven by NEWT input events handed to the controller's listeners: drags,
+ * keys, the background precompute, screenshots. One 128 x 128 window for the class (opening one costs a second).
+ */
+@Tag("gl")
+class ViewerWindowTest {
+    static final int SIZE_PX = 128;
+    @TempDir
+    static Path screenshots;
+    static ViewerModel model;
+    static ViewerWindow viewer;
+
+    @BeforeAll
+    static void open() {
+        if (!diffract.jrtr.DisplayCheck.problem().isEmpty()) {
+            return;
+        }
+        model = ViewerTestSupport.model(ViewerTestSupport.slowTerms(2.0));
+        viewer = new ViewerWindow(model, SIZE_PX, SIZE_PX, screenshots);
+        viewer.start();
+    }
+
+    @AfterAll
+    static void close() {
+        if (viewer != null) {
+            viewer.close();
+        }
+    }
+
+    @BeforeEach
+    void resetModel() throws InterruptedException {
+        ViewerTestSupport.assumeDisplay();
+        model.reset(null);
+        awaitFreshFrames(2); // so every test starts from frames of the reset state
+    }
+
+    @Test
+    void orbitDragChangesTheRenderedImage() throws InterruptedException {
+        float[] before = viewer.window().renderRgba();
+        OrbitCamera cameraBefore = model.state().camera();
+        var mouse = viewer.controller().mouseListener();
+        mouse.mousePressed(mouse(MouseEvent.EVENT_MOUSE_PRESSED, 40, 64, MouseEvent.BUTTON1));
+        mouse.mouseDragged(mouse(MouseEvent.EVENT_MOUSE_DRAGGED, 70, 64, MouseEvent.BUTTON1));
+        mouse.mouseDragged(mouse(MouseEvent.EVENT_MOUSE_DRAGGED, 100, 50, MouseEvent.BUTTON1));
+        OrbitCamera cameraAfter = model.state().camera();
+        assertEquals(cameraBefore.azimuthDeg() - 60 * ViewerController.ORBIT_DEG_PER_PX, cameraAfter.azimuthDeg(), 1e-9);
+        assertEquals(cameraBefore.elevationDeg() - 14 * ViewerController.ORBIT_DEG_PER_PX, cameraAfter.elevationDeg(),
+                1e-9);
+        // a frame under way may have read the model before the drag: read the window after one that began after it
+        awaitFreshFrames(2);
+        float[] after = viewer.window().renderRgba();
+        int differing = differingPixels(before, after);
+        System.out.printf("orbit drag of 60 x -14 px: %d of %d window pixels changed%n", differing, SIZE_PX * SIZE_PX);
+        assertTrue(differing > 100, "only " + differing + " pixels changed");
+    }
+
+    @Test
+    void rightDragMovesTheLightAndTheWheelZooms() {
+        var mouse = viewer.controller().mouseListener();
+        LightDirection light = model.state().light();
+        mouse.mousePressed(mouse(MouseEvent.EVENT_MOUSE_PRESSED, 64, 64, MouseEvent.BUTTON3));
+        mouse.mouseDragged(mouse(MouseEvent.EVENT_MOUSE_DRAGGED, 84, 74, MouseEvent.BUTTON3));
+        assertEquals(light.thetaDeg() + 10 * ViewerController.LIGHT_DEG_PER_PX, model.state().light().thetaDeg(), 1e-9);
+        assertEquals(light.phiDeg() + 20 * ViewerController.LIGHT_DEG_PER_PX, model.state().light().phiDeg(), 1e-9);
+        double distance = model.state().camera().distance();
+        mouse.mouseWheelMoved(new MouseEvent(MouseEvent.EVENT_MOUSE_WHEEL_MOVED, viewer.window().glWindow(),
+                System.currentTimeMillis(), 0, 64, 64, (short) 0, (short) 0, new float[] {0, 2, 0}, 1f));
+        assertEquals(distance * 0.81, model.state().camera().distance(), 1e-9);
+    }
+
+    @Test
+    void variantKeySwitchesTheModelAndTheTitle() throws InterruptedException {
+        press('3');
+        assertEquals(Variant.PQ, model.state().settings().variant());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| pq N=8"), 30), viewer.title());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.window().glWindow().getTitle().contains("| pq N=8"), 5));
+        press('2');
+        assertEquals(Variant.NMM, model.state().settings().variant());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| nmm N=8"), 30), viewer.title());
+        press('1');
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().matches(".*\\| flss N=8 .*\\d+ ms/frame.*"), 30),
+                viewer.title());
+    }
+
+    @Test
+    void plusPrecomputesInTheBackgroundWhileFramesKeepComing() throws InterruptedException {
+        int before = model.state().terms().highestOrder();
+        long framesBefore = viewer.renderer().stats().frameCount();
+        boolean[] sawProgress = {false};
+        press('+');
+        assertEquals(before + 1, model.state().settings().highestOrder());
+        assertTrue(ViewerTestSupport.waitFor(() -> {
+            sawProgress[0] |= viewer.title().contains("precomputing N=" + (before + 1));
+            return model.state().terms().highestOrder() == before + 1;
+        }, 60), "terms never arrived");
+        long framesDuring = viewer.renderer().stats().frameCount() - framesBefore;
+        System.out.printf("frames drawn while terms 0..%d were precomputed (>= 2 s): %d%n", before + 1, framesDuring);
+        assertTrue(framesDuring >= 3, "the render loop stalled: " + framesDuring + " frames");
+        assertTrue(sawProgress[0], "the title never showed the precompute");
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("flss N=" + (before + 1)), 30),
+                viewer.title());
+        assertEquals(null, model.state().precompute());
+    }
+
+    @Test
+    void materialsAreNotRebuiltPerFrame() throws InterruptedException {
+        press('1');
+        long frames = viewer.renderer().stats().frameCount();
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= frames + 2, 30));
+        int builds = viewer.renderer().materialBuildCount();
+        long later = viewer.renderer().stats().frameCount();
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= later + 3, 30));
+        assertEquals(builds, viewer.renderer().materialBuildCount());
+    }
+
+    @Test
+    void screenshotKeySavesAPngOfTheWindow() throws Exception {
+        press('s');
+        assertTrue(ViewerTestSupport.waitFor(() -> pngs().size() > 0, 30), "no screenshot written");
+        Path png = pngs().get(0);
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(viewer.window().surfaceWidth(), image.getWidth());
+        assertEquals(viewer.window().surfaceHeight(), image.getHeight());
+        int centre = image.getRGB(image.getWidth() / 2, image.getHeight() / 2) & 0xffffff;
+        int clear = Math.round(ViewerRenderer.CLEAR_COLOUR[0] * 255) << 16
+                | Math.round(ViewerRenderer.CLEAR_COLOUR[1] * 255) << 8 | Math.round(ViewerRenderer.CLEAR_COLOUR[2] * 255);
+        assertNotEquals(clear, centre, "the sphere is not in the middle of the screenshot");
+    }
+
+    @Test
+    void brdfMapKeyShowsTheMapAndHelpGoesToTheTitle() throws InterruptedException {
+        press('b');
+        assertEquals(DisplayMode.BRDF_MAP, model.state().mode());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("BRDF map"), 30), viewer.title());
+        awaitFreshFrames(2);
+        float[] map = viewer.window().renderRgba();
+        // outside the unit disk the map is black, unlike the surface mode's grey background
+        assertEquals(0f, map[0] + map[1] + map[2], 1e-6f);
+        press('h');
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("right-drag light"), 30), viewer.title());
+        press('b');
+        assertEquals(DisplayMode.SURFACE, model.state().mode());
+    }
+
+    static void awaitFreshFrames(int frames) throws InterruptedException {
+        long now = viewer.renderer().stats().frameCount();
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= now + frames, 30));
+    }
+
+    static void press(char key) {
+        short code = KeyEvent.utf16ToVKey(key);
+        viewer.controller().keyListener().keyPressed(KeyEvent.create(KeyEvent.EVENT_KEY_PRESSED,
+                viewer.window().glWindow(), System.currentTimeMillis(), 0, code, code, key));
+    }
+
+    static MouseEvent mouse(short type, int x, int y, short button) {
+        return new MouseEvent(type, viewer.window().glWindow(), System.currentTimeMillis(), 0, x, y, (short) 1, button,
+                new float[] {0, 0, 0}, 1f);
+    }
+
+    static int differingPixels(float[] a, float[] b) {
+        int count = 0;
+        for (int p = 0; p < a.length; p += 4) {
+            if (Math.abs(a[p] - b[p]) + Math.abs(a[p + 1] - b[p + 1]) + Math.abs(a[p + 2] - b[p + 2]) > 0.02f) {
+                count++;
+            }
+        }
+        return count;
+    }
+
+    static List<Path> pngs() {
+        try (Stream<Path> files = Files.list(screenshots)) {
+            return files.filter(f -> f.toString().endsWith(".png")).collect(Collectors.toList());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+}
