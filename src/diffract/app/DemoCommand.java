@@ -10,21 +10,20 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 /**
- * {@code diffract demo}, the main job: with a screen, the interactive viewer on a sphere covered with the
+ * {@code diffract demo}, the main job: with a screen, the interactive viewer on the procedural snake covered with the
  * Elaphe-like snake-skin patch; without one (the launcher then runs it under a private Xvfb), the same view rendered
  * offscreen to {@code out/demo.png}; without any OpenGL, the CPU reference BRDF map of a blazed grating. It prints
- * the path of every picture it writes. (The procedural snake scene replaces the sphere once scene files land,
- * issue #4.)
+ * the path of every picture it writes.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = {"The demo: the viewer on an iridescent sphere (Elaphe-like snake-skin patch) when there is a",
+        description = {"The demo: the viewer on the iridescent procedural snake (Elaphe-like skin patch) when there is a",
                 "screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map of",
                 "a blazed grating to out/demo-brdfmap.png)."})
 final class DemoCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
     Path outputDir;
 
-    @Option(names = "--size", defaultValue = "480x360", paramLabel = "WxH", description = "Picture size (default ${DEFAULT-VALUE}).")
+    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", description = "Picture size (default ${DEFAULT-VALUE}).")
     String size;
 
     /**
@@ -32,9 +31,9 @@ final class DemoCommand implements Callable<Integer> {
      * less coherent source than sunlight's 65 um) widens the orders of the 9 um periodic patch into bands that a
      * 480 x 360 picture resolves (with 65 um they are a fraction of a pixel wide).
      */
-    static final String[] VIEW = {"--synthetic", "elaphe-like", "--shape", "sphere", "--variant", "flss", "--terms",
-        "20", "--lambda-step", "10", "--coherence-length", "10", "--theta-i", "30", "--phi-i", "90", "--exposure", "10",
-        "--elevation", "25", "--azimuth", "-20"};
+    static final String[] VIEW = {"--synthetic", "elaphe-like", "--shape", "snake", "--no-pigmentation", "--variant",
+        "flss", "--terms", "20", "--lambda-step", "10", "--coherence-length", "10", "--theta-i", "60", "--phi-i", "90",
+        "--exposure", "50", "--elevation", "30", "--azimuth", "15", "--distance", "1.8"};
 
     private static String[] concat(String[] options, String command, String... more) {
         String[] all = new String[1 + options.length + more.length];

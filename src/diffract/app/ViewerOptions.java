@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.geometry.PigmentationTexture;
 import diffract.jrtr.Shape;
 import diffract.optics.BrdfSettings;
 import diffract.optics.GainFactor;
@@ -55,7 +56,7 @@ final class ViewerOptions {
     String synthetic;
 
     @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S",
-            description = "sphere, plane or cylinder (default ${DEFAULT-VALUE}).")
+            description = "sphere, plane, cylinder or snake (procedural, with corn-snake pigmentation; default ${DEFAULT-VALUE}).")
     String shape;
 
     @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z",
@@ -65,6 +66,9 @@ final class ViewerOptions {
     @Option(names = "--pigmentation", paramLabel = "IMAGE",
             description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
     Path pigmentation;
+
+    @Option(names = "--no-pigmentation", description = "Start with the pigmentation off (structural colour only; P toggles it).")
+    boolean noPigmentation;
 
     @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
             description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
@@ -151,6 +155,9 @@ final class ViewerOptions {
                 lambdaStepNm, coherenceLengthUm / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX, 0);
     }
 
+    /** The snake's procedural corn-snake pigmentation is the same every run. */
+    static final long PIGMENT_SEED = 2014;
+
     /** Reads the patch and the pigmentation image and builds the setup (validate() first). */
     ViewerSetup setup(Reporter reporter) {
         HeightField field;
@@ -166,11 +173,13 @@ final class ViewerOptions {
         BrdfSettings settings = settings();
         SamplingCheck.warnAboutAliasing(field, settings.lambdaMinNm(), settings.lambdaMaxNm(), reporter);
         Shape mesh = ViewerShapes.Kind.parse(shape).build(parseTangent(tangent));
-        BufferedImage pigment = pigmentation == null ? null : readImage(pigmentation);
+        BufferedImage pigment = pigmentation != null ? readImage(pigmentation)
+                : ViewerShapes.Kind.parse(shape) == ViewerShapes.Kind.SNAKE
+                ? new PigmentationTexture(PigmentationTexture.Parameters.defaults(PIGMENT_SEED)).image(256, 2048) : null;
         double phi = phiIDeg != null ? phiIDeg : name.equals("elaphe-like") ? 90 : 0;
         return new ViewerSetup(field, name, mesh, pigment, diffuseWeight, settings,
                 new OrbitCamera(azimuthDeg, elevationDeg, distance, 0, 0, 0), new LightDirection(thetaIDeg, phi),
-                exposure, brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, pigment != null);
+                exposure, brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, pigment != null && !noPigmentation);
     }
 
     /** Terms from the user cache (computed and stored on first use), keyed by patch content and N. */

@@ -1,6 +1,8 @@
 package diffract.viewer;
 
 import diffract.jrtr.Shape;
+import diffract.geometry.Mesh;
+import diffract.geometry.SnakeMesh;
 import diffract.jrtr.VertexData;
 import diffract.util.UserInputException;
 
@@ -20,7 +22,7 @@ public final class ViewerShapes {
 
     /** The shapes by command-line name. */
     public enum Kind {
-        SPHERE, PLANE, CYLINDER;
+        SPHERE, PLANE, CYLINDER, SNAKE;
 
         public String cliName() {
             return name().toLowerCase(Locale.ROOT);
@@ -32,7 +34,7 @@ public final class ViewerShapes {
                     return kind;
                 }
             }
-            throw new UserInputException("unknown shape '" + text + "': use sphere, plane or cylinder");
+            throw new UserInputException("unknown shape '" + text + "': use sphere, plane, cylinder or snake");
         }
 
         public Shape build(double[] tangentAlong) {
@@ -41,6 +43,8 @@ public final class ViewerShapes {
                     return plane(tangentAlong);
                 case CYLINDER:
                     return cylinder(tangentAlong);
+                case SNAKE:
+                    return snake(SnakeMesh.Parameters.defaults());
                 default:
                     return sphere(tangentAlong);
             }
@@ -103,6 +107,26 @@ public final class ViewerShapes {
         }
         mesh.grid(rings, slices);
         return mesh.build("cylinder");
+    }
+
+    /**
+     * The procedural snake ({@link SnakeMesh}), scaled so its length spans [-1, 1] and centred on the origin like the
+     * other shapes. Its tangents are its own orientation field (the ridges along the body by default), not a
+     * projected world direction.
+     */
+    public static Shape snake(SnakeMesh.Parameters parameters) {
+        Mesh mesh = SnakeMesh.generate(parameters).mesh();
+        double[] bounds = mesh.bounds(); // min x, y, z, max x, y, z
+        double scale = 2.0 / Math.max(1e-12, bounds[3] - bounds[0]);
+        float[] p = mesh.positions();
+        float[] positions = new float[p.length];
+        for (int i = 0; i < p.length; i += 3) {
+            for (int k = 0; k < 3; k++) {
+                positions[i + k] = (float) ((p[i + k] - 0.5 * (bounds[k] + bounds[k + 3])) * scale);
+            }
+        }
+        return new Shape("snake", VertexData.builder(mesh.vertexCount()).positions(positions).normals(mesh.normals())
+                .tangents(mesh.tangents()).texcoords(mesh.uvs()).indices(mesh.triangles()).build());
     }
 
     /** {@code along} minus its normal component, normalised; {@code fallback} where that vanishes. */
