@@ -5,6 +5,8 @@ import diffract.jrtr.VertexData;
 import diffract.optics.Variant;
 import org.junit.jupiter.api.Test;
 
+import java.util.concurrent.CountDownLatch;
+
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -32,7 +34,8 @@ class ViewerModelTest {
 
     @Test
     void keysChangeTheModelAndOnlyNeededTermsArePrecomputed() throws InterruptedException {
-        ViewerModel model = ViewerTestSupport.model(ViewerTestSupport.directTerms());
+        CountDownLatch precomputeMayFinish = new CountDownLatch(1);
+        ViewerModel model = ViewerTestSupport.model(ViewerTestSupport.gatedTerms(precomputeMayFinish));
         try (TermPrecomputer precomputer = new TermPrecomputer(model)) {
             boolean[] quit = {false};
             ViewerController controller = new ViewerController(model, precomputer, () -> null, () -> quit[0] = true);
@@ -50,7 +53,9 @@ class ViewerModelTest {
             controller.handleKey((short) 0, '+');
             controller.handleKey((short) 0, '+');
             assertEquals(10, model.state().settings().highestOrder());
+            assertTrue(precomputer.isBusy(), "more terms than at hand start a precompute");
             assertEquals(8, model.state().drawableSettings().highestOrder(), "draws with the terms at hand meanwhile");
+            precomputeMayFinish.countDown();
             assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == 10, 30));
             assertTrue(ViewerTestSupport.waitFor(() -> model.state().precompute() == null && !precomputer.isBusy(), 5));
             assertEquals(10, model.state().drawableSettings().highestOrder());

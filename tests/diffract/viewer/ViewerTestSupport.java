@@ -61,6 +61,24 @@ final class ViewerTestSupport {
         };
     }
 
+    /**
+     * Terms computed directly, but those beyond the model's initial N only once {@code gate} opens: the test decides
+     * when a background precompute finishes, so what it asserts meanwhile does not depend on the machine's speed.
+     */
+    static TermSource gatedTerms(java.util.concurrent.CountDownLatch gate) {
+        return (n, reporter) -> {
+            try {
+                if (n > settings().highestOrder() && !gate.await(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                    throw new IllegalStateException("the test never opened the gate");
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("interrupted", e);
+            }
+            return TaylorTermComputer.compute(PATCH, n, reporter);
+        };
+    }
+
     static ViewerModel model(TermSource source) {
         return ViewerModel.load(setup(), source, Reporter.SILENT);
     }
