@@ -6,6 +6,11 @@ import diffract.optics.io.GsfWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
+import diffract.util.UserInputException;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
@@ -27,20 +32,31 @@ final class DemoCommand implements Callable<Integer> {
     String size;
 
     /**
-     * The view: 20 Taylor terms and 10 nm steps keep llvmpipe near a frame a second; a 10 um coherence length (a
-     * less coherent source than sunlight's 65 um) widens the orders of the 9 um periodic patch into bands that a
-     * 480 x 360 picture resolves (with 65 um they are a fraction of a pixel wide).
+     * The view: the default scene {@code assets/scenes/snake-elaphe.json}. Its numbers: 20 Taylor terms and 10 nm
+     * steps keep llvmpipe near a frame a second; a 10 um coherence length (sigma_s = 2.5 um, a less coherent source
+     * than sunlight's 65 um) widens the orders of the 9 um periodic patch into bands that a 640 x 400 picture
+     * resolves (with 65 um they are a fraction of a pixel wide).
      */
-    static final String[] VIEW = {"--synthetic", "elaphe-like", "--shape", "snake", "--no-pigmentation", "--variant",
-        "flss", "--terms", "20", "--lambda-step", "10", "--coherence-length", "10", "--theta-i", "60", "--phi-i", "90",
-        "--exposure", "50", "--elevation", "30", "--azimuth", "15", "--distance", "1.8"};
+    static final String DEFAULT_SCENE = "snake-elaphe.json";
 
-    private static String[] concat(String[] options, String command, String... more) {
-        String[] all = new String[1 + options.length + more.length];
-        all[0] = command;
-        System.arraycopy(options, 0, all, 1, options.length);
-        System.arraycopy(more, 0, all, 1 + options.length, more.length);
-        return all;
+    /**
+     * The default scene as a file: the repository's {@code assets/scenes/} when run from its root, else the copy
+     * inside the jar written into {@code outputDir} (the scene names no other files, so it works from there).
+     */
+    static Path defaultScene(Path outputDir) throws IOException {
+        Path inRepository = Path.of("assets", "scenes", DEFAULT_SCENE);
+        if (Files.isRegularFile(inRepository)) {
+            return inRepository;
+        }
+        try (InputStream in = DemoCommand.class.getResourceAsStream("/assets/scenes/" + DEFAULT_SCENE)) {
+            if (in == null) {
+                throw new UserInputException("the default scene " + DEFAULT_SCENE + " is missing from the jar; rebuild it");
+            }
+            Files.createDirectories(outputDir);
+            Path copy = outputDir.resolve(DEFAULT_SCENE);
+            Files.write(copy, in.readAllBytes());
+            return copy;
+        }
     }
 
     @Override
@@ -48,11 +64,11 @@ final class DemoCommand implements Callable<Integer> {
         boolean gl = DisplayCheck.problem().isEmpty();
         boolean screen = gl && !"1".equals(System.getenv(ViewCommand.PRIVATE_XVFB_VARIABLE));
         if (screen) {
-            return Main.execute(concat(VIEW, "view", "--size", size));
+            return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
-            int code = Main.execute(concat(VIEW, "render", "--size", size, "-o", png.toString()));
+            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", size, "-o", png.toString());
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }

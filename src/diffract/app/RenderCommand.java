@@ -9,6 +9,8 @@ import diffract.viewer.ViewerRenderer;
 import diffract.viewer.ViewerSetup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -24,7 +26,10 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
-    @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default ${DEFAULT-VALUE}).")
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default: the scene's image, else ${DEFAULT-VALUE}).")
     String size;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png", description = "PNG to write.")
@@ -33,7 +38,7 @@ final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         options.validate();
-        int[] widthHeight = ViewerOptions.parseSize(size);
+        ViewerOptions.parseSize(size); // bad usage fails before any work
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new UserInputException("render writes PNG files; name the output OUT.png");
         }
@@ -41,6 +46,7 @@ final class RenderCommand implements Callable<Integer> {
         long start = System.nanoTime();
         Reporter reporter = Reporter.STDERR;
         ViewerSetup setup = options.setup(reporter);
+        int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
         try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
             target.writePng(output, widthHeight[0], widthHeight[1]);

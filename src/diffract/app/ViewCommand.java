@@ -9,6 +9,8 @@ import diffract.viewer.ViewerSetup;
 import diffract.viewer.ViewerWindow;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 import java.nio.file.Path;
@@ -30,7 +32,10 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
-    @Option(names = "--size", defaultValue = "800x600", paramLabel = "WxH", description = "Window size (default ${DEFAULT-VALUE}).")
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = "--size", defaultValue = "800x600", paramLabel = "WxH", description = "Window size (default: the scene's image, else ${DEFAULT-VALUE}).")
     String size;
 
     @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
@@ -45,13 +50,14 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         options.validate();
-        int[] widthHeight = ViewerOptions.parseSize(size);
+        ViewerOptions.parseSize(size); // bad usage fails before any work
         Optional<String> problem = noDisplayProblem(System.getenv(), System.getProperty("os.name", ""));
         if (problem.isPresent()) {
             throw new UserInputException(problem.get());
         }
         Reporter reporter = Reporter.STDERR;
         ViewerSetup setup = options.setup(reporter);
+        int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
         System.out.print(KeyBindings.helpText());
         try (ViewerWindow window = new ViewerWindow(model, widthHeight[0], widthHeight[1], screenshotDir)) {

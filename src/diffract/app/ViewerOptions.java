@@ -10,6 +10,9 @@ import diffract.optics.Variant;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.SamplingCheck;
 import diffract.precompute.Precomputation;
+import diffract.scene.Fabricator;
+import diffract.scene.Scene;
+import diffract.scene.SceneFile;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.DisplayMode;
@@ -19,27 +22,40 @@ import diffract.viewer.TermSource;
 import diffract.viewer.ViewerSetup;
 import diffract.viewer.ViewerShapes;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 import javax.imageio.ImageIO;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 
 /**
- * What {@code view} and {@code render} show, as options: they fill a {@link ViewerSetup}. The positional SCENE is
- * where a scene file will fill the same setup (the options then override what they name); until scene files exist
- * it is refused with one line.
+ * What {@code view} and {@code render} show, as options: they fill a {@link ViewerSetup}. With a SCENE file the
+ * {@link Fabricator} fills it from the file instead, and the options given on the command line override what they
+ * name (variant, terms, lambda step, window, coherence, light, camera angles, exposure, mode, pigmentation switch,
+ * diffuse weight); options that name what only the scene may say (the patch, the shape) are refused.
  */
 final class ViewerOptions {
-    static final String SCENES_NOT_SUPPORTED = "scene files are not supported yet: describe the view with options "
-            + "(--patch FILE or --synthetic elaphe-like|blazed, --shape, --variant, ...; see --help)";
+    /** What a scene file describes by itself: these options cannot be combined with one. */
+    static final List<String> SCENE_ONLY = List.of("--patch", "--max-height", "--pixel-size", "--synthetic", "--shape",
+            "--tangent", "--pigmentation");
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE",
-            description = "A scene file (reserved: scene files are not supported yet; use the options below).")
+            description = "A scene file (JSON, docs/scene-format.md), e.g. assets/scenes/snake-elaphe.json; options "
+                    + "given as well override what they name.")
     Path scene;
+
+    @Spec(Spec.Target.MIXEE)
+    CommandSpec mixee;
+
+    /** The scene read by validate() and built by setup(), when a SCENE was given. */
+    private Scene parsedScene;
+    private Fabricator.Fabricated fabricated;
 
     @Option(names = "--patch", paramLabel = "FILE",
             description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix or Gwyddion .gsf.")
@@ -114,7 +130,13 @@ final class ViewerOptions {
     /** Everything checked that needs no file and no GL: bad usage fails before any work. */
     void validate() {
         if (scene != null) {
-            throw new UserInputException(SCENES_NOT_SUPPORTED);
+            for (String option : SCENE_ONLY) {
+                if (given(option)) {
+                    throw new UserInputException(option + " cannot be combined with a SCENE: the scene file says "
+                            + "that (edit " + scene + ", or leave the SCENE out)");
+                }
+            }
+            parsedScene = SceneFile.load(scene); // a bad scene fails here, before any OpenGL
         }
         if (patch != null && synthetic != null) {
             throw new UserInputException("give --patch FILE or --synthetic KIND, not both");
@@ -158,8 +180,18 @@ final class ViewerOptions {
     /** The snake's procedural corn-snake pigmentation is the same every run. */
     static final long PIGMENT_SEED = 2014;
 
-    /** Reads the patch and the pigmentation image and builds the setup (validate() first). */
+    /** Whether the user gave {@code option} on the command line (not just its default). */
+    boolean given(String option) {
+        return mixee != null && mixee.commandLine() != null && mixee.commandLine().getParseResult() != null
+                && mixee.commandLine().getParseResult().hasMatchedOption(option);
+    }
+
+    /** Reads the patch and the pigmentation image (or the scene) and builds the setup (validate() first). */
     ViewerSetup setup(Reporter reporter) {
+        if (scene != null) {
+            fabricated = Fabricator.fabricate(parsedScene != null ? parsedScene : SceneFile.load(scene), reporter);
+            return withOverrides(fabricated.setup());
+        }
         HeightField field;
         String name;
         if (patch != null) {
@@ -182,8 +214,54 @@ final class ViewerOptions {
                 exposure, brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, pigment != null && !noPigmentation);
     }
 
+    /** The scene's setup with what the command line names in its place. */
+    private ViewerSetup withOverrides(ViewerSetup s) {
+        BrdfSettings settings = s.settings();
+        if (given("--variant")) {
+            settings = settings.withVariant(settings().variant());
+        }
+        if (given("--terms")) {
+            settings = settings.withHighestOrder(highestOrder);
+        }
+        if (given("--lambda-step")) {
+            settings = settings.withLambdaStepNm(lambdaStepNm);
+        }
+        if (given("--window-radius")) {
+            settings = settings.withWindowRadius(windowRadius);
+        }
+        if (given("--coherence-length")) {
+            settings = new BrdfSettings(settings.variant(), settings.highestOrder(), settings.windowRadius(),
+                    settings.lambdaMinNm(), settings.lambdaMaxNm(), settings.lambdaStepNm(), coherenceLengthUm / 4.0,
+                    settings.refractiveIndex(), settings.pqReplicas());
+        }
+        OrbitCamera c = s.camera();
+        OrbitCamera camera = new OrbitCamera(given("--azimuth") ? azimuthDeg : c.azimuthDeg(),
+                given("--elevation") ? elevationDeg : c.elevationDeg(), given("--distance") ? distance : c.distance(),
+                c.targetX(), c.targetY(), c.targetZ());
+        LightDirection light = new LightDirection(given("--theta-i") ? thetaIDeg : s.light().thetaDeg(),
+                given("--phi-i") ? phiIDeg : s.light().phiDeg());
+        return new ViewerSetup(s.patch(), s.patchName(), s.shape(), s.pigmentation(),
+                given("--diffuse-weight") ? diffuseWeight : s.diffuseWeight(), settings, camera, light,
+                given("--exposure") ? exposure : s.exposure(), brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
+                s.pigmentationOn() && !noPigmentation, s.verticalFovDeg());
+    }
+
+    /**
+     * The picture's (or window's) size: {@code --size} when given, else the scene's image size, else the command's
+     * default {@code sizeOption}.
+     */
+    int[] size(String sizeOption, boolean sizeGiven) {
+        if (fabricated != null && !sizeGiven) {
+            return new int[] {fabricated.image().width(), fabricated.image().height()};
+        }
+        return parseSize(sizeOption);
+    }
+
     /** Terms from the user cache (computed and stored on first use), keyed by patch content and N. */
     TermSource termSource(ViewerSetup setup) {
+        if (fabricated != null) {
+            return fabricated.terms();
+        }
         return (n, reporter) -> Precomputation.cached(new Precomputation.Request(setup.patch(), setup.patchName(),
                 maxHeightUm, n, null, setup.settings().lambdaMinNm()), reporter);
     }

@@ -24,7 +24,6 @@ import javax.vecmath.Vector3f;
 public final class ViewerRenderer extends Renderer {
     /** Grey, not black: a black background would hide where the surface reflects nothing. */
     public static final float[] CLEAR_COLOUR = {0.12f, 0.12f, 0.14f, 1f};
-    public static final float VERTICAL_FOV_DEG = 45f;
 
     private final ViewerModel model;
     private final ViewerMaterials materials;
@@ -40,7 +39,7 @@ public final class ViewerRenderer extends Renderer {
     private int heightPx;
 
     public ViewerRenderer(ViewerModel model) {
-        super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, VERTICAL_FOV_DEG));
+        super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, (float) model.setup().verticalFovDeg()));
         this.model = model;
         this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight());
         // the nodes get their materials on the render thread, at the first frame

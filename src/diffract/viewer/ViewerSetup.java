@@ -23,10 +23,23 @@ import java.util.Objects;
  * @param pigmentation   display-encoded sRGB pigment colours over the texcoords, or null
  * @param diffuseWeight  w_d of 003 Algorithm 4: how much pigment is mixed in as ambient light
  * @param exposure       multiplies linear XYZ before display encoding
+ * @param verticalFovDeg the camera's vertical field of view in degrees, in (0, 180)
  */
 public record ViewerSetup(HeightField patch, String patchName, Shape shape, BufferedImage pigmentation,
                           double diffuseWeight, BrdfSettings settings, OrbitCamera camera, LightDirection light,
-                          double exposure, DisplayMode mode, boolean pigmentationOn) {
+                          double exposure, DisplayMode mode, boolean pigmentationOn,
+                          double verticalFovDeg) {
+    /** The field of view the viewer had before scene files could choose one. */
+    public static final double DEFAULT_VERTICAL_FOV_DEG = 45;
+
+    /** A setup with the default field of view ({@value #DEFAULT_VERTICAL_FOV_DEG} degrees). */
+    public ViewerSetup(HeightField patch, String patchName, Shape shape, BufferedImage pigmentation,
+                       double diffuseWeight, BrdfSettings settings, OrbitCamera camera, LightDirection light,
+                       double exposure, DisplayMode mode, boolean pigmentationOn) {
+        this(patch, patchName, shape, pigmentation, diffuseWeight, settings, camera, light, exposure, mode,
+                pigmentationOn, DEFAULT_VERTICAL_FOV_DEG);
+    }
+
     public ViewerSetup {
         Objects.requireNonNull(patch, "patch");
         Objects.requireNonNull(patchName, "patchName");
@@ -52,6 +65,9 @@ public record ViewerSetup(HeightField patch, String patchName, Shape shape, Buff
         }
         if (!(diffuseWeight >= 0 && diffuseWeight <= 1)) {
             throw new UserInputException("the diffuse weight w_d must be in [0, 1], got " + diffuseWeight);
+        }
+        if (!(verticalFovDeg > 0 && verticalFovDeg < 180)) {
+            throw new UserInputException("the field of view must be in (0, 180) degrees, got " + verticalFovDeg);
         }
         if (pigmentationOn && pigmentation == null) {
             throw new UserInputException("pigmentation is switched on but no pigmentation image was given");

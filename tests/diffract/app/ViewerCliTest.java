@@ -48,16 +48,9 @@ class ViewerCliTest {
     void theSnakeIsIridescent() throws Exception {
         Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
         Path png = dir.resolve("snake.png");
-        String[] view = DemoCommand.VIEW.clone();
-        for (int i = 0; i < view.length - 1; i++) {
-            if (view[i].equals("--terms")) {
-                view[i + 1] = "12"; // fewer terms: llvmpipe is slow, and the patch needs only ~12 at 380 nm
-            }
-        }
-        String[] args = new String[view.length + 5];
-        args[0] = "render";
-        System.arraycopy(view, 0, args, 1, view.length);
-        System.arraycopy(new String[] {"--size", "160x100", "-o", png.toString()}, 0, args, view.length + 1, 4);
+        // fewer terms: llvmpipe is slow, and the patch needs only ~12 at 380 nm
+        String[] args = {"render", DemoCommand.defaultScene(dir).toString(), "--terms", "12", "--size", "160x100",
+            "-o", png.toString()};
         Object[] result = CliTest.run(args);
         assertEquals(0, result[0], (String) result[2]);
         BufferedImage image = ImageIO.read(png.toFile());
@@ -72,8 +65,10 @@ class ViewerCliTest {
     @Test
     void badUsageEndsWithOneLineAndExitCode2() {
         String out = dir.resolve("x.png").toString();
-        assertOneLine(CliTest.run("view", "scene.json"), "scene files are not supported yet");
-        assertOneLine(CliTest.run("render", "scene.json", "-o", out), "scene files are not supported yet");
+        assertOneLine(CliTest.run("view", "scene.json"), "cannot read scene file scene.json: no such file");
+        assertOneLine(CliTest.run("render", "scene.json", "-o", out), "cannot read scene file scene.json");
+        assertOneLine(CliTest.run("render", "assets/scenes/snake-elaphe.json", "--shape", "sphere", "-o", out),
+                "--shape cannot be combined with a SCENE");
         assertOneLine(CliTest.run("render", "--variant", "reference", "-o", out), "flss, nmm or pq");
         assertOneLine(CliTest.run("render", "--shape", "teapot", "-o", out), "sphere, plane, cylinder or snake");
         assertOneLine(CliTest.run("render", "--size", "12x9000", "-o", out), "--size");

@@ -13,16 +13,11 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
-import javax.imageio.ImageIO;
-import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.stream.Stream;
 
-import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 /**
  * Screenshot regression: GPU BRDF maps (256 x 256, theta_i = 30 degrees, settings of {@link RenderTestSupport})
@@ -38,7 +33,8 @@ import static org.junit.jupiter.api.Assertions.fail;
  * budget (0.5 %, 327 pixels) absorbs. A real regression (a sign, a wrong texel, a missing term) changes whole orders:
  * thousands of pixels by tens of steps.
  *
- * <p>On failure the rendered picture and an amplified difference (|a - b| x 16) go to {@code target/golden-diffs/}.
+ * <p>On failure the rendered picture and an amplified difference (|a - b| x 16) go to {@code target/golden-diffs/}
+ * ({@link GoldenImages}).
  * Regenerate the goldens after an intended change with
  * {@code xvfb-run -a mvn test -Dtest=GoldenImageTest -Ddiffract.updateGoldens=true}.
  */
@@ -48,7 +44,7 @@ class GoldenImageTest {
     static final int CHANNEL_TOLERANCE = 2;
     static final double PIXEL_BUDGET_PERCENT = 0.5;
     static final Path GOLDENS = Path.of("tests", "goldens");
-    static final Path DIFFS = Path.of("target", "golden-diffs");
+    static final Path DIFFS = GoldenImages.DIFFS;
 
     static Stream<Arguments> scenes() {
         Stream.Builder<Arguments> scenes = Stream.builder();
@@ -73,47 +69,8 @@ class GoldenImageTest {
         Path actualPng = DIFFS.resolve(name + "-actual.png");
         Files.createDirectories(DIFFS);
         ImageFiles.writePng(actualPng, display(xyz, wi), SIZE, SIZE, 3);
-        Path golden = GOLDENS.resolve(name + ".png");
-        if (Boolean.getBoolean("diffract.updateGoldens")) {
-            Files.createDirectories(GOLDENS);
-            Files.copy(actualPng, golden, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-            System.out.println("golden updated: " + golden);
-            return;
-        }
-        if (!Files.isRegularFile(golden)) {
-            fail("no golden " + golden + "; create it with -Ddiffract.updateGoldens=true");
-        }
-        BufferedImage expected = ImageIO.read(golden.toFile());
-        BufferedImage actual = ImageIO.read(actualPng.toFile());
-        BufferedImage diff = new BufferedImage(SIZE, SIZE, BufferedImage.TYPE_INT_RGB);
-        int failing = 0;
-        int worst = 0;
-        for (int y = 0; y < SIZE; y++) {
-            for (int x = 0; x < SIZE; x++) {
-                int a = expected.getRGB(x, y);
-                int b = actual.getRGB(x, y);
-                int pixelWorst = 0;
-                int amplified = 0;
-                for (int shift = 0; shift <= 16; shift += 8) {
-                    int d = Math.abs(((a >> shift) & 0xff) - ((b >> shift) & 0xff));
-                    pixelWorst = Math.max(pixelWorst, d);
-                    amplified |= Math.min(255, 16 * d) << shift;
-                }
-                diff.setRGB(x, y, amplified);
-                worst = Math.max(worst, pixelWorst);
-                failing += pixelWorst > CHANNEL_TOLERANCE ? 1 : 0;
-            }
-        }
-        double percent = 100.0 * failing / (SIZE * SIZE);
-        String summary = String.format(Locale.ROOT, "%s: %d pixels (%.3f %%) differ by more than %d/255, largest "
-                + "difference %d/255", name, failing, percent, CHANNEL_TOLERANCE, worst);
-        System.out.println("golden " + summary);
-        if (percent > PIXEL_BUDGET_PERCENT) {
-            Path diffPng = DIFFS.resolve(name + "-diff.png");
-            ImageIO.write(diff, "png", diffPng.toFile());
-            fail(summary + " (budget " + PIXEL_BUDGET_PERCENT + " %); see " + actualPng + " and " + diffPng);
-        }
-        assertTrue(expected.getWidth() == SIZE && expected.getHeight() == SIZE, "golden size");
+        GoldenImages.assertMatches(name, actualPng, GOLDENS.resolve(name + ".png"), CHANNEL_TOLERANCE,
+                PIXEL_BUDGET_PERCENT);
     }
 
     /** As the CLI: auto exposure (brightest diffracted pixel to Y = 1), then ColourPath.SRGB. */

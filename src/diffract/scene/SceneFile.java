@@ -1,0 +1,302 @@
+package diffract.scene;
+
+import diffract.geometry.SnakeMesh;
+import diffract.geometry.TangentSource;
+import diffract.optics.BrdfSettings;
+import diffract.optics.CoherenceWindow;
+import diffract.optics.GainFactor;
+import diffract.optics.ProceduralPatches;
+import diffract.optics.Variant;
+import diffract.util.UserInputException;
+import diffract.viewer.DisplayMode;
+import diffract.viewer.ViewerController;
+
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Reads a scene file ({@code docs/scene-format.md}) into a checked {@link Scene}. Every problem is one
+ * {@link UserInputException} line {@code FILE:LINE: key.path: what is wrong (and the fix)}: malformed JSON,
+ * unknown keys (with the nearest known key), missing keys, wrong types, values out of range, files that do not
+ * exist (paths are relative to the scene file's folder). Nothing else escapes, whatever the text.
+ */
+public final class SceneFile {
+    /** The viewer's wavelength range may lie anywhere within the CIE tables' 360..830 nm. */
+    static final double LAMBDA_LOWEST_NM = 360;
+    static final double LAMBDA_HIGHEST_NM = 830;
+    static final List<String> VARIANTS = List.of("flss", "nmm", "pq");
+    static final List<String> MODES = List.of("surface", "brdfMap");
+
+    private SceneFile() {
+    }
+
+    public static Scene load(Path file) {
+        String text;
+        try {
+            text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file)))
+                    .toString();
+        } catch (CharacterCodingException e) {
+            throw new UserInputException(file + ":1: the scene is not UTF-8 text; save it as UTF-8 JSON");
+        } catch (IOException e) {
+            throw new UserInputException("cannot read scene file " + file + ": "
+                    + (e instanceof java.nio.file.NoSuchFileException ? "no such file" : e.getMessage()));
+        }
+        Path absolute = file.toAbsolutePath().normalize();
+        return parse(text, file.toString(), absolute.getParent(), file);
+    }
+
+    /**
+     * @param displayName   how messages name the file
+     * @param baseDirectory where relative paths start
+     * @param source        recorded in the scene
+     */
+    public static Scene parse(String text, String displayName, Path baseDirectory, Path source) {
+        SceneObject.SceneSource where = new SceneObject.SceneSource(displayName, baseDirectory);
+        JsonTree.Located tree;
+        try {
+            tree = JsonTree.parse(text);
+        } catch (JsonTree.SyntaxError e) {
+            throw SceneObject.problem(where, e.line, "(json)", e.getMessage());
+        }
+        SceneObject root = SceneObject.root(where, tree);
+        Scene scene = new Scene(source, image(root), camera(root.object("camera")), light(root.object("light")),
+                shape(root.object("shape")), material(root.object("material")),
+                root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE);
+        root.finish();
+        return scene;
+    }
+
+    private static Scene.ImageSize image(SceneObject root) {
+        if (!root.has("image")) {
+            return new Scene.ImageSize(640, 400);
+        }
+        SceneObject image = root.object("image");
+        SceneObject.Range pixels = SceneObject.Range.closed(16, 4096);
+        Scene.ImageSize size = new Scene.ImageSize(image.integer("width", pixels), image.integer("height", pixels));
+        image.finish();
+        return size;
+    }
+
+    private static Scene.CameraSpec camera(SceneObject camera) {
+        double[] eye = camera.vector3("eye");
+        double[] lookAt = camera.vector3("lookAt", new double[3]);
+        double[] up = camera.has("up") ? camera.direction("up") : new double[] {0, 1, 0};
+        double fov = camera.number("fieldOfViewDeg", SceneObject.Range.open(0, 180), 45);
+        Scene.CameraSpec spec = new Scene.CameraSpec(eye, lookAt, up, fov);
+        String problem = CameraManager.problem(spec);
+        if (problem != null) {
+            throw camera.problem("eye", problem);
+        }
+        String upProblem = CameraManager.upProblem(spec);
+        if (upProblem != null) {
+            throw camera.problem("up", upProblem);
+        }
+        camera.finish();
+        return spec;
+    }
+
+    private static Scene.LightSpec light(SceneObject light) {
+        double[] towards;
+        if (light.has("direction")) {
+            towards = light.direction("direction");
+            if (light.has("thetaDeg") || light.has("phiDeg")) {
+                throw light.problem(light.has("thetaDeg") ? "thetaDeg" : "phiDeg",
+                        "give either \"direction\" or \"thetaDeg\"/\"phiDeg\", not both");
+            }
+        } else if (light.has("thetaDeg")) {
+            double theta = Math.toRadians(light.number("thetaDeg", SceneObject.Range.any()));
+            double phi = Math.toRadians(light.number("phiDeg", SceneObject.Range.any(), 0));
+            towards = new double[] {Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)};
+        } else {
+            throw SceneObject.problem(sourceOf(light), light.line(), light.keyPath("direction"),
+                    "missing; add \"direction\": [x, y, z] (towards the light) or \"thetaDeg\" and \"phiDeg\"");
+        }
+        double thetaDeg = LightManager.thetaDeg(towards);
+        if (thetaDeg > diffract.viewer.LightDirection.MAX_THETA_DEG + 1e-9) {
+            throw light.problem(light.has("direction") ? "direction" : "thetaDeg", String.format(java.util.Locale.ROOT,
+                    "the light is %.1f degrees from the +z axis; the viewer takes at most %.0f (light from the +z side)",
+                    thetaDeg, diffract.viewer.LightDirection.MAX_THETA_DEG));
+        }
+        String spectrum = light.choice("spectrum", List.of("D65"), "D65");
+        light.finish();
+        return new Scene.LightSpec(towards, spectrum);
+    }
+
+    private static SceneObject.SceneSource sourceOf(SceneObject object) {
+        return object.source();
+    }
+
+    private static Scene.ShapeSpec shape(SceneObject shape) {
+        List<String> kinds = List.of("snake", "obj", "plane", "sphere", "cylinder");
+        Scene.ShapeKind kind = Scene.ShapeKind.valueOf(shape.choice("kind", kinds).toUpperCase(java.util.Locale.ROOT));
+        Path file = null;
+        TangentSource tangents = null;
+        SnakeMesh.RidgeDirection ridges = null;
+        if (kind == Scene.ShapeKind.OBJ) {
+            file = shape.existingFile("file");
+            tangents = tangents(shape, TangentSource.fromUvs(), true);
+        } else if (kind == Scene.ShapeKind.SNAKE) {
+            ridges = shape.choice("ridges", List.of("alongBody", "aroundBody"), "alongBody").equals("alongBody")
+                    ? SnakeMesh.RidgeDirection.ALONG_BODY : SnakeMesh.RidgeDirection.AROUND_BODY;
+        } else {
+            tangents = tangents(shape, TangentSource.projected(1, 0, 0), false);
+        }
+        Scene.Transform transform = shape.has("transform") ? transform(shape.object("transform"))
+                : Scene.Transform.identity();
+        shape.finish();
+        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform);
+    }
+
+    private static TangentSource tangents(SceneObject shape, TangentSource defaultSource, boolean obj) {
+        if (!shape.has("tangents")) {
+            return defaultSource;
+        }
+        JsonTree.Located node = shape.raw("tangents");
+        String fix = obj ? "use \"explicit\" (tg lines), \"uv\" or {\"project\": [x, y, z]}"
+                : "use {\"project\": [x, y, z]} (a world direction projected onto the surface)";
+        if (node.value() instanceof String text && obj) {
+            if (text.equals("explicit")) {
+                return TangentSource.explicit();
+            } else if (text.equals("uv")) {
+                return TangentSource.fromUvs();
+            }
+            throw shape.problem("tangents", "unknown value \"" + text + "\""
+                    + SceneObject.suggestion(text, List.of("explicit", "uv")) + "; " + fix);
+        }
+        if (node.value() instanceof Map) {
+            SceneObject object = shape.child("tangents", node);
+            double[] d = object.direction("project");
+            object.finish();
+            return TangentSource.projected(d[0], d[1], d[2]);
+        }
+        throw shape.problem("tangents", "must be " + (obj ? "a string or " : "") + "an object, got " + node.typeName()
+                + "; " + fix);
+    }
+
+    private static Scene.Transform transform(SceneObject transform) {
+        Scene.Transform t = new Scene.Transform(transform.vector3("translate", new double[3]),
+                transform.vector3("rotateDeg", new double[3]),
+                transform.number("scale", SceneObject.Range.above(0, 1000), 1.0));
+        transform.finish();
+        return t;
+    }
+
+    private static Scene.MaterialSpec material(SceneObject material) {
+        Scene.PatchSpec patch = patch(material.object("patch"));
+        Variant variant = Variant.parse(material.choice("variant", VARIANTS, "flss"));
+        Integer terms = null;
+        Double tolerance = null;
+        if (material.has("tolerance")) {
+            if (material.has("taylorTerms")) {
+                throw material.problem("taylorTerms", "give either \"taylorTerms\" or \"tolerance\", not both");
+            }
+            tolerance = material.number("tolerance", SceneObject.Range.open(0, 1));
+        } else {
+            terms = material.integer("taylorTerms", SceneObject.Range.closed(0, ViewerController.MAX_HIGHEST_ORDER), 30);
+        }
+        SceneObject.Range visible = SceneObject.Range.closed(LAMBDA_LOWEST_NM, LAMBDA_HIGHEST_NM);
+        double lambdaMin = material.number("lambdaMinNm", visible, BrdfSettings.LAMBDA_MIN_NM);
+        double lambdaMax = material.number("lambdaMaxNm", visible, BrdfSettings.LAMBDA_MAX_NM);
+        if (!(lambdaMax > lambdaMin)) {
+            throw material.problem(material.has("lambdaMaxNm") ? "lambdaMaxNm" : "lambdaMinNm",
+                    "lambdaMaxNm must be greater than lambdaMinNm, got " + SceneObject.format(lambdaMin) + " and "
+                            + SceneObject.format(lambdaMax));
+        }
+        double step = material.number("lambdaStepNm", SceneObject.Range.above(0, 100), 5);
+        int windowRadius = material.integer("windowRadius", SceneObject.Range.closed(0, 8), 1);
+        double sigma = material.number("sigmaSpatialUm", SceneObject.Range.above(0, 10000),
+                CoherenceWindow.COHERENCE_LENGTH_UM / 4.0);
+        double n = material.number("refractiveIndex", SceneObject.Range.closed(1, 4),
+                GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX);
+        Scene.PigmentationSpec pigmentation = pigmentation(material);
+        boolean pigmentationOn = material.bool("pigmentationOn", pigmentation.present());
+        if (pigmentationOn && !pigmentation.present()) {
+            throw material.problem("pigmentationOn", "is true but \"pigmentation\" is \"none\"; give "
+                    + "\"pigmentation\": \"procedural\" or {\"file\": \"IMAGE\"}");
+        }
+        double diffuseWeight = material.number("diffuseWeight", SceneObject.Range.closed(0, 1), 0.2);
+        double exposure = material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
+        material.finish();
+        return new Scene.MaterialSpec(patch, variant, terms, tolerance, lambdaMin, lambdaMax, step, windowRadius,
+                sigma, n, pigmentation, pigmentationOn, diffuseWeight, exposure);
+    }
+
+    private static Scene.PigmentationSpec pigmentation(SceneObject material) {
+        if (!material.has("pigmentation")) {
+            return Scene.PigmentationSpec.none();
+        }
+        JsonTree.Located node = material.raw("pigmentation");
+        if (node.value() instanceof String text) {
+            if (text.equals("none")) {
+                return Scene.PigmentationSpec.none();
+            } else if (text.equals("procedural")) {
+                return new Scene.PigmentationSpec(true, null);
+            }
+            throw material.problem("pigmentation", "unknown value \"" + text + "\""
+                    + SceneObject.suggestion(text, List.of("none", "procedural"))
+                    + "; use \"none\", \"procedural\" or {\"file\": \"IMAGE\"}");
+        }
+        if (node.value() instanceof Map) {
+            SceneObject object = material.child("pigmentation", node);
+            Path file = object.existingFile("file");
+            object.finish();
+            return new Scene.PigmentationSpec(false, file);
+        }
+        throw material.problem("pigmentation", "must be \"none\", \"procedural\" or {\"file\": \"IMAGE\"}, got "
+                + node.typeName());
+    }
+
+    private static Scene.PatchSpec patch(SceneObject patch) {
+        if (patch.has("file")) {
+            Path file = patch.existingFile("file");
+            if (patch.has("procedural")) {
+                throw patch.problem("procedural", "give either \"file\" or \"procedural\", not both");
+            }
+            Double maxHeight = patch.has("maxHeightUm") ? patch.number("maxHeightUm", SceneObject.Range.positive()) : null;
+            Double pixelSize = patch.has("pixelSizeUm") ? patch.number("pixelSizeUm", SceneObject.Range.positive()) : null;
+            patch.finish();
+            return new Scene.FilePatch(file, maxHeight, pixelSize);
+        }
+        if (!patch.has("procedural")) {
+            throw SceneObject.problem(patch.source(), patch.line(), patch.keyPath("procedural"), "missing; add "
+                    + "\"file\": \"HEIGHTFIELD\" or \"procedural\": one of \"" + String.join("\", \"",
+                    ProceduralPatches.KINDS) + "\"");
+        }
+        String kind = patch.choice("procedural", ProceduralPatches.KINDS);
+        ProceduralPatches.Spec d = ProceduralPatches.Spec.defaults(kind);
+        boolean grating = kind.equals("blazed") || kind.equals("sinusoid");
+        double period = patch.number("periodUm", SceneObject.Range.above(0, 100), d.periodUm());
+        double height = patch.number("heightUm", SceneObject.Range.closed(0, 10), d.heightUm());
+        int periods = patch.integer("periods", SceneObject.Range.closed(1, 256), d.periods());
+        int samplesPerPeriod = d.samplesPerPeriod();
+        int rows = d.rows();
+        int size = d.sizePx();
+        double roughness = d.roughnessUm();
+        long seed = d.seed();
+        if (grating) {
+            samplesPerPeriod = patch.integer("samplesPerPeriod", SceneObject.Range.closed(2, 256), samplesPerPeriod);
+            rows = patch.integer("rows", SceneObject.Range.closed(1, 1024), rows);
+            if ((long) samplesPerPeriod * periods > 4096) {
+                throw patch.problem(patch.has("periods") ? "periods" : "samplesPerPeriod", "periods x samplesPerPeriod "
+                        + "must be at most 4096 columns, got " + samplesPerPeriod * periods);
+            }
+        } else {
+            size = patch.integer("sizePx", SceneObject.Range.closed(16, 1024), size);
+            if (size % 16 != 0) {
+                throw patch.problem("sizePx", "must be a multiple of 16, got " + size);
+            }
+            seed = patch.wholeNumber("seed", seed);
+            if (kind.equals("xenopeltisLike")) {
+                roughness = patch.number("roughnessUm", SceneObject.Range.closed(0, 1), roughness);
+            }
+        }
+        patch.finish();
+        return new Scene.ProceduralPatch(new ProceduralPatches.Spec(kind, period, height, periods, samplesPerPeriod,
+                rows, size, roughness, seed));
+    }
+}

@@ -1,0 +1,117 @@
+package diffract.scene;
+
+import diffract.jrtr.VertexAttribute;
+import diffract.optics.Variant;
+import diffract.util.Reporter;
+import diffract.viewer.DisplayMode;
+import diffract.viewer.LightDirection;
+import diffract.viewer.OrbitCamera;
+import diffract.viewer.ViewerSetup;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** The Fabricator builds the expected setup from each scene: shape, patch, settings, camera and light numbers. */
+class FabricatorTest {
+    @TempDir
+    Path dir;
+
+    @Test
+    void theDefaultSceneIsTheDemosView() {
+        Fabricator.Fabricated f = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-elaphe.json"), Reporter.SILENT);
+        ViewerSetup s = f.setup();
+        assertEquals("snake", s.shape().name());
+        assertEquals(128, s.patch().rows());
+        assertEquals(128, s.patch().cols());
+        assertEquals(8 * 1.144 / 128, s.patch().pixelSizeXUm(), 1e-12);
+        assertEquals(Variant.FLSS, s.settings().variant());
+        assertEquals(20, s.settings().highestOrder());
+        assertEquals(10, s.settings().lambdaStepNm());
+        assertEquals(2.5, s.settings().sigmaSpatialUm());
+        assertEquals(1, s.settings().windowRadius());
+        assertEquals(50, s.exposure());
+        // eye [0.403459, 0.9, 1.505729] is the orbit camera at azimuth 15, elevation 30, distance 1.8 (to 6 digits)
+        OrbitCamera c = s.camera();
+        assertEquals(15, c.azimuthDeg(), 1e-4);
+        assertEquals(30, c.elevationDeg(), 1e-4);
+        assertEquals(1.8, c.distance(), 1e-6);
+        assertEquals(0, c.targetX());
+        // direction [0, 0.8660254, 0.5] towards the light is theta 60 from +z, phi 90 from +x
+        assertEquals(60, s.light().thetaDeg(), 1e-5);
+        assertEquals(90, s.light().phiDeg(), 1e-9);
+        assertEquals(45, s.verticalFovDeg());
+        assertNotNull(s.pigmentation(), "the corn-snake pigmentation is there for P");
+        assertFalse(s.pigmentationOn());
+        assertEquals(DisplayMode.SURFACE, s.mode());
+        assertEquals(640, f.image().width());
+        assertEquals(400, f.image().height());
+    }
+
+    @Test
+    void theOtherDefaultScenes() {
+        ViewerSetup xenopeltis = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-xenopeltis.json"),
+                Reporter.SILENT).setup();
+        assertEquals(16 * 0.65 / 128, xenopeltis.patch().pixelSizeYUm(), 1e-12);
+        assertEquals(null, xenopeltis.pigmentation());
+        ViewerSetup blazed = Fabricator.fabricate(SceneFileTest.SCENES.resolve("blazed-grating-plane.json"),
+                Reporter.SILENT).setup();
+        assertEquals("plane", blazed.shape().name());
+        assertEquals(16, blazed.patch().rows());
+        assertEquals(26 * 25, blazed.patch().cols());
+        assertEquals(3.5, blazed.camera().distance(), 1e-12);
+        assertEquals(0, blazed.camera().elevationDeg(), 1e-12);
+        assertEquals(30, blazed.light().thetaDeg(), 1e-9);
+        assertEquals(0, blazed.light().phiDeg(), 1e-9);
+        ViewerSetup map = Fabricator.fabricate(SceneFileTest.SCENES.resolve("brdfmap-elaphe.json"), Reporter.SILENT).setup();
+        assertEquals(DisplayMode.BRDF_MAP, map.mode());
+    }
+
+    @Test
+    void conversionsMatchTheViewersOwnDefinitions() {
+        Scene.CameraSpec camera = new Scene.CameraSpec(new double[] {1, 2, -3}, new double[] {0.5, 0.25, 0},
+                new double[] {0, 1, 0}, 30);
+        OrbitCamera orbit = CameraManager.orbit(camera);
+        double[] eye = orbit.eye();
+        for (int k = 0; k < 3; k++) {
+            assertEquals(camera.eye()[k], eye[k], 1e-12, "eye " + k);
+        }
+        double[] towards = {-0.3, 0.4, 0.8};
+        LightDirection light = LightManager.light(new Scene.LightSpec(towards, "D65"));
+        double norm = Math.sqrt(0.09 + 0.16 + 0.64);
+        assertEquals(towards[0] / norm, light.direction().x(), 1e-12);
+        assertEquals(towards[1] / norm, light.direction().y(), 1e-12);
+        assertEquals(towards[2] / norm, light.direction().z(), 1e-12);
+    }
+
+    @Test
+    void toleranceChoosesNAndTransformsMoveTheShape() throws IOException {
+        Path file = dir.resolve("s.json");
+        Files.writeString(file, "{\"camera\": {\"eye\": [0, 1, 4], \"lookAt\": [2, 0, 0], \"fieldOfViewDeg\": 30},"
+                + " \"light\": {\"direction\": [0, 0, 1]}, \"image\": {\"width\": 32, \"height\": 16},"
+                + " \"shape\": {\"kind\": \"sphere\", \"transform\": {\"translate\": [2, 0, 0], \"rotateDeg\": [0, 90, 0],"
+                + " \"scale\": 0.5}, \"tangents\": {\"project\": [0, 1, 0]}},"
+                + " \"material\": {\"patch\": {\"procedural\": \"xenopeltisLike\"}, \"tolerance\": 1e-3,"
+                + " \"variant\": \"pq\"}}");
+        ViewerSetup s = Fabricator.fabricate(file, Reporter.SILENT).setup();
+        assertEquals(Variant.PQ, s.settings().variant());
+        assertTrue(s.settings().highestOrder() > 0 && s.settings().highestOrder() < 20, "N " + s.settings().highestOrder());
+        assertEquals(30, s.verticalFovDeg());
+        assertEquals(2.0, s.camera().targetX());
+        float[] p = s.shape().vertexData().attribute(VertexAttribute.POSITION);
+        float[] t = s.shape().vertexData().attribute(VertexAttribute.TANGENT);
+        float[] n = s.shape().vertexData().attribute(VertexAttribute.NORMAL);
+        for (int i = 0; i < p.length; i += 3) {
+            double r = Math.sqrt(Math.pow(p[i] - 2, 2) + p[i + 1] * p[i + 1] + p[i + 2] * p[i + 2]);
+            assertEquals(0.5, r, 1e-5, "a unit sphere scaled by 0.5 about (2, 0, 0)");
+            assertEquals(0, t[i] * n[i] + t[i + 1] * n[i + 1] + t[i + 2] * n[i + 2], 1e-5, "tangent in the surface");
+        }
+    }
+}

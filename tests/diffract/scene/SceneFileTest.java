@@ -1,0 +1,132 @@
+package diffract.scene;
+
+import diffract.util.UserInputException;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** Every default scene parses; every kind of invalid scene gets its own one-line message with file, line and key. */
+class SceneFileTest {
+    static final Path SCENES = Path.of("assets", "scenes");
+
+    @TempDir
+    Path dir;
+
+    @ParameterizedTest
+    @ValueSource(strings = {"snake-elaphe", "snake-xenopeltis", "blazed-grating-plane", "brdfmap-elaphe"})
+    void everyDefaultSceneParses(String name) {
+        Scene scene = SceneFile.load(SCENES.resolve(name + ".json"));
+        assertTrue(scene.image().width() >= 16, name);
+    }
+
+    /** A valid scene whose lines are known: line 5 is the material's patch, line 6 the variant. */
+    static String valid(String materialExtra) {
+        return "{\n"
+                + "  \"camera\": {\"eye\": [0, 0, 3]},\n"
+                + "  \"light\": {\"thetaDeg\": 30},\n"
+                + "  \"shape\": {\"kind\": \"plane\"},\n"
+                + "  \"material\": {\"patch\": {\"procedural\": \"blazed\"},\n"
+                + "    \"variant\": \"flss\"" + materialExtra + "\n"
+                + "  }\n"
+                + "}\n";
+    }
+
+    private String message(String text) throws IOException {
+        Path file = dir.resolve("bad.json");
+        Files.writeString(file, text);
+        UserInputException e = assertThrows(UserInputException.class, () -> SceneFile.load(file));
+        assertTrue(!e.getMessage().contains("\n"), "one line: " + e.getMessage());
+        assertTrue(e.getMessage().startsWith(file + ":"), e.getMessage());
+        return e.getMessage().substring(file.toString().length() + 1);
+    }
+
+    @Test
+    void theValidSceneParses() throws IOException {
+        Path file = dir.resolve("ok.json");
+        Files.writeString(file, valid(""));
+        assertEquals(diffract.optics.Variant.FLSS, SceneFile.load(file).material().variant());
+    }
+
+    @Test
+    void unknownKeySuggestsTheNearestKnownKey() throws IOException {
+        String m = message(valid(",\n    \"exposre\": 3"));
+        assertTrue(m.startsWith("7: material.exposre: unknown key (did you mean \"exposure\"?)"), m);
+    }
+
+    @Test
+    void missingKeyNamesWhatToAdd() throws IOException {
+        String m = message(valid("").replace("\"eye\": [0, 0, 3]", "\"lookAt\": [0, 0, 0]"));
+        assertTrue(m.startsWith("2: camera.eye: missing; add \"eye\": [x, y, z]"), m);
+    }
+
+    @Test
+    void wrongTypeNamesTheTypeGiven() throws IOException {
+        String m = message(valid(",\n    \"taylorTerms\": \"twenty\""));
+        assertTrue(m.startsWith("7: material.taylorTerms: must be a number in [0, 100], got a string"), m);
+    }
+
+    @Test
+    void outOfRangeStatesTheRange() throws IOException {
+        String m = message(valid(",\n    \"lambdaMinNm\": 200"));
+        assertTrue(m.startsWith("7: material.lambdaMinNm: must be in [360, 830], got 200"), m);
+        String fov = message(valid("").replace("\"eye\": [0, 0, 3]", "\"eye\": [0, 0, 3], \"fieldOfViewDeg\": 180"));
+        assertTrue(fov.startsWith("2: camera.fieldOfViewDeg: must be in (0, 180), got 180"), fov);
+    }
+
+    @Test
+    void unknownValueSuggestsTheNearestChoice() throws IOException {
+        String m = message(valid("").replace("\"flss\"", "\"flsss\""));
+        assertTrue(m.startsWith("6: material.variant: unknown value \"flsss\" (did you mean \"flss\"?)"), m);
+    }
+
+    @Test
+    void missingFileIsResolvedRelativeToTheSceneFile() throws IOException {
+        String m = message(valid("").replace("{\"procedural\": \"blazed\"}", "{\"file\": \"patches/none.gsf\"}"));
+        assertTrue(m.startsWith("5: material.patch.file: file " + dir.resolve("patches/none.gsf") + " not found"), m);
+    }
+
+    @Test
+    void malformedJsonGivesJacksonsLine() throws IOException {
+        String m = message(valid("").replace("\"shape\": {", "\"shape\" {"));
+        assertTrue(m.startsWith("4: (json): malformed JSON: Unexpected character"), m);
+    }
+
+    @Test
+    void duplicateKeysAreRefused() throws IOException {
+        String m = message(valid(",\n    \"variant\": \"pq\""));
+        assertTrue(m.startsWith("7: (json): key 'variant' appears twice"), m);
+    }
+
+    @Test
+    void cameraRollIsRefusedWithTheFix() throws IOException {
+        String m = message(valid("").replace("\"eye\": [0, 0, 3]", "\"eye\": [0, 0, 3], \"up\": [1, 0, 0]"));
+        assertTrue(m.startsWith("2: camera.up: rolls the camera by 90.0 degrees"), m);
+    }
+
+    @Test
+    void aLightBelowTheHorizonIsRefused() throws IOException {
+        String m = message(valid("").replace("\"thetaDeg\": 30", "\"direction\": [0, 1, -1]"));
+        assertTrue(m.startsWith("3: light.direction: the light is 135.0 degrees from the +z axis"), m);
+    }
+
+    @Test
+    void procedualParametersBelongToTheirKind() throws IOException {
+        String m = message(valid("").replace("{\"procedural\": \"blazed\"}", "{\"procedural\": \"blazed\", \"seed\": 3}"));
+        assertTrue(m.startsWith("5: material.patch.seed: unknown key"), m);
+    }
+
+    @Test
+    void anEmptyFileAndANonObjectAreRefused() throws IOException {
+        assertTrue(message("").startsWith("1: (json): the file is empty"));
+        assertTrue(message("[1, 2]").startsWith("1: (scene): must be a JSON object"));
+    }
+}
