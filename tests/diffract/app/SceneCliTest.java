@@ -1,0 +1,140 @@
+package diffract.app;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.viewer.ViewerRenderer;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** Scene files through the CLI: an OBJ mesh end to end, options that override the scene, a broken OBJ. */
+class SceneCliTest {
+    @TempDir
+    static Path dir;
+
+    /**
+     * A 2 x 2 square in the xy plane facing the camera, as an OBJ with explicit {@code tg} tangents along x (the
+     * grating's period across the picture), written as 8 x 8 quads so the mesh has interior vertices.
+     */
+    private static Path squareObj(String name, boolean badIndex) throws IOException {
+        int cells = 8;
+        StringBuilder obj = new StringBuilder("# a test square\n");
+        for (int j = 0; j <= cells; j++) {
+            for (int i = 0; i <= cells; i++) {
+                obj.append(String.format(Locale.ROOT, "v %.4f %.4f 0%n", -1 + 2.0 * i / cells, -1 + 2.0 * j / cells));
+                obj.append("vn 0 0 1\ntg 1 0 0\n");
+            }
+        }
+        for (int j = 0; j < cells; j++) {
+            for (int i = 0; i < cells; i++) {
+                int a = j * (cells + 1) + i + 1;
+                int b = a + 1;
+                int c = a + cells + 2;
+                int d = a + cells + 1;
+                obj.append(String.format("f %d//%d %d//%d %d//%d %d//%d%n", a, a, b, b, c, c, d, d));
+            }
+        }
+        if (badIndex) {
+            obj.append("f 1 2 999\n");
+        }
+        Path path = dir.resolve(name);
+        Files.writeString(path, obj);
+        return path;
+    }
+
+    /** The blazed-grating plane scene, its shape replaced by an OBJ given by a path relative to the scene. */
+    private static Path sceneWithObj(String sceneName, String objName) throws IOException {
+        String scene = """
+                {
+                  "image": {"width": 64, "height": 48},
+                  "camera": {"eye": [0, 0, 3.5], "lookAt": [0, 0, 0], "fieldOfViewDeg": 45},
+                  "light": {"thetaDeg": 30, "phiDeg": 0},
+                  "shape": {"kind": "obj", "file": "%s", "tangents": "explicit"},
+                  "material": {
+                    "patch": {"procedural": "blazed", "periodUm": 2.5, "heightUm": 0.2, "periods": 26,
+                              "samplesPerPeriod": 25, "rows": 16},
+                    "taylorTerms": 12, "lambdaStepNm": 20, "sigmaSpatialUm": 2.5, "exposure": 10
+                  }
+                }
+                """.formatted(objName);
+        Path path = dir.resolve(sceneName);
+        Files.writeString(path, scene);
+        return path;
+    }
+
+    /**
+     * The OBJ square seen head-on under light from 30 degrees: the blazed grating's first orders leave at
+     * sin(theta_r) = sin(30 deg) - lambda / 2.5 um, i.e. between -0.01 and 0.35 for 380..780 nm, so the camera's
+     * +-22 degree view sees coloured orders on the square, and the background around it stays the clear colour.
+     */
+    @Test
+    @Tag("gl")
+    void anObjMeshFromASceneRendersWithItsExplicitTangents() throws Exception {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        squareObj("square.obj", false);
+        Path scene = sceneWithObj("square.json", "square.obj");
+        Path png = dir.resolve("square.png");
+        Object[] result = CliTest.run("render", scene.toString(), "-o", png.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(64, image.getWidth());
+        assertEquals(48, image.getHeight());
+        assertEquals(clearColour(), image.getRGB(0, 0) & 0xffffff, "the corner is background");
+        int coloured = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int p = image.getRGB(x, y);
+                int r = p >> 16 & 0xff;
+                int g = p >> 8 & 0xff;
+                int b = p & 0xff;
+                coloured += Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) > 40 ? 1 : 0;
+            }
+        }
+        System.out.println("OBJ square 64x48: " + coloured + " coloured pixels");
+        assertTrue(coloured >= 20, "only " + coloured + " coloured pixels on the OBJ square");
+    }
+
+    @Test
+    @Tag("gl")
+    void commandLineOptionsOverrideTheScene() throws Exception {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        Path png = dir.resolve("override.png");
+        Object[] result = CliTest.run("render", "assets/scenes/blazed-grating-plane.json", "--variant", "pq",
+                "--terms", "6", "--lambda-step", "40", "--size", "48x32", "-o", png.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        String out = (String) result[1];
+        assertTrue(out.contains("48x32") && out.contains("pq N=6") && out.contains("lambda step 40.0 nm"), out);
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertEquals(48, image.getWidth());
+        assertEquals(32, image.getHeight());
+    }
+
+    @Test
+    void anObjWithABadIndexIsRefusedWithItsFileAndLine() throws Exception {
+        Path obj = squareObj("broken.obj", true);
+        Path scene = sceneWithObj("broken.json", "broken.obj");
+        Object[] result = CliTest.run("render", scene.toString(), "-o", dir.resolve("b.png").toString());
+        String err = (String) result[2];
+        assertEquals(2, result[0], err);
+        // the patch's warnings may come first; the refusal is one line, the last, naming the file and line
+        String[] lines = err.strip().split("\n");
+        assertEquals(1, err.lines().filter(l -> l.startsWith("diffract:")).count(), err);
+        int objLines = Files.readAllLines(obj).size();
+        assertTrue(lines[lines.length - 1].contains("broken.obj:" + objLines + ": vertex index 999"), err);
+    }
+
+    private static int clearColour() {
+        return Math.round(ViewerRenderer.CLEAR_COLOUR[0] * 255) << 16
+                | Math.round(ViewerRenderer.CLEAR_COLOUR[1] * 255) << 8 | Math.round(ViewerRenderer.CLEAR_COLOUR[2] * 255);
+    }
+}
