@@ -18,6 +18,7 @@ import diffract.util.UserInputException;
 import diffract.viewer.DisplayMode;
 import diffract.viewer.LightDirection;
 import diffract.viewer.OrbitCamera;
+import diffract.viewer.PigmentationImage;
 import diffract.viewer.TermSource;
 import diffract.viewer.ViewerSetup;
 import diffract.viewer.ViewerShapes;
@@ -26,10 +27,7 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
-import javax.imageio.ImageIO;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
@@ -205,7 +203,7 @@ final class ViewerOptions {
         BrdfSettings settings = settings();
         SamplingCheck.warnAboutAliasing(field, settings.lambdaMinNm(), settings.lambdaMaxNm(), reporter);
         Shape mesh = ViewerShapes.Kind.parse(shape).build(parseTangent(tangent));
-        BufferedImage pigment = pigmentation != null ? readImage(pigmentation)
+        BufferedImage pigment = pigmentation != null ? PigmentationImage.read(pigmentation)
                 : ViewerShapes.Kind.parse(shape) == ViewerShapes.Kind.SNAKE
                 ? new PigmentationTexture(PigmentationTexture.Parameters.defaults(PIGMENT_SEED)).image(256, 2048) : null;
         double phi = phiIDeg != null ? phiIDeg : name.equals("elaphe-like") ? 90 : 0;
@@ -306,20 +304,5 @@ final class ViewerOptions {
             // falls through to the message below
         }
         throw new UserInputException("--size must be WxH (or S) with 16..4096 pixels per side, got '" + text + "'");
-    }
-
-    private static BufferedImage readImage(Path file) {
-        if (!Files.isRegularFile(file)) {
-            throw new UserInputException("pigmentation image " + file + " not found");
-        }
-        try {
-            BufferedImage image = ImageIO.read(file.toFile());
-            if (image == null) {
-                throw new UserInputException(file + " is not an image Java can read (use PNG, JPEG or BMP)");
-            }
-            return image;
-        } catch (IOException e) {
-            throw new UserInputException("cannot read pigmentation image " + file + ": " + e.getMessage(), e);
-        }
     }
 }

@@ -9,11 +9,10 @@ import diffract.optics.io.SamplingCheck;
 import diffract.precompute.Precomputation;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
+import diffract.viewer.PigmentationImage;
 import diffract.viewer.TermSource;
 
-import javax.imageio.ImageIO;
 import java.awt.image.BufferedImage;
-import java.io.IOException;
 import java.nio.file.Path;
 
 /**
@@ -72,7 +71,7 @@ final class MaterialManager {
         if (pigmentation.procedural()) {
             return new PigmentationTexture(PigmentationTexture.Parameters.defaults(PIGMENT_SEED)).image(256, 2048);
         }
-        return pigmentation.file() == null ? null : readImage(pigmentation.file());
+        return pigmentation.file() == null ? null : PigmentationImage.read(pigmentation.file());
     }
 
     /** Terms 0..n of the patch from the user cache, keyed by patch content and n; computed with progress if new. */
@@ -80,17 +79,5 @@ final class MaterialManager {
         Double maxHeightUm = spec.patch() instanceof Scene.FilePatch file ? file.maxHeightUm() : null;
         return (n, reporter) -> Precomputation.cached(new Precomputation.Request(patch, patchName, maxHeightUm, n, null,
                 settings.lambdaMinNm()), reporter);
-    }
-
-    private static BufferedImage readImage(Path file) {
-        try {
-            BufferedImage image = ImageIO.read(file.toFile());
-            if (image == null) {
-                throw new UserInputException(file + " is not an image Java can read (use PNG, JPEG or BMP)");
-            }
-            return image;
-        } catch (IOException e) {
-            throw new UserInputException("cannot read pigmentation image " + file + ": " + e.getMessage(), e);
-        }
     }
 }

@@ -1,7 +1,6 @@
 package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
-import diffract.viewer.ViewerRenderer;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -89,17 +88,8 @@ class SceneCliTest {
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(64, image.getWidth());
         assertEquals(48, image.getHeight());
-        assertEquals(clearColour(), image.getRGB(0, 0) & 0xffffff, "the corner is background");
-        int coloured = 0;
-        for (int y = 0; y < image.getHeight(); y++) {
-            for (int x = 0; x < image.getWidth(); x++) {
-                int p = image.getRGB(x, y);
-                int r = p >> 16 & 0xff;
-                int g = p >> 8 & 0xff;
-                int b = p & 0xff;
-                coloured += Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) > 40 ? 1 : 0;
-            }
-        }
+        assertEquals(Pictures.clearColour(), image.getRGB(0, 0) & 0xffffff, "the corner is background");
+        int coloured = Pictures.count(image, Pictures.COLOURED);
         System.out.println("OBJ square 64x48: " + coloured + " coloured pixels");
         assertTrue(coloured >= 20, "only " + coloured + " coloured pixels on the OBJ square");
     }
@@ -131,10 +121,5 @@ class SceneCliTest {
         assertEquals(1, err.lines().filter(l -> l.startsWith("diffract:")).count(), err);
         int objLines = Files.readAllLines(obj).size();
         assertTrue(lines[lines.length - 1].contains("broken.obj:" + objLines + ": vertex index 999"), err);
-    }
-
-    private static int clearColour() {
-        return Math.round(ViewerRenderer.CLEAR_COLOUR[0] * 255) << 16
-                | Math.round(ViewerRenderer.CLEAR_COLOUR[1] * 255) << 8 | Math.round(ViewerRenderer.CLEAR_COLOUR[2] * 255);
     }
 }

@@ -1,7 +1,6 @@
 package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
-import diffract.viewer.ViewerRenderer;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -34,10 +33,8 @@ class ViewerCliTest {
         assertEquals(96, image.getWidth());
         assertEquals(64, image.getHeight());
         int centre = image.getRGB(48, 32) & 0xffffff;
-        int clear = Math.round(ViewerRenderer.CLEAR_COLOUR[0] * 255) << 16
-                | Math.round(ViewerRenderer.CLEAR_COLOUR[1] * 255) << 8 | Math.round(ViewerRenderer.CLEAR_COLOUR[2] * 255);
-        assertNotEquals(clear, centre, "the centre shows the background, not the sphere");
-        int coloured = count(image, (r, g, b) -> Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) > 40);
+        assertNotEquals(Pictures.clearColour(), centre, "the centre shows the background, not the sphere");
+        int coloured = Pictures.count(image, Pictures.COLOURED);
         System.out.println("render 96x64: " + coloured + " coloured pixels");
         assertTrue(coloured >= 5, "only " + coloured + " coloured pixels: no structural colour on the sphere");
     }
@@ -54,9 +51,9 @@ class ViewerCliTest {
         Object[] result = CliTest.run(args);
         assertEquals(0, result[0], (String) result[2]);
         BufferedImage image = ImageIO.read(png.toFile());
-        int red = count(image, (r, g, b) -> r > g + 30 && r > b + 30);
-        int green = count(image, (r, g, b) -> g > r + 30 && g > b + 30);
-        int blue = count(image, (r, g, b) -> b > r + 30 && b > g + 30);
+        int red = Pictures.count(image, (r, g, b) -> r > g + 30 && r > b + 30);
+        int green = Pictures.count(image, (r, g, b) -> g > r + 30 && g > b + 30);
+        int blue = Pictures.count(image, (r, g, b) -> b > r + 30 && b > g + 30);
         System.out.printf("snake 160x100: %d red, %d green, %d blue pixels%n", red, green, blue);
         assertTrue(red >= 3 && green >= 3 && blue >= 3, "not a rainbow: " + red + " red, " + green + " green, "
                 + blue + " blue pixels");
@@ -104,21 +101,5 @@ class ViewerCliTest {
         assertEquals(2, result[0], err);
         assertEquals(1, err.strip().lines().count(), err);
         assertTrue(err.contains(expected), err);
-    }
-
-    /** A test on one 8-bit pixel's channels. */
-    private interface PixelTest {
-        boolean test(int r, int g, int b);
-    }
-
-    private static int count(BufferedImage image, PixelTest test) {
-        int n = 0;
-        for (int y = 0; y < image.getHeight(); y++) {
-            for (int x = 0; x < image.getWidth(); x++) {
-                int p = image.getRGB(x, y);
-                n += test.test(p >> 16 & 0xff, p >> 8 & 0xff, p & 0xff) ? 1 : 0;
-            }
-        }
-        return n;
     }
 }
