@@ -1,7 +1,7 @@
 package diffract.app;
 
 import diffract.optics.HeightField;
-import diffract.optics.SyntheticPatches;
+import diffract.optics.ProceduralPatches;
 import diffract.optics.io.GsfWriter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
@@ -17,11 +17,13 @@ import java.util.concurrent.Callable;
 @Command(name = "patch", mixinStandardHelpOptions = true,
         description = {"Write a synthetic grating as a Gwyddion Simple Field (.gsf, heights and pixel size in metres).",
                 "Grating grooves run along y (rows); the period lies along x (columns).",
-                "The elaphe-like patch's ridges run along x; its period lies along y (view it with --phi-i 90)."})
+                "The snake patches' ridges run along x; their period lies along y (view them with --phi-i 90)."})
 final class PatchCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "KIND",
-            description = "blazed (sawtooth), sinusoid, or elaphe-like (a procedural snake-skin patch: 128 x 128 pixels "
-                    + "of 0.0715 um, ridges along x with period 1.144 um along y, 0.3 um high; only --seed applies)")
+            description = "blazed (sawtooth), sinusoid, elaphe-like (a procedural snake-skin patch: 128 x 128 pixels "
+                    + "of 0.0715 um, ridges along x with period 1.144 um along y, 0.3 um high) or xenopeltis-like "
+                    + "(128 x 128 pixels of 0.08125 um, smooth ridges along x, period 0.65 um, 0.1 um high); "
+                    + "for the snake patches only --seed applies")
     String kind;
 
     @Option(names = "--period", defaultValue = "2.5", paramLabel = "UM", description = "Grating period d (default ${DEFAULT-VALUE}).")
@@ -39,7 +41,7 @@ final class PatchCommand implements Callable<Integer> {
     @Option(names = "--rows", defaultValue = "16", paramLabel = "R", description = "Rows (default ${DEFAULT-VALUE}).")
     int rows;
 
-    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Noise seed of elaphe-like (default ${DEFAULT-VALUE}).")
+    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Noise seed of the snake patches (default ${DEFAULT-VALUE}).")
     long seed;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf")
@@ -47,20 +49,7 @@ final class PatchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        HeightField field;
-        switch (kind.toLowerCase(Locale.ROOT)) {
-            case "blazed":
-                field = SyntheticPatches.blazed(periodUm, heightUm, samplesPerPeriod, periods, rows);
-                break;
-            case "sinusoid":
-                field = SyntheticPatches.sinusoid(periodUm, heightUm, samplesPerPeriod, periods, rows);
-                break;
-            case "elaphe-like":
-                field = SyntheticPatches.elapheLike(128, 8, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, seed);
-                break;
-            default:
-                throw new UserInputException("unknown patch kind '" + kind + "': use blazed, sinusoid or elaphe-like");
-        }
+        HeightField field = spec().build();
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gsf")) {
             throw new UserInputException("patch writes Gwyddion .gsf files; name the output FILE.gsf");
         }
@@ -68,5 +57,24 @@ final class PatchCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "wrote %s: %d x %d pixels of %.4f um (%.2f x %.2f um)%n", output, field.cols(),
                 field.rows(), field.pixelSizeXUm(), field.widthUm(), field.heightExtentUm());
         return 0;
+    }
+
+    /** The CLI's kind as a procedural patch: gratings take the options, the snake patches their defaults and seed. */
+    private ProceduralPatches.Spec spec() {
+        switch (kind.toLowerCase(Locale.ROOT)) {
+            case "blazed":
+            case "sinusoid":
+                return new ProceduralPatches.Spec(kind.toLowerCase(Locale.ROOT), periodUm, heightUm, periods,
+                        samplesPerPeriod, rows, 0, 0, seed);
+            case "elaphe-like":
+            case "xenopeltis-like":
+                ProceduralPatches.Spec d = ProceduralPatches.Spec.defaults(
+                        kind.toLowerCase(Locale.ROOT).equals("elaphe-like") ? "elapheLike" : "xenopeltisLike");
+                return new ProceduralPatches.Spec(d.kind(), d.periodUm(), d.heightUm(), d.periods(),
+                        d.samplesPerPeriod(), d.rows(), d.sizePx(), d.roughnessUm(), seed);
+            default:
+                throw new UserInputException("unknown patch kind '" + kind
+                        + "': use blazed, sinusoid, elaphe-like or xenopeltis-like");
+        }
     }
 }

@@ -5,6 +5,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
+import diffract.optics.ProceduralPatches;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.Variant;
 import diffract.optics.io.HeightFieldReader;
@@ -180,6 +181,35 @@ class CliTest {
                 "--terms", "4", "--terms-dir", terms.toString(), "--size", "8", "-o", dir.resolve("z.png").toString());
         assertEquals(2, result[0]);
         assertTrue(((String) result[2]).contains("was made from a 40x4 patch"), (String) result[2]);
+    }
+
+    /** Every kind of {@code patch}: the written .gsf holds the procedural field (float32 in metres) and its size. */
+    @Test
+    void patchWritesEveryProceduralKind() {
+        for (String kind : new String[] {"blazed", "sinusoid", "elaphe-like", "xenopeltis-like"}) {
+            Path gsf = dir.resolve(kind + ".gsf");
+            Object[] result = run("patch", kind, "--seed", "3", "-o", gsf.toString());
+            assertEquals(0, result[0], (String) result[2]);
+            HeightField read = HeightFieldReader.load(gsf, null, null, Reporter.SILENT);
+            String specKind = switch (kind) {
+                case "elaphe-like" -> "elapheLike";
+                case "xenopeltis-like" -> "xenopeltisLike";
+                default -> kind;
+            };
+            ProceduralPatches.Spec d = ProceduralPatches.Spec.defaults(specKind);
+            HeightField expected = new ProceduralPatches.Spec(d.kind(), d.periodUm(), d.heightUm(), d.periods(),
+                    d.samplesPerPeriod(), d.rows(), d.sizePx(), d.roughnessUm(), 3).build().meanSubtracted();
+            assertEquals(expected.rows(), read.rows(), kind);
+            assertEquals(expected.cols(), read.cols(), kind);
+            assertEquals(expected.pixelSizeXUm(), read.pixelSizeXUm(), 1e-9, kind);
+            for (int i = 0; i < expected.sampleCount(); i++) {
+                // float32 in metres: a relative rounding of 2^-24 on heights below 1 um
+                assertEquals(expected.heightsUm()[i], read.heightsUm()[i], 1e-7, kind + " sample " + i);
+            }
+        }
+        Object[] unknown = run("patch", "zebra", "-o", dir.resolve("z.gsf").toString());
+        assertEquals(2, unknown[0]);
+        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like or xenopeltis-like"));
     }
 
     @Test
