@@ -40,6 +40,11 @@ class GpuCliTest {
         assertEquals(0, switched[0], (String) switched[2]);
         assertTrue(((String) switched[2]).contains("phase-centred Taylor expansion: x = k|w|max|h| = 18.9"),
                 (String) switched[2]);
+        // the mesh renderer (viewer, render) switches the same way
+        Object[] rendered = CliTest.run("render", "--patch", tall.toString(), "--terms", "60", "--lambda-step", "20",
+                "--size", "48x32", "-o", dir.resolve("tall-render.png").toString());
+        assertEquals(0, rendered[0], (String) rendered[2]);
+        assertTrue(((String) rendered[2]).contains("phase-centred Taylor expansion"), (String) rendered[2]);
         Object[] warned = CliTest.run(concat(tallMap, "--expansion", "plain"));
         assertEquals(0, warned[0], (String) warned[2]);
         assertTrue(((String) warned[2]).contains("warning: the float32 Taylor sum (61 terms) may err"), (String) warned[2]);

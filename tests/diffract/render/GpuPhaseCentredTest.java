@@ -43,6 +43,39 @@ class GpuPhaseCentredTest {
         return worst / peak;
     }
 
+    /**
+     * The centred path at the angular extremes, for every variant on the 2 um grating: grazing light
+     * (89.9 degrees), and a 33 x 33 map at normal incidence whose centre pixel is the exact specular direction
+     * ((u, v) = 0: NMM's fallback, PQ's 0/0, sinc(0); w = -2, the largest phase, the last centre). Every pixel
+     * finite and non-negative; the specular pixel equals the CPU mirror to 1e-3 relative (float32 lookup).
+     */
+    @ParameterizedTest
+    @org.junit.jupiter.params.provider.EnumSource(value = Variant.class, names = {"FLSS", "NMM", "PQ"})
+    void everyPixelIsFiniteAtGrazingLightAndAtTheSpecularDirection(Variant variant) {
+        RenderTestSupport.assumeDisplay();
+        HeightField patch = SyntheticPatches.blazed(2.5, 4.0, 20, 4, 8).meanSubtracted();
+        BrdfSettings settings = RenderTestSupport.settings(variant);
+        PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
+                PhaseCentres.forPatch(patch.maxAbsHeightUm(), settings.lambdaMinNm()), Reporter.SILENT);
+        DiffractionBrdf mirror = DiffractionBrdf.createPhaseCentred(settings, centred);
+        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, settings, FloatTextureArray.Precision.FLOAT32)) {
+            for (double phi : new double[] {0, 90}) {
+                Direction grazing = Direction.fromSphericalDeg(89.9, phi);
+                relativeError(gpu.xyz(grazing, 32), new float[32 * 32 * 3]); // asserts finite, >= 0
+                relativeError(gpu.monochromatic(grazing, 380, 32), new float[32 * 32]);
+            }
+            Direction normal = Direction.fromSphericalDeg(0, 0);
+            float[] map = gpu.xyz(normal, 33);
+            relativeError(map, new float[map.length]);
+            relativeError(gpu.monochromatic(normal, 780, 33), new float[33 * 33]);
+            double expected = mirror.xyz(normal, new Direction(0, 0, 1)).y();
+            float actual = map[3 * (16 * 33 + 16) + 1];
+            assertTrue(expected > 1e-3, variant + ": the CPU's specular pixel is dark: " + expected);
+            assertTrue(Math.abs(actual - expected) <= 1e-3 * expected, variant + ": specular Y " + actual
+                    + ", CPU " + expected);
+        }
+    }
+
     @ParameterizedTest
     @ValueSource(doubles = {1.0, 2.0, 4.0})
     void tallGratingsMatchTheReferenceOnlyWhenCentred(double gratingHeightUm) {
