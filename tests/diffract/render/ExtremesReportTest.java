@@ -195,6 +195,68 @@ class ExtremesReportTest {
         assertTrue(failures.isEmpty(), String.join("\n", failures) + "\n" + table);
     }
 
+    /**
+     * The 4096 x 4096 patch on the CPU and the GPU against the reference. Its reference (16 transforms of 4096^2
+     * complex doubles per centre) does not fit, but a patch whose heights vary along x only has P(m_x, m_y) =
+     * DFT_x(exp(i a h))(m_x) delta(m_y): in the plane of incidence (v = 0, the middle row of an odd map, light at
+     * phi_i = 0) it equals the P of its single row, whose reference is cheap. A blazed grating 0.02 um high
+     * (period 0.8 um, 16 pixels of 0.05 um, 256 periods, 4096 rows: 204.8 um square), N = 4 (x = 0.33 at 380 nm,
+     * remainder 0.33^5 / 5! = 3e-5): 5 layers of 128 MiB; 33 x 33 monochromatic maps. Written to {@code target/extremes-4096.md}.
+     */
+    @Test
+    void a4096By4096PatchMeetsTheReferenceInThePlaneOfIncidence() throws IOException {
+        RenderTestSupport.assumeDisplay();
+        int size = 33;
+        int middleRow = size / 2; // y = 0 exactly
+        HeightField big = SyntheticPatches.blazed(0.8, 0.02, 16, 256, 4096).meanSubtracted();
+        HeightField row = SyntheticPatches.blazed(0.8, 0.02, 16, 256, 1).meanSubtracted();
+        // sigma_f = 204.8 um / (2 pi 16.25 um) = 2 texels: a 25 x 25 window leaves out weights below 3e-9, so
+        // FLSS's window equals the reference's
+        BrdfSettings settings = BrdfSettings.thesis(Variant.FLSS).withHighestOrder(4).withWindowRadius(12);
+        TaylorTerms terms = TaylorTermComputer.compute(big, 4, Reporter.SILENT);
+        DiffractionBrdf cpu = DiffractionBrdf.create(settings, big, terms);
+        DiffractionBrdf reference = DiffractionBrdf.create(settings.withVariant(Variant.REFERENCE), row, null);
+        StringBuilder table = new StringBuilder("| theta_i | lambda | CPU flss | GPU flss |\n|---|---|---|---|\n");
+        List<String> failures = new ArrayList<>();
+        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+            for (double theta : THETAS_DEG) {
+                Direction wi = Direction.fromSphericalDeg(theta, 0);
+                for (double lambda : new double[] {380, 780}) {
+                    float[] ref = middle(BrdfMap.monochromatic(reference, wi, lambda, size, Reporter.SILENT), size,
+                            middleRow);
+                    float[] cpuRow = middle(BrdfMap.monochromatic(cpu, wi, lambda, size, Reporter.SILENT), size,
+                            middleRow);
+                    float[] gpuMap = gpu.monochromatic(wi, lambda, size);
+                    for (float v : gpuMap) {
+                        if (!Float.isFinite(v) || v < 0) {
+                            failures.add("4096^2 GPU at " + theta + " deg, " + lambda + " nm: value " + v);
+                            break;
+                        }
+                    }
+                    double cpuError = relative(cpuRow, ref);
+                    double gpuError = relative(middle(gpuMap, size, middleRow), ref);
+                    table.append(String.format(Locale.ROOT, "| %s | %.0f nm | rel %.2g | rel %.2g |%n", theta, lambda,
+                            cpuError, gpuError));
+                    // float32 terms and the float32 lookup of a 4096-texel band: 1e-3 of the peak
+                    if (!(cpuError < 1e-3 && gpuError < 1e-3)) {
+                        failures.add("4096^2 at " + theta + " deg, " + lambda + " nm: CPU " + cpuError + ", GPU "
+                                + gpuError);
+                    }
+                }
+            }
+        }
+        Files.createDirectories(Path.of("target"));
+        Files.writeString(Path.of("target", "extremes-4096.md"), table.toString());
+        System.out.print(table);
+        assertTrue(failures.isEmpty(), String.join("\n", failures) + "\n" + table);
+    }
+
+    private static float[] middle(float[] map, int size, int row) {
+        float[] out = new float[size];
+        System.arraycopy(map, row * size, out, 0, size);
+        return out;
+    }
+
     /** max |a - ref| / max ref; infinite when a holds NaN or Inf. */
     private static double relative(float[] a, float[] ref) {
         double peak = 0;
