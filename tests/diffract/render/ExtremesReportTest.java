@@ -79,6 +79,7 @@ class ExtremesReportTest {
         table.append("| case | theta_i | output | variant | expansion | CPU error | GPU error | GPU error, plain series |\n")
                 .append("|---|---|---|---|---|---|---|---|\n");
         List<String> failures = new ArrayList<>();
+        String renderer = "";
         for (Case c : cases()) {
             TaylorTerms terms = TaylorTermComputer.compute(c.patch(), c.highestOrder(), Reporter.SILENT);
             BrdfSettings base = new BrdfSettings(Variant.FLSS, c.highestOrder(), 1, 380, 780, 5, 2.5, 1.5, 3);
@@ -96,6 +97,7 @@ class ExtremesReportTest {
                 List<Maps> gpuMaps = new ArrayList<>();
                 List<Maps> plainMaps = new ArrayList<>();
                 try (GpuBrdfMap gpu = GpuBrdfMap.of(auto, settings, FloatTextureArray.Precision.FLOAT32)) {
+                    renderer = gpu.info().renderer() + ", OpenGL " + gpu.info().version();
                     for (double theta : THETAS_DEG) {
                         gpuMaps.add(Maps.of(gpu, Direction.fromSphericalDeg(theta, 0)));
                     }
@@ -141,6 +143,7 @@ class ExtremesReportTest {
         Path out = Path.of("target", "extremes.md");
         Files.createDirectories(out.getParent());
         Files.writeString(out, table.toString());
+        Files.writeString(Path.of("target", "extremes-renderer.txt"), renderer);
         System.out.print(table);
         assertTrue(failures.isEmpty(), String.join("\n", failures));
     }
