@@ -26,8 +26,10 @@ package diffract.optics;
 public record PhaseCentres(double halfWidth, double spacingPerUm, int centreCount, int highestOrder) {
     /**
      * b = 2: a float32 sum then errs by at most about 2^-24 e^2 = 4.4e-7 of P's scale, and 15 orders
-     * (remainder below the thesis' bound 2^15 e^2 / 15! = 1.9e-7) reach 1e-6: few layers per centre (15), few
-     * centres (x / 4 + 1). Smaller b needs more centres, larger b more orders and more rounding (e^b).
+     * (remainder below the thesis' bound 2^15 e^2 / 15! = 1.9e-7) reach 1e-6. A smaller b needs more centres
+     * (memory), a larger b more orders per fragment (time) and more rounding (e^b). Measured on a 2 um patch at
+     * 380 nm (Float32CancellationTest): b = 1: 350 layers, 10 orders; b = 2: 270, 15; b = 4: 198, 22; all within
+     * 4e-7 in P. b = 2 halves the thesis' 31 terms per fragment at a memory between the two.
      */
     public static final double DEFAULT_HALF_WIDTH = 2.0;
     /** The truncation error the orders per centre must reach (the thesis' Lagrange bound, TaylorBound). */
