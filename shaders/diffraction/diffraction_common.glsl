@@ -12,6 +12,8 @@
 //   BRDF_MAP | SURFACE    which vertex shader feeds the fragment shader
 //   MONOCHROMATIC         BRDF map of the relative BRDF at lambdaNm instead of XYZ
 //   PIGMENTATION          surface path: blend with a pigmentation texture (Algorithm 4)
+//   PHASE_CENTRED         expand around the nearest phase centre (taylor_centred.glsl); TAYLOR_HIGHEST_ORDER is
+//                         then the last order per centre
 #if !defined(TAYLOR_HIGHEST_ORDER) || !defined(WINDOW_RADIUS) || !defined(XYZ_TO_LINEAR_SRGB)
 #error "TAYLOR_HIGHEST_ORDER, WINDOW_RADIUS and XYZ_TO_LINEAR_SRGB must be defined (see DiffractionShaders)"
 #endif
@@ -146,6 +148,9 @@ void taylorCoefficients(float kw, out float c[TERM_COUNT]) {
     }
 }
 
+// taylorExpansion(kw, c): the plain series around 0 or, with PHASE_CENTRED, around the nearest phase centre.
+#include "taylor_centred.glsl"
+
 // The centre texel of eq. 1.5, floor(size / 2) per axis (TaylorTerms.centreCol/centreRow).
 ivec2 termCentre() {
     return textureSize(taylorTerms, 0).xy / 2;
@@ -159,15 +164,16 @@ bool inBand(ivec2 m) {
     return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
 }
 
-// sum_n c_n DFT_n(m) at the exact texel of frequency index m (texelFetch: no filtering), 0 out of band.
-vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT]) {
+// sum_n c_n DFT_n(m) at the exact texel of frequency index m (texelFetch: no filtering), 0 out of band; the
+// terms start at layer layerBase (0, or the phase centre's first layer, taylor_centred.glsl).
+vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT], int layerBase) {
     if (!inBand(m)) {
         return vec2(0.0);
     }
     ivec2 texel = m + termCentre();
     vec2 sum = vec2(0.0);
     for (int n = 0; n < TERM_COUNT; n++) {
-        sum += c[n] * texelFetch(taylorTerms, ivec3(texel, n), 0).rg;
+        sum += c[n] * texelFetch(taylorTerms, ivec3(texel, layerBase + n), 0).rg;
     }
     return sum;
 }
@@ -182,7 +188,7 @@ float windowWeight(float offsetTexels, int axis);
 vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
     vec2 s = lookupTexels(uvw.xy, lambdaNm);
     float c[TERM_COUNT];
-    taylorCoefficients(waveNumberPerUm(lambdaNm) * uvw.z, c);
+    int layerBase = taylorExpansion(waveNumberPerUm(lambdaNm) * uvw.z, c);
     ivec2 anchor = ivec2(floor(s + 0.5));
     vec2 p = vec2(0.0);
     for (int j = -WINDOW_RADIUS; j <= WINDOW_RADIUS; j++) {
@@ -190,7 +196,7 @@ vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
         float weightY = windowWeight(float(my) - s.y, 1);
         for (int i = -WINDOW_RADIUS; i <= WINDOW_RADIUS; i++) {
             int mx = anchor.x + i;
-            p += weightY * windowWeight(float(mx) - s.x, 0) * taylorSumAt(ivec2(mx, my), c);
+            p += weightY * windowWeight(float(mx) - s.x, 0) * taylorSumAt(ivec2(mx, my), c, layerBase);
         }
     }
     return p;

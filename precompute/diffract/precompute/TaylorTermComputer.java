@@ -1,6 +1,8 @@
 package diffract.precompute;
 
 import diffract.optics.HeightField;
+import diffract.optics.PhaseCentredTerms;
+import diffract.optics.PhaseCentres;
 import diffract.optics.ShiftedDft;
 import diffract.optics.TaylorTerms;
 import diffract.util.Reporter;
@@ -18,6 +20,32 @@ public final class TaylorTermComputer {
 
     /** All terms 0..highestOrder as float32, with progress per term. */
     public static TaylorTerms compute(HeightField meanSubtracted, int highestOrder, Reporter reporter) {
+        return computeAroundPhase(meanSubtracted, 0.0, highestOrder, reporter);
+    }
+
+    /**
+     * The terms of the expansion around every centre of {@code centres} (issue #6):
+     * E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..centres.highestOrder(), as float32 like the thesis'
+     * terms (which are the centre a_0 = 0). Progress per centre.
+     */
+    public static PhaseCentredTerms computeCentred(HeightField meanSubtracted, PhaseCentres centres,
+                                                   Reporter reporter) {
+        TaylorTerms[] perCentre = new TaylorTerms[centres.centreCount()];
+        for (int j = 0; j < perCentre.length; j++) {
+            perCentre[j] = computeAroundPhase(meanSubtracted, centres.centrePerUm(j), centres.highestOrder(),
+                    Reporter.SILENT);
+            reporter.progress("phase-centred terms, " + centres.centreCount() + " centres x "
+                    + centres.ordersPerCentre() + " orders", (j + 1) / (double) perCentre.length);
+        }
+        return new PhaseCentredTerms(centres, perCentre);
+    }
+
+    /**
+     * fftshift(ifft2(exp(i a_j h) (i h)^n)) for n = 0..highestOrder; at a_j = 0 the start is exactly 1 + 0i, so
+     * this is Algorithm 1 bit for bit.
+     */
+    private static TaylorTerms computeAroundPhase(HeightField meanSubtracted, double centrePerUm, int highestOrder,
+                                                  Reporter reporter) {
         if (highestOrder < 0) {
             throw new IllegalArgumentException("the highest Taylor order must be >= 0, got " + highestOrder);
         }
@@ -25,16 +53,13 @@ public final class TaylorTermComputer {
         int cols = meanSubtracted.cols();
         double[] h = meanSubtracted.heightsUm();
         ShiftedDft.Plan plan = new ShiftedDft.Plan(rows, cols);
-        double[] power = new double[2 * rows * cols];
-        for (int i = 0; i < h.length; i++) {
-            power[2 * i] = 1.0; // (i h)^0
-        }
+        double[] power = PhaseCentres.centreField(h, centrePerUm); // exp(i a_j h) (i h)^0
         double[] work = new double[power.length];
         float[][] terms = new float[highestOrder + 1][];
         String task = "precompute " + rows + "x" + cols + ", terms 0.." + highestOrder;
         for (int n = 0; n <= highestOrder; n++) {
             if (n > 0) {
-                multiplyByIH(power, h);
+                PhaseCentres.multiplyByIH(power, h);
             }
             System.arraycopy(power, 0, work, 0, power.length);
             plan.inverseInPlace(work);
@@ -53,19 +78,9 @@ public final class TaylorTermComputer {
             a[2 * i] = 1.0;
         }
         for (int k = 0; k < n; k++) {
-            multiplyByIH(a, h);
+            PhaseCentres.multiplyByIH(a, h);
         }
         return ShiftedDft.inverse(a, meanSubtracted.rows(), meanSubtracted.cols());
-    }
-
-    /** (re + i im) * (i h) = -h im + i h re, in place. */
-    private static void multiplyByIH(double[] complex, double[] h) {
-        for (int p = 0; p < h.length; p++) {
-            double re = complex[2 * p];
-            double im = complex[2 * p + 1];
-            complex[2 * p] = -h[p] * im;
-            complex[2 * p + 1] = h[p] * re;
-        }
     }
 
     private static float[] fftshiftToFloat(double[] a, int rows, int cols) {

@@ -8,8 +8,8 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
-import diffract.optics.Float32Cancellation;
 import diffract.optics.HeightField;
+import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.io.SamplingCheck;
@@ -17,6 +17,7 @@ import diffract.jrtr.FloatTextureArray;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
 import diffract.precompute.Precomputation;
+import diffract.precompute.TaylorTermComputer;
 import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
 import diffract.util.ImageFiles;
@@ -108,6 +109,11 @@ final class BrdfMapCommand implements Callable<Integer> {
             description = "With --engine gpu: rg32f (default, exact) or rg16f (half precision) Taylor-term textures.")
     String textureFormat;
 
+    @Option(names = "--expansion", defaultValue = "auto", paramLabel = "E",
+            description = {"Taylor expansion of flss/nmm/pq: auto (default: the thesis' series around 0 where the patch"
+                    + " lets it reach 1e-3 in P, else around the nearest of several phase centres), plain or centred."})
+    String expansion;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
     Path output;
 
@@ -129,6 +135,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         fixedExposure(); // fail on a bad value now, not after minutes of work
         boolean gpu = parseEngine(engine);
         FloatTextureArray.Precision precision = parseTextureFormat(textureFormat);
+        TaylorEvaluation.Mode expansionMode = TaylorEvaluation.Mode.parse(expansion);
         if (gpu && Variant.parse(variant) == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
@@ -156,10 +163,11 @@ final class BrdfMapCommand implements Callable<Integer> {
                 requireTermsMatchPatch(terms, field);
             }
         }
-        if (gpu) {
-            warnAboutFloat32Cancellation(terms, lambdaNm != null ? lambdaNm : lambdaMinNm, reporter);
-        }
-        DiffractionBrdf brdf = gpu ? null : DiffractionBrdf.create(settings, field, terms);
+        TaylorEvaluation evaluation = terms == null ? null : TaylorEvaluation.choose(expansionMode, field, terms,
+                highestOrder, lambdaNm != null ? Math.min(lambdaNm, lambdaMinNm) : lambdaMinNm,
+                (patch, centres) -> TaylorTermComputer.computeCentred(patch, centres, reporter), reporter);
+        DiffractionBrdf brdf = gpu ? null
+                : evaluation == null ? DiffractionBrdf.create(settings, field, null) : evaluation.brdf(settings, field);
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
         CoherenceWindow window = settings.coherenceWindow();
         reporter.info(String.format(Locale.ROOT, "%s, %dx%d patch of %.3f x %.3f um, sigma_f = %.3f x %.3f texels",
@@ -168,7 +176,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         float[] rho = null;
         float[] xyz = null;
         if (gpu) {
-            try (GpuBrdfMap map = new GpuBrdfMap(terms, settings, precision)) {
+            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, precision)) {
                 reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
                 if (lambdaNm != null) {
                     rho = map.monochromatic(wi, lambdaNm, size);
@@ -225,24 +233,6 @@ final class BrdfMapCommand implements Callable<Integer> {
                 lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
     }
-
-    /**
-     * The GPU sums the Taylor series in float32: tall structures (large k |w| max|h|) turn it into rounding noise
-     * that looks plausible. Say so, with the patch's own error estimate, rather than render noise silently.
-     */
-    private static void warnAboutFloat32Cancellation(TaylorTerms terms, double shortestLambdaNm, Reporter reporter) {
-        double a = 2 * 2 * Math.PI / (shortestLambdaNm * 1e-3); // k |w| with |w| = 2, the largest phase factor
-        double error = Float32Cancellation.expectedAbsoluteError(terms, a);
-        if (error > FLOAT32_TOLERANCE_IN_P) {
-            reporter.warn(String.format(Locale.ROOT, "the float32 Taylor sum on the GPU may err by up to %.2g in P "
-                    + "(|P| <= 1) at %.0f nm (x = k|w|max|h| = %.1f): dim orders will be rounding noise; "
-                    + "use --engine cpu, a longer --lambda-min, or a lower patch", error, shortestLambdaNm,
-                    a * terms.maxAbsHeightUm()));
-        }
-    }
-
-    /** Errors in P below this stay below one 8-bit display step at the exposures BRDF maps are shown with. */
-    static final double FLOAT32_TOLERANCE_IN_P = 1e-3;
 
     /** Terms from another patch would render a different surface than the one named: refuse them. */
     private void requireTermsMatchPatch(TaylorTerms terms, HeightField field) {

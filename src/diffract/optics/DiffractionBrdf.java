@@ -26,24 +26,34 @@ public final class DiffractionBrdf {
      * FLSS, NMM and PQ; {@code meanSubtracted} for the reference.
      */
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+        if (settings.variant() == Variant.REFERENCE) {
+            PatchSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
+            return new DiffractionBrdf(exact, WavelengthSampling.uniform(settings.lambdaMinNm(),
+                    settings.lambdaMaxNm(), BrdfSettings.REFERENCE_STEP_NM), settings.refractiveIndex());
+        }
+        return withSampling(settings, taylorSpectrum(settings, terms, settings.highestOrder()));
+    }
+
+    /**
+     * FLSS, NMM or PQ summed around the nearest phase centre (issue #6, {@link PhaseCentredSpectrum}) instead of
+     * around 0: the same window, lookup and wavelengths, every order of every centre ({@code settings.highestOrder()}
+     * does not apply; the centres fix their own orders).
+     */
+    public static DiffractionBrdf createPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
+        if (settings.variant() == Variant.REFERENCE) {
+            throw new IllegalArgumentException("the reference needs no Taylor expansion");
+        }
+        int orders = terms.centres().highestOrder();
+        return withSampling(settings, new PhaseCentredSpectrum(terms, t -> taylorSpectrum(settings, t, orders)));
+    }
+
+    /** The variant's Taylor-series spectrum over float32 terms: Gaussian window (FLSS, NMM) or sinc (PQ). */
+    private static PatchSpectrum taylorSpectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
         CoherenceWindow window = settings.coherenceWindow();
-        double min = settings.lambdaMinNm();
-        double max = settings.lambdaMaxNm();
         switch (settings.variant()) {
-            case REFERENCE: {
-                PatchSpectrum exact = new ExactSpectrum(meanSubtracted, window);
-                return new DiffractionBrdf(exact,
-                        WavelengthSampling.uniform(min, max, BrdfSettings.REFERENCE_STEP_NM), settings.refractiveIndex());
-            }
             case FLSS:
-                return new DiffractionBrdf(
-                        new TaylorGaussianSpectrum(terms, settings.highestOrder(), settings.windowRadius(), window),
-                        WavelengthSampling.uniform(min, max, settings.lambdaStepNm()), settings.refractiveIndex());
-            case NMM: {
-                PatchSpectrum s = new TaylorGaussianSpectrum(terms, settings.highestOrder(), settings.windowRadius(), window);
-                return new DiffractionBrdf(s, WavelengthSampling.nmm(min, max, settings.lambdaStepNm(),
-                        s.extentXUm(), s.extentYUm(), NMM_MAX_NODES), settings.refractiveIndex());
-            }
+            case NMM:
+                return new TaylorGaussianSpectrum(terms, highestOrder, settings.windowRadius(), window);
             case PQ: {
                 double extentX = terms.cols() * terms.pixelSizeXUm();
                 double extentY = terms.rows() * terms.pixelSizeYUm();
@@ -51,13 +61,21 @@ public final class DiffractionBrdf {
                         : TaylorSincSpectrum.replicasForCoherence(window, extentX);
                 int ry = settings.pqReplicas() > 0 ? settings.pqReplicas()
                         : TaylorSincSpectrum.replicasForCoherence(window, extentY);
-                return new DiffractionBrdf(
-                        new TaylorSincSpectrum(terms, settings.highestOrder(), settings.windowRadius(), rx, ry),
-                        WavelengthSampling.uniform(min, max, settings.lambdaStepNm()), settings.refractiveIndex());
+                return new TaylorSincSpectrum(terms, highestOrder, settings.windowRadius(), rx, ry);
             }
             default:
                 throw new IllegalStateException("unhandled variant " + settings.variant());
         }
+    }
+
+    /** The variant's wavelengths: NMM's nodes, or the uniform grid of FLSS and PQ. */
+    private static DiffractionBrdf withSampling(BrdfSettings settings, PatchSpectrum s) {
+        double min = settings.lambdaMinNm();
+        double max = settings.lambdaMaxNm();
+        WavelengthSampling sampling = settings.variant() == Variant.NMM
+                ? WavelengthSampling.nmm(min, max, settings.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES)
+                : WavelengthSampling.uniform(min, max, settings.lambdaStepNm());
+        return new DiffractionBrdf(s, sampling, settings.refractiveIndex());
     }
 
     /** NMM's node budget per fragment: beyond it, uniform steps are cheaper anyway. */

@@ -108,24 +108,14 @@ public final class ExactSpectrum implements PatchSpectrum {
         return new double[] {re, im};
     }
 
-    /** E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..ORDERS_PER_CENTRE. */
+    /** E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..ORDERS_PER_CENTRE (PhaseCentres' arithmetic). */
     private double[][] expand(int centre) {
         double aj = Double.isInfinite(centreSpacing) ? 0 : centre * centreSpacing;
-        int samples = heightsUm.length;
-        double[] f = new double[2 * samples];
-        for (int p = 0; p < samples; p++) {
-            double phase = aj * heightsUm[p];
-            f[2 * p] = Math.cos(phase);
-            f[2 * p + 1] = Math.sin(phase);
-        }
+        double[] f = PhaseCentres.centreField(heightsUm, aj);
         double[][] out = new double[ORDERS_PER_CENTRE + 1][];
         for (int n = 0; n <= ORDERS_PER_CENTRE; n++) {
             if (n > 0) {
-                for (int p = 0; p < samples; p++) { // f *= i h
-                    double re = f[2 * p];
-                    f[2 * p] = -heightsUm[p] * f[2 * p + 1];
-                    f[2 * p + 1] = heightsUm[p] * re;
-                }
+                PhaseCentres.multiplyByIH(f, heightsUm);
             }
             out[n] = ShiftedDft.inverse(f, field.rows(), field.cols());
         }

@@ -9,6 +9,8 @@ package diffract.optics;
  * x = ln(tolerance / 2^-24) the result is rounding noise that still looks plausible. The CPU variants sum the same
  * float32 terms in double and are limited only by the terms' own rounding (2^-24 |DFT_n| each, the same order).
  * Tests measure the actual error of a float32 sum against the exact transform and hold it to this estimate.
+ * {@link TaylorEvaluation} uses {@link #plainSeriesError} to switch a scene to the phase-centred expansion
+ * ({@link PhaseCentres}), whose float32 error stays near 2^-24 e^2 at every height.
  */
 public final class Float32Cancellation {
     /** Unit roundoff of IEEE float32, 2^-24. */
@@ -56,6 +58,41 @@ public final class Float32Cancellation {
         }
         return max;
     }
+
+    /**
+     * Whether the thesis' series around 0, truncated at {@code highestOrder} and summed in float32, can reach
+     * {@link #TOLERANCE_IN_P} for this patch at every phase the scene reaches (|a| up to 2 k_max): the estimate of
+     * {@link #plainSeriesError}.
+     */
+    public static boolean plainSeriesSuffices(TaylorTerms terms, int highestOrder, double shortestLambdaNm) {
+        return plainSeriesError(terms, highestOrder, 2 * 2 * Math.PI / (shortestLambdaNm * 1e-3)) <= TOLERANCE_IN_P;
+    }
+
+    /**
+     * The patch's estimate of the error in P of the plain series at phase factor a: the float32 rounding of the
+     * terms it sums ({@link #expectedAbsoluteError(TaylorTerms, double)} over orders 0..N) plus the truncated
+     * tail. The tail is estimated from the last term, t_N = |a|^N / N! max|DFT_N|: the terms beyond it shrink at
+     * least by r = x / (N + 2) per order (x = |a| max|h|, |DFT_{n+1}| <= max|h| |DFT_n| on average), so the tail
+     * is about t_N r / (1 - r); with r >= 1 the series has not begun to converge at order N (infinite).
+     */
+    public static double plainSeriesError(TaylorTerms terms, int highestOrder, double a) {
+        double rounding = 0;
+        double coefficient = 1;
+        double lastTerm = 0;
+        for (int n = 0; n <= highestOrder; n++) {
+            if (n > 0) {
+                coefficient *= Math.abs(a) / n;
+            }
+            lastTerm = coefficient * maxAbs(terms, n);
+            rounding += lastTerm;
+        }
+        double r = Math.abs(a) * terms.maxAbsHeightUm() / (highestOrder + 2);
+        double tail = r < 1 ? lastTerm * r / (1 - r) : Double.POSITIVE_INFINITY;
+        return FLOAT32_UNIT_ROUNDOFF * rounding + tail;
+    }
+
+    /** Errors in P below this stay below one 8-bit display step at the exposures BRDF maps are shown with. */
+    public static final double TOLERANCE_IN_P = 1e-3;
 
     /** The phase beyond which a float32 Taylor sum errs by more than {@code toleranceInP}: ln(tolerance / 2^-24). */
     public static double reliablePhaseLimit(double toleranceInP) {

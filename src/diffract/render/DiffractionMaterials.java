@@ -5,6 +5,7 @@ import diffract.jrtr.Texture2D;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.Direction;
+import diffract.optics.PhaseCentres;
 import diffract.optics.TaylorSincSpectrum;
 
 /**
@@ -22,7 +23,7 @@ public final class DiffractionMaterials {
      */
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
         Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP,
-                monochromatic, false));
+                monochromatic, false, textures.phaseCentres()));
         return common(m, textures, settings);
     }
 
@@ -32,7 +33,7 @@ public final class DiffractionMaterials {
      * corner in the viewport, to centre it) before drawing.
      */
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
-        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings));
+        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures.phaseCentres()));
         return common(m, textures, settings).setFloat("exposure", exposure);
     }
 
@@ -43,7 +44,7 @@ public final class DiffractionMaterials {
     public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                    Texture2D pigmentation, float diffuseWeight) {
         Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.SURFACE, false,
-                pigmentation != null));
+                pigmentation != null, textures.phaseCentres()));
         common(m, textures, settings).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
@@ -68,6 +69,10 @@ public final class DiffractionMaterials {
         m.setTexture("taylorTerms", textures.terms())
                 .setTexture("uniformNodeTable", textures.uniformNodeTable())
                 .setTexture("spectralTable", textures.spectralTable());
+        PhaseCentres centres = textures.phaseCentres();
+        if (centres != null) { // taylor_centred.glsl
+            m.setFloat("centreSpacingPerUm", (float) centres.spacingPerUm()).setInt("centreCount", centres.centreCount());
+        }
         return m.setVec2("patchExtentUm", (float) extentX, (float) extentY)
                 .setFloat("refractiveIndex", (float) settings.refractiveIndex())
                 .setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY))

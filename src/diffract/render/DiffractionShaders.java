@@ -4,6 +4,7 @@ import diffract.colour.Srgb;
 import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
+import diffract.optics.PhaseCentres;
 import diffract.optics.Variant;
 import diffract.util.UserInputException;
 
@@ -57,8 +58,21 @@ public final class DiffractionShaders {
      */
     public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
                                               boolean pigmentation) {
+        return defines(settings, target, monochromatic, pigmentation, null);
+    }
+
+    /**
+     * As above; with {@code phaseCentres} (not null) the shader expands around the nearest phase centre
+     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}) and sums the centres' orders instead of the settings'.
+     */
+    public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
+                                              boolean pigmentation, PhaseCentres phaseCentres) {
         Map<String, String> defines = new TreeMap<>();
-        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(settings.highestOrder()));
+        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(phaseCentres != null ? phaseCentres.highestOrder()
+                : settings.highestOrder()));
+        if (phaseCentres != null) {
+            defines.put("PHASE_CENTRED", "1");
+        }
         defines.put("WINDOW_RADIUS", Integer.toString(settings.windowRadius()));
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
@@ -81,8 +95,14 @@ public final class DiffractionShaders {
     /** The program of a variant for a target (compiled on first use in a GL context). */
     public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
                                         boolean pigmentation) {
+        return program(settings, target, monochromatic, pigmentation, null);
+    }
+
+    /** As above, phase-centred when {@code phaseCentres} is not null. */
+    public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
+                                        boolean pigmentation, PhaseCentres phaseCentres) {
         return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
-                defines(settings, target, monochromatic, pigmentation));
+                defines(settings, target, monochromatic, pigmentation, phaseCentres));
     }
 
     /**
@@ -90,7 +110,12 @@ public final class DiffractionShaders {
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
     public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings) {
-        Map<String, String> defines = defines(settings, Target.BRDF_MAP, false, false);
+        return displayBrdfMapProgram(settings, null);
+    }
+
+    /** As above, phase-centred when {@code phaseCentres} is not null. */
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, PhaseCentres phaseCentres) {
+        Map<String, String> defines = defines(settings, Target.BRDF_MAP, false, false, phaseCentres);
         defines.put("DISPLAY_SRGB", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }

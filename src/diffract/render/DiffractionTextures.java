@@ -7,6 +7,8 @@ import diffract.colour.Trapezoid;
 import diffract.jrtr.FloatTexture1D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
+import diffract.optics.PhaseCentredTerms;
+import diffract.optics.PhaseCentres;
 import diffract.optics.TaylorTerms;
 
 import java.util.ArrayList;
@@ -33,15 +35,18 @@ public final class DiffractionTextures {
     private final double spectralTableFirstNm;
     private final double extentXUm;
     private final double extentYUm;
+    private final PhaseCentres phaseCentres;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D uniformNodeTable, FloatTexture1D spectralTable,
-                                double spectralTableFirstNm, double extentXUm, double extentYUm) {
+                                double spectralTableFirstNm, double extentXUm, double extentYUm,
+                                PhaseCentres phaseCentres) {
         this.terms = terms;
         this.uniformNodeTable = uniformNodeTable;
         this.spectralTable = spectralTable;
         this.spectralTableFirstNm = spectralTableFirstNm;
         this.extentXUm = extentXUm;
         this.extentYUm = extentYUm;
+        this.phaseCentres = phaseCentres;
     }
 
     /** Terms 0..settings.highestOrder() (which the terms must hold) and the tables for the settings' wavelengths. */
@@ -56,7 +61,21 @@ public final class DiffractionTextures {
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
         return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
-                Cie1931.firstNm(), terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm());
+                Cie1931.firstNm(), terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm(), null);
+    }
+
+    /**
+     * The phase-centred expansion (issue #6): every centre's terms E_{j,n} in layer j * (N_c + 1) + n
+     * ({@link PhaseCentredTerms#layers()}, read by {@code taylor_centred.glsl}); the settings' Taylor order does not
+     * apply, the centres fix theirs.
+     */
+    public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings,
+                                                     FloatTextureArray.Precision precision) {
+        TaylorTerms first = terms.aroundCentre(0);
+        FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
+        return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
+                Cie1931.firstNm(), first.cols() * first.pixelSizeXUm(), first.rows() * first.pixelSizeYUm(),
+                terms.centres());
     }
 
     /** (wx, wy, wz, lambda) per node of WavelengthSampling.uniform(min, max, step). */
@@ -102,6 +121,11 @@ public final class DiffractionTextures {
 
     public double spectralTableFirstNm() {
         return spectralTableFirstNm;
+    }
+
+    /** The phase centres of a phase-centred term array, null for the thesis' terms around 0. */
+    public PhaseCentres phaseCentres() {
+        return phaseCentres;
     }
 
     /** L_x = cols dH_x in micrometres. */

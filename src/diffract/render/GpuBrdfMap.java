@@ -12,9 +12,13 @@ import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.PhaseCentredTerms;
+import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.UserInputException;
+
+import java.util.function.Supplier;
 
 /**
  * BRDF maps on the GPU, with the pixel convention of {@link diffract.optics.BrdfMap}: pixel (i, j) of an S x S map
@@ -37,11 +41,30 @@ public final class GpuBrdfMap implements AutoCloseable {
      * @throws UserInputException for the reference variant, or when no GL context can be opened
      */
     public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
+        this(checkVariant(settings, () -> DiffractionTextures.of(terms, settings, precision)), settings);
+    }
+
+    /** The phase-centred expansion (issue #6): the same maps for patches too tall for the thesis' series. */
+    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
+        this(checkVariant(settings, () -> DiffractionTextures.ofPhaseCentred(terms, settings, precision)), settings);
+    }
+
+    /** The map of a scene on the path {@link TaylorEvaluation#choose} picked for it. */
+    public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision) {
+        return evaluation.isPhaseCentred() ? new GpuBrdfMap(evaluation.centredTerms(), settings, precision)
+                : new GpuBrdfMap(evaluation.plainTerms(), settings, precision);
+    }
+
+    private static DiffractionTextures checkVariant(BrdfSettings settings, Supplier<DiffractionTextures> textures) {
         if (settings.variant() == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
+        return textures.get();
+    }
+
+    private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings) {
         this.settings = settings;
-        this.textures = DiffractionTextures.of(terms, settings, precision);
+        this.textures = textures;
         this.xyzMaterial = DiffractionMaterials.brdfMap(textures, settings, false);
         this.quad = new ShapeNode(Shapes.fullScreenQuad(), xyzMaterial);
         this.target = new OffscreenTarget(new Renderer(new Group("brdf map").add(quad), new Camera(), new Frustum()));

@@ -5,12 +5,18 @@ import diffract.jrtr.GLRenderContext;
 import diffract.jrtr.Material;
 import diffract.jrtr.Texture2D;
 import diffract.optics.BrdfSettings;
+import diffract.optics.Float32Cancellation;
+import diffract.optics.HeightField;
+import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
+import diffract.precompute.TaylorTermComputer;
 import diffract.render.DiffractionMaterials;
 import diffract.render.DiffractionTextures;
+import diffract.util.Reporter;
 
 import java.awt.image.BufferedImage;
 import java.util.EnumMap;
+import java.util.HashMap;
 import java.util.Map;
 
 /**
@@ -48,14 +54,19 @@ final class ViewerMaterials {
 
     private final Texture2D pigmentationTexture;
     private final float diffuseWeight;
+    private final HeightField patch;
+    /** The phase-centred terms of the patch (issue #6) by the shortest wavelength they were planned for. */
+    private final Map<Double, TaylorEvaluation> centredByLambdaMin = new HashMap<>();
     private TexturesKey texturesKey;
     private DiffractionTextures textures;
     private final Map<DisplayMode, Built> materials = new EnumMap<>(DisplayMode.class);
     private int rebuildCount;
 
-    ViewerMaterials(BufferedImage pigmentation, double diffuseWeight) {
+    /** @param patch the mean-subtracted height field the terms belong to (for the phase-centred expansion) */
+    ViewerMaterials(BufferedImage pigmentation, double diffuseWeight, HeightField patch) {
         this.pigmentationTexture = pigmentation == null ? null : new Texture2D(pigmentation);
         this.diffuseWeight = (float) diffuseWeight;
+        this.patch = patch;
     }
 
     /** The material for this state's display mode and drawable settings, built if anything it depends on changed. */
@@ -64,7 +75,7 @@ final class ViewerMaterials {
         TexturesKey wantedTextures = TexturesKey.of(state.terms(), settings);
         if (!wantedTextures.equals(texturesKey)) {
             releaseAll(context);
-            textures = DiffractionTextures.of(state.terms(), settings, FloatTextureArray.Precision.FLOAT32);
+            textures = termTextures(state.terms(), settings);
             texturesKey = wantedTextures;
         }
         boolean pigmentation = state.pigmentationOn() && pigmentationTexture != null;
@@ -79,6 +90,24 @@ final class ViewerMaterials {
             rebuildCount++;
         }
         return built.material();
+    }
+
+    /**
+     * The thesis' terms where their float32 series is accurate for this patch, else the phase-centred expansion
+     * (issue #6, {@link TaylorEvaluation}; computed once per shortest wavelength, on this thread: a fraction of a
+     * second for the patches the viewer shows). The decision and its reason are printed once per change.
+     */
+    private DiffractionTextures termTextures(TaylorTerms terms, BrdfSettings settings) {
+        if (Float32Cancellation.plainSeriesSuffices(terms, settings.highestOrder(), settings.lambdaMinNm())) {
+            return DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
+        }
+        TaylorEvaluation evaluation = centredByLambdaMin.computeIfAbsent(settings.lambdaMinNm(), lambdaMin ->
+                TaylorEvaluation.choose(TaylorEvaluation.Mode.AUTO, patch, terms, settings.highestOrder(), lambdaMin,
+                        (p, centres) -> TaylorTermComputer.computeCentred(p, centres, Reporter.SILENT),
+                        Reporter.STDERR));
+        return evaluation.isPhaseCentred()
+                ? DiffractionTextures.ofPhaseCentred(evaluation.centredTerms(), settings, FloatTextureArray.Precision.FLOAT32)
+                : DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
     }
 
     /** How many materials were built so far (tests: no rebuild per frame). */

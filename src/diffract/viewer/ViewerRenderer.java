@@ -41,7 +41,8 @@ public final class ViewerRenderer extends Renderer {
     public ViewerRenderer(ViewerModel model) {
         super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, (float) model.setup().verticalFovDeg()));
         this.model = model;
-        this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight());
+        this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight(),
+                model.setup().patch());
         // the nodes get their materials on the render thread, at the first frame
         this.surface = new ShapeNode(model.shape(), null);
         this.surfaceScene = new Group("surface").add(light, surface);

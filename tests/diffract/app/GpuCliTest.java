@@ -30,18 +30,29 @@ class GpuCliTest {
 
     @Test
     @Tag("gl")
-    void tallPatchesOnTheGpuWarnAboutFloat32CancellationAndLowOnesDoNot() throws Exception {
+    void tallPatchesSwitchToThePhaseCentredExpansionOrWarnAndLowOnesDoNot() throws Exception {
         Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
         Path tall = dir.resolve("tall.gsf");
-        GsfWriter.write(tall, SyntheticPatches.sinusoid(2.5, 1.2, 10, 4, 2)); // x = k |w| max|h| ~ 20 at 380 nm
-        Object[] warned = CliTest.run("brdfmap", "--patch", tall.toString(), "--theta-i", "30", "--variant", "flss",
-                "--terms", "60", "--engine", "gpu", "--size", "8", "-o", dir.resolve("tall.png").toString());
+        GsfWriter.write(tall, SyntheticPatches.sinusoid(2.5, 1.2, 10, 4, 2)); // x = k |w| max|h| = 18.9 at 380 nm
+        String[] tallMap = {"brdfmap", "--patch", tall.toString(), "--theta-i", "30", "--variant", "flss",
+            "--terms", "60", "--engine", "gpu", "--size", "8", "-o", dir.resolve("tall.png").toString()};
+        Object[] switched = CliTest.run(tallMap);
+        assertEquals(0, switched[0], (String) switched[2]);
+        assertTrue(((String) switched[2]).contains("phase-centred Taylor expansion: x = k|w|max|h| = 18.9"),
+                (String) switched[2]);
+        // the mesh renderer (viewer, render) switches the same way
+        Object[] rendered = CliTest.run("render", "--patch", tall.toString(), "--terms", "60", "--lambda-step", "20",
+                "--size", "48x32", "-o", dir.resolve("tall-render.png").toString());
+        assertEquals(0, rendered[0], (String) rendered[2]);
+        assertTrue(((String) rendered[2]).contains("phase-centred Taylor expansion"), (String) rendered[2]);
+        Object[] warned = CliTest.run(concat(tallMap, "--expansion", "plain"));
         assertEquals(0, warned[0], (String) warned[2]);
-        assertTrue(((String) warned[2]).contains("warning: the float32 Taylor sum on the GPU may err"), (String) warned[2]);
+        assertTrue(((String) warned[2]).contains("warning: the float32 Taylor sum (61 terms) may err"), (String) warned[2]);
         Object[] quiet = CliTest.run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "flss",
                 "--terms", "20", "--engine", "gpu", "--size", "8", "-o", dir.resolve("low.png").toString());
         assertEquals(0, quiet[0], (String) quiet[2]);
         assertTrue(!((String) quiet[2]).contains("float32 Taylor sum"), (String) quiet[2]);
+        assertTrue(!((String) quiet[2]).contains("phase-centred"), (String) quiet[2]);
     }
 
     @Test

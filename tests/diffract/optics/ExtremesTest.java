@@ -67,6 +67,31 @@ class ExtremesTest {
     }
 
     @Test
+    void tallPatchesOnThePhaseCentredPath() {
+        // issue #6: the centred expansion at the same angles, the exact specular direction and both spectrum ends
+        for (double maxH : new double[] {0.5, 2.0}) {
+            HeightField patch = NaiveDft.randomPatch(12, 16, 2 * maxH, 0.1, 17);
+            PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
+                    PhaseCentres.forPatch(patch.maxAbsHeightUm(), 380), Reporter.SILENT);
+            for (Variant variant : new Variant[] {Variant.FLSS, Variant.NMM, Variant.PQ}) {
+                DiffractionBrdf brdf = DiffractionBrdf.createPhaseCentred(
+                        BrdfSettings.thesis(variant).withLambdaStepNm(50), centred);
+                for (Direction wi : directions()) {
+                    List<Direction> views = new ArrayList<>(directions());
+                    views.add(wi.specular());
+                    for (Direction wr : views) {
+                        String where = "centred maxH " + maxH + " " + variant + " wi " + wi + " wr " + wr;
+                        assertSane(brdf.xyz(wi, wr).y(), where + " Y");
+                        for (double lambda : new double[] {380, 780}) {
+                            assertSane(brdf.relative(wi, wr, lambda), where + " at " + lambda + " nm");
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    @Test
     void constantOddNonSquareAndSinglePixelPatches() {
         checkAllVariants(HeightField.of(5, 7, filled(35, 0.3), 0.1).meanSubtracted(), 5, "constant 5x7");
         checkAllVariants(NaiveDft.randomPatch(7, 3, 0.2, 0.08, 3), 10, "random 7x3");
