@@ -47,12 +47,17 @@ public final class OffscreenTarget implements AutoCloseable {
         });
     }
 
-    /** Runs {@code work} with this target's GL context current on this thread and returns its result. */
+    /**
+     * Runs {@code work} with this target's GL context current on this thread and returns its result. A context
+     * that was current on this thread before (e.g. a window's, when a table is rendered offscreen from inside its
+     * display callback) is made current again afterwards.
+     */
     public <T> T withContext(Function<GL3, T> work) {
         if (closed) {
             throw new IllegalStateException("offscreen target already closed");
         }
         GLContext context = drawable.getContext();
+        GLContext previous = GLContext.getCurrent();
         if (context.makeCurrent() == GLContext.CONTEXT_NOT_CURRENT) {
             throw new IllegalStateException("cannot make the offscreen GL context current");
         }
@@ -60,6 +65,9 @@ public final class OffscreenTarget implements AutoCloseable {
             return work.apply(context.getGL().getGL3());
         } finally {
             context.release();
+            if (previous != null && previous != context) {
+                previous.makeCurrent();
+            }
         }
     }
 

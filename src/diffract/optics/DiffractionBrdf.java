@@ -2,6 +2,7 @@ package diffract.optics;
 
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
+import diffract.util.UserInputException;
 
 /**
  * The relative diffraction BRDF of a patch (004): monochromatic, rho_lambda = C(omega_i, omega_r) S |P|^2
@@ -29,6 +30,9 @@ public final class DiffractionBrdf {
         CoherenceWindow window = settings.coherenceWindow();
         double min = settings.lambdaMinNm();
         double max = settings.lambdaMaxNm();
+        WindowRadii radii = terms == null ? null
+                : settings.windowRadii(terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm());
+        double tolerance = settings.taylorTolerance();
         switch (settings.variant()) {
             case REFERENCE: {
                 PatchSpectrum exact = new ExactSpectrum(meanSubtracted, window);
@@ -37,10 +41,10 @@ public final class DiffractionBrdf {
             }
             case FLSS:
                 return new DiffractionBrdf(
-                        new TaylorGaussianSpectrum(terms, settings.highestOrder(), settings.windowRadius(), window),
+                        new TaylorGaussianSpectrum(terms, settings.highestOrder(), radii, tolerance, window),
                         WavelengthSampling.uniform(min, max, settings.lambdaStepNm()), settings.refractiveIndex());
             case NMM: {
-                PatchSpectrum s = new TaylorGaussianSpectrum(terms, settings.highestOrder(), settings.windowRadius(), window);
+                PatchSpectrum s = new TaylorGaussianSpectrum(terms, settings.highestOrder(), radii, tolerance, window);
                 return new DiffractionBrdf(s, WavelengthSampling.nmm(min, max, settings.lambdaStepNm(),
                         s.extentXUm(), s.extentYUm(), NMM_MAX_NODES), settings.refractiveIndex());
             }
@@ -52,13 +56,19 @@ public final class DiffractionBrdf {
                 int ry = settings.pqReplicas() > 0 ? settings.pqReplicas()
                         : TaylorSincSpectrum.replicasForCoherence(window, extentY);
                 return new DiffractionBrdf(
-                        new TaylorSincSpectrum(terms, settings.highestOrder(), settings.windowRadius(), rx, ry),
+                        new TaylorSincSpectrum(terms, settings.highestOrder(), radii, tolerance, rx, ry),
                         WavelengthSampling.uniform(min, max, settings.lambdaStepNm()), settings.refractiveIndex());
             }
+            case BAKED:
+                throw new UserInputException(BAKED_IS_GPU_ONLY);
             default:
                 throw new IllegalStateException("unhandled variant " + settings.variant());
         }
     }
+
+    /** One line for the CLI and the API when the baked table is asked of the CPU. */
+    public static final String BAKED_IS_GPU_ONLY = "the baked variant is a GPU table (--engine gpu); "
+            + "on the CPU use flss, which it tabulates";
 
     /** NMM's node budget per fragment: beyond it, uniform steps are cheaper anyway. */
     public static final int NMM_MAX_NODES = 1024;

@@ -5,6 +5,7 @@ import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Variant;
+import diffract.optics.WindowRadii;
 import diffract.util.UserInputException;
 
 import java.util.Locale;
@@ -57,9 +58,25 @@ public final class DiffractionShaders {
      */
     public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
                                               boolean pigmentation) {
+        if (settings.automaticWindowRadius()) {
+            throw new IllegalArgumentException("an automatic window radius needs the patch: use defines(settings, "
+                    + "highestOrder, radii, ...)");
+        }
+        return defines(settings, settings.highestOrder(),
+                new WindowRadii(settings.windowRadius(), settings.windowRadius()), target, monochromatic, pigmentation);
+    }
+
+    /**
+     * As above with the Taylor order and window radii a patch actually needs ({@link DiffractionTextures#highestOrder},
+     * {@link DiffractionTextures#windowRadii}): WINDOW_RADIUS_X and _Y per axis, WINDOW_RADIUS their maximum.
+     */
+    public static Map<String, String> defines(BrdfSettings settings, int highestOrder, WindowRadii radii, Target target,
+                                              boolean monochromatic, boolean pigmentation) {
         Map<String, String> defines = new TreeMap<>();
-        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(settings.highestOrder()));
-        defines.put("WINDOW_RADIUS", Integer.toString(settings.windowRadius()));
+        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(highestOrder));
+        defines.put("WINDOW_RADIUS", Integer.toString(Math.max(radii.x(), radii.y())));
+        defines.put("WINDOW_RADIUS_X", Integer.toString(radii.x()));
+        defines.put("WINDOW_RADIUS_Y", Integer.toString(radii.y()));
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
@@ -85,12 +102,31 @@ public final class DiffractionShaders {
                 defines(settings, target, monochromatic, pigmentation));
     }
 
+    /** The program for the order and radii of these textures (what DiffractionMaterials uses). */
+    public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, Target target,
+                                        boolean monochromatic, boolean pigmentation) {
+        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
+                defines(settings, textures.highestOrder(), textures.windowRadii(), target, monochromatic, pigmentation));
+    }
+
+    /**
+     * The bake pass of the BAKED table ({@code baked.frag} with {@code BAKE}): FLSS of these settings, written as
+     * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
+     */
+    public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
+        Map<String, String> defines = defines(flssSettings, textures.highestOrder(), textures.windowRadii(),
+                Target.BRDF_MAP, false, false);
+        defines.put("BAKE", "1");
+        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
+    }
+
     /**
      * The BRDF-map program for a window: display sRGB of {@code exposure} x XYZ (define {@code DISPLAY_SRGB})
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
-    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings) {
-        Map<String, String> defines = defines(settings, Target.BRDF_MAP, false, false);
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures) {
+        Map<String, String> defines = defines(settings, textures.highestOrder(), textures.windowRadii(),
+                Target.BRDF_MAP, false, false);
         defines.put("DISPLAY_SRGB", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }
