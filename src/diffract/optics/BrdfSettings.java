@@ -111,6 +111,13 @@ public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, 
                 bakedWSamples);
     }
 
+    /** sigma_s of the coherence window (4 sigma_s = the coherence length). */
+    public BrdfSettings withSigmaSpatialUm(double sigma) {
+        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                sigma, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
+    }
+
     /** The per-fragment Taylor tolerance (0 = fixed N). */
     public BrdfSettings withTaylorTolerance(double tolerance) {
         return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
