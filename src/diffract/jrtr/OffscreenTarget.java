@@ -34,6 +34,7 @@ public final class OffscreenTarget implements AutoCloseable {
     /** Creates the hidden GL context; throws {@link diffract.util.UserInputException} when there is no display. */
     public OffscreenTarget(GLEventListener listener) {
         this.listener = listener;
+        GLContext previous = GLContext.getCurrent();
         GLCapabilities caps = GLProfiles.capabilities();
         caps.setOnscreen(false);
         caps.setDoubleBuffered(false);
@@ -45,6 +46,14 @@ public final class OffscreenTarget implements AutoCloseable {
             GLRenderContext.requireVersion(gl);
             return null;
         });
+        restore(previous);
+    }
+
+    /** Makes {@code previous} (a context current on this thread before we took it over, or null) current again. */
+    private void restore(GLContext previous) {
+        if (previous != null && previous != drawable.getContext() && GLContext.getCurrent() != previous) {
+            previous.makeCurrent();
+        }
     }
 
     /**
@@ -65,9 +74,7 @@ public final class OffscreenTarget implements AutoCloseable {
             return work.apply(context.getGL().getGL3());
         } finally {
             context.release();
-            if (previous != null && previous != context) {
-                previous.makeCurrent();
-            }
+            restore(previous);
         }
     }
 
@@ -149,6 +156,7 @@ public final class OffscreenTarget implements AutoCloseable {
         if (closed) {
             return;
         }
+        GLContext previous = GLContext.getCurrent();
         try {
             withContext(gl -> {
                 if (listenerInitialized) {
@@ -163,6 +171,7 @@ public final class OffscreenTarget implements AutoCloseable {
         } finally {
             closed = true;
             drawable.destroy();
+            restore(previous);
         }
     }
 }

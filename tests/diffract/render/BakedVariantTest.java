@@ -194,6 +194,33 @@ class BakedVariantTest {
                 () -> DiffractionBrdf.create(RenderTestSupport.settings(Variant.BAKED), patch, terms));
     }
 
+    /**
+     * The mesh path (surface.vert, 003 Algorithm 2) reads the same table: a square facing the camera, light from
+     * straight above, so the centre pixel is the specular direction at normal incidence, (u, v, w) = (0, 0, -2), a
+     * table sample: its display sRGB equals that of the CPU's FLSS there (to 2/255), and every pixel is in [0, 1].
+     */
+    @Test
+    void surfacePathReadsTheTable() {
+        RenderTestSupport.assumeDisplay();
+        HeightField patch = RenderTestSupport.ELAPHE_LIKE;
+        TaylorTerms terms = RenderTestSupport.terms(patch);
+        DiffractionTextures textures = DiffractionTextures.of(terms, baked(), FloatTextureArray.Precision.FLOAT32);
+        float exposure = 0.5f;
+        float[] rgba = GpuFinitenessTest.render(DiffractionMaterials.surface(textures, baked(), exposure, null, 0),
+                new javax.vecmath.Vector3f(0, 0, 1), diffract.jrtr.Shapes.rectangle("square", -1, -1, 1, 1, 0), 33);
+        for (float v : rgba) {
+            assertTrue(Float.isFinite(v) && v >= 0 && v <= 1, "surface value " + v);
+        }
+        DiffractionBrdf flss = DiffractionBrdf.create(RenderTestSupport.settings(Variant.FLSS), patch, terms);
+        float[] expected = diffract.colour.ColourPath.SRGB.displayRgb(
+                flss.xyz(new Direction(0, 0, 1), new Direction(0, 0, 1)).scaled(exposure));
+        int p = 4 * (16 * 33 + 16);
+        assertTrue(expected[1] > 0.1, "the specular centre must be lit");
+        for (int k = 0; k < 3; k++) {
+            assertEquals(expected[k], rgba[p + k], 2.0 / 255, "centre pixel channel " + k);
+        }
+    }
+
     private static Xyz spectralXyz(PatchSpectrum spectrum, WavelengthSampling sampling, double u, double v, double w) {
         WavelengthSampling.Quadrature q = sampling.quadratureFor(u, v);
         double[] power = new double[q.lambdasNm().length];
