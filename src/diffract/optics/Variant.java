@@ -2,7 +2,10 @@ package diffract.optics;
 
 import java.util.Locale;
 
-/** How the BRDF is evaluated: the exact reference, or one of the thesis' three shader approximations, or a baked table of FLSS. */
+/**
+ * How the BRDF is evaluated: the exact reference, one of the thesis' three shader approximations, or a baked table
+ * of FLSS (issue #5).
+ */
 public enum Variant {
     /** exp(i k w h) exactly, window until weights < 1e-12, lambda at 1 nm: the yardstick. */
     REFERENCE,
@@ -17,6 +20,11 @@ public enum Variant {
      * (issue #5; after Dhillon and Ghosh 2016, Toisoul and Ghosh 2017). GPU only.
      */
     BAKED;
+
+    /** Whether DiffractionBrdf evaluates it on the CPU (the baked table exists on the GPU only). */
+    public boolean runsOnCpu() {
+        return this != BAKED;
+    }
 
     public String cliName() {
         return name().toLowerCase(Locale.ROOT);
