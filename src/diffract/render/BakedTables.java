@@ -46,11 +46,31 @@ public final class BakedTables {
         Key key = new Key(terms, settings.withVariant(Variant.BAKED));
         BakedTable table = CACHE.get(key);
         if (table == null) {
-            table = BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter);
+            table = bakeOffThisThread(terms, settings, reporter);
             CACHE.put(key, table);
             bakes++;
         }
         return table;
+    }
+
+    /**
+     * Bakes on a thread of its own when a GL context is current on this one (a render loop asking for a table it
+     * has not got): the bake's hidden context then never touches the caller's context or framebuffer bindings
+     * (making the caller's context current again lets JOGL rebind its own framebuffer, and the frame came out
+     * black). The caller waits for the table.
+     */
+    private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        if (com.jogamp.opengl.GLContext.getCurrent() == null) {
+            return BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter);
+        }
+        java.util.concurrent.CompletableFuture<BakedTable> bake = java.util.concurrent.CompletableFuture.supplyAsync(
+                () -> BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter),
+                command -> new Thread(command, "bake").start());
+        try {
+            return bake.join();
+        } catch (java.util.concurrent.CompletionException e) {
+            throw e.getCause() instanceof RuntimeException r ? r : e;
+        }
     }
 
     /** How many tables were baked so far (tests: the cache bakes once). */
