@@ -221,6 +221,39 @@ class BakedVariantTest {
         }
     }
 
+    /**
+     * A render loop (a GL context current, a framebuffer of its own bound) that asks for a table it has not got:
+     * the bake runs on a thread of its own and leaves the caller's context current with its bindings unchanged
+     * (baking on the same thread let JOGL rebind the caller's framebuffer, and the viewer's frame came out black).
+     */
+    @Test
+    void bakingFromInsideAGlContextLeavesThatContextAlone() {
+        RenderTestSupport.assumeDisplay();
+        TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
+        BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).withBakedSamples(9, 2).withLambdaStepNm(20);
+        int before = BakedTables.bakeCount();
+        try (diffract.jrtr.OffscreenTarget outer = new diffract.jrtr.OffscreenTarget(new diffract.jrtr.Renderer(
+                new diffract.jrtr.Group("empty"), new diffract.jrtr.Camera(), new diffract.jrtr.Frustum()))) {
+            int[] bindings = outer.withContext(gl -> {
+                int[] framebuffer = new int[1];
+                gl.glGenFramebuffers(1, framebuffer, 0);
+                gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, framebuffer[0]);
+                com.jogamp.opengl.GLContext context = com.jogamp.opengl.GLContext.getCurrent();
+                BakedTables.of(terms, settings, Reporter.SILENT);
+                int[] after = new int[3];
+                gl.glGetIntegerv(com.jogamp.opengl.GL2ES3.GL_DRAW_FRAMEBUFFER_BINDING, after, 0);
+                after[1] = framebuffer[0];
+                after[2] = com.jogamp.opengl.GLContext.getCurrent() == context ? 1 : 0;
+                gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, 0);
+                gl.glDeleteFramebuffers(1, framebuffer, 0);
+                return after;
+            });
+            assertEquals(1, bindings[2], "the caller's context is still current");
+            assertEquals(bindings[1], bindings[0], "the caller's framebuffer is still bound");
+        }
+        assertEquals(before + 1, BakedTables.bakeCount());
+    }
+
     private static Xyz spectralXyz(PatchSpectrum spectrum, WavelengthSampling sampling, double u, double v, double w) {
         WavelengthSampling.Quadrature q = sampling.quadratureFor(u, v);
         double[] power = new double[q.lambdasNm().length];
