@@ -7,6 +7,7 @@
 // Compile-time configuration, injected as #defines by diffract.render.DiffractionShaders:
 //   TAYLOR_HIGHEST_ORDER  N, the last Taylor order (N + 1 terms; BrdfSettings.highestOrder)
 //   WINDOW_RADIUS         R, the window covers (2R + 1)^2 texels (BrdfSettings.windowRadius)
+//   WINDOW_RADIUS_X/_Y    per-axis radii (BrdfSettings.windowRadii, e.g. automatic from sigma_f); default R
 //   NMM_MAX_NODES         NMM's node budget (DiffractionBrdf.NMM_MAX_NODES)
 //   XYZ_TO_LINEAR_SRGB    mat3(...) constructor of Srgb.xyzToLinearMatrix()
 //   BRDF_MAP | SURFACE    which vertex shader feeds the fragment shader
@@ -18,6 +19,13 @@
 #error "TAYLOR_HIGHEST_ORDER, WINDOW_RADIUS and XYZ_TO_LINEAR_SRGB must be defined (see DiffractionShaders)"
 #endif
 
+#ifndef WINDOW_RADIUS_X
+#define WINDOW_RADIUS_X WINDOW_RADIUS
+#endif
+#ifndef WINDOW_RADIUS_Y
+#define WINDOW_RADIUS_Y WINDOW_RADIUS
+#endif
+
 const float PI = 3.14159265358979;
 const int TERM_COUNT = TAYLOR_HIGHEST_ORDER + 1;
 
@@ -27,6 +35,10 @@ uniform sampler2DArray taylorTerms;
 uniform vec2 patchExtentUm;
 // Snake skin: 1.5 (GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX).
 uniform float refractiveIndex;
+// The early stop of the Taylor loop (BrdfSettings.taylorTolerance; 0 = always TAYLOR_HIGHEST_ORDER) and the
+// patch's max|h| in um (TaylorTerms.maxAbsHeightUm) for each fragment's x = |k w| max|h|.
+uniform float taylorTolerance;
+uniform float maxAbsHeightUm;
 
 // ---------------------------------------------------------------------------------------------------------
 // Small guards: no fragment may become NaN or Inf.
@@ -151,6 +163,23 @@ void taylorCoefficients(float kw, out float c[TERM_COUNT]) {
 // taylorExpansion(kw, c): the plain series around 0 or, with PHASE_CENTRED, around the nearest phase centre.
 #include "taylor_centred.glsl"
 
+// The order at which this fragment's loop stops (TaylorBound.stopOrder, the same recurrence): the first n whose
+// Lagrange bound x^(n+1) e^x / (n+1)! (001 sec. 3.3.3) is at most the tolerance, b_0 = x e^x,
+// b_n = b_{n-1} x / (n + 1); TAYLOR_HIGHEST_ORDER for tolerance 0 (the thesis' fixed N).
+int taylorStopOrder(float x) {
+    if (taylorTolerance == 0.0) {
+        return TAYLOR_HIGHEST_ORDER;
+    }
+    float bound = x * exp(x);
+    for (int n = 0; n < TAYLOR_HIGHEST_ORDER; n++) {
+        if (bound <= taylorTolerance) {
+            return n;
+        }
+        bound *= x / float(n + 2);
+    }
+    return TAYLOR_HIGHEST_ORDER;
+}
+
 // The centre texel of eq. 1.5, floor(size / 2) per axis (TaylorTerms.centreCol/centreRow).
 ivec2 termCentre() {
     return textureSize(taylorTerms, 0).xy / 2;
@@ -164,15 +193,18 @@ bool inBand(ivec2 m) {
     return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, size));
 }
 
-// sum_n c_n DFT_n(m) at the exact texel of frequency index m (texelFetch: no filtering), 0 out of band; the
-// terms start at layer layerBase (0, or the phase centre's first layer, taylor_centred.glsl).
-vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT], int layerBase) {
+// sum_{n <= lastOrder} c_n DFT_n(m) at the exact texel of frequency index m (texelFetch: no filtering), 0 out of
+// band; the terms start at layer layerBase (0, or the phase centre's first layer, taylor_centred.glsl).
+vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT], int layerBase, int lastOrder) {
     if (!inBand(m)) {
         return vec2(0.0);
     }
     ivec2 texel = m + termCentre();
     vec2 sum = vec2(0.0);
     for (int n = 0; n < TERM_COUNT; n++) {
+        if (n > lastOrder) {
+            break;
+        }
         sum += c[n] * texelFetch(taylorTerms, ivec3(texel, layerBase + n), 0).rg;
     }
     return sum;
@@ -182,21 +214,24 @@ vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT], int layerBase) {
 // (PQ). Defined by spectrum_gaussian.glsl or spectrum_sinc.glsl.
 float windowWeight(float offsetTexels, int axis);
 
-// P = sum_{m in window} K(s - m) sum_n c_n DFT_n(m) over the (2R+1)^2 texels around the nearest texel
+// P = sum_{m in window} K(s - m) sum_n c_n DFT_n(m) over the (2R_x+1)(2R_y+1) texels around the nearest texel
 // floor(s + 0.5) (TaylorGaussianSpectrum.power / TaylorSincSpectrum.power before |.|^2; 003 Algorithm 3
 // lines 9-24 with the loops exchanged, which changes nothing but the order of the float sums).
 vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
     vec2 s = lookupTexels(uvw.xy, lambdaNm);
     float c[TERM_COUNT];
-    int layerBase = taylorExpansion(waveNumberPerUm(lambdaNm) * uvw.z, c);
+    float kw = waveNumberPerUm(lambdaNm) * uvw.z;
+    int layerBase = taylorExpansion(kw, c);
+    // the early stop's x is the phase the series actually expands: k w, or k w - a_j around a phase centre
+    int lastOrder = taylorStopOrder(abs(expansionPhase(kw)) * maxAbsHeightUm);
     ivec2 anchor = ivec2(floor(s + 0.5));
     vec2 p = vec2(0.0);
-    for (int j = -WINDOW_RADIUS; j <= WINDOW_RADIUS; j++) {
+    for (int j = -WINDOW_RADIUS_Y; j <= WINDOW_RADIUS_Y; j++) {
         int my = anchor.y + j;
         float weightY = windowWeight(float(my) - s.y, 1);
-        for (int i = -WINDOW_RADIUS; i <= WINDOW_RADIUS; i++) {
+        for (int i = -WINDOW_RADIUS_X; i <= WINDOW_RADIUS_X; i++) {
             int mx = anchor.x + i;
-            p += weightY * windowWeight(float(mx) - s.x, 0) * taylorSumAt(ivec2(mx, my), c, layerBase);
+            p += weightY * windowWeight(float(mx) - s.x, 0) * taylorSumAt(ivec2(mx, my), c, layerBase, lastOrder);
         }
     }
     return p;

@@ -25,11 +25,21 @@ int taylorExpansion(float kw, out float c[TERM_COUNT]) {
     taylorCoefficients(kw + float(j) * centreSpacingPerUm, c); // k w - a_j
     return j * TERM_COUNT;
 }
+
+// The phase the series expands: k w - a_j around the nearest centre.
+float expansionPhase(float kw) {
+    return kw + float(nearestPhaseCentre(kw)) * centreSpacingPerUm;
+}
 #else
 // The thesis' series around 0: layers 0..N, exactly as before (bit-identical output).
 int taylorExpansion(float kw, out float c[TERM_COUNT]) {
     taylorCoefficients(kw, c);
     return 0;
+}
+
+// The phase the series expands: k w itself.
+float expansionPhase(float kw) {
+    return kw;
 }
 #endif
 

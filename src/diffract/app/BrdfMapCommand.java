@@ -51,14 +51,25 @@ final class BrdfMapCommand implements Callable<Integer> {
     Double lambdaNm;
 
     @Option(names = "--variant", defaultValue = "reference", paramLabel = "V",
-            description = "reference (exact), flss, nmm or pq (default ${DEFAULT-VALUE}).")
+            description = "reference (exact), flss, nmm, pq or baked (GPU table of flss) (default ${DEFAULT-VALUE}).")
     String variant;
 
     @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N for flss/nmm/pq (default ${DEFAULT-VALUE}).")
     int highestOrder;
 
-    @Option(names = "--window-radius", defaultValue = "1", paramLabel = "R", description = "Window of (2R+1)^2 texels for flss/nmm/pq (default ${DEFAULT-VALUE}).")
-    int windowRadius;
+    @Option(names = "--window-radius", defaultValue = "1", paramLabel = "R|auto",
+            description = "Window of (2R+1)^2 texels for flss/nmm/pq/baked (default ${DEFAULT-VALUE}); auto: per axis "
+                    + "the smallest R capturing 99.73 % of the Gaussian window's weight (sigma_f in texels).")
+    String windowRadiusText;
+
+    @Option(names = "--taylor-tolerance", defaultValue = "0", paramLabel = "EPS",
+            description = "Stop each lookup's Taylor loop at the first order whose Lagrange bound x^(n+1) e^x/(n+1)! "
+                    + "(x = k|w|max|h|) is <= EPS; 0 = always --terms (default ${DEFAULT-VALUE}).")
+    double taylorTolerance;
+
+    @Option(names = "--baked-samples", defaultValue = "0,0", paramLabel = "UV,W",
+            description = "baked: table samples along u and v (each) and along w; 0 = automatic (default ${DEFAULT-VALUE}).")
+    String bakedSamplesText;
 
     @Option(names = "--lambda-step", defaultValue = "5", paramLabel = "NM", description = "Wavelength step of flss/pq, nmm's fallback (default ${DEFAULT-VALUE}).")
     double lambdaStepNm;
@@ -139,14 +150,24 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (gpu && Variant.parse(variant) == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
+        if (Variant.parse(variant) == Variant.BAKED && !gpu) {
+            throw new UserInputException(DiffractionBrdf.BAKED_IS_GPU_ONLY);
+        }
+        if (Variant.parse(variant) == Variant.BAKED && lambdaNm != null) {
+            throw new UserInputException(GpuBrdfMap.BAKED_HAS_NO_MONOCHROMATIC);
+        }
         if (time && !gpu) {
             throw new UserInputException("--time measures the GPU: add --engine gpu");
         }
         Reporter reporter = Reporter.STDERR;
         long start = System.nanoTime();
         HeightField field = input.load(reporter);
-        BrdfSettings settings = new BrdfSettings(Variant.parse(variant), highestOrder, windowRadius, lambdaMinNm,
-                lambdaMaxNm, lambdaStepNm, coherenceLengthUm / 4.0, refractiveIndex, pqReplicas);
+        boolean automaticWindow = windowRadiusText.trim().equalsIgnoreCase("auto");
+        int[] bakedSamples = parseBakedSamples(bakedSamplesText);
+        BrdfSettings settings = new BrdfSettings(Variant.parse(variant), highestOrder,
+                automaticWindow ? 1 : parseWindowRadius(windowRadiusText), lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                coherenceLengthUm / 4.0, refractiveIndex, pqReplicas, taylorTolerance, automaticWindow,
+                bakedSamples[0], bakedSamples[1]);
         SamplingCheck.warnAboutAliasing(field, lambdaNm != null ? lambdaNm : lambdaMinNm,
                 lambdaNm != null ? lambdaNm : lambdaMaxNm, reporter);
         TaylorTerms terms = null;
@@ -178,6 +199,10 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (gpu) {
             try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, precision)) {
                 reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
+                if (map.bakedTable() != null) {
+                    System.out.printf(Locale.ROOT, "baked %s in %.1f s%n", map.bakedTable().describe(),
+                            map.bakedTable().bakeSeconds());
+                }
                 if (lambdaNm != null) {
                     rho = map.monochromatic(wi, lambdaNm, size);
                 } else {
@@ -272,6 +297,27 @@ final class BrdfMapCommand implements Callable<Integer> {
         double e = AutoExposure.of(luminance, size, -wi.x(), -wi.y());
         reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
         return e;
+    }
+
+    private static int parseWindowRadius(String text) {
+        try {
+            return Integer.parseInt(text.trim());
+        } catch (NumberFormatException e) {
+            throw new UserInputException("--window-radius must be a whole number or auto, got '" + text + "'");
+        }
+    }
+
+    /** "UV,W": the baked table's samples (0 = automatic). */
+    private static int[] parseBakedSamples(String text) {
+        String[] parts = text.split(",");
+        try {
+            if (parts.length == 2) {
+                return new int[] {Integer.parseInt(parts[0].trim()), Integer.parseInt(parts[1].trim())};
+            }
+        } catch (NumberFormatException ignored) {
+            // falls through to the message below
+        }
+        throw new UserInputException("--baked-samples must be UV,W (whole numbers, 0 = automatic), got '" + text + "'");
     }
 
     private static boolean parseEngine(String text) {

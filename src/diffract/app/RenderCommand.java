@@ -48,6 +48,7 @@ final class RenderCommand implements Callable<Integer> {
         ViewerSetup setup = options.setup(reporter);
         int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        model.bakeIfNeeded(reporter);
         try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
             target.writePng(output, widthHeight[0], widthHeight[1]);
         }

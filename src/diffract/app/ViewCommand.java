@@ -60,6 +60,7 @@ final class ViewCommand implements Callable<Integer> {
         int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
         System.out.print(KeyBindings.helpText());
+        model.bakeIfNeeded(reporter);
         try (ViewerWindow window = new ViewerWindow(model, widthHeight[0], widthHeight[1], screenshotDir)) {
             window.start();
             if (screenshotAfterFrames != null) {

@@ -88,7 +88,7 @@ final class ViewerOptions {
             description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
     double diffuseWeight;
 
-    @Option(names = "--variant", defaultValue = "flss", paramLabel = "V", description = "flss, nmm or pq (default ${DEFAULT-VALUE}).")
+    @Option(names = "--variant", defaultValue = "flss", paramLabel = "V", description = "flss, nmm, pq or baked (default ${DEFAULT-VALUE}).")
     String variant;
 
     @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N (default ${DEFAULT-VALUE}).")
@@ -102,6 +102,13 @@ final class ViewerOptions {
 
     @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM", description = "4 sigma_s (default ${DEFAULT-VALUE}).")
     double coherenceLengthUm;
+
+    @Option(names = "--taylor-tolerance", defaultValue = "0", paramLabel = "EPS",
+            description = "Stop each lookup's Taylor loop once the Lagrange bound is <= EPS; 0 = always --terms (default ${DEFAULT-VALUE}).")
+    double taylorTolerance;
+
+    @Option(names = "--auto-window", description = "Window radius per axis from sigma_f (99.73 % of the window's weight) instead of --window-radius.")
+    boolean automaticWindow;
 
     @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
     double thetaIDeg;
@@ -168,11 +175,12 @@ final class ViewerOptions {
         }
         Variant v = Variant.parse(variant);
         if (v == Variant.REFERENCE) {
-            throw new UserInputException("the viewer draws on the GPU: use --variant flss, nmm or pq "
+            throw new UserInputException("the viewer draws on the GPU: use --variant flss, nmm or pq (or baked) "
                     + "(the reference runs on the CPU: ./diffract brdfmap)");
         }
         return new BrdfSettings(v, highestOrder, windowRadius, BrdfSettings.LAMBDA_MIN_NM, BrdfSettings.LAMBDA_MAX_NM,
-                lambdaStepNm, coherenceLengthUm / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX, 0);
+                lambdaStepNm, coherenceLengthUm / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX, 0)
+                .withTaylorTolerance(taylorTolerance).withAutomaticWindowRadius(automaticWindow);
     }
 
     /** The snake's procedural corn-snake pigmentation is the same every run. */
@@ -228,9 +236,13 @@ final class ViewerOptions {
             settings = settings.withWindowRadius(windowRadius);
         }
         if (given("--coherence-length")) {
-            settings = new BrdfSettings(settings.variant(), settings.highestOrder(), settings.windowRadius(),
-                    settings.lambdaMinNm(), settings.lambdaMaxNm(), settings.lambdaStepNm(), coherenceLengthUm / 4.0,
-                    settings.refractiveIndex(), settings.pqReplicas());
+            settings = settings.withSigmaSpatialUm(coherenceLengthUm / 4.0);
+        }
+        if (given("--taylor-tolerance")) {
+            settings = settings.withTaylorTolerance(taylorTolerance);
+        }
+        if (given("--auto-window")) {
+            settings = settings.withAutomaticWindowRadius(true);
         }
         OrbitCamera c = s.camera();
         OrbitCamera camera = new OrbitCamera(given("--azimuth") ? azimuthDeg : c.azimuthDeg(),

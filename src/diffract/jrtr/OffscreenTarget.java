@@ -34,6 +34,7 @@ public final class OffscreenTarget implements AutoCloseable {
     /** Creates the hidden GL context; throws {@link diffract.util.UserInputException} when there is no display. */
     public OffscreenTarget(GLEventListener listener) {
         this.listener = listener;
+        GLContext previous = GLContext.getCurrent();
         GLCapabilities caps = GLProfiles.capabilities();
         caps.setOnscreen(false);
         caps.setDoubleBuffered(false);
@@ -45,14 +46,27 @@ public final class OffscreenTarget implements AutoCloseable {
             GLRenderContext.requireVersion(gl);
             return null;
         });
+        restore(previous);
     }
 
-    /** Runs {@code work} with this target's GL context current on this thread and returns its result. */
+    /** Makes {@code previous} (a context current on this thread before we took it over, or null) current again. */
+    private void restore(GLContext previous) {
+        if (previous != null && previous != drawable.getContext() && GLContext.getCurrent() != previous) {
+            previous.makeCurrent();
+        }
+    }
+
+    /**
+     * Runs {@code work} with this target's GL context current on this thread and returns its result. A context
+     * that was current on this thread before (e.g. a window's, when a table is rendered offscreen from inside its
+     * display callback) is made current again afterwards.
+     */
     public <T> T withContext(Function<GL3, T> work) {
         if (closed) {
             throw new IllegalStateException("offscreen target already closed");
         }
         GLContext context = drawable.getContext();
+        GLContext previous = GLContext.getCurrent();
         if (context.makeCurrent() == GLContext.CONTEXT_NOT_CURRENT) {
             throw new IllegalStateException("cannot make the offscreen GL context current");
         }
@@ -60,6 +74,7 @@ public final class OffscreenTarget implements AutoCloseable {
             return work.apply(context.getGL().getGL3());
         } finally {
             context.release();
+            restore(previous);
         }
     }
 
@@ -141,6 +156,7 @@ public final class OffscreenTarget implements AutoCloseable {
         if (closed) {
             return;
         }
+        GLContext previous = GLContext.getCurrent();
         try {
             withContext(gl -> {
                 if (listenerInitialized) {
@@ -155,6 +171,7 @@ public final class OffscreenTarget implements AutoCloseable {
         } finally {
             closed = true;
             drawable.destroy();
+            restore(previous);
         }
     }
 }

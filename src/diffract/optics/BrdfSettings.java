@@ -11,10 +11,19 @@ import diffract.util.UserInputException;
  * @param windowRadius  R texels: a (2R + 1)^2 window
  * @param lambdaStepNm  FLSS/PQ step, and NMM's fallback step near the specular direction
  * @param pqReplicas    PQ replicas per axis; 0 = enough to span the coherence length 4 sigma_s
+ * @param taylorTolerance each fragment's Taylor loop stops at the first order n whose Lagrange remainder
+ *                      x^(n+1) e^x / (n+1)! (x = k |w| max|h| of that fragment; 001 sec. 3.3.3) is at most this;
+ *                      0 = always the fixed N (the thesis' behaviour, bit-identical)
+ * @param automaticWindowRadius the window radius per axis follows sigma_f in texels ({@link WindowRadii#automatic})
+ *                      instead of the fixed {@code windowRadius}
+ * @param bakedUvSamples BAKED: samples of the table along u and along v over [-2, 2]; 0 = automatic
+ *                      ({@link BakedGrid#automaticUvSamples})
+ * @param bakedWSamples BAKED: samples along w over [-2, 0]; 0 = automatic ({@link BakedGrid#automaticWSamples})
  */
 public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, double lambdaMinNm,
                            double lambdaMaxNm, double lambdaStepNm, double sigmaSpatialUm,
-                           double refractiveIndex, int pqReplicas) {
+                           double refractiveIndex, int pqReplicas, double taylorTolerance,
+                           boolean automaticWindowRadius, int bakedUvSamples, int bakedWSamples) {
 
     public static final double LAMBDA_MIN_NM = 380;
     public static final double LAMBDA_MAX_NM = 780;
@@ -43,6 +52,27 @@ public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, 
         if (pqReplicas < 0) {
             throw new UserInputException("PQ replicas must be >= 0 (0 = automatic), got " + pqReplicas);
         }
+        if (!(taylorTolerance >= 0) || !Double.isFinite(taylorTolerance)) {
+            throw new UserInputException("the Taylor tolerance must be >= 0 (0 = fixed N), got " + taylorTolerance);
+        }
+        if (bakedUvSamples != 0 && (bakedUvSamples < 2 || bakedUvSamples > BakedGrid.MAX_SAMPLES)) {
+            throw new UserInputException("baked (u, v) samples must be 0 (automatic) or 2.." + BakedGrid.MAX_SAMPLES
+                    + ", got " + bakedUvSamples);
+        }
+        if (bakedWSamples != 0 && (bakedWSamples < 2 || bakedWSamples > BakedGrid.MAX_SAMPLES)) {
+            throw new UserInputException("baked w samples must be 0 (automatic) or 2.." + BakedGrid.MAX_SAMPLES
+                    + ", got " + bakedWSamples);
+        }
+    }
+
+    /**
+     * The original nine components, with the new knobs at their old behaviour: fixed N (tolerance 0), the fixed
+     * window radius, automatic baked-table resolution.
+     */
+    public BrdfSettings(Variant variant, int highestOrder, int windowRadius, double lambdaMinNm, double lambdaMaxNm,
+                        double lambdaStepNm, double sigmaSpatialUm, double refractiveIndex, int pqReplicas) {
+        this(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm, sigmaSpatialUm,
+                refractiveIndex, pqReplicas, 0.0, false, 0, 0);
     }
 
     /** The thesis' configuration for a variant. */
@@ -53,27 +83,87 @@ public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, 
 
     public BrdfSettings withVariant(Variant v) {
         return new BrdfSettings(v, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas);
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
     }
 
     public BrdfSettings withHighestOrder(int n) {
         return new BrdfSettings(variant, n, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas);
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
     }
 
     public BrdfSettings withWindowRadius(int r) {
         return new BrdfSettings(variant, highestOrder, r, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas);
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
     }
 
     public BrdfSettings withLambdaStepNm(double step) {
         return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, step,
-                sigmaSpatialUm, refractiveIndex, pqReplicas);
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
     }
 
     public BrdfSettings withLambdaRangeNm(double min, double max) {
         return new BrdfSettings(variant, highestOrder, windowRadius, min, max, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas);
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
+    }
+
+    /** sigma_s of the coherence window (4 sigma_s = the coherence length). */
+    public BrdfSettings withSigmaSpatialUm(double sigma) {
+        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                sigma, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
+    }
+
+    /** The per-fragment Taylor tolerance (0 = fixed N). */
+    public BrdfSettings withTaylorTolerance(double tolerance) {
+        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                sigmaSpatialUm, refractiveIndex, pqReplicas, tolerance, automaticWindowRadius, bakedUvSamples,
+                bakedWSamples);
+    }
+
+    /** The window radius from sigma_f (true) or the fixed {@code windowRadius} (false). */
+    public BrdfSettings withAutomaticWindowRadius(boolean automatic) {
+        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automatic, bakedUvSamples,
+                bakedWSamples);
+    }
+
+    /** The baked table's samples along u and v, and along w (0 = automatic). */
+    public BrdfSettings withBakedSamples(int uvSamples, int wSamples) {
+        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, uvSamples,
+                wSamples);
+    }
+
+    /**
+     * The window radii for a patch of this extent: the fixed {@code windowRadius} on both axes, or the automatic
+     * radius of each axis' sigma_f in texels.
+     */
+    public WindowRadii windowRadii(double extentXUm, double extentYUm) {
+        if (!automaticWindowRadius) {
+            return new WindowRadii(windowRadius, windowRadius);
+        }
+        CoherenceWindow window = coherenceWindow();
+        return new WindowRadii(WindowRadii.automatic(window.sigmaTexels(extentXUm)),
+                WindowRadii.automatic(window.sigmaTexels(extentYUm)));
+    }
+
+    /**
+     * The highest Taylor order any fragment can use (only these terms need to be uploaded): N, or with a
+     * tolerance the order at which the bound for the largest phase x = (2 pi / lambda_min) 2 max|h| (the worst
+     * fragment; 001 sec. 3.3.3) meets the tolerance, if that is below N. Every fragment's own stop order is at
+     * most this, since the bound grows with x.
+     */
+    public int highestOrderNeeded(double maxAbsHeightUm) {
+        if (taylorTolerance == 0) {
+            return highestOrder;
+        }
+        double x = TaylorBound.maxPhase(lambdaMinNm, maxAbsHeightUm);
+        return Math.min(highestOrder, TaylorBound.stopOrder(x, taylorTolerance, highestOrder));
     }
 
     public CoherenceWindow coherenceWindow() {

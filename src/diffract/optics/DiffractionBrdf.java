@@ -2,6 +2,7 @@ package diffract.optics;
 
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
+import diffract.util.UserInputException;
 
 /**
  * The relative diffraction BRDF of a patch (004): monochromatic, rho_lambda = C(omega_i, omega_r) S |P|^2
@@ -31,6 +32,9 @@ public final class DiffractionBrdf {
             return new DiffractionBrdf(exact, WavelengthSampling.uniform(settings.lambdaMinNm(),
                     settings.lambdaMaxNm(), BrdfSettings.REFERENCE_STEP_NM), settings.refractiveIndex());
         }
+        if (settings.variant() == Variant.BAKED) {
+            throw new UserInputException(BAKED_IS_GPU_ONLY);
+        }
         return withSampling(settings, taylorSpectrum(settings, terms, settings.highestOrder()));
     }
 
@@ -50,10 +54,13 @@ public final class DiffractionBrdf {
     /** The variant's Taylor-series spectrum over float32 terms: Gaussian window (FLSS, NMM) or sinc (PQ). */
     private static PatchSpectrum taylorSpectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
         CoherenceWindow window = settings.coherenceWindow();
+        WindowRadii radii = settings.windowRadii(terms.cols() * terms.pixelSizeXUm(),
+                terms.rows() * terms.pixelSizeYUm());
+        double tolerance = settings.taylorTolerance();
         switch (settings.variant()) {
             case FLSS:
             case NMM:
-                return new TaylorGaussianSpectrum(terms, highestOrder, settings.windowRadius(), window);
+                return new TaylorGaussianSpectrum(terms, highestOrder, radii, tolerance, window);
             case PQ: {
                 double extentX = terms.cols() * terms.pixelSizeXUm();
                 double extentY = terms.rows() * terms.pixelSizeYUm();
@@ -61,8 +68,10 @@ public final class DiffractionBrdf {
                         : TaylorSincSpectrum.replicasForCoherence(window, extentX);
                 int ry = settings.pqReplicas() > 0 ? settings.pqReplicas()
                         : TaylorSincSpectrum.replicasForCoherence(window, extentY);
-                return new TaylorSincSpectrum(terms, highestOrder, settings.windowRadius(), rx, ry);
+                return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance, rx, ry);
             }
+            case BAKED:
+                throw new UserInputException(BAKED_IS_GPU_ONLY);
             default:
                 throw new IllegalStateException("unhandled variant " + settings.variant());
         }
@@ -77,6 +86,9 @@ public final class DiffractionBrdf {
                 : WavelengthSampling.uniform(min, max, settings.lambdaStepNm());
         return new DiffractionBrdf(s, sampling, settings.refractiveIndex());
     }
+    /** One line for the CLI and the API when the baked table is asked of the CPU. */
+    public static final String BAKED_IS_GPU_ONLY = "the baked variant is a GPU table (--engine gpu); "
+            + "on the CPU use flss, which it tabulates";
 
     /** NMM's node budget per fragment: beyond it, uniform steps are cheaper anyway. */
     public static final int NMM_MAX_NODES = 1024;

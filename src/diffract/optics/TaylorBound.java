@@ -49,6 +49,33 @@ public final class TaylorBound {
         throw new IllegalArgumentException("no Taylor order below 100000 reaches tolerance " + tolerance + " at x = " + x);
     }
 
+    /**
+     * The order at which a fragment's Taylor loop may stop (issue #5): the first n in 0..N whose Lagrange bound
+     * x^(n+1) e^x / (n+1)! is at most {@code tolerance}, else N; N itself when the tolerance is 0 (the thesis'
+     * fixed N). The bound is evaluated by the recurrence b_0 = x e^x, b_n = b_{n-1} x / (n + 1), exactly as the
+     * shader does ({@code taylorStopOrder} in diffraction_common.glsl), so CPU and GPU stop at the same order
+     * except where float32 rounding puts b_n on the other side of the tolerance.
+     *
+     * <p>Why stopping there is safe: the terms n+1..N that are dropped are sum_k (k w)^k / k! DFT_k with
+     * |DFT_k| <= max|h|^k (DFT_k is the normalised transform of (i h)^k), so they move P by at most
+     * sum_{k > n} x^k / k!, the tail of e^x, which the Lagrange bound bounds.
+     *
+     * @param x k |w| max|h| of the fragment, >= 0
+     */
+    public static int stopOrder(double x, double tolerance, int highestOrder) {
+        if (tolerance == 0) {
+            return highestOrder;
+        }
+        double bound = x * Math.exp(x);
+        for (int n = 0; n < highestOrder; n++) {
+            if (bound <= tolerance) {
+                return n;
+            }
+            bound *= x / (n + 2);
+        }
+        return highestOrder;
+    }
+
     static double logFactorial(int n) {
         double sum = 0;
         for (int k = 2; k <= n; k++) {

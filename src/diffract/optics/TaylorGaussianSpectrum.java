@@ -18,10 +18,29 @@ public final class TaylorGaussianSpectrum implements PatchSpectrum {
      * @param windowRadius  R: the window covers (2R + 1)^2 texels; the thesis used R = 1
      */
     public TaylorGaussianSpectrum(TaylorTerms terms, int highestOrder, int windowRadius, CoherenceWindow window) {
+        this(terms, highestOrder, new WindowRadii(windowRadius, windowRadius), 0.0, window);
+    }
+
+    /**
+     * @param radii           the window's half-widths per axis (fixed, or {@link WindowRadii#automatic})
+     * @param taylorTolerance 0 = the fixed N; else each lookup stops at {@link TaylorBound#stopOrder}
+     */
+    public TaylorGaussianSpectrum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
+                                  CoherenceWindow window) {
         double sigmaX = window.sigmaTexels(terms.cols() * terms.pixelSizeXUm());
         double sigmaY = window.sigmaTexels(terms.rows() * terms.pixelSizeYUm());
-        this.sum = new WindowedTaylorSum(terms, highestOrder, windowRadius,
+        this.sum = new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance,
                 d -> CoherenceWindow.weight(d, sigmaX), d -> CoherenceWindow.weight(d, sigmaY));
+    }
+
+    /** P = (Re, Im) before |.|^2 (tests of the early stop's bound). */
+    double[] amplitude(double u, double v, double w, double lambdaUm) {
+        return sum.amplitude(u * extentXUm() / lambdaUm, v * extentYUm() / lambdaUm, 2.0 * Math.PI / lambdaUm * w);
+    }
+
+    /** The Taylor order the lookup at this (w, lambda) stops at. */
+    int stopOrder(double w, double lambdaUm) {
+        return sum.stopOrder(2.0 * Math.PI / lambdaUm * w);
     }
 
     @Override

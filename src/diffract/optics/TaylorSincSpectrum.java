@@ -19,10 +19,16 @@ public final class TaylorSincSpectrum implements PatchSpectrum {
     private final int replicasY;
 
     public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, int windowRadius, int replicasX, int replicasY) {
+        this(terms, highestOrder, new WindowRadii(windowRadius, windowRadius), 0.0, replicasX, replicasY);
+    }
+
+    /** With per-axis window radii and the early-stop tolerance of {@link TaylorBound#stopOrder} (0 = fixed N). */
+    public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
+                              int replicasX, int replicasY) {
         if (replicasX < 1 || replicasY < 1) {
             throw new IllegalArgumentException("need replicas >= 1");
         }
-        this.sum = new WindowedTaylorSum(terms, highestOrder, windowRadius, TaylorSincSpectrum::sinc,
+        this.sum = new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance, TaylorSincSpectrum::sinc,
                 TaylorSincSpectrum::sinc);
         this.replicasX = replicasX;
         this.replicasY = replicasY;

@@ -2,7 +2,10 @@ package diffract.optics;
 
 import java.util.Locale;
 
-/** How the BRDF is evaluated: the exact reference, or one of the thesis' three shader approximations. */
+/**
+ * How the BRDF is evaluated: the exact reference, one of the thesis' three shader approximations, or a baked table
+ * of FLSS (issue #5).
+ */
 public enum Variant {
     /** exp(i k w h) exactly, window until weights < 1e-12, lambda at 1 nm: the yardstick. */
     REFERENCE,
@@ -11,7 +14,17 @@ public enum Variant {
     /** n_min/n_max (003 section 1.5.2): only the wavelengths that land on DFT texel centres, with the Jacobian. */
     NMM,
     /** Periodic replication and sinc interpolation (003 section 1.5.3, 004 "PQ factors"). */
-    PQ;
+    PQ,
+    /**
+     * FLSS baked into a 3-D table XYZ(u, v, w) once per patch and settings, looked up trilinearly per fragment
+     * (issue #5; after Dhillon and Ghosh 2016, Toisoul and Ghosh 2017). GPU only.
+     */
+    BAKED;
+
+    /** Whether DiffractionBrdf evaluates it on the CPU (the baked table exists on the GPU only). */
+    public boolean runsOnCpu() {
+        return this != BAKED;
+    }
 
     public String cliName() {
         return name().toLowerCase(Locale.ROOT);
@@ -23,6 +36,6 @@ public enum Variant {
                 return v;
             }
         }
-        throw new diffract.util.UserInputException("unknown variant '" + text + "': use reference, flss, nmm or pq");
+        throw new diffract.util.UserInputException("unknown variant '" + text + "': use reference, flss, nmm, pq or baked");
     }
 }

@@ -7,26 +7,32 @@ import java.util.function.DoubleUnaryOperator;
  * P = sum_{texels m in the (2R+1)^2 window around round(s)} weightX(s_x - m_x) weightY(s_y - m_y)
  * sum_{n=0}^{N} c_n DFT_n(m), with c_n = (k w)^n / n!, over the float32 terms. Texels outside the stored band
  * contribute nothing. The variants differ only in the window's weight (Gaussian for FLSS/NMM, sinc for PQ).
+ *
+ * <p>Issue #5 adds two ways to do less work: the window's half-widths per axis ({@link WindowRadii}, e.g. from
+ * sigma_f), and a tolerance at which the Taylor loop stops early ({@link TaylorBound#stopOrder} with this lookup's
+ * x = |k w| max|h|); tolerance 0 keeps the fixed N and the very same arithmetic.
  */
 final class WindowedTaylorSum {
     private final TaylorTerms terms;
     private final int highestOrder;
-    private final int windowRadius;
+    private final WindowRadii radii;
+    private final double taylorTolerance;
     private final DoubleUnaryOperator weightX;
     private final DoubleUnaryOperator weightY;
 
-    WindowedTaylorSum(TaylorTerms terms, int highestOrder, int windowRadius, DoubleUnaryOperator weightX,
-                      DoubleUnaryOperator weightY) {
+    WindowedTaylorSum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
+                      DoubleUnaryOperator weightX, DoubleUnaryOperator weightY) {
         if (highestOrder < 0 || highestOrder > terms.highestOrder()) {
             throw new IllegalArgumentException("Taylor order " + highestOrder + " requested, the terms hold 0.."
                     + terms.highestOrder());
         }
-        if (windowRadius < 0) {
-            throw new IllegalArgumentException("window radius must be >= 0, got " + windowRadius);
+        if (!(taylorTolerance >= 0)) {
+            throw new IllegalArgumentException("Taylor tolerance must be >= 0, got " + taylorTolerance);
         }
         this.terms = terms;
         this.highestOrder = highestOrder;
-        this.windowRadius = windowRadius;
+        this.radii = radii;
+        this.taylorTolerance = taylorTolerance;
         this.weightX = weightX;
         this.weightY = weightY;
     }
@@ -43,20 +49,32 @@ final class WindowedTaylorSum {
      * |P|^2 at the lookup s = (sx, sy) texels from the centre (eq. 1.8) for the phase factor a = k w.
      */
     double power(double sx, double sy, double a) {
+        double[] p = amplitude(sx, sy, a);
+        return p[0] * p[0] + p[1] * p[1];
+    }
+
+    /** The order this lookup's loop stops at: N, or earlier where the remainder bound meets the tolerance. */
+    int stopOrder(double a) {
+        return TaylorBound.stopOrder(Math.abs(a) * terms.maxAbsHeightUm(), taylorTolerance, highestOrder);
+    }
+
+    /** P = (Re, Im) before |.|^2. */
+    double[] amplitude(double sx, double sy, double a) {
         double[] coefficients = TaylorCoefficients.of(a, highestOrder);
+        int lastOrder = stopOrder(a);
         int anchorX = (int) Math.floor(sx + 0.5);
         int anchorY = (int) Math.floor(sy + 0.5);
         int cols = terms.cols();
         int rows = terms.rows();
         double re = 0;
         double im = 0;
-        for (int j = anchorY - windowRadius; j <= anchorY + windowRadius; j++) {
+        for (int j = anchorY - radii.y(); j <= anchorY + radii.y(); j++) {
             int row = j + terms.centreRow();
             if (row < 0 || row >= rows) {
                 continue;
             }
             double wy = weightY.applyAsDouble(j - sy);
-            for (int i = anchorX - windowRadius; i <= anchorX + windowRadius; i++) {
+            for (int i = anchorX - radii.x(); i <= anchorX + radii.x(); i++) {
                 int col = i + terms.centreCol();
                 if (col < 0 || col >= cols) {
                     continue;
@@ -65,7 +83,7 @@ final class WindowedTaylorSum {
                 int index = 2 * (row * cols + col);
                 double sumRe = 0;
                 double sumIm = 0;
-                for (int n = 0; n <= highestOrder; n++) {
+                for (int n = 0; n <= lastOrder; n++) {
                     float[] term = terms.termUnsafe(n);
                     sumRe += coefficients[n] * term[index];
                     sumIm += coefficients[n] * term[index + 1];
@@ -74,6 +92,6 @@ final class WindowedTaylorSum {
                 im += weight * sumIm;
             }
         }
-        return re * re + im * im;
+        return new double[] {re, im};
     }
 }

@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.jrtr.Material;
 import diffract.jrtr.Texture2D;
+import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.Direction;
@@ -22,8 +23,8 @@ public final class DiffractionMaterials {
      * {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm} when monochromatic.
      */
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
-        Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP,
-                monochromatic, false, textures.phaseCentres()));
+        Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.BRDF_MAP,
+                monochromatic, false));
         return common(m, textures, settings);
     }
 
@@ -33,7 +34,7 @@ public final class DiffractionMaterials {
      * corner in the viewport, to centre it) before drawing.
      */
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
-        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures.phaseCentres()));
+        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures));
         return common(m, textures, settings).setFloat("exposure", exposure);
     }
 
@@ -43,13 +44,22 @@ public final class DiffractionMaterials {
      */
     public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                    Texture2D pigmentation, float diffuseWeight) {
-        Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.SURFACE, false,
-                pigmentation != null, textures.phaseCentres()));
+        Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.SURFACE,
+                false, pigmentation != null));
         common(m, textures, settings).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }
         return m;
+    }
+
+    /**
+     * The bake pass of a BAKED table: FLSS of {@code flssSettings} per sample of {@code grid}; set {@code bakeW} per
+     * slice and draw on the full-screen quad into a grid.uvSamples()^2 viewport.
+     */
+    static Material bake(DiffractionTextures textures, BrdfSettings flssSettings, BakedGrid grid) {
+        Material m = new Material(DiffractionShaders.bakeProgram(flssSettings, textures));
+        return common(m, textures, flssSettings).setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
     }
 
     /** omega_i of a BRDF map (towards the light, tangent frame). */
@@ -66,13 +76,22 @@ public final class DiffractionMaterials {
                 : TaylorSincSpectrum.replicasForCoherence(window, extentX);
         int replicasY = settings.pqReplicas() > 0 ? settings.pqReplicas()
                 : TaylorSincSpectrum.replicasForCoherence(window, extentY);
-        m.setTexture("taylorTerms", textures.terms())
-                .setTexture("uniformNodeTable", textures.uniformNodeTable())
-                .setTexture("spectralTable", textures.spectralTable());
+        if (textures.baked() != null) {
+            // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
+            BakedGrid grid = textures.baked().grid();
+            m.setTexture("bakedXyz", textures.bakedTexture())
+                    .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
+        } else {
+            m.setTexture("taylorTerms", textures.terms())
+                    .setTexture("uniformNodeTable", textures.uniformNodeTable())
+                    .setTexture("spectralTable", textures.spectralTable());
+        }
         PhaseCentres centres = textures.phaseCentres();
         if (centres != null) { // taylor_centred.glsl
             m.setFloat("centreSpacingPerUm", (float) centres.spacingPerUm()).setInt("centreCount", centres.centreCount());
         }
+        m.setFloat("taylorTolerance", (float) settings.taylorTolerance())
+                .setFloat("maxAbsHeightUm", (float) textures.maxAbsHeightUm());
         return m.setVec2("patchExtentUm", (float) extentX, (float) extentY)
                 .setFloat("refractiveIndex", (float) settings.refractiveIndex())
                 .setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY))

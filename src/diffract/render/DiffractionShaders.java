@@ -6,6 +6,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.PhaseCentres;
 import diffract.optics.Variant;
+import diffract.optics.WindowRadii;
 import diffract.util.UserInputException;
 
 import java.util.Locale;
@@ -58,22 +59,38 @@ public final class DiffractionShaders {
      */
     public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
                                               boolean pigmentation) {
-        return defines(settings, target, monochromatic, pigmentation, null);
+        if (settings.automaticWindowRadius()) {
+            throw new IllegalArgumentException("an automatic window radius needs the patch: use defines(settings, "
+                    + "highestOrder, radii, ...)");
+        }
+        return defines(settings, settings.highestOrder(),
+                new WindowRadii(settings.windowRadius(), settings.windowRadius()), target, monochromatic, pigmentation);
+    }
+
+    /**
+     * As above with the Taylor order and window radii a patch actually needs ({@link DiffractionTextures#highestOrder},
+     * {@link DiffractionTextures#windowRadii}): WINDOW_RADIUS_X and _Y per axis, WINDOW_RADIUS their maximum.
+     */
+    public static Map<String, String> defines(BrdfSettings settings, int highestOrder, WindowRadii radii, Target target,
+                                              boolean monochromatic, boolean pigmentation) {
+        return defines(settings, highestOrder, radii, null, target, monochromatic, pigmentation);
     }
 
     /**
      * As above; with {@code phaseCentres} (not null) the shader expands around the nearest phase centre
-     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}) and sums the centres' orders instead of the settings'.
+     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}, issue #6) and {@code highestOrder} is the centres' order.
      */
-    public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
-                                              boolean pigmentation, PhaseCentres phaseCentres) {
+    public static Map<String, String> defines(BrdfSettings settings, int highestOrder, WindowRadii radii,
+                                              PhaseCentres phaseCentres, Target target, boolean monochromatic,
+                                              boolean pigmentation) {
         Map<String, String> defines = new TreeMap<>();
-        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(phaseCentres != null ? phaseCentres.highestOrder()
-                : settings.highestOrder()));
+        defines.put("TAYLOR_HIGHEST_ORDER", Integer.toString(highestOrder));
         if (phaseCentres != null) {
             defines.put("PHASE_CENTRED", "1");
         }
-        defines.put("WINDOW_RADIUS", Integer.toString(settings.windowRadius()));
+        defines.put("WINDOW_RADIUS", Integer.toString(Math.max(radii.x(), radii.y())));
+        defines.put("WINDOW_RADIUS_X", Integer.toString(radii.x()));
+        defines.put("WINDOW_RADIUS_Y", Integer.toString(radii.y()));
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
@@ -95,27 +112,42 @@ public final class DiffractionShaders {
     /** The program of a variant for a target (compiled on first use in a GL context). */
     public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
                                         boolean pigmentation) {
-        return program(settings, target, monochromatic, pigmentation, null);
+        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
+                defines(settings, target, monochromatic, pigmentation));
     }
 
-    /** As above, phase-centred when {@code phaseCentres} is not null. */
-    public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
-                                        boolean pigmentation, PhaseCentres phaseCentres) {
+    /**
+     * The program for the order, radii and expansion of these textures (what DiffractionMaterials uses): plain, or
+     * phase-centred when the textures hold phase-centred terms.
+     */
+    public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, Target target,
+                                        boolean monochromatic, boolean pigmentation) {
         return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
-                defines(settings, target, monochromatic, pigmentation, phaseCentres));
+                definesFor(settings, textures, target, monochromatic, pigmentation));
+    }
+
+    private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures, Target target,
+                                                  boolean monochromatic, boolean pigmentation) {
+        return defines(settings, textures.highestOrder(), textures.windowRadii(), textures.phaseCentres(), target,
+                monochromatic, pigmentation);
+    }
+
+    /**
+     * The bake pass of the BAKED table ({@code baked.frag} with {@code BAKE}): FLSS of these settings, written as
+     * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
+     */
+    public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
+        Map<String, String> defines = definesFor(flssSettings, textures, Target.BRDF_MAP, false, false);
+        defines.put("BAKE", "1");
+        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
     }
 
     /**
      * The BRDF-map program for a window: display sRGB of {@code exposure} x XYZ (define {@code DISPLAY_SRGB})
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
-    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings) {
-        return displayBrdfMapProgram(settings, null);
-    }
-
-    /** As above, phase-centred when {@code phaseCentres} is not null. */
-    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, PhaseCentres phaseCentres) {
-        Map<String, String> defines = defines(settings, Target.BRDF_MAP, false, false, phaseCentres);
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures) {
+        Map<String, String> defines = definesFor(settings, textures, Target.BRDF_MAP, false, false);
         defines.put("DISPLAY_SRGB", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }

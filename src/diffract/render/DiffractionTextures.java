@@ -5,11 +5,15 @@ import diffract.colour.D65;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
 import diffract.jrtr.FloatTexture1D;
+import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
 import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.optics.WindowRadii;
+import diffract.util.Reporter;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -25,8 +29,14 @@ import java.util.List;
  *       of {@link SpectralIntegrator#xyzWeights} and the node, (wx, wy, wz, lambda_nm);</li>
  *   <li>{@code spectralTable}: D65 x CIE 1931 at 1 nm over the CMF table's 360..830 nm, (S xbar, S ybar, S zbar, 0),
  *       for NMM's arbitrary wavelengths (interpolated linearly in the shader; the CPU interpolates S and the CMF
- *       separately and multiplies, which differs by less than 1e-4 relative at 1 nm spacing).</li>
+ *       separately and multiplies, which differs by less than 1e-4 relative at 1 nm spacing);</li>
+ *   <li>{@code bakedXyz} (BAKED only): the FLSS table XYZ(u, v, w) of {@link BakedTable}, baked once per patch and
+ *       settings ({@link BakedTables}).</li>
  * </ul>
+ *
+ * <p>Only what the settings need goes to the GPU (issue #5): with a Taylor tolerance only the terms up to
+ * {@link BrdfSettings#highestOrderNeeded} (no fragment's loop reaches further), and only the uniform-grid nodes
+ * where D65 x CMF is not zero in all three channels (they would add 0 x |P|^2).
  */
 public final class DiffractionTextures {
     private final FloatTextureArray terms;
@@ -35,33 +45,51 @@ public final class DiffractionTextures {
     private final double spectralTableFirstNm;
     private final double extentXUm;
     private final double extentYUm;
+    private final int highestOrder;
+    private final WindowRadii windowRadii;
+    private final double maxAbsHeightUm;
+    private final BakedTable baked;
+    private final FloatTexture3D bakedTexture;
     private final PhaseCentres phaseCentres;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D uniformNodeTable, FloatTexture1D spectralTable,
-                                double spectralTableFirstNm, double extentXUm, double extentYUm,
-                                PhaseCentres phaseCentres) {
+                                double spectralTableFirstNm, TaylorTerms source, BrdfSettings settings,
+                                int highestOrder, BakedTable baked, PhaseCentres phaseCentres) {
         this.terms = terms;
         this.uniformNodeTable = uniformNodeTable;
         this.spectralTable = spectralTable;
         this.spectralTableFirstNm = spectralTableFirstNm;
-        this.extentXUm = extentXUm;
-        this.extentYUm = extentYUm;
+        this.extentXUm = source.cols() * source.pixelSizeXUm();
+        this.extentYUm = source.rows() * source.pixelSizeYUm();
+        this.highestOrder = highestOrder;
+        this.windowRadii = settings.windowRadii(extentXUm, extentYUm);
+        this.maxAbsHeightUm = source.maxAbsHeightUm();
+        this.baked = baked;
+        this.bakedTexture = baked == null ? null : baked.texture();
         this.phaseCentres = phaseCentres;
     }
 
     /** Terms 0..settings.highestOrder() (which the terms must hold) and the tables for the settings' wavelengths. */
     public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
+        return of(terms, settings, precision, Reporter.SILENT);
+    }
+
+    /** As above; a BAKED table that is not cached yet is baked first, with progress on {@code reporter}. */
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision,
+                                         Reporter reporter) {
         if (settings.highestOrder() > terms.highestOrder()) {
             throw new IllegalArgumentException("Taylor order " + settings.highestOrder() + " requested, the terms hold 0.."
                     + terms.highestOrder());
         }
+        int highestOrder = settings.highestOrderNeeded(terms.maxAbsHeightUm());
         List<float[]> layers = new ArrayList<>();
-        for (int n = 0; n <= settings.highestOrder(); n++) {
+        for (int n = 0; n <= highestOrder; n++) {
             layers.add(terms.termData(n));
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
+        BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
         return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
-                Cie1931.firstNm(), terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm(), null);
+                Cie1931.firstNm(), terms, settings, highestOrder, baked, null);
     }
 
     /**
@@ -74,22 +102,33 @@ public final class DiffractionTextures {
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
         return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
-                Cie1931.firstNm(), first.cols() * first.pixelSizeXUm(), first.rows() * first.pixelSizeYUm(),
-                terms.centres());
+                Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null, terms.centres());
     }
 
-    /** (wx, wy, wz, lambda) per node of WavelengthSampling.uniform(min, max, step). */
+    /**
+     * (wx, wy, wz, lambda) per node of WavelengthSampling.uniform(min, max, step), leaving out the nodes whose
+     * three weights are all 0 (outside the CMF or D65 tables): the shader's loop runs over the rest only.
+     */
     static FloatTexture1D buildUniformNodeTable(BrdfSettings settings) {
         double[] nodes = Trapezoid.uniformNodes(settings.lambdaMinNm(), settings.lambdaMaxNm(), settings.lambdaStepNm());
         double[][] weights = SpectralIntegrator.xyzWeights(nodes, Trapezoid.weights(nodes));
         float[] rgba = new float[4 * nodes.length];
+        int kept = 0;
         for (int j = 0; j < nodes.length; j++) {
-            rgba[4 * j] = (float) weights[j][0];
-            rgba[4 * j + 1] = (float) weights[j][1];
-            rgba[4 * j + 2] = (float) weights[j][2];
-            rgba[4 * j + 3] = (float) nodes[j];
+            if (weights[j][0] == 0 && weights[j][1] == 0 && weights[j][2] == 0) {
+                continue;
+            }
+            rgba[4 * kept] = (float) weights[j][0];
+            rgba[4 * kept + 1] = (float) weights[j][1];
+            rgba[4 * kept + 2] = (float) weights[j][2];
+            rgba[4 * kept + 3] = (float) nodes[j];
+            kept++;
         }
-        return new FloatTexture1D(rgba);
+        if (kept == 0) {
+            throw new diffract.util.UserInputException("no wavelength in " + settings.lambdaMinNm() + ".."
+                    + settings.lambdaMaxNm() + " nm has a non-zero CIE 1931 x D65 weight");
+        }
+        return new FloatTexture1D(java.util.Arrays.copyOf(rgba, 4 * kept));
     }
 
     /** D65 x CMF at every nm of the CMF table (outside it the CMFs are 0, as on the CPU). */
@@ -126,6 +165,31 @@ public final class DiffractionTextures {
     /** The phase centres of a phase-centred term array, null for the thesis' terms around 0. */
     public PhaseCentres phaseCentres() {
         return phaseCentres;
+    }
+
+    /** The highest Taylor order uploaded (BrdfSettings.highestOrderNeeded, or the centres' order): TAYLOR_HIGHEST_ORDER of the shaders. */
+    public int highestOrder() {
+        return highestOrder;
+    }
+
+    /** The window radii per axis (fixed, or automatic from sigma_f). */
+    public WindowRadii windowRadii() {
+        return windowRadii;
+    }
+
+    /** max|h| of the patch in um, for each fragment's early stop. */
+    public double maxAbsHeightUm() {
+        return maxAbsHeightUm;
+    }
+
+    /** The baked table (BAKED only), else null. */
+    public BakedTable baked() {
+        return baked;
+    }
+
+    /** Its 3-D texture (BAKED only), else null; owned by these textures (release it with them). */
+    public FloatTexture3D bakedTexture() {
+        return bakedTexture;
     }
 
     /** L_x = cols dH_x in micrometres. */

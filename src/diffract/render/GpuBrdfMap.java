@@ -85,6 +85,7 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /** The relative BRDF at {@code lambdaNm} per pixel, as BrdfMap.monochromatic. */
     public float[] monochromatic(Direction wi, double lambdaNm, int size) {
+        requireSpectral();
         useMonochromatic(wi, lambdaNm, size);
         float[] rgba = target.renderRgba(size, size);
         float[] rho = new float[size * size];
@@ -105,9 +106,26 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /** As {@link #medianMsPerFrame} for the monochromatic map at {@code lambdaNm}. */
     public double medianMsPerFrameMonochromatic(Direction wi, double lambdaNm, int size, int warmupFrames, int frames) {
+        requireSpectral();
         useMonochromatic(wi, lambdaNm, size);
         return target.measureMedianMs(size, size, warmupFrames, frames);
     }
+
+    /** The baked table (BAKED only; null otherwise): its grid, memory and bake time. */
+    public BakedTable bakedTable() {
+        return textures.baked();
+    }
+
+    /** The baked table holds colour (XYZ), not the BRDF at one wavelength. */
+    private void requireSpectral() {
+        if (settings.variant() == Variant.BAKED) {
+            throw new UserInputException(BAKED_HAS_NO_MONOCHROMATIC);
+        }
+    }
+
+    /** One line for the CLI when a monochromatic map of the baked variant is asked. */
+    public static final String BAKED_HAS_NO_MONOCHROMATIC =
+            "the baked variant tabulates colour (XYZ), not single wavelengths: use flss with --lambda";
 
     /** The GL driver's version and renderer strings. */
     public GLInfo info() {

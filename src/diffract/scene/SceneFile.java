@@ -29,7 +29,7 @@ public final class SceneFile {
     /** The viewer's wavelength range may lie anywhere within the CIE tables' 360..830 nm. */
     static final double LAMBDA_LOWEST_NM = 360;
     static final double LAMBDA_HIGHEST_NM = 830;
-    static final List<String> VARIANTS = List.of("flss", "nmm", "pq");
+    static final List<String> VARIANTS = List.of("flss", "nmm", "pq", "baked");
     static final List<String> MODES = List.of("surface", "brdfMap");
 
     private SceneFile() {

@@ -29,15 +29,18 @@ import java.util.Map;
 final class ViewerMaterials {
     /** What the term and wavelength textures are made of; terms compared by identity (they are immutable). */
     private record TexturesKey(TaylorTerms terms, int highestOrder, double lambdaMinNm, double lambdaMaxNm,
-                               double lambdaStepNm) {
+                               double lambdaStepNm, double taylorTolerance, BrdfSettings baked) {
+        /** A baked table depends on all the settings (window, coherence, grid): then they are part of the key. */
         static TexturesKey of(TaylorTerms terms, BrdfSettings s) {
-            return new TexturesKey(terms, s.highestOrder(), s.lambdaMinNm(), s.lambdaMaxNm(), s.lambdaStepNm());
+            return new TexturesKey(terms, s.highestOrder(), s.lambdaMinNm(), s.lambdaMaxNm(), s.lambdaStepNm(),
+                    s.taylorTolerance(), s.variant() == diffract.optics.Variant.BAKED ? s : null);
         }
 
         @Override
         public boolean equals(Object o) {
             return o instanceof TexturesKey k && k.terms == terms && k.highestOrder == highestOrder
-                    && k.lambdaMinNm == lambdaMinNm && k.lambdaMaxNm == lambdaMaxNm && k.lambdaStepNm == lambdaStepNm;
+                    && k.lambdaMinNm == lambdaMinNm && k.lambdaMaxNm == lambdaMaxNm && k.lambdaStepNm == lambdaStepNm
+                    && k.taylorTolerance == taylorTolerance && java.util.Objects.equals(k.baked, baked);
         }
 
         @Override
@@ -133,6 +136,9 @@ final class ViewerMaterials {
             context.release(textures.terms());
             context.release(textures.uniformNodeTable());
             context.release(textures.spectralTable());
+            if (textures.bakedTexture() != null) {
+                context.release(textures.bakedTexture());
+            }
             textures = null;
             texturesKey = null;
         }

@@ -71,6 +71,19 @@ public final class ViewerModel {
     }
 
     /** The current snapshot. */
+    /**
+     * Bakes the BAKED table of the current state now, on the calling thread, if the state draws the baked variant:
+     * the table is then in {@link diffract.render.BakedTables}' cache when the render thread asks for it, and its
+     * progress shows before the first frame (a table the render thread asks for later, after a settings change, is
+     * baked on a thread of its own while the frame waits).
+     */
+    public void bakeIfNeeded(diffract.util.Reporter reporter) {
+        ViewerState s = state();
+        if (s.drawableSettings().variant() == diffract.optics.Variant.BAKED) {
+            diffract.render.BakedTables.of(s.terms(), s.drawableSettings(), reporter);
+        }
+    }
+
     public ViewerState state() {
         return state.get();
     }

@@ -153,6 +153,16 @@ class CliTest {
 
         Object[] noCommand = run();
         assertEquals(2, noCommand[0]);
+
+        // issue #5 options: the baked table is GPU-only, bad radius and grid values are one line each
+        for (String[] args : new String[][] {{"--variant", "baked"}, {"--window-radius", "wide"},
+                {"--baked-samples", "12"}, {"--taylor-tolerance", "-1"}}) {
+            String[] full = {"brdfmap", "--patch", grating.toString(), "--theta-i", "10", "--terms", "4",
+                    "-o", dir.resolve("x.png").toString(), args[0], args[1]};
+            Object[] bad = run(full);
+            assertEquals(2, bad[0], String.join(" ", args) + ": " + bad[2]);
+            assertEquals(1, ((String) bad[2]).strip().lines().count(), (String) bad[2]);
+        }
     }
 
     @Test

@@ -59,6 +59,17 @@ class DiffractionShadersTest {
         assertEquals("12", d.get("TAYLOR_HIGHEST_ORDER"));
         assertEquals("2", d.get("WINDOW_RADIUS"));
         assertEquals("1024", d.get("NMM_MAX_NODES"));
+        assertEquals("2", d.get("WINDOW_RADIUS_X"));
+        assertEquals("2", d.get("WINDOW_RADIUS_Y"));
+        // issue #5: per-axis radii (automatic ones need the patch, so the settings-only overload refuses them)
+        Map<String, String> perAxis = DiffractionShaders.defines(s, 9, new diffract.optics.WindowRadii(2, 0),
+                DiffractionShaders.Target.BRDF_MAP, false, false);
+        assertEquals("9", perAxis.get("TAYLOR_HIGHEST_ORDER"));
+        assertEquals("2", perAxis.get("WINDOW_RADIUS"));
+        assertEquals("2", perAxis.get("WINDOW_RADIUS_X"));
+        assertEquals("0", perAxis.get("WINDOW_RADIUS_Y"));
+        assertThrows(IllegalArgumentException.class, () -> DiffractionShaders.defines(
+                s.withAutomaticWindowRadius(true), DiffractionShaders.Target.BRDF_MAP, false, false));
     }
 
     /** GLSL's mat3(a, b, c, ...) fills column 0 first: the constructor must list Srgb's matrix column by column. */

@@ -171,7 +171,7 @@ class GpuFinitenessTest {
         }
     }
 
-    private static float[] render(Material material, Vector3f towardsLight, Shape shape, int size) {
+    static float[] render(Material material, Vector3f towardsLight, Shape shape, int size) {
         Matrix4f quarterTurn = new Matrix4f();
         quarterTurn.set(new AxisAngle4f(0, 0, 1, (float) (Math.PI / 2)));
         Group root = new Group("scene").add(

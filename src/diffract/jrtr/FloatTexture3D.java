@@ -1,0 +1,109 @@
+package diffract.jrtr;
+
+import com.jogamp.opengl.GL;
+import com.jogamp.opengl.GL2ES2;
+import com.jogamp.opengl.GL2ES3;
+import com.jogamp.opengl.GL2GL3;
+import com.jogamp.opengl.GL3;
+
+import java.nio.FloatBuffer;
+
+/**
+ * A GL_TEXTURE_3D of RGB floats with trilinear filtering: texel (x, y, z) is {@code rgb[3 (x + width (y + height z))
+ * .. + 2]}, so x runs fastest, then y, then z (glTexImage3D's order). Texel centres sit at texture coordinates
+ * (i + 0.5) / size; coordinates outside [0, 1] clamp to the edge texels. Read with {@code texture(sampler3D, stp)}.
+ */
+public final class FloatTexture3D extends Texture {
+    /** Storage precision on the GPU. */
+    public enum Precision {
+        /** RGB32F: 12 bytes a texel, exact float32. */
+        FLOAT32(GL.GL_RGB32F, 12),
+        /** RGB16F: 6 bytes a texel (drivers may pad to 8), 11 significant bits, no normal values below 6.1e-5. */
+        FLOAT16(GL.GL_RGB16F, 6);
+
+        private final int internalFormat;
+        private final int bytesPerTexel;
+
+        Precision(int internalFormat, int bytesPerTexel) {
+            this.internalFormat = internalFormat;
+            this.bytesPerTexel = bytesPerTexel;
+        }
+
+        /** The nominal size of a texel in this format (what the format asks for, before any driver padding). */
+        public int bytesPerTexel() {
+            return bytesPerTexel;
+        }
+    }
+
+    private final int width;
+    private final int height;
+    private final int depth;
+    private final float[] rgb;
+    private final Precision precision;
+
+    public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision) {
+        if (width <= 0 || height <= 0 || depth <= 0) {
+            throw new IllegalArgumentException("need a positive size, got " + width + "x" + height + "x" + depth);
+        }
+        if (rgb.length != 3L * width * height * depth) {
+            throw new IllegalArgumentException("expected " + 3L * width * height * depth + " floats (" + width + "x"
+                    + height + "x" + depth + " x RGB), got " + rgb.length);
+        }
+        this.width = width;
+        this.height = height;
+        this.depth = depth;
+        this.rgb = rgb;
+        this.precision = precision;
+    }
+
+    public int width() {
+        return width;
+    }
+
+    public int height() {
+        return height;
+    }
+
+    public int depth() {
+        return depth;
+    }
+
+    public Precision precision() {
+        return precision;
+    }
+
+    /** The nominal GPU memory of the texture: texels x bytes per texel of its format. */
+    public long gpuBytes() {
+        return (long) width * height * depth * precision.bytesPerTexel();
+    }
+
+    @Override
+    public int glTarget() {
+        return GL2ES2.GL_TEXTURE_3D;
+    }
+
+    @Override
+    protected void fill(GL3 gl) {
+        int[] maxSize = new int[1];
+        gl.glGetIntegerv(GL2ES2.GL_MAX_3D_TEXTURE_SIZE, maxSize, 0);
+        if (Math.max(width, Math.max(height, depth)) > maxSize[0]) {
+            throw new IllegalArgumentException(width + "x" + height + "x" + depth
+                    + " exceeds GL_MAX_3D_TEXTURE_SIZE = " + maxSize[0]);
+        }
+        int target = glTarget();
+        gl.glTexImage3D(target, 0, precision.internalFormat, width, height, depth, 0, GL.GL_RGB, GL.GL_FLOAT,
+                FloatBuffer.wrap(rgb));
+        gl.glTexParameteri(target, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR);
+        gl.glTexParameteri(target, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
+        gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_S, GL.GL_CLAMP_TO_EDGE);
+        gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_T, GL.GL_CLAMP_TO_EDGE);
+        gl.glTexParameteri(target, GL2ES2.GL_TEXTURE_WRAP_R, GL.GL_CLAMP_TO_EDGE);
+        gl.glTexParameteri(target, GL2ES3.GL_TEXTURE_BASE_LEVEL, 0);
+        gl.glTexParameteri(target, GL2ES3.GL_TEXTURE_MAX_LEVEL, 0);
+    }
+
+    @Override
+    public String toString() {
+        return "FloatTexture3D[" + width + "x" + height + "x" + depth + " " + precision + "]";
+    }
+}

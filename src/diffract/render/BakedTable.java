@@ -1,0 +1,131 @@
+package diffract.render;
+
+import diffract.jrtr.Camera;
+import diffract.jrtr.FloatTexture3D;
+import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.Frustum;
+import diffract.jrtr.Group;
+import diffract.jrtr.Material;
+import diffract.jrtr.OffscreenTarget;
+import diffract.jrtr.Renderer;
+import diffract.jrtr.ShapeNode;
+import diffract.jrtr.Shapes;
+import diffract.optics.BakedGrid;
+import diffract.optics.BrdfSettings;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.util.Reporter;
+
+import java.util.Locale;
+
+/**
+ * The BAKED variant's table (issue #5): the spectral integral of FLSS, XYZ(u, v, w) before the gain factor and
+ * shadowing, at the samples of a {@link BakedGrid}, baked on the GPU by {@code baked.frag} compiled with
+ * {@code BAKE} (the FLSS shader code, per table sample, one w slice per frame, read back as float32) and looked
+ * up trilinearly per fragment. The host keeps the float32 values (to upload into any GL context); the GPU holds
+ * them as RGB16F by default: half precision rounds to 2^-11 relative (BakedVariantTest holds the specular sample
+ * to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders costs (docs/baked.md).
+ */
+public final class BakedTable {
+    /** The GPU format of the table. */
+    public static final FloatTexture3D.Precision PRECISION = FloatTexture3D.Precision.FLOAT16;
+
+    private final BakedGrid grid;
+    private final float[] rgb;
+    private final FloatTexture3D.Precision precision;
+    private final double bakeSeconds;
+
+    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds) {
+        if (rgb.length != 3 * grid.texels()) {
+            throw new IllegalArgumentException("table of " + grid + " needs " + 3 * grid.texels() + " floats, got "
+                    + rgb.length);
+        }
+        this.grid = grid;
+        this.rgb = rgb;
+        this.precision = precision;
+        this.bakeSeconds = bakeSeconds;
+    }
+
+    /**
+     * Bakes the FLSS spectral XYZ of {@code settings} (its terms, window, Taylor tolerance and wavelengths; the
+     * variant is taken as FLSS) over the grid the settings ask for, in a hidden GL context of its own.
+     */
+    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, FloatTexture3D.Precision precision,
+                                  Reporter reporter) {
+        long start = System.nanoTime();
+        BrdfSettings flss = settings.withVariant(Variant.FLSS);
+        BakedGrid grid = BakedGrid.of(settings, terms.maxAbsHeightUm());
+        DiffractionTextures textures = DiffractionTextures.of(terms, flss, FloatTextureArray.Precision.FLOAT32);
+        Material material = DiffractionMaterials.bake(textures, flss, grid);
+        int n = grid.uvSamples();
+        float[] rgb = new float[Math.multiplyExact(3, Math.toIntExact(grid.texels()))];
+        ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
+        try (OffscreenTarget target = new OffscreenTarget(new Renderer(new Group("bake").add(quad), new Camera(),
+                new Frustum()))) {
+            for (int k = 0; k < grid.wSamples(); k++) {
+                material.setFloat("bakeW", (float) grid.w(k));
+                float[] rgba = target.renderRgba(n, n);
+                for (int row = 0; row < n; row++) {
+                    int j = n - 1 - row; // rows come top-down; the shader's pixel row j (from the bottom) is v_j
+                    for (int i = 0; i < n; i++) {
+                        int from = 4 * (row * n + i);
+                        int to = 3 * (i + n * (j + n * k));
+                        rgb[to] = rgba[from];
+                        rgb[to + 1] = rgba[from + 1];
+                        rgb[to + 2] = rgba[from + 2];
+                    }
+                }
+                reporter.progress("baking", (k + 1.0) / grid.wSamples());
+            }
+        }
+        double seconds = (System.nanoTime() - start) * 1e-9;
+        BakedTable table = new BakedTable(grid, rgb, precision, seconds);
+        reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
+        return table;
+    }
+
+    public BakedGrid grid() {
+        return grid;
+    }
+
+    /** The table's float32 values, RGB = XYZ, u fastest, then v, then w (do not modify). */
+    float[] values() {
+        return rgb;
+    }
+
+    /** A new texture of the table for one GL context (the host values are shared, not copied). */
+    public FloatTexture3D texture() {
+        return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), rgb, precision);
+    }
+
+    /** XYZ of sample (i, j, k) = (u_i, v_j, w_k), float32 as baked. */
+    public float[] xyzAt(int i, int j, int k) {
+        int n = grid.uvSamples();
+        int at = 3 * (i + n * (j + n * k));
+        return new float[] {rgb[at], rgb[at + 1], rgb[at + 2]};
+    }
+
+    /** Nominal GPU memory of the table: texels x bytes per texel of its format. */
+    public long gpuBytes() {
+        return grid.bytes(precision.bytesPerTexel());
+    }
+
+    /** Host memory of the float32 copy kept for uploads: texels x 12 bytes. */
+    public long hostBytes() {
+        return 4L * rgb.length;
+    }
+
+    public double bakeSeconds() {
+        return bakeSeconds;
+    }
+
+    public FloatTexture3D.Precision precision() {
+        return precision;
+    }
+
+    /** One line: grid, format and memory. */
+    public String describe() {
+        return String.format(Locale.ROOT, "%d x %d x %d table (u, v, w), %s, %.1f MB on the GPU, %.1f MB on the host",
+                grid.uvSamples(), grid.uvSamples(), grid.wSamples(), precision, gpuBytes() / 1e6, hostBytes() / 1e6);
+    }
+}

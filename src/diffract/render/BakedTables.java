@@ -1,0 +1,80 @@
+package diffract.render;
+
+import diffract.optics.BrdfSettings;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.util.Reporter;
+
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+/**
+ * Baked tables cached in memory per (patch terms, settings), so a viewer or a benchmark that draws the same patch
+ * again never bakes twice. Terms are compared by identity (they are immutable); settings by value, with the
+ * variant ignored (the table is FLSS's whatever variant asks). The least recently used table is dropped beyond
+ * {@link #MAX_TABLES}: a table can take hundreds of MB. Thread-safe.
+ */
+public final class BakedTables {
+    /** Tables kept at once. */
+    public static final int MAX_TABLES = 2;
+
+    private record Key(TaylorTerms terms, BrdfSettings settings) {
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Key k && k.terms == terms && k.settings.equals(settings);
+        }
+
+        @Override
+        public int hashCode() {
+            return System.identityHashCode(terms) * 31 + settings.hashCode();
+        }
+    }
+
+    private static final Map<Key, BakedTable> CACHE = new LinkedHashMap<>(4, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<Key, BakedTable> eldest) {
+            return size() > MAX_TABLES;
+        }
+    };
+    private static int bakes;
+
+    private BakedTables() {
+    }
+
+    /** The table of these terms and settings, baked on the first request. */
+    public static synchronized BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        Key key = new Key(terms, settings.withVariant(Variant.BAKED));
+        BakedTable table = CACHE.get(key);
+        if (table == null) {
+            table = bakeOffThisThread(terms, settings, reporter);
+            CACHE.put(key, table);
+            bakes++;
+        }
+        return table;
+    }
+
+    /**
+     * Bakes on a thread of its own when a GL context is current on this one (a render loop asking for a table it
+     * has not got): the bake's hidden context then never touches the caller's context or framebuffer bindings
+     * (making the caller's context current again lets JOGL rebind its own framebuffer, and the frame came out
+     * black). The caller waits for the table.
+     */
+    private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        if (com.jogamp.opengl.GLContext.getCurrent() == null) {
+            return BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter);
+        }
+        java.util.concurrent.CompletableFuture<BakedTable> bake = java.util.concurrent.CompletableFuture.supplyAsync(
+                () -> BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter),
+                command -> new Thread(command, "bake").start());
+        try {
+            return bake.join();
+        } catch (java.util.concurrent.CompletionException e) {
+            throw e.getCause() instanceof RuntimeException r ? r : e;
+        }
+    }
+
+    /** How many tables were baked so far (tests: the cache bakes once). */
+    public static synchronized int bakeCount() {
+        return bakes;
+    }
+}

@@ -1,0 +1,83 @@
+package diffract.render;
+
+import diffract.app.BrdfMapDifference;
+import diffract.jrtr.FloatTextureArray;
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.precompute.TaylorTermComputer;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+import java.util.Locale;
+
+/**
+ * The measurements of docs/baked.md (not a test: it asserts nothing and runs only with
+ * {@code -Ddiffract.measure=baked}): memory, bake time, CIEDE2000 against the CPU reference map (theta_i 0, 45,
+ * 75) and GPU ms/frame of the baked table against FLSS in the thesis' configuration (30 terms, 5 nm, 3 x 3) on
+ * the same run, for the blazed grating and the Elaphe-like patch of docs/gpu-figures.sh, at the thesis'
+ * coherence length (65 um) and at 10 um. Prints markdown rows.
+ *
+ * <pre>xvfb-run -a mvn -q test -Dtest=BakedTradeMeasurement -Ddiffract.measure=baked</pre>
+ */
+@Tag("gl")
+class BakedTradeMeasurement {
+    static final int SIZE = 128;
+
+    @Test
+    void measure() {
+        Assumptions.assumeTrue("baked".equals(System.getProperty("diffract.measure")), "measurement only on request");
+        RenderTestSupport.assumeDisplay();
+        HeightField blazed = SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16).meanSubtracted();
+        HeightField elaphe = SyntheticPatches.elapheLike().meanSubtracted();
+        String grids = System.getProperty("diffract.bakedGrids", "128,256");
+        System.out.println("| patch | 4 sigma_s | table (u x v x w) | GPU MB | bake s | theta_i | flss ms | baked ms | "
+                + "speed-up | flss: lit mean / p95 | baked: lit mean / p95 | baked vs flss: lit mean / p95 |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|");
+        for (double coherenceUm : new double[] {10, 65}) {
+            for (HeightField patch : new HeightField[] {blazed, elaphe}) {
+                for (String grid : grids.split(",")) {
+                    measure(patch, patch == elaphe ? "elaphe-like" : "blazed", patch == elaphe ? 90 : 0,
+                            patch == elaphe ? 25 : 15, coherenceUm, Integer.parseInt(grid.trim()));
+                }
+            }
+        }
+    }
+
+    private static void measure(HeightField patch, String name, double phiDeg, double exposure, double coherenceUm,
+                                int uvSamples) {
+        TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
+        BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS).withSigmaSpatialUm(coherenceUm / 4.0);
+        BrdfSettings baked = flss.withVariant(Variant.BAKED).withBakedSamples(uvSamples, 0);
+        DiffractionBrdf reference = DiffractionBrdf.create(flss.withVariant(Variant.REFERENCE), patch, null);
+        try (GpuBrdfMap flssMap = new GpuBrdfMap(terms, flss, FloatTextureArray.Precision.FLOAT32);
+             GpuBrdfMap bakedMap = new GpuBrdfMap(terms, baked, FloatTextureArray.Precision.FLOAT32)) {
+            BakedTable table = bakedMap.bakedTable();
+            for (double thetaI : new double[] {0, 45, 75}) {
+                Direction wi = Direction.fromSphericalDeg(thetaI, phiDeg);
+                float[] ref = BrdfMap.xyz(reference, wi, SIZE, Reporter.SILENT);
+                float[] f = flssMap.xyz(wi, SIZE);
+                float[] b = bakedMap.xyz(wi, SIZE);
+                double flssMs = flssMap.medianMsPerFrame(wi, SIZE, 1, 10);
+                double bakedMs = bakedMap.medianMsPerFrame(wi, SIZE, 2, 10);
+                BrdfMapDifference fr = BrdfMapDifference.of(ref, f, SIZE, exposure);
+                BrdfMapDifference br = BrdfMapDifference.of(ref, b, SIZE, exposure);
+                BrdfMapDifference bf = BrdfMapDifference.of(f, b, SIZE, exposure);
+                System.out.println(String.format(Locale.ROOT,
+                        "| %s | %.0f um | %d x %d x %d | %.1f | %.1f | %.0f | %.1f | %.2f | %.0f | %.2f / %.2f | "
+                                + "%.2f / %.2f | %.2f / %.2f |",
+                        name, coherenceUm, table.grid().uvSamples(), table.grid().uvSamples(), table.grid().wSamples(),
+                        table.gpuBytes() / 1e6, table.bakeSeconds(), thetaI, flssMs, bakedMs, flssMs / bakedMs,
+                        fr.lit().mean(), fr.lit().p95(), br.lit().mean(), br.lit().p95(), bf.lit().mean(),
+                        bf.lit().p95()));
+            }
+        }
+    }
+}
