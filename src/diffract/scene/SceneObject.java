@@ -43,7 +43,32 @@ final class SceneObject {
     }
 
     static UserInputException problem(SceneSource source, int line, String keyPath, String what) {
-        return new UserInputException(source.displayName() + ":" + line + ": " + keyPath + ": " + what);
+        return new UserInputException(source.displayName() + ":" + line + ": " + escapeControls(keyPath) + ": "
+                + escapeControls(what));
+    }
+
+    /**
+     * Keys and values quoted from the file may hold JSON-escaped control characters ("\n" in a key); written as
+     * escapes again, so a message stays one line whatever the file holds (SceneFuzzTest found a key with a newline).
+     */
+    static String escapeControls(String text) {
+        StringBuilder b = new StringBuilder(text.length());
+        for (int i = 0; i < text.length(); i++) {
+            char c = text.charAt(i);
+            switch (c) {
+                case '\n' -> b.append("\\n");
+                case '\r' -> b.append("\\r");
+                case '\t' -> b.append("\\t");
+                default -> {
+                    if (c < 0x20 || c == 0x7f || c == 0x2028 || c == 0x2029 || c == 0x85) {
+                        b.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        b.append(c);
+                    }
+                }
+            }
+        }
+        return b.toString();
     }
 
     UserInputException problem(String key, String what) {

@@ -11,6 +11,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -60,6 +61,14 @@ class SceneFileTest {
     void unknownKeySuggestsTheNearestKnownKey() throws IOException {
         String m = message(valid(",\n    \"exposre\": 3"));
         assertTrue(m.startsWith("7: material.exposre: unknown key (did you mean \"exposure\"?)"), m);
+    }
+
+    /** A key with an escaped newline (found by SceneFuzzTest) is quoted with the escape: the message stays one line. */
+    @Test
+    void controlCharactersInKeysAreEscapedInTheMessage() throws IOException {
+        String m = message(valid(",\n    \"expo\\nsure\\t\": 3"));
+        assertTrue(m.startsWith("7: material.expo\\nsure\\t: unknown key"), m);
+        assertFalse(m.contains("\n"), m);
     }
 
     @Test
