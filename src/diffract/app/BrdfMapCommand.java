@@ -16,6 +16,7 @@ import diffract.optics.io.SamplingCheck;
 import diffract.jrtr.FloatTextureArray;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
+import diffract.render.TermFormats;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
@@ -105,7 +106,8 @@ final class BrdfMapCommand implements Callable<Integer> {
     boolean time;
 
     @Option(names = "--texture-format", defaultValue = "rg32f", paramLabel = "F",
-            description = "With --engine gpu: rg32f (default, exact) or rg16f (half precision) Taylor-term textures.")
+            description = "With --engine gpu: rg32f (default, exact), rg16f (half precision) or rg8 (the thesis' [0, 1]-normalised "
+                    + "bytes, 003 eq. 1.1) Taylor-term textures.")
     String textureFormat;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
@@ -128,7 +130,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         ColourPath colourPath = parseColour(colour);
         fixedExposure(); // fail on a bad value now, not after minutes of work
         boolean gpu = parseEngine(engine);
-        FloatTextureArray.Precision precision = parseTextureFormat(textureFormat);
+        FloatTextureArray.Precision precision = TermFormats.parse(textureFormat);
         if (gpu && Variant.parse(variant) == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
@@ -292,17 +294,6 @@ final class BrdfMapCommand implements Callable<Integer> {
                 return true;
             default:
                 throw new UserInputException("unknown --engine '" + text + "': use cpu or gpu");
-        }
-    }
-
-    private static FloatTextureArray.Precision parseTextureFormat(String text) {
-        switch (text.toLowerCase(Locale.ROOT)) {
-            case "rg32f":
-                return FloatTextureArray.Precision.FLOAT32;
-            case "rg16f":
-                return FloatTextureArray.Precision.FLOAT16;
-            default:
-                throw new UserInputException("unknown --texture-format '" + text + "': use rg32f or rg16f");
         }
     }
 

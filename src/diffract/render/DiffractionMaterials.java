@@ -22,7 +22,7 @@ public final class DiffractionMaterials {
      */
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
         Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP,
-                monochromatic, false));
+                monochromatic, false, textures.normalisedTerms()));
         return common(m, textures, settings);
     }
 
@@ -32,7 +32,7 @@ public final class DiffractionMaterials {
      * corner in the viewport, to centre it) before drawing.
      */
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
-        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings));
+        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures.normalisedTerms()));
         return common(m, textures, settings).setFloat("exposure", exposure);
     }
 
@@ -43,7 +43,7 @@ public final class DiffractionMaterials {
     public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                    Texture2D pigmentation, float diffuseWeight) {
         Material m = new Material(DiffractionShaders.program(settings, DiffractionShaders.Target.SURFACE, false,
-                pigmentation != null));
+                pigmentation != null, textures.normalisedTerms()));
         common(m, textures, settings).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
@@ -68,6 +68,9 @@ public final class DiffractionMaterials {
         m.setTexture("taylorTerms", textures.terms())
                 .setTexture("uniformNodeTable", textures.uniformNodeTable())
                 .setTexture("spectralTable", textures.spectralTable());
+        if (textures.normalisedTerms()) {
+            m.setTexture("termExtrema", textures.termExtrema());
+        }
         return m.setVec2("patchExtentUm", (float) extentX, (float) extentY)
                 .setFloat("refractiveIndex", (float) settings.refractiveIndex())
                 .setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY))

@@ -81,8 +81,20 @@ public final class DiffractionShaders {
     /** The program of a variant for a target (compiled on first use in a GL context). */
     public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
                                         boolean pigmentation) {
-        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
-                defines(settings, target, monochromatic, pigmentation));
+        return program(settings, target, monochromatic, pigmentation, false);
+    }
+
+    /**
+     * As above; {@code normalisedTerms} adds {@code TERMS_UNORM8}: the term lookup de-normalises 8-bit
+     * [0, 1] terms with the per-term extrema ({@link NormalisedTerms}).
+     */
+    public static ShaderProgram program(BrdfSettings settings, Target target, boolean monochromatic,
+                                        boolean pigmentation, boolean normalisedTerms) {
+        Map<String, String> defines = defines(settings, target, monochromatic, pigmentation);
+        if (normalisedTerms) {
+            defines.put("TERMS_UNORM8", "1");
+        }
+        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()), defines);
     }
 
     /**
@@ -90,8 +102,16 @@ public final class DiffractionShaders {
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
     public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings) {
+        return displayBrdfMapProgram(settings, false);
+    }
+
+    /** As above, for terms stored [0, 1]-normalised at 8 bits when {@code normalisedTerms}. */
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, boolean normalisedTerms) {
         Map<String, String> defines = defines(settings, Target.BRDF_MAP, false, false);
         defines.put("DISPLAY_SRGB", "1");
+        if (normalisedTerms) {
+            defines.put("TERMS_UNORM8", "1");
+        }
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }
 

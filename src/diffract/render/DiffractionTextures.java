@@ -18,7 +18,8 @@ import java.util.List;
  * <ul>
  *   <li>{@code taylorTerms}: DFT_0 .. DFT_N as a texture array, layer n = term n, texel (x = col, y = row) =
  *       (Re, Im), exactly the float32 values of {@link TaylorTerms} with RG32F (RG16F rounds them to half
- *       precision and flushes values below 6e-8 to 0: an option for memory, not for accuracy);</li>
+ *       precision and flushes values below 6e-8 to 0: an option for memory, not for accuracy; UNORM8 stores
+ *       the thesis' [0, 1]-normalised bytes of {@link NormalisedTerms}, de-normalised with {@code termExtrema});</li>
  *   <li>{@code uniformNodeTable}: per node of the uniform grid (FLSS, PQ, NMM's fallback) the normalised weights
  *       of {@link SpectralIntegrator#xyzWeights} and the node, (wx, wy, wz, lambda_nm);</li>
  *   <li>{@code spectralTable}: D65 x CIE 1931 at 1 nm over the CMF table's 360..830 nm, (S xbar, S ybar, S zbar, 0),
@@ -28,15 +29,18 @@ import java.util.List;
  */
 public final class DiffractionTextures {
     private final FloatTextureArray terms;
+    private final FloatTexture1D termExtrema;
     private final FloatTexture1D uniformNodeTable;
     private final FloatTexture1D spectralTable;
     private final double spectralTableFirstNm;
     private final double extentXUm;
     private final double extentYUm;
 
-    private DiffractionTextures(FloatTextureArray terms, FloatTexture1D uniformNodeTable, FloatTexture1D spectralTable,
-                                double spectralTableFirstNm, double extentXUm, double extentYUm) {
+    private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
+                                FloatTexture1D spectralTable, double spectralTableFirstNm, double extentXUm,
+                                double extentYUm) {
         this.terms = terms;
+        this.termExtrema = termExtrema;
         this.uniformNodeTable = uniformNodeTable;
         this.spectralTable = spectralTable;
         this.spectralTableFirstNm = spectralTableFirstNm;
@@ -50,12 +54,19 @@ public final class DiffractionTextures {
             throw new IllegalArgumentException("Taylor order " + settings.highestOrder() + " requested, the terms hold 0.."
                     + terms.highestOrder());
         }
+        boolean normalised = precision == FloatTextureArray.Precision.UNORM8;
         List<float[]> layers = new ArrayList<>();
-        for (int n = 0; n <= settings.highestOrder(); n++) {
-            layers.add(terms.termData(n));
+        if (normalised) {
+            layers.addAll(NormalisedTerms.layers(terms, settings.highestOrder()));
+        } else {
+            for (int n = 0; n <= settings.highestOrder(); n++) {
+                layers.add(terms.termData(n));
+            }
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
-        return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
+        return new DiffractionTextures(termTexture,
+                normalised ? NormalisedTerms.extremaTable(terms, settings.highestOrder()) : null,
+                buildUniformNodeTable(settings), buildSpectralTable(),
                 Cie1931.firstNm(), terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm());
     }
 
@@ -90,6 +101,16 @@ public final class DiffractionTextures {
 
     public FloatTextureArray terms() {
         return terms;
+    }
+
+    /** Whether the terms are stored [0, 1]-normalised at 8 bits (then {@link #termExtrema()} de-normalises them). */
+    public boolean normalisedTerms() {
+        return termExtrema != null;
+    }
+
+    /** Per term (min Re, min Im, range Re, range Im) of {@link NormalisedTerms}; null unless normalised. */
+    public FloatTexture1D termExtrema() {
+        return termExtrema;
     }
 
     public FloatTexture1D uniformNodeTable() {

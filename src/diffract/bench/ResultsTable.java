@@ -1,0 +1,110 @@
+package diffract.bench;
+
+import diffract.optics.BrdfSettings;
+import diffract.optics.Variant;
+import diffract.util.ImageFiles;
+import diffract.util.UserInputException;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.OutputStreamWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The bench's results as {@code results.csv} (one row per configuration, read back for the calibration cache)
+ * and as a markdown table. deltaE_mean and deltaE_p95 are CIEDE2000 over the lit pixels of the three maps
+ * ({@link MapError}); deltaE_disk_mean over the whole unit disks; pareto says whether the row is on its patch's
+ * Pareto front of (ms_per_frame, deltaE_mean).
+ */
+public final class ResultsTable {
+    public static final List<String> COLUMNS = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
+            "texture_format", "width", "height", "ms_per_frame", "deltaE_mean", "deltaE_p95", "deltaE_disk_mean",
+            "lit_pixels", "coherence_length_um", "pareto");
+
+    private ResultsTable() {
+    }
+
+    public static String csvHeader() {
+        return String.join(",", COLUMNS);
+    }
+
+    public static String csvRow(BenchResult r, boolean onFront) {
+        BenchConfig c = r.config();
+        BrdfSettings s = c.settings();
+        return String.join(",", s.variant().cliName(), c.patch(), Integer.toString(s.highestOrder()),
+                Csv.number(s.lambdaStepNm()), Integer.toString(s.windowRadius()), c.textureFormat(),
+                Integer.toString(c.sizePx()), Integer.toString(c.sizePx()), Csv.number(r.msPerFrame()),
+                Csv.number(r.error().mean()), Csv.number(r.error().p95()), Csv.number(r.error().diskMean()),
+                Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront));
+    }
+
+    /** The rows on the Pareto front of their patch. */
+    public static List<BenchResult> front(List<BenchResult> results, String patch) {
+        List<BenchResult> ofPatch = results.stream().filter(r -> r.config().patch().equals(patch)).toList();
+        return ParetoFront.of(ofPatch, BenchResult::msPerFrame, BenchResult::deltaEMean);
+    }
+
+    public static void writeCsv(Path file, List<BenchResult> results) throws IOException {
+        List<BenchResult> onFront = new ArrayList<>();
+        results.stream().map(r -> r.config().patch()).distinct().forEach(p -> onFront.addAll(front(results, p)));
+        ImageFiles.writeAtomically(file, raw -> {
+            PrintWriter out = new PrintWriter(new OutputStreamWriter(raw, StandardCharsets.UTF_8));
+            out.println(csvHeader());
+            for (BenchResult r : results) {
+                out.println(csvRow(r, onFront.contains(r)));
+            }
+            out.flush();
+        });
+    }
+
+    /** Reads a results.csv written by {@link #writeCsv}; the settings not in the file come from {@code base}. */
+    public static List<BenchResult> readCsv(Path file, BrdfSettings base) throws IOException {
+        List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        if (lines.isEmpty() || !lines.get(0).equals(csvHeader())) {
+            throw new UserInputException(file + " is not a results.csv of this version (header differs)");
+        }
+        List<BenchResult> results = new ArrayList<>();
+        for (String line : lines.subList(1, lines.size())) {
+            String[] f = line.split(",", -1);
+            BrdfSettings s = base.withVariant(Variant.parse(f[0])).withHighestOrder(Integer.parseInt(f[2]))
+                    .withLambdaStepNm(Double.parseDouble(f[3])).withWindowRadius(Integer.parseInt(f[4]));
+            BenchConfig c = new BenchConfig(f[1], s, f[5], Integer.parseInt(f[6]));
+            results.add(new BenchResult(c, Double.parseDouble(f[8]), new MapError(parse(f[9]), parse(f[10]),
+                    parse(f[11]), Integer.parseInt(f[12]))));
+        }
+        return results;
+    }
+
+    private static double parse(String text) {
+        return text.equals("nan") ? Double.NaN : Double.parseDouble(text);
+    }
+
+    /** A markdown table, by patch, Pareto-front rows in bold. */
+    public static String markdown(List<BenchResult> results) {
+        StringBuilder b = new StringBuilder();
+        b.append("| patch | variant | N | step nm | R | format | size | ms/frame | CIEDE2000 mean | p95 | disk mean |"
+                + " Pareto |\n");
+        b.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        List<String> patches = results.stream().map(r -> r.config().patch()).distinct().toList();
+        for (String patch : patches) {
+            List<BenchResult> front = front(results, patch);
+            for (BenchResult r : results) {
+                if (!r.config().patch().equals(patch)) {
+                    continue;
+                }
+                BenchConfig c = r.config();
+                BrdfSettings s = c.settings();
+                b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %d | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
+                        patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), s.windowRadius(),
+                        c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
+                        r.error().diskMean(), front.contains(r) ? "**yes**" : ""));
+            }
+        }
+        return b.toString();
+    }
+}
