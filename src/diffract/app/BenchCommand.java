@@ -78,8 +78,8 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--sizes", paramLabel = "LIST", description = "Own grid: map sizes (default --size).")
     String sizesList;
 
-    @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
-            description = "4 sigma_s (default ${DEFAULT-VALUE} um, as the demo scene: orders a few map pixels wide).")
+    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM",
+            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the thesis').")
     double coherenceLengthUm;
 
     @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")

@@ -17,6 +17,7 @@ import diffract.jrtr.FloatTextureArray;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
 import diffract.render.TermFormats;
+import diffract.bench.AutoChoice;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
@@ -51,8 +52,13 @@ final class BrdfMapCommand implements Callable<Integer> {
     Double lambdaNm;
 
     @Option(names = "--variant", defaultValue = "reference", paramLabel = "V",
-            description = "reference (exact), flss, nmm or pq (default ${DEFAULT-VALUE}).")
+            description = "reference (exact), flss, nmm, pq, or auto: the cheapest GPU configuration whose measured error "
+                    + "on this patch meets --max-delta-e (default ${DEFAULT-VALUE}).")
     String variant;
+
+    @Option(names = "--max-delta-e", paramLabel = "DE",
+            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the lit pixels.")
+    Double maxDeltaE;
 
     @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N for flss/nmm/pq (default ${DEFAULT-VALUE}).")
     int highestOrder;
@@ -98,8 +104,8 @@ final class BrdfMapCommand implements Callable<Integer> {
             description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
     String colour;
 
-    @Option(names = "--engine", defaultValue = "cpu", paramLabel = "E",
-            description = "cpu (default) or gpu: the GLSL shaders of flss, nmm and pq, rendered offscreen (OpenGL 3.3).")
+    @Option(names = "--engine", paramLabel = "E",
+            description = "cpu (default; gpu with --variant auto) or gpu: the GLSL shaders of flss, nmm and pq, rendered offscreen (OpenGL 3.3).")
     String engine;
 
     @Option(names = "--time", description = "With --engine gpu: print the median GPU time per frame (GL timer queries).")
@@ -129,9 +135,11 @@ final class BrdfMapCommand implements Callable<Integer> {
         }
         ColourPath colourPath = parseColour(colour);
         fixedExposure(); // fail on a bad value now, not after minutes of work
-        boolean gpu = parseEngine(engine);
+        boolean auto = variant.trim().equalsIgnoreCase(AutoVariant.NAME);
+        AutoVariant.checkOptions(auto, maxDeltaE, lambdaNm);
+        boolean gpu = parseEngine(engine != null ? engine : auto ? "gpu" : "cpu");
         FloatTextureArray.Precision precision = TermFormats.parse(textureFormat);
-        if (gpu && Variant.parse(variant) == Variant.REFERENCE) {
+        if (gpu && !auto && Variant.parse(variant) == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
         if (time && !gpu) {
@@ -140,8 +148,15 @@ final class BrdfMapCommand implements Callable<Integer> {
         Reporter reporter = Reporter.STDERR;
         long start = System.nanoTime();
         HeightField field = input.load(reporter);
-        BrdfSettings settings = new BrdfSettings(Variant.parse(variant), highestOrder, windowRadius, lambdaMinNm,
-                lambdaMaxNm, lambdaStepNm, coherenceLengthUm / 4.0, refractiveIndex, pqReplicas);
+        BrdfSettings settings = new BrdfSettings(auto ? Variant.FLSS : Variant.parse(variant), highestOrder, windowRadius,
+                lambdaMinNm, lambdaMaxNm, lambdaStepNm, coherenceLengthUm / 4.0, refractiveIndex, pqReplicas);
+        if (auto) {
+            AutoChoice choice = AutoVariant.choose(field, phiIDeg, settings, maxDeltaE, reporter);
+            settings = choice.chosen().config().settings();
+            highestOrder = settings.highestOrder();
+            precision = choice.chosen().config().precision();
+            textureFormat = choice.chosen().config().textureFormat();
+        }
         SamplingCheck.warnAboutAliasing(field, lambdaNm != null ? lambdaNm : lambdaMinNm,
                 lambdaNm != null ? lambdaNm : lambdaMaxNm, reporter);
         TaylorTerms terms = null;

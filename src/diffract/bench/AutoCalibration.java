@@ -38,15 +38,20 @@ public final class AutoCalibration {
      */
     public static List<BenchResult> of(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, Path cacheRoot,
                                        Reporter reporter) {
+        return of(meanSubtracted, phiIDeg, base, cacheRoot, reporter, SweepPlan.quick(SIZE_PX));
+    }
+
+    /** As above with another plan (tests use a small one); the plan is part of the cache key. */
+    static List<BenchResult> of(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, Path cacheRoot,
+                                Reporter reporter, List<SweepPlan.Point> plan) {
         BenchPatch patch = new BenchPatch("patch", meanSubtracted, phiIDeg);
-        Path file = cacheRoot.resolve("calibration").resolve(key(patch, base) + ".csv");
+        Path file = cacheRoot.resolve("calibration").resolve(key(patch, base, plan) + ".csv");
         try {
             if (Files.isRegularFile(file)) {
                 reporter.info("auto: calibration of this patch and settings reused from " + file);
                 return ResultsTable.readCsv(file, base);
             }
-            List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(),
-                    SweepPlan.quick(SIZE_PX), base);
+            List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(), plan, base);
             reporter.info("auto: calibrating on this patch (" + configs.size() + " configurations, once; cached in "
                     + file + ")");
             BenchRunner runner = new BenchRunner(new ReferenceMaps(cacheRoot.resolve("reference-maps"), reporter),
@@ -65,10 +70,10 @@ public final class AutoCalibration {
         return Precomputation.cacheRoot();
     }
 
-    static String key(BenchPatch patch, BrdfSettings base) {
+    static String key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
         String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
                 Csv.number(base.lambdaMinNm()), Csv.number(base.lambdaMaxNm()), Csv.number(base.sigmaSpatialUm()),
-                Csv.number(base.refractiveIndex()), Integer.toString(base.pqReplicas()), Integer.toString(SIZE_PX));
+                Csv.number(base.refractiveIndex()), Integer.toString(base.pqReplicas()), plan.toString());
         try {
             byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));
             return HexFormat.of().formatHex(hash).substring(0, 32);

@@ -36,9 +36,17 @@ public final class BenchRunner {
     private java.util.function.Predicate<BenchConfig> keepMaps = c -> false;
     private GLInfo glInfo;
 
+    private final List<Double> lightsDeg;
+
     public BenchRunner(ReferenceMaps references, Reporter reporter) {
+        this(references, reporter, LIGHTS_DEG);
+    }
+
+    /** With other lights (theta_i in degrees) than {@link #LIGHTS_DEG}, e.g. for a held-out check. */
+    public BenchRunner(ReferenceMaps references, Reporter reporter, List<Double> lightsDeg) {
         this.references = references;
         this.reporter = reporter;
+        this.lightsDeg = List.copyOf(lightsDeg);
     }
 
     /** Measures every configuration in order; {@code sink} receives each result as soon as it is measured. */
@@ -76,8 +84,8 @@ public final class BenchRunner {
      * Remaining seconds: a fixed cost per configuration (context, compilation, readback) plus frame time
      * proportional to the shader work, both fitted to the configurations done so far.
      */
-    static double eta(double elapsedS, int done, double doneWork, double frameMsSum, int total, double totalWork) {
-        int framesPerConfig = LIGHTS_DEG.size() + TIMED_FRAMES;
+    double eta(double elapsedS, int done, double doneWork, double frameMsSum, int total, double totalWork) {
+        int framesPerConfig = lightsDeg.size() + TIMED_FRAMES;
         double frameS = framesPerConfig * frameMsSum * 1e-3;
         double perConfigS = Math.max(0, elapsedS - frameS) / done;
         double perWorkS = doneWork > 0 ? frameS / doneWork : 0;
@@ -95,7 +103,7 @@ public final class BenchRunner {
         return this;
     }
 
-    /** The kept maps of a configuration, one per light of {@link #LIGHTS_DEG}; null when not kept. */
+    /** The kept maps of a configuration, one per light; null when not kept. */
     public List<float[]> maps(BenchConfig c) {
         return keptMaps.get(c.key());
     }
@@ -110,7 +118,7 @@ public final class BenchRunner {
         Map<String, Integer> highest = new HashMap<>();
         for (BenchConfig c : configs) {
             highest.merge(c.patch(), c.settings().highestOrder(), Math::max);
-            for (double theta : LIGHTS_DEG) {
+            for (double theta : lightsDeg) {
                 references.xyz(patches.get(c.patch()), theta, c.sizePx(), base);
             }
         }
@@ -127,7 +135,7 @@ public final class BenchRunner {
         List<Double> exposures = new ArrayList<>();
         double ms;
         try (GpuBrdfMap map = new GpuBrdfMap(terms.get(c.patch()), c.settings(), c.precision())) {
-            for (double theta : LIGHTS_DEG) {
+            for (double theta : lightsDeg) {
                 Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
                 float[] ref = references.xyz(patch, theta, c.sizePx(), base);
                 reference.add(ref);
