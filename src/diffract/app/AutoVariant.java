@@ -11,6 +11,7 @@ import diffract.util.UserInputException;
 
 import java.util.List;
 import java.util.Locale;
+import java.util.function.Predicate;
 
 /**
  * {@code --variant auto --max-delta-e DE}: resolves to the concrete GPU configuration ({@link BrdfSettings} and
@@ -44,9 +45,15 @@ final class AutoVariant {
      */
     static AutoChoice choose(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, double maxDeltaE,
                              Reporter reporter) {
+        return choose(meanSubtracted, phiIDeg, base, maxDeltaE, reporter, r -> true);
+    }
+
+    /** As above, among the calibrated configurations the caller can render ({@code usable}). */
+    static AutoChoice choose(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, double maxDeltaE,
+                             Reporter reporter, Predicate<BenchResult> usable) {
         DisplayCheck.requireDisplay();
         List<BenchResult> calibration = AutoCalibration.of(meanSubtracted, phiIDeg, base,
-                AutoCalibration.defaultCacheRoot(), reporter);
+                AutoCalibration.defaultCacheRoot(), reporter).stream().filter(usable).toList();
         AutoChoice choice = AutoChoice.choose(calibration, maxDeltaE).orElseThrow(() -> {
             BenchResult best = AutoChoice.mostAccurate(calibration).orElseThrow(
                     () -> new UserInputException("auto: the calibration measured no lit pixel on this patch"));

@@ -78,8 +78,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--sizes", paramLabel = "LIST", description = "Own grid: map sizes (default --size).")
     String sizesList;
 
-    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM",
-            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the thesis').")
+    @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
+            description = {"4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the patches are",
+                    "about one coherence length wide and their orders a few map pixels; at the thesis' 65 um they are",
+                    "far thinner than a pixel and the maps point-sample them)."})
     double coherenceLengthUm;
 
     @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")

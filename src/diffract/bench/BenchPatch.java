@@ -25,8 +25,9 @@ public record BenchPatch(String name, HeightField field, double phiIDeg) {
     public static BenchPatch named(String name) {
         switch (name) {
             case "blazed":
-                // d = 2.5 um, 0.2 um high, 650 x 16 pixels of 0.1 um: the grating of docs/gpu.md
-                return new BenchPatch(name, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16).meanSubtracted(), 0);
+                // d = 2.5 um, 0.2 um high, 4 periods of 20 pixels, 16 rows: 80 x 16 pixels of 0.125 um, 10 x 2 um, about
+                // one (default) coherence length wide, as the snake patches (a wider grating needs a wider window)
+                return new BenchPatch(name, SyntheticPatches.blazed(2.5, 0.2, 20, 4, 16).meanSubtracted(), 0);
             case "elaphe-like":
                 return new BenchPatch(name, SyntheticPatches.elapheLike().meanSubtracted(), 90);
             case "xenopeltis-like":

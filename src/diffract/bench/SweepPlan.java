@@ -84,13 +84,13 @@ public final class SweepPlan {
     }
 
     /**
-     * The full sweep: N x step x R over {4, 8, 16, 30} x {5, 10, 25} x {0, 1} with float32 terms; at the thesis'
-     * point the 1 nm step, a 5 x 5 window and N = 40; the three term formats at three points; and the thesis'
-     * point at {@code largeSizePx}.
+     * The full sweep: N x step x R over {4, 6, 8, 16, 30} x {5, 10, 15, 25} x {0, 1} with float32 terms; at the
+     * thesis' point the 1 nm step, a 5 x 5 window and N = 40; the three term formats at three points; and the
+     * thesis' point at {@code largeSizePx}.
      */
     public static List<Point> full(int sizePx, int largeSizePx) {
         Point t = thesis(sizePx);
-        List<Point> points = new ArrayList<>(grid(List.of(4, 8, 16, 30), List.of(5.0, 10.0, 25.0), List.of(0, 1),
+        List<Point> points = new ArrayList<>(grid(List.of(4, 6, 8, 16, 30), List.of(5.0, 10.0, 15.0, 25.0), List.of(0, 1),
                 List.of(EXACT_FORMAT), List.of(sizePx)));
         points.add(t.with(30, 1, 1));
         points.add(t.with(30, 5, 2));
