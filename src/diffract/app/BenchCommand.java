@@ -34,14 +34,15 @@ import java.util.concurrent.Callable;
 /**
  * {@code diffract bench}: sweeps GPU configurations (variant, Taylor terms, lambda step, window radius, term texture
  * format, image size, patch), measures each one's median GPU time per frame and its CIEDE2000 error against the
- * CPU reference, and writes {@code results.csv}, {@code results.md}, {@code targets.md}, {@code machine.txt} and the
- * Pareto plot {@code pareto.png} into the output folder.
+ * CPU reference, and writes {@code results.csv}, {@code results.md}, {@code pareto.md}, {@code targets.md},
+ * {@code machine.txt} and the Pareto plot {@code pareto.png} into the output folder.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = {"Measure the speed/accuracy trade of the GPU variants: per configuration the median GPU time",
                 "per frame (GL timer queries) and the CIEDE2000 error of its BRDF maps (theta_i 0, 45, 75 degrees)",
                 "against the CPU reference (exact model, 1 nm), over the lit pixels. Writes results.csv,",
-                "results.md, targets.md, machine.txt and pareto.png into -o DIR; reference maps are cached there."})
+                "results.md, pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR;",
+                "reference maps are cached there."})
 final class BenchCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
     Path outputDir;
@@ -130,6 +131,7 @@ final class BenchCommand implements Callable<Integer> {
         });
         ResultsTable.writeCsv(csv, results);
         Files.writeString(outputDir.resolve("results.md"), ResultsTable.markdown(results), StandardCharsets.UTF_8);
+        Files.writeString(outputDir.resolve("pareto.md"), ResultsTable.markdown(results, true), StandardCharsets.UTF_8);
         List<Targets.Outcome> outcomes = Targets.of(results, sizePx, runner::maps,
                 (patch, size) -> exposures(references, patchMap.get(patch), size, base));
         Files.writeString(outputDir.resolve("targets.md"), Targets.markdown(outcomes), StandardCharsets.UTF_8);

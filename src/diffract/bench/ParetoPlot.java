@@ -18,7 +18,8 @@ import java.util.Locale;
 
 /**
  * The Pareto plot (XChart): mean CIEDE2000 (lit pixels) against GPU ms/frame, both axes logarithmic, one marker
- * series per patch (colour) and variant (marker shape), and each patch's Pareto front as a line of its colour. Zero errors are drawn at
+ * series per patch (colour) and variant (marker shape), and each patch's Pareto front at the sweep's map size
+ * ({@link ResultsTable#mainSize}) as a line of its colour. Zero errors are drawn at
  * {@link #ERROR_FLOOR}, which a log axis can show.
  */
 public final class ParetoPlot {
@@ -57,7 +58,7 @@ public final class ParetoPlot {
                             .setMarker(VARIANT_MARKERS[v % VARIANT_MARKERS.length]).setMarkerColor(colour);
                 }
             }
-            List<BenchResult> front = ResultsTable.front(results, patch);
+            List<BenchResult> front = ResultsTable.front(results, patch, ResultsTable.mainSize(results));
             if (front.size() > 1) {
                 XYSeries line = chart.addSeries(patch + " Pareto front", xs(front), ys(front));
                 line.setXYSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Line).setMarker(SeriesMarkers.NONE)

@@ -18,8 +18,8 @@ import java.util.Locale;
 /**
  * The bench's results as {@code results.csv} (one row per configuration, read back for the calibration cache)
  * and as a markdown table. deltaE_mean and deltaE_p95 are CIEDE2000 over the lit pixels of the three maps
- * ({@link MapError}); deltaE_disk_mean over the whole unit disks; pareto says whether the row is on its patch's
- * Pareto front of (ms_per_frame, deltaE_mean).
+ * ({@link MapError}); deltaE_disk_mean over the whole unit disks; pareto says whether the row is on the Pareto
+ * front of (ms_per_frame, deltaE_mean) of its patch and map size (errors of different sizes are not comparable).
  */
 public final class ResultsTable {
     public static final List<String> COLUMNS = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
@@ -43,15 +43,30 @@ public final class ResultsTable {
                 Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront));
     }
 
-    /** The rows on the Pareto front of their patch. */
-    public static List<BenchResult> front(List<BenchResult> results, String patch) {
-        List<BenchResult> ofPatch = results.stream().filter(r -> r.config().patch().equals(patch)).toList();
+    /** The rows on the Pareto front of one patch at one map size. */
+    public static List<BenchResult> front(List<BenchResult> results, String patch, int sizePx) {
+        List<BenchResult> ofPatch = results.stream()
+                .filter(r -> r.config().patch().equals(patch) && r.config().sizePx() == sizePx).toList();
         return ParetoFront.of(ofPatch, BenchResult::msPerFrame, BenchResult::deltaEMean);
     }
 
-    public static void writeCsv(Path file, List<BenchResult> results) throws IOException {
+    /** The rows on the front of their own patch and size. */
+    public static List<BenchResult> onAnyFront(List<BenchResult> results) {
         List<BenchResult> onFront = new ArrayList<>();
-        results.stream().map(r -> r.config().patch()).distinct().forEach(p -> onFront.addAll(front(results, p)));
+        results.stream().map(r -> r.config().patch()).distinct().forEach(p -> results.stream()
+                .map(r -> r.config().sizePx()).distinct().forEach(size -> onFront.addAll(front(results, p, size))));
+        return onFront;
+    }
+
+    /** The size most configurations were measured at (the sweep's; the others are single extra points). */
+    public static int mainSize(List<BenchResult> results) {
+        return results.stream().collect(java.util.stream.Collectors.groupingBy(r -> r.config().sizePx(),
+                java.util.stream.Collectors.counting())).entrySet().stream().max(java.util.Map.Entry.comparingByValue())
+                .map(java.util.Map.Entry::getKey).orElse(0);
+    }
+
+    public static void writeCsv(Path file, List<BenchResult> results) throws IOException {
+        List<BenchResult> onFront = onAnyFront(results);
         ImageFiles.writeAtomically(file, raw -> {
             PrintWriter out = new PrintWriter(new OutputStreamWriter(raw, StandardCharsets.UTF_8));
             out.println(csvHeader());
@@ -84,17 +99,22 @@ public final class ResultsTable {
         return text.equals("nan") ? Double.NaN : Double.parseDouble(text);
     }
 
-    /** A markdown table, by patch, Pareto-front rows in bold. */
+    /** A markdown table, by patch, with a column that marks the Pareto-front rows. */
     public static String markdown(List<BenchResult> results) {
+        return markdown(results, false);
+    }
+
+    /** @param frontOnly only the rows on the Pareto front of their patch and size */
+    public static String markdown(List<BenchResult> results, boolean frontOnly) {
+        List<BenchResult> onFront = onAnyFront(results);
         StringBuilder b = new StringBuilder();
         b.append("| patch | variant | N | step nm | R | format | size | ms/frame | CIEDE2000 mean | p95 | disk mean |"
                 + " Pareto |\n");
         b.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         List<String> patches = results.stream().map(r -> r.config().patch()).distinct().toList();
         for (String patch : patches) {
-            List<BenchResult> front = front(results, patch);
             for (BenchResult r : results) {
-                if (!r.config().patch().equals(patch)) {
+                if (!r.config().patch().equals(patch) || frontOnly && !onFront.contains(r)) {
                     continue;
                 }
                 BenchConfig c = r.config();
@@ -102,7 +122,7 @@ public final class ResultsTable {
                 b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %d | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
                         patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), s.windowRadius(),
                         c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
-                        r.error().diskMean(), front.contains(r) ? "**yes**" : ""));
+                        r.error().diskMean(), onFront.contains(r) ? "**yes**" : ""));
             }
         }
         return b.toString();
