@@ -4,6 +4,8 @@ import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.render.TermFormats;
 
+import java.util.Locale;
+
 /**
  * One configuration of the sweep: a patch, the variant's settings, how the terms are stored and the map size.
  *
@@ -13,7 +15,7 @@ public record BenchConfig(String patch, BrdfSettings settings, String textureFor
 
     /** A stable text key (patch, variant, N, step, R, format, size) for caches and duplicate removal. */
     public String key() {
-        return String.format(java.util.Locale.ROOT, "%s/%s/n%d/step%s/r%d/%s/%d", patch,
+        return String.format(Locale.ROOT, "%s/%s/n%d/step%s/r%d/%s/%d", patch,
                 settings.variant().cliName(), settings.highestOrder(), Csv.number(settings.lambdaStepNm()),
                 settings.windowRadius(), textureFormat, sizePx);
     }

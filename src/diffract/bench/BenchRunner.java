@@ -15,6 +15,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.function.Consumer;
+import java.util.function.Predicate;
 
 /**
  * Measures configurations on the GPU: per configuration one {@link GpuBrdfMap}, the colour maps of the lights
@@ -33,7 +34,7 @@ public final class BenchRunner {
     private final Reporter reporter;
     private final Map<String, TaylorTerms> terms = new HashMap<>();
     private final Map<String, List<float[]>> keptMaps = new HashMap<>();
-    private java.util.function.Predicate<BenchConfig> keepMaps = c -> false;
+    private Predicate<BenchConfig> keepMaps = c -> false;
     private GLInfo glInfo;
 
     private final List<Double> lightsDeg;
@@ -98,7 +99,7 @@ public final class BenchRunner {
     }
 
     /** Keep the GPU maps of the configurations that match (for comparisons between variants). */
-    public BenchRunner keepMapsOf(java.util.function.Predicate<BenchConfig> which) {
+    public BenchRunner keepMapsOf(Predicate<BenchConfig> which) {
         this.keepMaps = which;
         return this;
     }

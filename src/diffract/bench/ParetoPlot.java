@@ -4,6 +4,7 @@ import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.XYChart;
 import org.knowm.xchart.XYChartBuilder;
 import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.style.Styler;
 import org.knowm.xchart.style.markers.Marker;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
@@ -40,8 +41,8 @@ public final class ParetoPlot {
                 .xAxisTitle("GPU ms per frame (median, log)").yAxisTitle("mean CIEDE2000 vs CPU reference (lit pixels, log)")
                 .build();
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true)
-                .setLegendPosition(org.knowm.xchart.style.Styler.LegendPosition.OutsideE)
-                .setChartBackgroundColor(java.awt.Color.WHITE);
+                .setLegendPosition(Styler.LegendPosition.OutsideE)
+                .setChartBackgroundColor(Color.WHITE);
         List<String> patches = results.stream().map(r -> r.config().patch()).distinct().toList();
         List<String> variants = results.stream().map(r -> r.config().settings().variant().cliName()).distinct().toList();
         for (int p = 0; p < patches.size(); p++) {

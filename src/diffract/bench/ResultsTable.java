@@ -6,14 +6,16 @@ import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
-import java.io.PrintWriter;
 import java.io.OutputStreamWriter;
+import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.stream.Collectors;
 
 /**
  * The bench's results as {@code results.csv} (one row per configuration, read back for the calibration cache)
@@ -60,9 +62,8 @@ public final class ResultsTable {
 
     /** The size most configurations were measured at (the sweep's; the others are single extra points). */
     public static int mainSize(List<BenchResult> results) {
-        return results.stream().collect(java.util.stream.Collectors.groupingBy(r -> r.config().sizePx(),
-                java.util.stream.Collectors.counting())).entrySet().stream().max(java.util.Map.Entry.comparingByValue())
-                .map(java.util.Map.Entry::getKey).orElse(0);
+        return results.stream().collect(Collectors.groupingBy(r -> r.config().sizePx(), Collectors.counting()))
+                .entrySet().stream().max(Map.Entry.comparingByValue()).map(Map.Entry::getKey).orElse(0);
     }
 
     public static void writeCsv(Path file, List<BenchResult> results) throws IOException {

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
+import java.util.function.BiFunction;
 import java.util.function.Function;
 
 /**
@@ -48,7 +49,7 @@ public final class Targets {
      * @param exposures the reference's exposure per light of a patch at a size
      */
     public static List<Outcome> of(List<BenchResult> results, int sizePx, Function<BenchConfig, List<float[]>> maps,
-                                   java.util.function.BiFunction<String, Integer, List<Double>> exposures) {
+                                   BiFunction<String, Integer, List<Double>> exposures) {
         List<Outcome> outcomes = new ArrayList<>();
         for (String patch : results.stream().map(r -> r.config().patch()).distinct().toList()) {
             List<BenchResult> ofPatch = results.stream()
