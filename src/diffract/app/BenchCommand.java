@@ -38,11 +38,11 @@ import java.util.concurrent.Callable;
  * {@code machine.txt} and the Pareto plot {@code pareto.png} into the output folder.
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
-        description = {"Measure the speed/accuracy trade of the GPU variants: per configuration the median GPU time",
-                "per frame (GL timer queries) and the CIEDE2000 error of its BRDF maps (theta_i 0, 45, 75 degrees)",
-                "against the CPU reference (exact model, 1 nm), over the lit pixels. Writes results.csv,",
-                "results.md, pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR;",
-                "reference maps are cached there."})
+        description = "Measure the speed/accuracy trade of the GPU variants: per configuration the median GPU time "
+                + "per frame (GL timer queries) and the CIEDE2000 error of its BRDF maps (theta_i 0, 45, 75 degrees) "
+                + "against the CPU reference (exact model, 1 nm), over the lit pixels. Writes results.csv, results.md, "
+                + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
+                + "maps are cached there.")
 final class BenchCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
     Path outputDir;
@@ -80,9 +80,9 @@ final class BenchCommand implements Callable<Integer> {
     String sizesList;
 
     @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
-            description = {"4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the patches are",
-                    "about one coherence length wide and their orders a few map pixels; at the thesis' 65 um they are",
-                    "far thinner than a pixel and the maps point-sample them)."})
+            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the "
+                    + "patches are about one coherence length wide and their orders a few map pixels; at the thesis' "
+                    + "65 um they are far thinner than a pixel and the maps point-sample them).")
     double coherenceLengthUm;
 
     @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")

@@ -50,6 +50,20 @@ class BenchCommandTest {
         assertTrue(Files.list(out.resolve("reference-maps")).count() == 3, "one cached reference map per light");
     }
 
+    /** --variant auto needs its target, and the target needs auto: one line, exit code 2, before any work. */
+    @Test
+    void autoAndItsTargetComeTogether(@TempDir Path dir) {
+        String patch = dir.resolve("none.gsf").toString(); // never read: the options are checked first
+        Object[] noTarget = CliTest.run("brdfmap", "--patch", patch, "--theta-i", "10", "--variant", "auto",
+                "-o", dir.resolve("a.png").toString());
+        assertEquals(2, noTarget[0]);
+        assertTrue(((String) noTarget[2]).contains("--max-delta-e"), (String) noTarget[2]);
+        Object[] noAuto = CliTest.run("brdfmap", "--patch", patch, "--theta-i", "10", "--variant", "flss",
+                "--max-delta-e", "2", "-o", dir.resolve("a.png").toString());
+        assertEquals(2, noAuto[0]);
+        assertTrue(((String) noAuto[2]).contains("--variant auto"), (String) noAuto[2]);
+    }
+
     @Test
     void refusesTheReferenceAndUnknownFormatsWithExitCode2(@TempDir Path dir) {
         assertEquals(2, Main.execute("bench", "--variants", "reference", "-o", dir.toString()));
