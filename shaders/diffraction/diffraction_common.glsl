@@ -15,6 +15,10 @@
 //   PIGMENTATION          surface path: blend with a pigmentation texture (Algorithm 4)
 //   PHASE_CENTRED         expand around the nearest phase centre (taylor_centred.glsl); TAYLOR_HIGHEST_ORDER is
 //                         then the last order per centre
+//   TERMS_UNORM8          terms stored [0, 1]-normalised as 8-bit bytes (003 eq. 1.1; NormalisedTerms)
+#if defined(TERMS_UNORM8) && defined(PHASE_CENTRED)
+#error "8-bit terms hold the thesis' series around 0 only (DiffractionTextures.ofPhaseCentred refuses them)"
+#endif
 #if !defined(TAYLOR_HIGHEST_ORDER) || !defined(WINDOW_RADIUS) || !defined(XYZ_TO_LINEAR_SRGB)
 #error "TAYLOR_HIGHEST_ORDER, WINDOW_RADIUS and XYZ_TO_LINEAR_SRGB must be defined (see DiffractionShaders)"
 #endif
@@ -210,6 +214,49 @@ vec2 taylorSumAt(ivec2 m, float c[TERM_COUNT], int layerBase, int lastOrder) {
     return sum;
 }
 
+#ifdef TERMS_UNORM8
+// Terms stored [0, 1]-normalised at 8 bits (NormalisedTerms): DFT_n = min_n + v_n range_n per channel, v_n = byte / 255
+// as the RG8 texture returns it (003 eq. 1.1 inverted). Per term n: (min Re, min Im, range Re, range Im).
+uniform sampler1D termExtrema;
+
+// The de-normalisation folded into the coefficients, once per wavelength instead of once per window texel:
+// sum_n c_n DFT_n = sum_n c_n min_n + sum_n (c_n range_n) v_n (per channel; c_n is real).
+struct NormalisedWeights {
+    vec2 scale[TERM_COUNT];
+    vec2 offset;
+};
+
+NormalisedWeights normalisedWeights(float c[TERM_COUNT], int lastOrder) {
+    NormalisedWeights w;
+    w.offset = vec2(0.0);
+    for (int n = 0; n < TERM_COUNT; n++) {
+        if (n > lastOrder) {
+            break; // the fragment's early stop (taylorStopOrder)
+        }
+        vec4 e = texelFetch(termExtrema, n, 0);
+        w.scale[n] = c[n] * e.zw;
+        w.offset += c[n] * e.xy;
+    }
+    return w;
+}
+
+// taylorSumAt for normalised terms: the same sum, 0 out of band.
+vec2 normalisedTaylorSumAt(ivec2 m, NormalisedWeights w, int lastOrder) {
+    if (!inBand(m)) {
+        return vec2(0.0);
+    }
+    ivec2 texel = m + termCentre();
+    vec2 sum = w.offset;
+    for (int n = 0; n < TERM_COUNT; n++) {
+        if (n > lastOrder) {
+            break;
+        }
+        sum += w.scale[n] * texelFetch(taylorTerms, ivec3(texel, n), 0).rg;
+    }
+    return sum;
+}
+#endif
+
 // The interpolation kernel of a variant along one axis (0 = x, 1 = y): the Gaussian window (FLSS, NMM) or sinc
 // (PQ). Defined by spectrum_gaussian.glsl or spectrum_sinc.glsl.
 float windowWeight(float offsetTexels, int axis);
@@ -225,13 +272,21 @@ vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
     // the early stop's x is the phase the series actually expands: k w, or k w - a_j around a phase centre
     int lastOrder = taylorStopOrder(abs(expansionPhase(kw)) * maxAbsHeightUm);
     ivec2 anchor = ivec2(floor(s + 0.5));
+#ifdef TERMS_UNORM8
+    NormalisedWeights normalised = normalisedWeights(c, lastOrder);
+#endif
     vec2 p = vec2(0.0);
     for (int j = -WINDOW_RADIUS_Y; j <= WINDOW_RADIUS_Y; j++) {
         int my = anchor.y + j;
         float weightY = windowWeight(float(my) - s.y, 1);
         for (int i = -WINDOW_RADIUS_X; i <= WINDOW_RADIUS_X; i++) {
             int mx = anchor.x + i;
-            p += weightY * windowWeight(float(mx) - s.x, 0) * taylorSumAt(ivec2(mx, my), c, layerBase, lastOrder);
+#ifdef TERMS_UNORM8
+            vec2 sum = normalisedTaylorSumAt(ivec2(mx, my), normalised, lastOrder);
+#else
+            vec2 sum = taylorSumAt(ivec2(mx, my), c, layerBase, lastOrder);
+#endif
+            p += weightY * windowWeight(float(mx) - s.x, 0) * sum;
         }
     }
     return p;

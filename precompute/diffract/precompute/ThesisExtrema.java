@@ -40,6 +40,11 @@ public final class ThesisExtrema {
                 min = Math.min(min, image[i]);
                 max = Math.max(max, image[i]);
             }
+            return ofExtrema(min, max);
+        }
+
+        /** The guarded mapping of a channel whose values span [min, max]. */
+        public static Channel ofExtrema(double min, double max) {
             double guardedMin = Math.abs(min) < GUARD ? 0.0 : min;
             double range = max - guardedMin;
             return new Channel(guardedMin, range < GUARD ? 1.0 : range);

@@ -16,6 +16,8 @@ import diffract.optics.io.SamplingCheck;
 import diffract.jrtr.FloatTextureArray;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
+import diffract.render.TermFormats;
+import diffract.bench.AutoChoice;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TaylorTermComputer;
 import diffract.precompute.TermFolders;
@@ -51,8 +53,13 @@ final class BrdfMapCommand implements Callable<Integer> {
     Double lambdaNm;
 
     @Option(names = "--variant", defaultValue = "reference", paramLabel = "V",
-            description = "reference (exact), flss, nmm, pq or baked (GPU table of flss) (default ${DEFAULT-VALUE}).")
+            description = "reference (exact), flss, nmm, pq, baked (GPU table of flss), or auto: the cheapest GPU "
+                    + "configuration whose measured error on this patch meets --max-delta-e (default ${DEFAULT-VALUE}).")
     String variant;
+
+    @Option(names = "--max-delta-e", paramLabel = "DE",
+            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the lit pixels.")
+    Double maxDeltaE;
 
     @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N for flss/nmm/pq (default ${DEFAULT-VALUE}).")
     int highestOrder;
@@ -109,15 +116,16 @@ final class BrdfMapCommand implements Callable<Integer> {
             description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
     String colour;
 
-    @Option(names = "--engine", defaultValue = "cpu", paramLabel = "E",
-            description = "cpu (default) or gpu: the GLSL shaders of flss, nmm and pq, rendered offscreen (OpenGL 3.3).")
+    @Option(names = "--engine", paramLabel = "E",
+            description = "cpu (default; gpu with --variant auto) or gpu: the GLSL shaders of flss, nmm and pq, rendered offscreen (OpenGL 3.3).")
     String engine;
 
     @Option(names = "--time", description = "With --engine gpu: print the median GPU time per frame (GL timer queries).")
     boolean time;
 
     @Option(names = "--texture-format", defaultValue = "rg32f", paramLabel = "F",
-            description = "With --engine gpu: rg32f (default, exact) or rg16f (half precision) Taylor-term textures.")
+            description = "With --engine gpu: rg32f (default, exact), rg16f (half precision) or rg8 (the thesis' [0, 1]-normalised "
+                    + "bytes, 003 eq. 1.1) Taylor-term textures.")
     String textureFormat;
 
     @Option(names = "--expansion", defaultValue = "auto", paramLabel = "E",
@@ -144,16 +152,19 @@ final class BrdfMapCommand implements Callable<Integer> {
         }
         ColourPath colourPath = parseColour(colour);
         fixedExposure(); // fail on a bad value now, not after minutes of work
-        boolean gpu = parseEngine(engine);
-        FloatTextureArray.Precision precision = parseTextureFormat(textureFormat);
+        boolean auto = variant.trim().equalsIgnoreCase(AutoVariant.NAME);
+        AutoVariant.checkOptions(auto, maxDeltaE, lambdaNm);
+        boolean gpu = parseEngine(engine != null ? engine : auto ? "gpu" : "cpu");
+        FloatTextureArray.Precision precision = TermFormats.parse(textureFormat);
         TaylorEvaluation.Mode expansionMode = TaylorEvaluation.Mode.parse(expansion);
-        if (gpu && Variant.parse(variant) == Variant.REFERENCE) {
+        Variant named = auto ? null : Variant.parse(variant);
+        if (gpu && named == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
-        if (Variant.parse(variant) == Variant.BAKED && !gpu) {
+        if (named == Variant.BAKED && !gpu) {
             throw new UserInputException(DiffractionBrdf.BAKED_IS_GPU_ONLY);
         }
-        if (Variant.parse(variant) == Variant.BAKED && lambdaNm != null) {
+        if (named == Variant.BAKED && lambdaNm != null) {
             throw new UserInputException(GpuBrdfMap.BAKED_HAS_NO_MONOCHROMATIC);
         }
         if (time && !gpu) {
@@ -164,10 +175,17 @@ final class BrdfMapCommand implements Callable<Integer> {
         HeightField field = input.load(reporter);
         boolean automaticWindow = windowRadiusText.trim().equalsIgnoreCase("auto");
         int[] bakedSamples = parseBakedSamples(bakedSamplesText);
-        BrdfSettings settings = new BrdfSettings(Variant.parse(variant), highestOrder,
+        BrdfSettings settings = new BrdfSettings(auto ? Variant.FLSS : named, highestOrder,
                 automaticWindow ? 1 : parseWindowRadius(windowRadiusText), lambdaMinNm, lambdaMaxNm, lambdaStepNm,
                 coherenceLengthUm / 4.0, refractiveIndex, pqReplicas, taylorTolerance, automaticWindow,
                 bakedSamples[0], bakedSamples[1]);
+        if (auto) {
+            AutoChoice choice = AutoVariant.choose(field, phiIDeg, settings, maxDeltaE, reporter);
+            settings = choice.chosen().config().settings();
+            highestOrder = settings.highestOrder();
+            precision = choice.chosen().config().precision();
+            textureFormat = choice.chosen().config().textureFormat();
+        }
         SamplingCheck.warnAboutAliasing(field, lambdaNm != null ? lambdaNm : lambdaMinNm,
                 lambdaNm != null ? lambdaNm : lambdaMaxNm, reporter);
         TaylorTerms terms = null;
@@ -328,17 +346,6 @@ final class BrdfMapCommand implements Callable<Integer> {
                 return true;
             default:
                 throw new UserInputException("unknown --engine '" + text + "': use cpu or gpu");
-        }
-    }
-
-    private static FloatTextureArray.Precision parseTextureFormat(String text) {
-        switch (text.toLowerCase(Locale.ROOT)) {
-            case "rg32f":
-                return FloatTextureArray.Precision.FLOAT32;
-            case "rg16f":
-                return FloatTextureArray.Precision.FLOAT16;
-            default:
-                throw new UserInputException("unknown --texture-format '" + text + "': use rg32f or rg16f");
         }
     }
 

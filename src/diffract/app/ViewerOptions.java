@@ -88,8 +88,14 @@ final class ViewerOptions {
             description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
     double diffuseWeight;
 
-    @Option(names = "--variant", defaultValue = "flss", paramLabel = "V", description = "flss, nmm, pq or baked (default ${DEFAULT-VALUE}).")
+    @Option(names = "--variant", defaultValue = "flss", paramLabel = "V",
+            description = "flss, nmm, pq, baked, or auto: the cheapest configuration (float32 terms) whose measured "
+                    + "error on the patch meets --max-delta-e (default ${DEFAULT-VALUE}).")
     String variant;
+
+    @Option(names = "--max-delta-e", paramLabel = "DE",
+            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the lit pixels.")
+    Double maxDeltaE;
 
     @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N (default ${DEFAULT-VALUE}).")
     int highestOrder;
@@ -173,7 +179,10 @@ final class ViewerOptions {
         if (!(coherenceLengthUm > 0)) {
             throw new UserInputException("--coherence-length must be > 0 um, got " + coherenceLengthUm);
         }
-        Variant v = Variant.parse(variant);
+        boolean auto = auto();
+        AutoVariant.checkOptions(auto, maxDeltaE, null);
+        // auto resolves to a concrete variant once the patch is read (resolveAuto); FLSS stands in until then
+        Variant v = auto ? Variant.FLSS : Variant.parse(variant);
         if (v == Variant.REFERENCE) {
             throw new UserInputException("the viewer draws on the GPU: use --variant flss, nmm or pq (or baked) "
                     + "(the reference runs on the CPU: ./diffract brdfmap)");
@@ -181,6 +190,22 @@ final class ViewerOptions {
         return new BrdfSettings(v, highestOrder, windowRadius, BrdfSettings.LAMBDA_MIN_NM, BrdfSettings.LAMBDA_MAX_NM,
                 lambdaStepNm, coherenceLengthUm / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX, 0)
                 .withTaylorTolerance(taylorTolerance).withAutomaticWindowRadius(automaticWindow);
+    }
+
+    private boolean auto() {
+        return variant.trim().equalsIgnoreCase(AutoVariant.NAME);
+    }
+
+    /**
+     * With {@code --variant auto}: the cheapest measured configuration on this patch that meets --max-delta-e,
+     * among those with float32 terms (the viewer's storage); otherwise the settings unchanged.
+     */
+    private BrdfSettings resolveAuto(HeightField meanSubtracted, double phiIDeg, BrdfSettings settings, Reporter reporter) {
+        if (!auto()) {
+            return settings;
+        }
+        return AutoVariant.choose(meanSubtracted, phiIDeg, settings, maxDeltaE, reporter,
+                r -> r.config().textureFormat().equals(diffract.bench.SweepPlan.EXACT_FORMAT)).chosen().config().settings();
     }
 
     /** The snake's procedural corn-snake pigmentation is the same every run. */
@@ -215,6 +240,7 @@ final class ViewerOptions {
                 : ViewerShapes.Kind.parse(shape) == ViewerShapes.Kind.SNAKE
                 ? new PigmentationTexture(PigmentationTexture.Parameters.defaults(PIGMENT_SEED)).image(256, 2048) : null;
         double phi = phiIDeg != null ? phiIDeg : name.equals("elaphe-like") ? 90 : 0;
+        settings = resolveAuto(field, phi, settings, reporter);
         return new ViewerSetup(field, name, mesh, pigment, diffuseWeight, settings,
                 new OrbitCamera(azimuthDeg, elevationDeg, distance, 0, 0, 0), new LightDirection(thetaIDeg, phi),
                 exposure, brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, pigment != null && !noPigmentation);
@@ -244,6 +270,7 @@ final class ViewerOptions {
         if (given("--auto-window")) {
             settings = settings.withAutomaticWindowRadius(true);
         }
+        settings = resolveAuto(s.patch(), given("--phi-i") ? phiIDeg : s.light().phiDeg(), settings, Reporter.STDERR);
         OrbitCamera c = s.camera();
         OrbitCamera camera = new OrbitCamera(given("--azimuth") ? azimuthDeg : c.azimuthDeg(),
                 given("--elevation") ? elevationDeg : c.elevationDeg(), given("--distance") ? distance : c.distance(),

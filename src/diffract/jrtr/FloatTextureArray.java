@@ -5,6 +5,7 @@ import com.jogamp.opengl.GL2ES2;
 import com.jogamp.opengl.GL2ES3;
 import com.jogamp.opengl.GL3;
 
+import java.nio.ByteBuffer;
 import java.nio.FloatBuffer;
 import java.util.List;
 
@@ -19,7 +20,12 @@ public final class FloatTextureArray extends Texture {
         /** RG32F: values round-trip bit-exactly. */
         FLOAT32(GL.GL_RG32F),
         /** RG16F: half the memory; values rounded to half precision (11 significant bits). */
-        FLOAT16(GL.GL_RG16F);
+        FLOAT16(GL.GL_RG16F),
+        /**
+         * RG8 (unsigned normalised): a quarter of the memory; every value must lie in [0, 1] and is stored as the
+         * byte {@link #toUnorm8 round(255 v)}, which a shader reads back as byte / 255. The caller normalises.
+         */
+        UNORM8(GL.GL_RG8);
 
         private final int internalFormat;
 
@@ -87,11 +93,40 @@ public final class FloatTextureArray extends Texture {
         // allocate once, then copy layer by layer, so no buffer of the whole array is ever needed
         gl.glTexImage3D(target, 0, precision.internalFormat(), width, height, layers.size(), 0,
                 GL2ES2.GL_RG, GL.GL_FLOAT, null);
-        for (int layer = 0; layer < layers.size(); layer++) {
-            gl.glTexSubImage3D(target, 0, 0, 0, layer, width, height, 1, GL2ES2.GL_RG, GL.GL_FLOAT,
-                    FloatBuffer.wrap(layers.get(layer)));
+        if (precision == Precision.UNORM8) {
+            fillBytes(gl, target);
+        } else {
+            for (int layer = 0; layer < layers.size(); layer++) {
+                gl.glTexSubImage3D(target, 0, 0, 0, layer, width, height, 1, GL2ES2.GL_RG, GL.GL_FLOAT,
+                        FloatBuffer.wrap(layers.get(layer)));
+            }
         }
         nearestClamp(gl, target);
+    }
+
+    /**
+     * UNORM8 layers are quantised here, not by the driver, so the stored byte is {@link #toUnorm8} on every GL
+     * (the spec allows either rounding of float-to-normalised conversions). Rows of 2 * width bytes need not be
+     * 4-byte aligned: unpack alignment 1 while uploading.
+     */
+    private void fillBytes(GL3 gl, int target) {
+        ByteBuffer bytes = ByteBuffer.allocateDirect(width * height * 2);
+        gl.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 1);
+        for (int layer = 0; layer < layers.size(); layer++) {
+            float[] values = layers.get(layer);
+            bytes.clear();
+            for (float v : values) {
+                bytes.put((byte) toUnorm8(v));
+            }
+            bytes.flip();
+            gl.glTexSubImage3D(target, 0, 0, 0, layer, width, height, 1, GL2ES2.GL_RG, GL.GL_UNSIGNED_BYTE, bytes);
+        }
+        gl.glPixelStorei(GL.GL_UNPACK_ALIGNMENT, 4);
+    }
+
+    /** The byte UNORM8 stores for v in [0, 1]: round(255 v), clamped (GL reads it back as byte / 255). */
+    public static int toUnorm8(float v) {
+        return (int) Math.max(0, Math.min(255, Math.round(v * 255.0)));
     }
 
     @Override

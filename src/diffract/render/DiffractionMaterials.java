@@ -85,6 +85,9 @@ public final class DiffractionMaterials {
             m.setTexture("taylorTerms", textures.terms())
                     .setTexture("uniformNodeTable", textures.uniformNodeTable())
                     .setTexture("spectralTable", textures.spectralTable());
+            if (textures.normalisedTerms()) {
+                m.setTexture("termExtrema", textures.termExtrema());
+            }
         }
         PhaseCentres centres = textures.phaseCentres();
         if (centres != null) { // taylor_centred.glsl

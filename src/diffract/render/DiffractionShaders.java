@@ -126,10 +126,16 @@ public final class DiffractionShaders {
                 definesFor(settings, textures, target, monochromatic, pigmentation));
     }
 
+    /** Defines for these textures: their order, radii, expansion and, for 8-bit terms, {@code TERMS_UNORM8}. */
     private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures, Target target,
                                                   boolean monochromatic, boolean pigmentation) {
-        return defines(settings, textures.highestOrder(), textures.windowRadii(), textures.phaseCentres(), target,
-                monochromatic, pigmentation);
+        Map<String, String> defines = defines(settings, textures.highestOrder(), textures.windowRadii(),
+                textures.phaseCentres(), target, monochromatic, pigmentation);
+        if (textures.normalisedTerms()) {
+            // the term lookup de-normalises 8-bit [0, 1] terms with the per-term extrema (NormalisedTerms)
+            defines.put("TERMS_UNORM8", "1");
+        }
+        return defines;
     }
 
     /**

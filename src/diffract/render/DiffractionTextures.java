@@ -14,6 +14,7 @@ import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
 import diffract.util.Reporter;
+import diffract.util.UserInputException;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -24,7 +25,8 @@ import java.util.List;
  * <ul>
  *   <li>{@code taylorTerms}: DFT_0 .. DFT_N as a texture array, layer n = term n, texel (x = col, y = row) =
  *       (Re, Im), exactly the float32 values of {@link TaylorTerms} with RG32F (RG16F rounds them to half
- *       precision and flushes values below 6e-8 to 0: an option for memory, not for accuracy);</li>
+ *       precision and flushes values below 6e-8 to 0: an option for memory, not for accuracy; UNORM8 stores
+ *       the thesis' [0, 1]-normalised bytes of {@link NormalisedTerms}, de-normalised with {@code termExtrema});</li>
  *   <li>{@code uniformNodeTable}: per node of the uniform grid (FLSS, PQ, NMM's fallback) the normalised weights
  *       of {@link SpectralIntegrator#xyzWeights} and the node, (wx, wy, wz, lambda_nm);</li>
  *   <li>{@code spectralTable}: D65 x CIE 1931 at 1 nm over the CMF table's 360..830 nm, (S xbar, S ybar, S zbar, 0),
@@ -40,6 +42,7 @@ import java.util.List;
  */
 public final class DiffractionTextures {
     private final FloatTextureArray terms;
+    private final FloatTexture1D termExtrema;
     private final FloatTexture1D uniformNodeTable;
     private final FloatTexture1D spectralTable;
     private final double spectralTableFirstNm;
@@ -52,10 +55,11 @@ public final class DiffractionTextures {
     private final FloatTexture3D bakedTexture;
     private final PhaseCentres phaseCentres;
 
-    private DiffractionTextures(FloatTextureArray terms, FloatTexture1D uniformNodeTable, FloatTexture1D spectralTable,
-                                double spectralTableFirstNm, TaylorTerms source, BrdfSettings settings,
-                                int highestOrder, BakedTable baked, PhaseCentres phaseCentres) {
+    private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
+                                FloatTexture1D spectralTable, double spectralTableFirstNm, TaylorTerms source,
+                                BrdfSettings settings, int highestOrder, BakedTable baked, PhaseCentres phaseCentres) {
         this.terms = terms;
+        this.termExtrema = termExtrema;
         this.uniformNodeTable = uniformNodeTable;
         this.spectralTable = spectralTable;
         this.spectralTableFirstNm = spectralTableFirstNm;
@@ -82,14 +86,20 @@ public final class DiffractionTextures {
                     + terms.highestOrder());
         }
         int highestOrder = settings.highestOrderNeeded(terms.maxAbsHeightUm());
+        boolean normalised = precision == FloatTextureArray.Precision.UNORM8;
         List<float[]> layers = new ArrayList<>();
-        for (int n = 0; n <= highestOrder; n++) {
-            layers.add(terms.termData(n));
+        if (normalised) {
+            layers.addAll(NormalisedTerms.layers(terms, highestOrder));
+        } else {
+            for (int n = 0; n <= highestOrder; n++) {
+                layers.add(terms.termData(n));
+            }
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
         BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
-        return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
-                Cie1931.firstNm(), terms, settings, highestOrder, baked, null);
+        return new DiffractionTextures(termTexture, normalised ? NormalisedTerms.extremaTable(terms, highestOrder) : null,
+                buildUniformNodeTable(settings), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
+                baked, null);
     }
 
     /**
@@ -99,9 +109,13 @@ public final class DiffractionTextures {
      */
     public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings,
                                                      FloatTextureArray.Precision precision) {
+        if (precision == FloatTextureArray.Precision.UNORM8) {
+            throw new UserInputException("8-bit terms (rg8) hold the thesis' series around 0 only; this patch needs "
+                    + "the phase-centred expansion: use --texture-format rg32f or rg16f");
+        }
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
-        return new DiffractionTextures(termTexture, buildUniformNodeTable(settings), buildSpectralTable(),
+        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings), buildSpectralTable(),
                 Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null, terms.centres());
     }
 
@@ -148,6 +162,16 @@ public final class DiffractionTextures {
 
     public FloatTextureArray terms() {
         return terms;
+    }
+
+    /** Whether the terms are stored [0, 1]-normalised at 8 bits (then {@link #termExtrema()} de-normalises them). */
+    public boolean normalisedTerms() {
+        return termExtrema != null;
+    }
+
+    /** Per term (min Re, min Im, range Re, range Im) of {@link NormalisedTerms}; null unless normalised. */
+    public FloatTexture1D termExtrema() {
+        return termExtrema;
     }
 
     public FloatTexture1D uniformNodeTable() {

@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Regenerates the README's "Speed versus accuracy" from the repository root: bash docs/bench.sh
+# The full sweep (476 configurations) takes about 15 minutes on 2 cores with Mesa llvmpipe; OpenGL 3.3 is needed
+# (without a display the launcher runs it under xvfb-run). Reference maps are cached in out/bench/reference-maps.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./diffract bench -o out/bench
+mkdir -p docs/images docs/bench
+cp out/bench/pareto.png docs/images/bench-pareto.png
+cp out/bench/results.csv out/bench/results.md out/bench/pareto.md out/bench/targets.md out/bench/machine.txt docs/bench/
+cat out/bench/targets.md out/bench/pareto.md
+

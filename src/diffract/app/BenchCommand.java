@@ -1,0 +1,215 @@
+package diffract.app;
+
+import diffract.bench.BenchConfig;
+import diffract.bench.BenchPatch;
+import diffract.bench.BenchResult;
+import diffract.bench.BenchRunner;
+import diffract.bench.ParetoPlot;
+import diffract.bench.ReferenceMaps;
+import diffract.bench.ResultsTable;
+import diffract.bench.SweepPlan;
+import diffract.bench.Targets;
+import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.GLInfo;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+import diffract.optics.Variant;
+import diffract.render.TermFormats;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+
+/**
+ * {@code diffract bench}: sweeps GPU configurations (variant, Taylor terms, lambda step, window radius, term texture
+ * format, image size, patch), measures each one's median GPU time per frame and its CIEDE2000 error against the
+ * CPU reference, and writes {@code results.csv}, {@code results.md}, {@code pareto.md}, {@code targets.md},
+ * {@code machine.txt} and the Pareto plot {@code pareto.png} into the output folder.
+ */
+@Command(name = "bench", mixinStandardHelpOptions = true,
+        description = "Measure the speed/accuracy trade of the GPU variants: per configuration the median GPU time "
+                + "per frame (GL timer queries) and the CIEDE2000 error of its BRDF maps (theta_i 0, 45, 75 degrees) "
+                + "against the CPU reference (exact model, 1 nm), over the lit pixels. Writes results.csv, results.md, "
+                + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
+                + "maps are cached there.")
+final class BenchCommand implements Callable<Integer> {
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
+    Path outputDir;
+
+    @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
+    boolean quick;
+
+    @Option(names = "--patches", defaultValue = "blazed,elaphe-like,xenopeltis-like,tall", paramLabel = "LIST",
+            description = "Patches (default ${DEFAULT-VALUE}).")
+    String patches;
+
+    @Option(names = "--variants", paramLabel = "LIST", description = "Variants (default: every GPU variant).")
+    String variants;
+
+    @Option(names = "--size", defaultValue = "64", paramLabel = "S", description = "Map size of the sweep (default ${DEFAULT-VALUE}).")
+    int sizePx;
+
+    @Option(names = "--large-size", defaultValue = "128", paramLabel = "S",
+            description = "The full sweep also measures the thesis' configuration at this size (default ${DEFAULT-VALUE}).")
+    int largeSizePx;
+
+    @Option(names = "--terms", paramLabel = "LIST", description = "Own grid: highest Taylor orders N (default 30 when another grid option is given).")
+    String termsList;
+
+    @Option(names = "--lambda-steps", paramLabel = "LIST", description = "Own grid: wavelength steps in nm (default 5).")
+    String stepsList;
+
+    @Option(names = "--window-radii", paramLabel = "LIST", description = "Own grid: window radii R (default 1).")
+    String radiiList;
+
+    @Option(names = "--texture-formats", paramLabel = "LIST", description = "Own grid: rg32f, rg16f, rg8 (default rg32f).")
+    String formatsList;
+
+    @Option(names = "--sizes", paramLabel = "LIST", description = "Own grid: map sizes (default --size).")
+    String sizesList;
+
+    @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
+            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the "
+                    + "patches are about one coherence length wide and their orders a few map pixels; at the thesis' "
+                    + "65 um they are far thinner than a pixel and the maps point-sample them).")
+    double coherenceLengthUm;
+
+    @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
+    double lambdaMinNm;
+
+    @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
+    double lambdaMaxNm;
+
+    @Override
+    public Integer call() throws IOException {
+        if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
+            throw new UserInputException("map sizes must be between 8 and 1024 pixels");
+        }
+        BrdfSettings thesis = BrdfSettings.thesis(Variant.FLSS);
+        // the thesis' settings except the wavelength range and the coherence length asked for
+        BrdfSettings base = new BrdfSettings(thesis.variant(), thesis.highestOrder(), thesis.windowRadius(), lambdaMinNm,
+                lambdaMaxNm, thesis.lambdaStepNm(), coherenceLengthUm / 4.0, thesis.refractiveIndex(), 0);
+        Map<String, BenchPatch> patchMap = new LinkedHashMap<>();
+        for (BenchPatch p : BenchPatch.named(SweepPlan.list(patches))) {
+            patchMap.put(p.name(), p);
+        }
+        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants()
+                : SweepPlan.list(variants).stream().map(Variant::parse).toList();
+        if (variantList.contains(Variant.REFERENCE)) {
+            throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
+        }
+        List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
+        DisplayCheck.requireDisplay();
+        Files.createDirectories(outputDir);
+        Reporter reporter = Reporter.STDERR;
+        reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
+                        + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
+                coherenceLengthUm, outputDir));
+        ReferenceMaps references = new ReferenceMaps(outputDir.resolve("reference-maps"), reporter);
+        BenchRunner runner = new BenchRunner(references, reporter).keepMapsOf(Targets::needsMaps);
+        Path csv = outputDir.resolve("results.csv");
+        List<BenchResult> done = new ArrayList<>();
+        long start = System.nanoTime();
+        List<BenchResult> results = runner.run(configs, patchMap, base, r -> {
+            done.add(r);
+            try {
+                ResultsTable.writeCsv(csv, done); // after every configuration: an interrupted run keeps its rows
+            } catch (IOException e) {
+                throw new UserInputException("cannot write " + csv + ": " + e.getMessage(), e);
+            }
+        });
+        ResultsTable.writeCsv(csv, results);
+        Files.writeString(outputDir.resolve("results.md"), ResultsTable.markdown(results), StandardCharsets.UTF_8);
+        Files.writeString(outputDir.resolve("pareto.md"), ResultsTable.markdown(results, true), StandardCharsets.UTF_8);
+        List<Targets.Outcome> outcomes = Targets.of(results, sizePx, runner::maps,
+                (patch, size) -> exposures(references, patchMap.get(patch), size, base));
+        Files.writeString(outputDir.resolve("targets.md"), Targets.markdown(outcomes), StandardCharsets.UTF_8);
+        String machine = machine(runner.glInfo());
+        Files.writeString(outputDir.resolve("machine.txt"), machine + "\n", StandardCharsets.UTF_8);
+        Path plot = outputDir.resolve("pareto.png");
+        ParetoPlot.write(plot, results, "diffract bench: error against GPU time per frame (" + sizePx + "x" + sizePx
+                + ", " + machineShort(runner.glInfo()) + ")");
+        System.out.printf(Locale.ROOT, "bench: %d configurations in %.0f s on %s%nwrote %s, %s, %s, %s%n%s",
+                results.size(), (System.nanoTime() - start) * 1e-9, machine, csv, outputDir.resolve("results.md"),
+                outputDir.resolve("targets.md"), plot, Targets.markdown(outcomes));
+        return 0;
+    }
+
+    private boolean isCustom() {
+        return termsList != null || stepsList != null || radiiList != null || formatsList != null || sizesList != null;
+    }
+
+    private List<SweepPlan.Point> points() {
+        if (isCustom()) {
+            if (quick) {
+                throw new UserInputException("--quick has its own grid: leave out --terms, --lambda-steps, "
+                        + "--window-radii, --texture-formats and --sizes, or --quick");
+            }
+            SweepPlan.Point t = SweepPlan.thesis(sizePx);
+            List<String> formats = formatsList == null ? List.of(t.textureFormat()) : SweepPlan.list(formatsList);
+            formats.forEach(TermFormats::parse); // fails early on an unknown name
+            return SweepPlan.grid(ints(termsList, t.terms()), doubles(stepsList, t.lambdaStepNm()),
+                    ints(radiiList, t.windowRadius()), formats, ints(sizesList, sizePx));
+        }
+        return quick ? SweepPlan.quick(sizePx) : SweepPlan.full(sizePx, largeSizePx);
+    }
+
+    private static List<Integer> ints(String list, int fallback) {
+        try {
+            return list == null ? List.of(fallback) : SweepPlan.list(list).stream().map(Integer::parseInt).toList();
+        } catch (NumberFormatException e) {
+            throw new UserInputException("not a list of integers: '" + list + "'");
+        }
+    }
+
+    private static List<Double> doubles(String list, double fallback) {
+        try {
+            return list == null ? List.of(fallback) : SweepPlan.list(list).stream().map(Double::parseDouble).toList();
+        } catch (NumberFormatException e) {
+            throw new UserInputException("not a list of numbers: '" + list + "'");
+        }
+    }
+
+    private static List<Double> exposures(ReferenceMaps references, BenchPatch patch, int size, BrdfSettings base) {
+        List<Double> e = new ArrayList<>();
+        for (double theta : BenchRunner.LIGHTS_DEG) {
+            e.add(BenchRunner.exposure(references.xyz(patch, theta, size, base),
+                    Direction.fromSphericalDeg(theta, patch.phiIDeg()), size));
+        }
+        return e;
+    }
+
+    /** CPU model and cores (/proc/cpuinfo) and the GL renderer. */
+    static String machine(GLInfo gl) {
+        return Runtime.getRuntime().availableProcessors() + " CPU cores (" + cpuModel() + "), "
+                + (gl == null ? "no GL" : gl.renderer() + ", OpenGL " + gl.version());
+    }
+
+    private static String machineShort(GLInfo gl) {
+        return gl == null ? "no GL" : gl.renderer();
+    }
+
+    private static String cpuModel() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/cpuinfo"))) {
+                if (line.startsWith("model name")) {
+                    return line.substring(line.indexOf(':') + 1).trim();
+                }
+            }
+        } catch (IOException | RuntimeException e) {
+            // not Linux: the model stays unknown
+        }
+        return "unknown CPU";
+    }
+}

@@ -1,0 +1,164 @@
+package diffract.bench;
+
+import diffract.app.AutoExposure;
+import diffract.jrtr.GLInfo;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+import diffract.optics.TaylorTerms;
+import diffract.precompute.Precomputation;
+import diffract.render.GpuBrdfMap;
+import diffract.util.Reporter;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.function.Consumer;
+import java.util.function.Predicate;
+
+/**
+ * Measures configurations on the GPU: per configuration one {@link GpuBrdfMap}, the colour maps of the lights
+ * {@link #LIGHTS_DEG} (error against the cached CPU reference, {@link MapError}) and the median GPU time of
+ * {@link #TIMED_FRAMES} frames at theta_i = {@link #TIMED_LIGHT_DEG} (GL timer queries; the error maps before it
+ * compile the shader and upload the textures, so no warm-up frame is needed). Prints one line per configuration
+ * with its index, the count and the remaining time, estimated from the shader work of the configurations left.
+ */
+public final class BenchRunner {
+    /** theta_i of the measured maps: normal, middle and grazing incidence (in the plane of the patch's period). */
+    public static final List<Double> LIGHTS_DEG = List.of(0.0, 45.0, 75.0);
+    public static final double TIMED_LIGHT_DEG = 45;
+    public static final int TIMED_FRAMES = 10;
+
+    private final ReferenceMaps references;
+    private final Reporter reporter;
+    private final Map<String, TaylorTerms> terms = new HashMap<>();
+    private final Map<String, List<float[]>> keptMaps = new HashMap<>();
+    private Predicate<BenchConfig> keepMaps = c -> false;
+    private GLInfo glInfo;
+
+    private final List<Double> lightsDeg;
+
+    public BenchRunner(ReferenceMaps references, Reporter reporter) {
+        this(references, reporter, LIGHTS_DEG);
+    }
+
+    /** With other lights (theta_i in degrees) than {@link #LIGHTS_DEG}, e.g. for a held-out check. */
+    public BenchRunner(ReferenceMaps references, Reporter reporter, List<Double> lightsDeg) {
+        this.references = references;
+        this.reporter = reporter;
+        this.lightsDeg = List.copyOf(lightsDeg);
+    }
+
+    /** Measures every configuration in order; {@code sink} receives each result as soon as it is measured. */
+    public List<BenchResult> run(List<BenchConfig> configs, Map<String, BenchPatch> patches, BrdfSettings base,
+                                 Consumer<BenchResult> sink) {
+        prepare(configs, patches, base);
+        List<BenchResult> results = new ArrayList<>();
+        double totalWork = 0;
+        for (BenchConfig c : configs) {
+            totalWork += c.workUnits();
+        }
+        long start = System.nanoTime();
+        double doneWork = 0;
+        double frameMsSum = 0;
+        for (int i = 0; i < configs.size(); i++) {
+            BenchConfig c = configs.get(i);
+            BenchResult r = measure(c, patches.get(c.patch()), base);
+            results.add(r);
+            sink.accept(r);
+            doneWork += c.workUnits();
+            frameMsSum += r.msPerFrame();
+            double elapsedS = (System.nanoTime() - start) * 1e-9;
+            reporter.info(String.format(Locale.ROOT, "[%d/%d] %-16s %-4s N=%-2d step %-2s nm R=%d %-5s %dpx: "
+                            + "%8.2f ms/frame, CIEDE2000 mean %.3f p95 %.3f (%d lit px)  elapsed %s, ETA %s",
+                    i + 1, configs.size(), c.patch(), c.settings().variant().cliName(), c.settings().highestOrder(),
+                    Csv.number(c.settings().lambdaStepNm()), c.settings().windowRadius(), c.textureFormat(),
+                    c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(), r.error().litPixels(),
+                    duration(elapsedS), duration(eta(elapsedS, i + 1, doneWork, frameMsSum, configs.size(),
+                            totalWork))));
+        }
+        return results;
+    }
+
+    /**
+     * Remaining seconds: a fixed cost per configuration (context, compilation, readback) plus frame time
+     * proportional to the shader work, both fitted to the configurations done so far.
+     */
+    double eta(double elapsedS, int done, double doneWork, double frameMsSum, int total, double totalWork) {
+        int framesPerConfig = lightsDeg.size() + TIMED_FRAMES;
+        double frameS = framesPerConfig * frameMsSum * 1e-3;
+        double perConfigS = Math.max(0, elapsedS - frameS) / done;
+        double perWorkS = doneWork > 0 ? frameS / doneWork : 0;
+        return perConfigS * (total - done) + perWorkS * (totalWork - doneWork);
+    }
+
+    static String duration(double seconds) {
+        long s = Math.round(seconds);
+        return s >= 60 ? String.format(Locale.ROOT, "%dm%02ds", s / 60, s % 60) : s + "s";
+    }
+
+    /** Keep the GPU maps of the configurations that match (for comparisons between variants). */
+    public BenchRunner keepMapsOf(Predicate<BenchConfig> which) {
+        this.keepMaps = which;
+        return this;
+    }
+
+    /** The kept maps of a configuration, one per light; null when not kept. */
+    public List<float[]> maps(BenchConfig c) {
+        return keptMaps.get(c.key());
+    }
+
+    /** The GL renderer the last configuration ran on (null before the first). */
+    public GLInfo glInfo() {
+        return glInfo;
+    }
+
+    /** Terms to the highest order any configuration of a patch needs, and the reference maps, before timing. */
+    private void prepare(List<BenchConfig> configs, Map<String, BenchPatch> patches, BrdfSettings base) {
+        Map<String, Integer> highest = new HashMap<>();
+        for (BenchConfig c : configs) {
+            highest.merge(c.patch(), c.settings().highestOrder(), Math::max);
+            for (double theta : lightsDeg) {
+                references.xyz(patches.get(c.patch()), theta, c.sizePx(), base);
+            }
+        }
+        for (Map.Entry<String, Integer> e : highest.entrySet()) {
+            BenchPatch p = patches.get(e.getKey());
+            terms.put(e.getKey(), Precomputation.cached(new Precomputation.Request(p.field(), "bench:" + p.name(),
+                    null, e.getValue(), null, base.lambdaMinNm()), reporter));
+        }
+    }
+
+    private BenchResult measure(BenchConfig c, BenchPatch patch, BrdfSettings base) {
+        List<float[]> reference = new ArrayList<>();
+        List<float[]> variant = new ArrayList<>();
+        List<Double> exposures = new ArrayList<>();
+        double ms;
+        try (GpuBrdfMap map = new GpuBrdfMap(terms.get(c.patch()), c.settings(), c.precision())) {
+            for (double theta : lightsDeg) {
+                Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
+                float[] ref = references.xyz(patch, theta, c.sizePx(), base);
+                reference.add(ref);
+                exposures.add(exposure(ref, wi, c.sizePx()));
+                variant.add(map.xyz(wi, c.sizePx()));
+            }
+            ms = map.medianMsPerFrame(Direction.fromSphericalDeg(TIMED_LIGHT_DEG, patch.phiIDeg()), c.sizePx(), 0,
+                    TIMED_FRAMES);
+            glInfo = map.info();
+        }
+        if (keepMaps.test(c)) {
+            keptMaps.put(c.key(), variant);
+        }
+        return new BenchResult(c, ms, MapError.pooled(reference, variant, exposures, c.sizePx()));
+    }
+
+    /** The display exposure of a light: AutoExposure of the reference map's Y (brightest diffracted pixel = 1). */
+    public static double exposure(float[] referenceXyz, Direction wi, int size) {
+        float[] y = new float[size * size];
+        for (int p = 0; p < y.length; p++) {
+            y[p] = referenceXyz[3 * p + 1];
+        }
+        return AutoExposure.of(y, size, -wi.x(), -wi.y());
+    }
+}

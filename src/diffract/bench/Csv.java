@@ -1,0 +1,20 @@
+package diffract.bench;
+
+import java.util.Locale;
+
+/** Number formatting shared by the bench's CSV, keys and tables. */
+final class Csv {
+    private Csv() {
+    }
+
+    /** Integers without a decimal point, others with up to 6 significant digits; NaN as "nan". */
+    static String number(double v) {
+        if (Double.isNaN(v)) {
+            return "nan";
+        }
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) {
+            return Long.toString((long) v);
+        }
+        return String.format(Locale.ROOT, "%.6g", v).replaceAll("(\\.\\d*?)0+$", "$1").replaceAll("\\.$", "");
+    }
+}

@@ -1,0 +1,59 @@
+package diffract.bench;
+
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Direction;
+import diffract.optics.Variant;
+import diffract.util.ImageFiles;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * The CPU reference maps (exact model at 1 nm, {@link Variant#REFERENCE}) the bench measures against, cached as
+ * PFM files of XYZ under a folder, named by patch content hash, light, size and the settings that change the
+ * reference (wavelength range, coherence, refractive index), so reruns compute none of them again.
+ */
+public final class ReferenceMaps {
+    private final Path dir;
+    private final Reporter reporter;
+
+    public ReferenceMaps(Path dir, Reporter reporter) {
+        this.dir = dir;
+        this.reporter = reporter;
+    }
+
+    /** XYZ of the reference map (3 floats per pixel, rows from the top), from the cache or computed and cached. */
+    public float[] xyz(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
+        BrdfSettings reference = base.withVariant(Variant.REFERENCE);
+        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-c%s-n%s.pfm",
+                patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
+                sizePx, Csv.number(reference.lambdaMinNm()), Csv.number(reference.lambdaMaxNm()),
+                Csv.number(reference.sigmaSpatialUm()), Csv.number(reference.refractiveIndex())));
+        try {
+            if (Files.isRegularFile(file)) {
+                int[] whc = new int[3];
+                float[] xyz = ImageFiles.readPfm(file, whc);
+                if (whc[0] == sizePx && whc[1] == sizePx && whc[2] == 3) {
+                    return xyz;
+                }
+            }
+            long start = System.nanoTime();
+            DiffractionBrdf brdf = DiffractionBrdf.create(reference, patch.field(), null);
+            float[] xyz = BrdfMap.xyz(brdf, Direction.fromSphericalDeg(thetaIDeg, patch.phiIDeg()), sizePx,
+                    Reporter.SILENT);
+            Files.createDirectories(dir);
+            ImageFiles.writePfm(file, xyz, sizePx, sizePx, 3);
+            reporter.info(String.format(Locale.ROOT, "reference map %s, theta_i %s, %dx%d: %.1f s (cached in %s)",
+                    patch.name(), Csv.number(thetaIDeg), sizePx, sizePx, (System.nanoTime() - start) * 1e-9, file));
+            return xyz;
+        } catch (IOException e) {
+            throw new UserInputException("cannot cache reference maps in " + dir + ": " + e.getMessage(), e);
+        }
+    }
+}

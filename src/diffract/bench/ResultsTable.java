@@ -1,0 +1,131 @@
+package diffract.bench;
+
+import diffract.optics.BrdfSettings;
+import diffract.optics.Variant;
+import diffract.util.ImageFiles;
+import diffract.util.UserInputException;
+
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.stream.Collectors;
+
+/**
+ * The bench's results as {@code results.csv} (one row per configuration, read back for the calibration cache)
+ * and as a markdown table. deltaE_mean and deltaE_p95 are CIEDE2000 over the lit pixels of the three maps
+ * ({@link MapError}); deltaE_disk_mean over the whole unit disks; pareto says whether the row is on the Pareto
+ * front of (ms_per_frame, deltaE_mean) of its patch and map size (errors of different sizes are not comparable).
+ */
+public final class ResultsTable {
+    public static final List<String> COLUMNS = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
+            "texture_format", "width", "height", "ms_per_frame", "deltaE_mean", "deltaE_p95", "deltaE_disk_mean",
+            "lit_pixels", "coherence_length_um", "pareto");
+
+    private ResultsTable() {
+    }
+
+    public static String csvHeader() {
+        return String.join(",", COLUMNS);
+    }
+
+    public static String csvRow(BenchResult r, boolean onFront) {
+        BenchConfig c = r.config();
+        BrdfSettings s = c.settings();
+        return String.join(",", s.variant().cliName(), c.patch(), Integer.toString(s.highestOrder()),
+                Csv.number(s.lambdaStepNm()), Integer.toString(s.windowRadius()), c.textureFormat(),
+                Integer.toString(c.sizePx()), Integer.toString(c.sizePx()), Csv.number(r.msPerFrame()),
+                Csv.number(r.error().mean()), Csv.number(r.error().p95()), Csv.number(r.error().diskMean()),
+                Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront));
+    }
+
+    /** The rows on the Pareto front of one patch at one map size. */
+    public static List<BenchResult> front(List<BenchResult> results, String patch, int sizePx) {
+        List<BenchResult> ofPatch = results.stream()
+                .filter(r -> r.config().patch().equals(patch) && r.config().sizePx() == sizePx).toList();
+        return ParetoFront.of(ofPatch, BenchResult::msPerFrame, BenchResult::deltaEMean);
+    }
+
+    /** The rows on the front of their own patch and size. */
+    public static List<BenchResult> onAnyFront(List<BenchResult> results) {
+        List<BenchResult> onFront = new ArrayList<>();
+        results.stream().map(r -> r.config().patch()).distinct().forEach(p -> results.stream()
+                .map(r -> r.config().sizePx()).distinct().forEach(size -> onFront.addAll(front(results, p, size))));
+        return onFront;
+    }
+
+    /** The size most configurations were measured at (the sweep's; the others are single extra points). */
+    public static int mainSize(List<BenchResult> results) {
+        return results.stream().collect(Collectors.groupingBy(r -> r.config().sizePx(), Collectors.counting()))
+                .entrySet().stream().max(Map.Entry.comparingByValue()).map(Map.Entry::getKey).orElse(0);
+    }
+
+    public static void writeCsv(Path file, List<BenchResult> results) throws IOException {
+        List<BenchResult> onFront = onAnyFront(results);
+        ImageFiles.writeAtomically(file, raw -> {
+            PrintWriter out = new PrintWriter(new OutputStreamWriter(raw, StandardCharsets.UTF_8));
+            out.println(csvHeader());
+            for (BenchResult r : results) {
+                out.println(csvRow(r, onFront.contains(r)));
+            }
+            out.flush();
+        });
+    }
+
+    /** Reads a results.csv written by {@link #writeCsv}; the settings not in the file come from {@code base}. */
+    public static List<BenchResult> readCsv(Path file, BrdfSettings base) throws IOException {
+        List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        if (lines.isEmpty() || !lines.get(0).equals(csvHeader())) {
+            throw new UserInputException(file + " is not a results.csv of this version (header differs)");
+        }
+        List<BenchResult> results = new ArrayList<>();
+        for (String line : lines.subList(1, lines.size())) {
+            String[] f = line.split(",", -1);
+            BrdfSettings s = base.withVariant(Variant.parse(f[0])).withHighestOrder(Integer.parseInt(f[2]))
+                    .withLambdaStepNm(Double.parseDouble(f[3])).withWindowRadius(Integer.parseInt(f[4]));
+            BenchConfig c = new BenchConfig(f[1], s, f[5], Integer.parseInt(f[6]));
+            results.add(new BenchResult(c, Double.parseDouble(f[8]), new MapError(parse(f[9]), parse(f[10]),
+                    parse(f[11]), Integer.parseInt(f[12]))));
+        }
+        return results;
+    }
+
+    private static double parse(String text) {
+        return text.equals("nan") ? Double.NaN : Double.parseDouble(text);
+    }
+
+    /** A markdown table, by patch, with a column that marks the Pareto-front rows. */
+    public static String markdown(List<BenchResult> results) {
+        return markdown(results, false);
+    }
+
+    /** @param frontOnly only the rows on the Pareto front of their patch and size */
+    public static String markdown(List<BenchResult> results, boolean frontOnly) {
+        List<BenchResult> onFront = onAnyFront(results);
+        StringBuilder b = new StringBuilder();
+        b.append("| patch | variant | N | step nm | R | format | size | ms/frame | CIEDE2000 mean | p95 | disk mean |"
+                + " Pareto |\n");
+        b.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        List<String> patches = results.stream().map(r -> r.config().patch()).distinct().toList();
+        for (String patch : patches) {
+            for (BenchResult r : results) {
+                if (!r.config().patch().equals(patch) || frontOnly && !onFront.contains(r)) {
+                    continue;
+                }
+                BenchConfig c = r.config();
+                BrdfSettings s = c.settings();
+                b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %d | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
+                        patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), s.windowRadius(),
+                        c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
+                        r.error().diskMean(), onFront.contains(r) ? "**yes**" : ""));
+            }
+        }
+        return b.toString();
+    }
+}

@@ -1,0 +1,155 @@
+package diffract.bench;
+
+import diffract.optics.BrdfSettings;
+import diffract.optics.Variant;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.EnumSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * Which configurations the bench measures, table-driven: every {@link Variant} except the CPU-only reference and
+ * the app-level {@code AUTO} is swept over the same points, and {@link #IGNORED_AXES} says which axes a variant
+ * ignores (their value stays the thesis' and duplicates are dropped). A new variant needs no line at all, or one
+ * in that table.
+ */
+public final class SweepPlan {
+    /** The axes of a configuration. */
+    public enum Axis { TERMS, LAMBDA_STEP, WINDOW_RADIUS, TEXTURE_FORMAT, SIZE }
+
+    /** Variants that are not GPU shaders of their own: the CPU yardstick and the app-level automatic choice. */
+    static final Set<String> NOT_SWEPT = Set.of("REFERENCE", "AUTO");
+
+    /**
+     * Axes a variant does not use. NMM's wavelengths come from the patch (lambda = u L / m, 003 sec. 1.5.2); its
+     * lambda step only serves the fallback near the specular direction and stays at the thesis' 5 nm.
+     */
+    static final Map<Variant, Set<Axis>> IGNORED_AXES = Map.of(Variant.NMM, EnumSet.of(Axis.LAMBDA_STEP));
+
+    /** The thesis' storage: float32 terms. */
+    public static final String EXACT_FORMAT = "rg32f";
+
+    /**
+     * One point of the sweep.
+     *
+     * @param terms the highest Taylor order N (the thesis' "30 terms" is N = 30, as {@code --terms})
+     */
+    public record Point(int terms, double lambdaStepNm, int windowRadius, String textureFormat, int sizePx) {
+        Point with(int n, double step, int r) {
+            return new Point(n, step, r, textureFormat, sizePx);
+        }
+
+        Point format(String f) {
+            return new Point(terms, lambdaStepNm, windowRadius, f, sizePx);
+        }
+
+        Point size(int s) {
+            return new Point(terms, lambdaStepNm, windowRadius, textureFormat, s);
+        }
+    }
+
+    private SweepPlan() {
+    }
+
+    /** The variants the bench sweeps, in enum order. */
+    public static List<Variant> sweptVariants() {
+        List<Variant> variants = new ArrayList<>();
+        for (Variant v : Variant.values()) {
+            if (!NOT_SWEPT.contains(v.name())) {
+                variants.add(v);
+            }
+        }
+        return variants;
+    }
+
+    /** The thesis' point: 30 terms, 5 nm, a 3 x 3 window, float32 terms (001 implementation notes). */
+    public static Point thesis(int sizePx) {
+        return new Point(30, 5, 1, EXACT_FORMAT, sizePx);
+    }
+
+    /**
+     * {@code --quick}: the thesis' point, each axis alone one to three steps cheaper, both cheaper term formats,
+     * and cheap corners where several savings combine (where an accuracy target's cheapest choice usually lies).
+     */
+    public static List<Point> quick(int sizePx) {
+        Point t = thesis(sizePx);
+        return List.of(t,
+                t.with(16, 5, 1), t.with(8, 5, 1), t.with(4, 5, 1), t.with(30, 10, 1), t.with(30, 25, 1),
+                t.with(30, 5, 0), t.format("rg16f"), t.format("rg8"),
+                t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 25, 1), t.with(8, 10, 0), t.with(8, 10, 1).format("rg8"));
+    }
+
+    /**
+     * The full sweep: N x step x R over {4, 6, 8, 16, 30} x {5, 10, 15, 25} x {0, 1} with float32 terms; at the
+     * thesis' point the 1 nm step, a 5 x 5 window and N = 40; the three term formats at three points; and the
+     * thesis' point at {@code largeSizePx}.
+     */
+    public static List<Point> full(int sizePx, int largeSizePx) {
+        Point t = thesis(sizePx);
+        List<Point> points = new ArrayList<>(grid(List.of(4, 6, 8, 16, 30), List.of(5.0, 10.0, 15.0, 25.0), List.of(0, 1),
+                List.of(EXACT_FORMAT), List.of(sizePx)));
+        points.add(t.with(30, 1, 1));
+        points.add(t.with(30, 5, 2));
+        points.add(t.with(40, 5, 1));
+        for (Point p : List.of(t, t.with(8, 10, 1), t.with(8, 10, 0))) {
+            points.add(p.format("rg16f"));
+            points.add(p.format("rg8"));
+        }
+        points.add(t.size(largeSizePx));
+        return points;
+    }
+
+    /** Every combination of the given values. */
+    public static List<Point> grid(List<Integer> terms, List<Double> stepsNm, List<Integer> radii, List<String> formats,
+                                   List<Integer> sizes) {
+        List<Point> points = new ArrayList<>();
+        for (int size : sizes) {
+            for (String f : formats) {
+                for (int n : terms) {
+                    for (double step : stepsNm) {
+                        for (int r : radii) {
+                            points.add(new Point(n, step, r, f, size));
+                        }
+                    }
+                }
+            }
+        }
+        return points;
+    }
+
+    /**
+     * The configurations: every patch x variant x point, with the axes a variant ignores reset to the thesis'
+     * value and duplicates dropped (first occurrence kept, order preserved).
+     *
+     * @param base the settings that are not swept (wavelength range, coherence, refractive index)
+     */
+    public static List<BenchConfig> configs(List<String> patches, List<Variant> variants, List<Point> points,
+                                            BrdfSettings base) {
+        Map<String, BenchConfig> unique = new LinkedHashMap<>();
+        for (String patch : patches) {
+            for (Variant v : variants) {
+                Set<Axis> ignored = IGNORED_AXES.getOrDefault(v, EnumSet.noneOf(Axis.class));
+                Point thesis = thesis(0);
+                for (Point p : points) {
+                    BrdfSettings s = base.withVariant(v)
+                            .withHighestOrder(ignored.contains(Axis.TERMS) ? thesis.terms() : p.terms())
+                            .withLambdaStepNm(ignored.contains(Axis.LAMBDA_STEP) ? thesis.lambdaStepNm() : p.lambdaStepNm())
+                            .withWindowRadius(ignored.contains(Axis.WINDOW_RADIUS) ? thesis.windowRadius() : p.windowRadius());
+                    String format = ignored.contains(Axis.TEXTURE_FORMAT) ? EXACT_FORMAT : p.textureFormat();
+                    BenchConfig c = new BenchConfig(patch, s, format, p.sizePx());
+                    unique.putIfAbsent(c.key(), c);
+                }
+            }
+        }
+        return new ArrayList<>(unique.values());
+    }
+
+    /** Parses "a,b,c" into a list, for the command's axis options. */
+    public static List<String> list(String commaSeparated) {
+        return Arrays.stream(commaSeparated.split(",")).map(String::trim).filter(s -> !s.isEmpty()).toList();
+    }
+}

@@ -1,0 +1,73 @@
+package diffract.app;
+
+import diffract.bench.ResultsTable;
+import diffract.jrtr.DisplayCheck;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** {@code diffract bench} on a tiny sweep: the files, the CSV's columns and one row per configuration. */
+class BenchCommandTest {
+    @Test
+    void aTinySweepWritesOneCsvRowPerConfigurationAndThePlot(@TempDir Path dir) throws Exception {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+        Path out = dir.resolve("bench");
+        // flss: 2 orders x 2 formats = 4; nmm ignores the step, same 4; 24 px maps keep it to seconds
+        int code = Main.execute("bench", "--patches", "blazed", "--variants", "flss,nmm", "--terms", "4,8",
+                "--lambda-steps", "25", "--window-radii", "1", "--texture-formats", "rg32f,rg8", "--size", "24",
+                "-o", out.toString());
+        assertEquals(0, code);
+        List<String> lines = Files.readAllLines(out.resolve("results.csv"));
+        List<String> required = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
+                "texture_format", "width", "height", "ms_per_frame", "deltaE_mean", "deltaE_p95");
+        List<String> header = List.of(lines.get(0).split(","));
+        assertTrue(header.containsAll(required), "header " + header);
+        assertEquals(ResultsTable.COLUMNS, header);
+        assertEquals(1 + 8, lines.size(), String.join("\n", lines));
+        for (String line : lines.subList(1, lines.size())) {
+            String[] f = line.split(",", -1);
+            assertEquals(header.size(), f.length, line);
+            assertEquals("blazed", f[header.indexOf("patch")]);
+            assertEquals("24", f[header.indexOf("width")]);
+            double ms = Double.parseDouble(f[header.indexOf("ms_per_frame")]);
+            double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
+            double p95 = Double.parseDouble(f[header.indexOf("deltaE_p95")]);
+            assertTrue(ms > 0 && mean >= 0 && p95 >= 0 && Double.isFinite(mean), line);
+        }
+        assertEquals(4, lines.stream().filter(l -> l.startsWith("nmm,")).count());
+        assertEquals(2, lines.stream().filter(l -> l.contains(",rg8,")).filter(l -> l.startsWith("flss,")).count());
+        assertTrue(Files.size(out.resolve("pareto.png")) > 1000);
+        assertTrue(Files.readString(out.resolve("pareto.md")).contains("**yes**"));
+        assertTrue(Files.readString(out.resolve("results.md")).contains("| blazed | flss | 8 | 25 | 1 | rg8 | 24 |"));
+        assertTrue(Files.readString(out.resolve("machine.txt")).contains("CPU cores"));
+        assertTrue(Files.list(out.resolve("reference-maps")).count() == 3, "one cached reference map per light");
+    }
+
+    /** --variant auto needs its target, and the target needs auto: one line, exit code 2, before any work. */
+    @Test
+    void autoAndItsTargetComeTogether(@TempDir Path dir) {
+        String patch = dir.resolve("none.gsf").toString(); // never read: the options are checked first
+        Object[] noTarget = CliTest.run("brdfmap", "--patch", patch, "--theta-i", "10", "--variant", "auto",
+                "-o", dir.resolve("a.png").toString());
+        assertEquals(2, noTarget[0]);
+        assertTrue(((String) noTarget[2]).contains("--max-delta-e"), (String) noTarget[2]);
+        Object[] noAuto = CliTest.run("brdfmap", "--patch", patch, "--theta-i", "10", "--variant", "flss",
+                "--max-delta-e", "2", "-o", dir.resolve("a.png").toString());
+        assertEquals(2, noAuto[0]);
+        assertTrue(((String) noAuto[2]).contains("--variant auto"), (String) noAuto[2]);
+    }
+
+    @Test
+    void refusesTheReferenceAndUnknownFormatsWithExitCode2(@TempDir Path dir) {
+        assertEquals(2, Main.execute("bench", "--variants", "reference", "-o", dir.toString()));
+        assertEquals(2, Main.execute("bench", "--texture-formats", "rg4", "-o", dir.toString()));
+        assertEquals(2, Main.execute("bench", "--quick", "--terms", "8", "-o", dir.toString()));
+    }
+}

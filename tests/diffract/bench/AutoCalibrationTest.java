@@ -1,0 +1,100 @@
+package diffract.bench;
+
+import diffract.jrtr.DisplayCheck;
+import diffract.optics.BrdfSettings;
+import diffract.optics.HeightField;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.Variant;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The auto variant on a measured calibration: a small plan on a small blazed grating (d = 2.5 um, 0.13 um high,
+ * 80 x 16 pixels), 32 x 32 maps, a 10 um coherence length (orders a few pixels wide, so many pixels are lit).
+ */
+class AutoCalibrationTest {
+    static final HeightField GRATING = SyntheticPatches.blazed(2.5, 0.13, 20, 4, 16).meanSubtracted();
+    static final BrdfSettings BASE = new BrdfSettings(Variant.FLSS, 30, 1, 380, 780, 5, 2.5, 1.5, 0);
+    static final int SIZE = 32;
+    static final List<SweepPlan.Point> PLAN = List.of(SweepPlan.thesis(SIZE),
+            new SweepPlan.Point(4, 5, 1, "rg32f", SIZE), new SweepPlan.Point(30, 25, 1, "rg32f", SIZE),
+            new SweepPlan.Point(30, 5, 0, "rg32f", SIZE), new SweepPlan.Point(8, 10, 1, "rg8", SIZE));
+
+    @TempDir
+    static Path cache;
+    static List<BenchResult> calibration;
+
+    @BeforeAll
+    static void calibrate() {
+        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+        calibration = AutoCalibration.of(GRATING, 0, BASE, cache, Reporter.SILENT, PLAN);
+        calibration.forEach(r -> System.out.printf("calibration: %s: %.2f ms, CIEDE2000 %.3f%n",
+                AutoChoice.describe(r), r.msPerFrame(), r.deltaEMean()));
+    }
+
+    /**
+     * Held-out check: the choice for mean CIEDE2000 <= 2, measured afresh at lights it was not calibrated on
+     * (theta_i 30 and 60 degrees), still meets the target.
+     */
+    @Test
+    void theChoiceMeetsTheTargetAtHeldOutLights(@TempDir Path references) {
+        AutoChoice choice = AutoChoice.choose(calibration, 2.0).orElseThrow();
+        BenchRunner heldOut = new BenchRunner(new ReferenceMaps(references, Reporter.SILENT), Reporter.SILENT,
+                List.of(30.0, 60.0));
+        BenchConfig chosen = choice.chosen().config();
+        BenchResult check = heldOut.run(List.of(chosen), Map.of(chosen.patch(), new BenchPatch(chosen.patch(), GRATING, 0)),
+                BASE, r -> { }).get(0);
+        System.out.println(choice.explanation() + "\nheld out (theta_i 30, 60): CIEDE2000 " + check.deltaEMean());
+        assertTrue(check.error().litPixels() >= 20, "too few lit pixels: " + check.error().litPixels());
+        assertTrue(check.deltaEMean() <= 2.0, "held-out error " + check.deltaEMean() + " of " + choice.explanation());
+    }
+
+    /** Every swept variant is measured, once per distinct point (NMM ignores the step). */
+    @Test
+    void theCalibrationCoversEveryVariant() {
+        for (Variant v : SweepPlan.sweptVariants()) {
+            assertTrue(calibration.stream().anyMatch(r -> r.config().settings().variant() == v), v.toString());
+        }
+        assertEquals(5 + 4 + 5, calibration.size());
+    }
+
+    /** Targets from lax to strict: the chosen measured error never grows, the time never falls. */
+    @Test
+    void aStricterTargetNeverPicksALargerMeasuredError() {
+        double previousError = Double.POSITIVE_INFINITY;
+        double previousMs = 0;
+        for (double target : new double[] {100, 20, 10, 5, 3, 2, 1.5, 1, 0.5, 0.2, 0.1}) {
+            var choice = AutoChoice.choose(calibration, target);
+            if (choice.isEmpty()) {
+                continue;
+            }
+            assertTrue(choice.get().chosen().deltaEMean() <= Math.min(target, previousError), "target " + target);
+            assertTrue(choice.get().chosen().msPerFrame() >= previousMs, "target " + target);
+            previousError = choice.get().chosen().deltaEMean();
+            previousMs = choice.get().chosen().msPerFrame();
+        }
+    }
+
+    /** A second run with the same patch and settings reads the cache instead of measuring again. */
+    @Test
+    void aSecondRunReusesTheCalibration() {
+        Reporter.Collecting reporter = new Reporter.Collecting();
+        List<BenchResult> again = AutoCalibration.of(GRATING, 0, BASE, cache, reporter, PLAN);
+        assertTrue(reporter.infos().stream().anyMatch(s -> s.contains("reused")), reporter.infos().toString());
+        assertEquals(calibration.size(), again.size());
+        for (int i = 0; i < again.size(); i++) {
+            assertEquals(calibration.get(i).config().key(), again.get(i).config().key());
+            assertEquals(calibration.get(i).deltaEMean(), again.get(i).deltaEMean(), 1e-5 * calibration.get(i).deltaEMean());
+        }
+    }
+}
