@@ -104,7 +104,7 @@ final class BenchCommand implements Callable<Integer> {
         for (BenchPatch p : BenchPatch.named(SweepPlan.list(patches))) {
             patchMap.put(p.name(), p);
         }
-        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants()
+        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants(quick)
                 : SweepPlan.list(variants).stream().map(Variant::parse).toList();
         if (variantList.contains(Variant.REFERENCE)) {
             throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");

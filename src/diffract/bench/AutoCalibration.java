@@ -51,7 +51,7 @@ public final class AutoCalibration {
                 reporter.info("auto: calibration of this patch and settings reused from " + file);
                 return ResultsTable.readCsv(file, base);
             }
-            List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(), plan, base);
+            List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(true), plan, base);
             reporter.info("auto: calibrating on this patch (" + configs.size() + " configurations, once; cached in "
                     + file + ")");
             BenchRunner runner = new BenchRunner(new ReferenceMaps(cacheRoot.resolve("reference-maps"), reporter),

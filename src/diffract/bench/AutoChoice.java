@@ -51,11 +51,12 @@ public record AutoChoice(BenchResult chosen, Optional<BenchResult> cheaperReject
                 chosen.msPerFrame(), chosen.deltaEMean(), Csv.number(maxDeltaE), why);
     }
 
-    /** "flss, N = 16, 10 nm, R = 0, rg8". */
+    /** "flss, N = 16, 10 nm, R = 0, rg8", or with the early stop "flss, N = 30, 5 nm, R = auto, stop at 0.0001, rg32f". */
     public static String describe(BenchResult r) {
         BenchConfig c = r.config();
-        return String.format(Locale.ROOT, "%s, N = %d, %s nm, R = %d, %s", c.settings().variant().cliName(),
-                c.settings().highestOrder(), Csv.number(c.settings().lambdaStepNm()), c.settings().windowRadius(),
-                c.textureFormat());
+        double tolerance = c.settings().taylorTolerance();
+        return String.format(Locale.ROOT, "%s, N = %d, %s nm, R = %s, %s%s", c.settings().variant().cliName(),
+                c.settings().highestOrder(), Csv.number(c.settings().lambdaStepNm()), c.windowRadiusLabel(),
+                tolerance > 0 ? "stop at " + Csv.number(tolerance) + ", " : "", c.textureFormat());
     }
 }

@@ -13,11 +13,16 @@ import java.util.Locale;
  */
 public record BenchConfig(String patch, BrdfSettings settings, String textureFormat, int sizePx) {
 
-    /** A stable text key (patch, variant, N, step, R, format, size) for caches and duplicate removal. */
+    /** A stable text key (patch, variant, N, step, R, format, size, tolerance) for caches and duplicate removal. */
     public String key() {
-        return String.format(Locale.ROOT, "%s/%s/n%d/step%s/r%d/%s/%d", patch,
+        return String.format(Locale.ROOT, "%s/%s/n%d/step%s/r%s/%s/%d/tol%s", patch,
                 settings.variant().cliName(), settings.highestOrder(), Csv.number(settings.lambdaStepNm()),
-                settings.windowRadius(), textureFormat, sizePx);
+                windowRadiusLabel(), textureFormat, sizePx, Csv.number(settings.taylorTolerance()));
+    }
+
+    /** The window radius R, or "auto" when it follows sigma_f (WindowRadii.automatic). */
+    public String windowRadiusLabel() {
+        return settings.automaticWindowRadius() ? "auto" : Integer.toString(settings.windowRadius());
     }
 
     /**

@@ -70,10 +70,11 @@ public final class BenchRunner {
             doneWork += c.workUnits();
             frameMsSum += r.msPerFrame();
             double elapsedS = (System.nanoTime() - start) * 1e-9;
-            reporter.info(String.format(Locale.ROOT, "[%d/%d] %-16s %-4s N=%-2d step %-2s nm R=%d %-5s %dpx: "
+            reporter.info(String.format(Locale.ROOT, "[%d/%d] %-16s %-5s N=%-2d step %-2s nm R=%-4s tol %-6s %-5s %dpx: "
                             + "%8.2f ms/frame, CIEDE2000 mean %.3f p95 %.3f (%d lit px)  elapsed %s, ETA %s",
                     i + 1, configs.size(), c.patch(), c.settings().variant().cliName(), c.settings().highestOrder(),
-                    Csv.number(c.settings().lambdaStepNm()), c.settings().windowRadius(), c.textureFormat(),
+                    Csv.number(c.settings().lambdaStepNm()), c.windowRadiusLabel(), Csv.number(c.settings().taylorTolerance()),
+                    c.textureFormat(),
                     c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(), r.error().litPixels(),
                     duration(elapsedS), duration(eta(elapsedS, i + 1, doneWork, frameMsSum, configs.size(),
                             totalWork))));

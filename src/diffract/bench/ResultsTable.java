@@ -26,7 +26,7 @@ import java.util.stream.Collectors;
 public final class ResultsTable {
     public static final List<String> COLUMNS = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
             "texture_format", "width", "height", "ms_per_frame", "deltaE_mean", "deltaE_p95", "deltaE_disk_mean",
-            "lit_pixels", "coherence_length_um", "pareto");
+            "lit_pixels", "coherence_length_um", "pareto", "taylor_tolerance");
 
     private ResultsTable() {
     }
@@ -39,10 +39,11 @@ public final class ResultsTable {
         BenchConfig c = r.config();
         BrdfSettings s = c.settings();
         return String.join(",", s.variant().cliName(), c.patch(), Integer.toString(s.highestOrder()),
-                Csv.number(s.lambdaStepNm()), Integer.toString(s.windowRadius()), c.textureFormat(),
+                Csv.number(s.lambdaStepNm()), c.windowRadiusLabel(), c.textureFormat(),
                 Integer.toString(c.sizePx()), Integer.toString(c.sizePx()), Csv.number(r.msPerFrame()),
                 Csv.number(r.error().mean()), Csv.number(r.error().p95()), Csv.number(r.error().diskMean()),
-                Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront));
+                Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront),
+                Csv.number(s.taylorTolerance()));
     }
 
     /** The rows on the Pareto front of one patch at one map size. */
@@ -87,8 +88,11 @@ public final class ResultsTable {
         List<BenchResult> results = new ArrayList<>();
         for (String line : lines.subList(1, lines.size())) {
             String[] f = line.split(",", -1);
+            boolean automaticWindow = f[4].equals("auto");
             BrdfSettings s = base.withVariant(Variant.parse(f[0])).withHighestOrder(Integer.parseInt(f[2]))
-                    .withLambdaStepNm(Double.parseDouble(f[3])).withWindowRadius(Integer.parseInt(f[4]));
+                    .withLambdaStepNm(Double.parseDouble(f[3]))
+                    .withWindowRadius(automaticWindow ? base.windowRadius() : Integer.parseInt(f[4]))
+                    .withAutomaticWindowRadius(automaticWindow).withTaylorTolerance(Double.parseDouble(f[15]));
             BenchConfig c = new BenchConfig(f[1], s, f[5], Integer.parseInt(f[6]));
             results.add(new BenchResult(c, Double.parseDouble(f[8]), new MapError(parse(f[9]), parse(f[10]),
                     parse(f[11]), Integer.parseInt(f[12]))));
@@ -109,9 +113,9 @@ public final class ResultsTable {
     public static String markdown(List<BenchResult> results, boolean frontOnly) {
         List<BenchResult> onFront = onAnyFront(results);
         StringBuilder b = new StringBuilder();
-        b.append("| patch | variant | N | step nm | R | format | size | ms/frame | CIEDE2000 mean | p95 | disk mean |"
-                + " Pareto |\n");
-        b.append("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        b.append("| patch | variant | N | step nm | R | Taylor tolerance | format | size | ms/frame | CIEDE2000 mean | p95 |"
+                + " disk mean | Pareto |\n");
+        b.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         List<String> patches = results.stream().map(r -> r.config().patch()).distinct().toList();
         for (String patch : patches) {
             for (BenchResult r : results) {
@@ -120,9 +124,9 @@ public final class ResultsTable {
                 }
                 BenchConfig c = r.config();
                 BrdfSettings s = c.settings();
-                b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %d | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
-                        patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), s.windowRadius(),
-                        c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
+                b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %s | %s | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
+                        patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), c.windowRadiusLabel(),
+                        Csv.number(s.taylorTolerance()), c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
                         r.error().diskMean(), onFront.contains(r) ? "**yes**" : ""));
             }
         }

@@ -19,16 +19,30 @@ import java.util.Set;
  */
 public final class SweepPlan {
     /** The axes of a configuration. */
-    public enum Axis { TERMS, LAMBDA_STEP, WINDOW_RADIUS, TEXTURE_FORMAT, SIZE }
+    public enum Axis { TERMS, LAMBDA_STEP, WINDOW_RADIUS, TEXTURE_FORMAT, SIZE, LEAN }
 
     /** Variants that are not GPU shaders of their own: the CPU yardstick and the app-level automatic choice. */
     static final Set<String> NOT_SWEPT = Set.of("REFERENCE", "AUTO");
 
     /**
+     * Variants left out of {@code --quick} and of auto's calibration: the baked table first bakes, 30 to 70 s per
+     * patch on llvmpipe (docs/baked.md), which alone would exceed the quick sweep's budget of a few minutes.
+     */
+    static final Set<Variant> NOT_IN_QUICK = EnumSet.of(Variant.BAKED);
+
+    /**
+     * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (issue #5, part
+     * 2; docs/baked.md measures 1e-4 as invisible in CIEDE2000 at 17-40 % less work), with the automatic window.
+     */
+    public static final double LEAN_TAYLOR_TOLERANCE = 1e-4;
+
+    /**
      * Axes a variant does not use. NMM's wavelengths come from the patch (lambda = u L / m, 003 sec. 1.5.2); its
      * lambda step only serves the fallback near the specular direction and stays at the thesis' 5 nm.
      */
-    static final Map<Variant, Set<Axis>> IGNORED_AXES = Map.of(Variant.NMM, EnumSet.of(Axis.LAMBDA_STEP));
+    static final Map<Variant, Set<Axis>> IGNORED_AXES = Map.of(Variant.NMM, EnumSet.of(Axis.LAMBDA_STEP),
+            // the baked table tabulates FLSS at the thesis' point once per patch; its own grid is automatic
+            Variant.BAKED, EnumSet.of(Axis.TERMS, Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN));
 
     /** The thesis' storage: float32 terms. */
     public static final String EXACT_FORMAT = "rg32f";
@@ -37,29 +51,46 @@ public final class SweepPlan {
      * One point of the sweep.
      *
      * @param terms the highest Taylor order N (the thesis' "30 terms" is N = 30, as {@code --terms})
+     * @param lean  each lookup's Taylor loop stops at {@link #LEAN_TAYLOR_TOLERANCE} and the window radius follows
+     *              sigma_f ({@code windowRadius} then does not apply)
      */
-    public record Point(int terms, double lambdaStepNm, int windowRadius, String textureFormat, int sizePx) {
+    public record Point(int terms, double lambdaStepNm, int windowRadius, String textureFormat, int sizePx,
+                        boolean lean) {
+        public Point(int terms, double lambdaStepNm, int windowRadius, String textureFormat, int sizePx) {
+            this(terms, lambdaStepNm, windowRadius, textureFormat, sizePx, false);
+        }
+
         Point with(int n, double step, int r) {
-            return new Point(n, step, r, textureFormat, sizePx);
+            return new Point(n, step, r, textureFormat, sizePx, lean);
         }
 
         Point format(String f) {
-            return new Point(terms, lambdaStepNm, windowRadius, f, sizePx);
+            return new Point(terms, lambdaStepNm, windowRadius, f, sizePx, lean);
         }
 
         Point size(int s) {
-            return new Point(terms, lambdaStepNm, windowRadius, textureFormat, s);
+            return new Point(terms, lambdaStepNm, windowRadius, textureFormat, s, lean);
+        }
+
+        /** The same point modelling only what the patch requires: early stop and automatic window. */
+        Point asLean() {
+            return new Point(terms, lambdaStepNm, windowRadius, textureFormat, sizePx, true);
         }
     }
 
     private SweepPlan() {
     }
 
-    /** The variants the bench sweeps, in enum order. */
+    /** The variants the full sweep measures, in enum order. */
     public static List<Variant> sweptVariants() {
+        return sweptVariants(false);
+    }
+
+    /** The variants a sweep measures, in enum order; {@code quick} leaves out {@link #NOT_IN_QUICK}. */
+    public static List<Variant> sweptVariants(boolean quick) {
         List<Variant> variants = new ArrayList<>();
         for (Variant v : Variant.values()) {
-            if (!NOT_SWEPT.contains(v.name())) {
+            if (!NOT_SWEPT.contains(v.name()) && !(quick && NOT_IN_QUICK.contains(v))) {
                 variants.add(v);
             }
         }
@@ -73,20 +104,22 @@ public final class SweepPlan {
 
     /**
      * {@code --quick}: the thesis' point, each axis alone one to three steps cheaper, both cheaper term formats,
-     * and cheap corners where several savings combine (where an accuracy target's cheapest choice usually lies).
+     * cheap corners where several savings combine (where an accuracy target's cheapest choice usually lies), and
+     * the lean version (early stop, automatic window) of the thesis' point and of two corners.
      */
     public static List<Point> quick(int sizePx) {
         Point t = thesis(sizePx);
         return List.of(t,
                 t.with(16, 5, 1), t.with(8, 5, 1), t.with(4, 5, 1), t.with(30, 10, 1), t.with(30, 25, 1),
                 t.with(30, 5, 0), t.format("rg16f"), t.format("rg8"),
-                t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 25, 1), t.with(8, 10, 0), t.with(8, 10, 1).format("rg8"));
+                t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 25, 1), t.with(8, 10, 0), t.with(8, 10, 1).format("rg8"),
+                t.asLean(), t.with(8, 10, 1).asLean(), t.with(4, 10, 1).asLean());
     }
 
     /**
      * The full sweep: N x step x R over {4, 6, 8, 16, 30} x {5, 10, 15, 25} x {0, 1} with float32 terms; at the
      * thesis' point the 1 nm step, a 5 x 5 window and N = 40; the three term formats at three points; and the
-     * thesis' point at {@code largeSizePx}.
+     * thesis' point at {@code largeSizePx}; and the lean version (early stop, automatic window) of five points.
      */
     public static List<Point> full(int sizePx, int largeSizePx) {
         Point t = thesis(sizePx);
@@ -100,6 +133,9 @@ public final class SweepPlan {
             points.add(p.format("rg8"));
         }
         points.add(t.size(largeSizePx));
+        for (Point p : List.of(t, t.with(16, 5, 1), t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 15, 1))) {
+            points.add(p.asLean());
+        }
         return points;
     }
 
@@ -139,6 +175,8 @@ public final class SweepPlan {
                             .withHighestOrder(ignored.contains(Axis.TERMS) ? thesis.terms() : p.terms())
                             .withLambdaStepNm(ignored.contains(Axis.LAMBDA_STEP) ? thesis.lambdaStepNm() : p.lambdaStepNm())
                             .withWindowRadius(ignored.contains(Axis.WINDOW_RADIUS) ? thesis.windowRadius() : p.windowRadius());
+                    boolean lean = p.lean() && !ignored.contains(Axis.LEAN);
+                    s = s.withTaylorTolerance(lean ? LEAN_TAYLOR_TOLERANCE : 0).withAutomaticWindowRadius(lean);
                     String format = ignored.contains(Axis.TEXTURE_FORMAT) ? EXACT_FORMAT : p.textureFormat();
                     BenchConfig c = new BenchConfig(patch, s, format, p.sizePx());
                     unique.putIfAbsent(c.key(), c);

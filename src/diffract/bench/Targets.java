@@ -81,6 +81,7 @@ public final class Targets {
 
     private static boolean isThesis(BenchConfig c) {
         return c.settings().highestOrder() == 30 && c.settings().windowRadius() == 1
+                && !c.settings().automaticWindowRadius() && c.settings().taylorTolerance() == 0
                 && c.textureFormat().equals(SweepPlan.EXACT_FORMAT);
     }
 

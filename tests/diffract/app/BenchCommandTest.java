@@ -45,7 +45,7 @@ class BenchCommandTest {
         assertEquals(2, lines.stream().filter(l -> l.contains(",rg8,")).filter(l -> l.startsWith("flss,")).count());
         assertTrue(Files.size(out.resolve("pareto.png")) > 1000);
         assertTrue(Files.readString(out.resolve("pareto.md")).contains("**yes**"));
-        assertTrue(Files.readString(out.resolve("results.md")).contains("| blazed | flss | 8 | 25 | 1 | rg8 | 24 |"));
+        assertTrue(Files.readString(out.resolve("results.md")).contains("| blazed | flss | 8 | 25 | 1 | 0 | rg8 | 24 |"));
         assertTrue(Files.readString(out.resolve("machine.txt")).contains("CPU cores"));
         assertTrue(Files.list(out.resolve("reference-maps")).count() == 3, "one cached reference map per light");
     }
