@@ -130,7 +130,8 @@ final class BrdfMapCommand implements Callable<Integer> {
 
     @Option(names = "--expansion", defaultValue = "auto", paramLabel = "E",
             description = {"Taylor expansion of flss/nmm/pq: auto (default: the thesis' series around 0 where the patch"
-                    + " lets it reach 1e-3 in P, else around the nearest of several phase centres), plain or centred."})
+                    + " lets it reach 1e-3 in P, else around the nearest of several phase centres), plain or centred."
+                    + " With --variant auto the default is plain: the path its calibration measured."})
     String expansion;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
@@ -157,6 +158,10 @@ final class BrdfMapCommand implements Callable<Integer> {
         boolean gpu = parseEngine(engine != null ? engine : auto ? "gpu" : "cpu");
         FloatTextureArray.Precision precision = TermFormats.parse(textureFormat);
         TaylorEvaluation.Mode expansionMode = TaylorEvaluation.Mode.parse(expansion);
+        if (auto && expansionMode == TaylorEvaluation.Mode.AUTO) {
+            // auto's calibration measured the thesis' series at each N: render its choice on that same path
+            expansionMode = TaylorEvaluation.Mode.PLAIN;
+        }
         Variant named = auto ? null : Variant.parse(variant);
         if (gpu && named == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);

@@ -3,6 +3,7 @@ package diffract.app;
 import diffract.colour.DeltaEStatistics;
 import diffract.optics.BrdfMap;
 
+import java.util.List;
 import java.util.Locale;
 
 /**
@@ -23,27 +24,52 @@ public record BrdfMapDifference(double exposure, DeltaEStatistics disk, DeltaESt
             throw new IllegalArgumentException("maps of " + xyzA.length + " and " + xyzB.length
                     + " floats are not both " + size + "x" + size + " XYZ");
         }
-        float[] a = new float[xyzA.length];
-        float[] b = new float[xyzB.length];
-        boolean[] disk = new boolean[size * size];
-        boolean[] lit = new boolean[size * size];
-        int litCount = 0;
-        for (int j = 0; j < size; j++) {
-            for (int i = 0; i < size; i++) {
-                int p = j * size + i;
-                double x = BrdfMap.xOf(i, size);
-                double y = BrdfMap.yOf(j, size);
-                disk[p] = x * x + y * y < 1;
-                for (int k = 0; k < 3; k++) {
-                    a[3 * p + k] = (float) (xyzA[3 * p + k] * exposure);
-                    b[3 * p + k] = (float) (xyzB[3 * p + k] * exposure);
-                }
-                lit[p] = disk[p] && Math.max(a[3 * p + 1], b[3 * p + 1]) > LIT_Y;
-                litCount += lit[p] ? 1 : 0;
+        Exposed e = Exposed.of(List.of(xyzA), List.of(xyzB), List.of(exposure), size);
+        return new BrdfMapDifference(exposure, DeltaEStatistics.of(e.a(), e.b(), e.disk()),
+                e.litCount() > 0 ? DeltaEStatistics.of(e.a(), e.b(), e.lit()) : null);
+    }
+
+    /**
+     * Pairs of S x S maps side by side, each pair times its display exposure, with the masks both statistics run
+     * over: inside the unit disk, and lit (exposed Y above {@link #LIT_Y} in either map).
+     */
+    public record Exposed(float[] a, float[] b, boolean[] disk, boolean[] lit, int litCount) {
+        public static Exposed of(List<float[]> mapsA, List<float[]> mapsB, List<Double> exposures, int size) {
+            int pairs = mapsA.size();
+            if (mapsB.size() != pairs || exposures.size() != pairs) {
+                throw new IllegalArgumentException("need one map B and one exposure per map A");
             }
+            int pixels = size * size;
+            float[] a = new float[3 * pixels * pairs];
+            float[] b = new float[a.length];
+            boolean[] disk = new boolean[pixels * pairs];
+            boolean[] lit = new boolean[disk.length];
+            int litCount = 0;
+            for (int l = 0; l < pairs; l++) {
+                float[] mapA = mapsA.get(l);
+                float[] mapB = mapsB.get(l);
+                if (mapA.length != 3 * pixels || mapB.length != 3 * pixels) {
+                    throw new IllegalArgumentException("maps must be " + size + "x" + size + " XYZ");
+                }
+                double exposure = exposures.get(l);
+                for (int j = 0; j < size; j++) {
+                    for (int i = 0; i < size; i++) {
+                        int p = j * size + i;
+                        int q = l * pixels + p;
+                        double x = BrdfMap.xOf(i, size);
+                        double y = BrdfMap.yOf(j, size);
+                        disk[q] = x * x + y * y < 1;
+                        for (int k = 0; k < 3; k++) {
+                            a[3 * q + k] = (float) (mapA[3 * p + k] * exposure);
+                            b[3 * q + k] = (float) (mapB[3 * p + k] * exposure);
+                        }
+                        lit[q] = disk[q] && Math.max(a[3 * q + 1], b[3 * q + 1]) > LIT_Y;
+                        litCount += lit[q] ? 1 : 0;
+                    }
+                }
+            }
+            return new Exposed(a, b, disk, lit, litCount);
         }
-        return new BrdfMapDifference(exposure, DeltaEStatistics.of(a, b, disk),
-                litCount > 0 ? DeltaEStatistics.of(a, b, lit) : null);
     }
 
     public int litPixels() {
