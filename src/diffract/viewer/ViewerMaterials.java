@@ -7,6 +7,7 @@ import diffract.jrtr.Texture2D;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Float32Cancellation;
 import diffract.optics.HeightField;
+import diffract.optics.PhaseCentredTerms;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.precompute.TaylorTermComputer;
@@ -59,7 +60,8 @@ final class ViewerMaterials {
     private final float diffuseWeight;
     private final HeightField patch;
     /** The phase-centred terms of the patch (issue #6) by the shortest wavelength they were planned for. */
-    private final Map<Double, TaylorEvaluation> centredByLambdaMin = new HashMap<>();
+    /** The phase-centred terms per shortest wavelength (they do not depend on N; the decision does). */
+    private final Map<Double, PhaseCentredTerms> centredByLambdaMin = new HashMap<>();
     private TexturesKey texturesKey;
     private DiffractionTextures textures;
     private final Map<DisplayMode, Built> materials = new EnumMap<>(DisplayMode.class);
@@ -97,17 +99,19 @@ final class ViewerMaterials {
 
     /**
      * The thesis' terms where their float32 series is accurate for this patch, else the phase-centred expansion
-     * (issue #6, {@link TaylorEvaluation}; computed once per shortest wavelength, on this thread: a fraction of a
-     * second for the patches the viewer shows). The decision and its reason are printed once per change.
+     * (issue #6, {@link TaylorEvaluation}): decided per N, since the estimate depends on it; the centred terms are
+     * computed once per shortest wavelength, on this thread (a fraction of a second for the patches the viewer
+     * shows). The decision and its reason are printed whenever the textures change.
      */
     private DiffractionTextures termTextures(TaylorTerms terms, BrdfSettings settings) {
         if (Float32Cancellation.plainSeriesSuffices(terms, settings.highestOrder(), settings.lambdaMinNm())) {
             return DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
         }
-        TaylorEvaluation evaluation = centredByLambdaMin.computeIfAbsent(settings.lambdaMinNm(), lambdaMin ->
-                TaylorEvaluation.choose(TaylorEvaluation.Mode.AUTO, patch, terms, settings.highestOrder(), lambdaMin,
-                        (p, centres) -> TaylorTermComputer.computeCentred(p, centres, Reporter.SILENT),
-                        Reporter.STDERR));
+        // decided for this N (the estimate depends on it); the centred terms are computed once per lambda_min
+        TaylorEvaluation evaluation = TaylorEvaluation.choose(TaylorEvaluation.Mode.AUTO, patch, terms,
+                settings.highestOrder(), settings.lambdaMinNm(), (p, centres) -> centredByLambdaMin.computeIfAbsent(
+                        settings.lambdaMinNm(), lambdaMin -> TaylorTermComputer.computeCentred(p, centres, Reporter.SILENT)),
+                Reporter.STDERR);
         return evaluation.isPhaseCentred()
                 ? DiffractionTextures.ofPhaseCentred(evaluation.centredTerms(), settings, FloatTextureArray.Precision.FLOAT32)
                 : DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
