@@ -26,6 +26,8 @@ class AutoCalibrationTest {
     static final HeightField GRATING = SyntheticPatches.blazed(2.5, 0.13, 20, 4, 16).meanSubtracted();
     static final BrdfSettings BASE = new BrdfSettings(Variant.FLSS, 30, 1, 380, 780, 5, 2.5, 1.5, 0);
     static final int SIZE = 32;
+    /** AutoCalibration's name for the patch it calibrates. */
+    static final String GRATING_NAME = "patch";
     static final List<SweepPlan.Point> PLAN = List.of(SweepPlan.thesis(SIZE),
             new SweepPlan.Point(4, 5, 1, "rg32f", SIZE), new SweepPlan.Point(30, 25, 1, "rg32f", SIZE),
             new SweepPlan.Point(30, 5, 0, "rg32f", SIZE), new SweepPlan.Point(8, 10, 1, "rg8", SIZE));
@@ -44,19 +46,26 @@ class AutoCalibrationTest {
 
     /**
      * Held-out check: the choice for mean CIEDE2000 <= 2, measured afresh at lights it was not calibrated on
-     * (theta_i 30 and 60 degrees), still meets the target.
+     * (theta_i 30 and 60 degrees), still meets the target. Which configuration is cheapest depends on timings
+     * that vary from run to run on a shared machine (two candidates here are within 5 % of each other), so every
+     * configuration auto could choose for this target is checked, not only today's choice.
      */
     @Test
     void theChoiceMeetsTheTargetAtHeldOutLights(@TempDir Path references) {
         AutoChoice choice = AutoChoice.choose(calibration, 2.0).orElseThrow();
+        System.out.println(choice.explanation());
         BenchRunner heldOut = new BenchRunner(new ReferenceMaps(references, Reporter.SILENT), Reporter.SILENT,
                 List.of(30.0, 60.0));
-        BenchConfig chosen = choice.chosen().config();
-        BenchResult check = heldOut.run(List.of(chosen), Map.of(chosen.patch(), new BenchPatch(chosen.patch(), GRATING, 0)),
-                BASE, r -> { }).get(0);
-        System.out.println(choice.explanation() + "\nheld out (theta_i 30, 60): CIEDE2000 " + check.deltaEMean());
-        assertTrue(check.error().litPixels() >= 20, "too few lit pixels: " + check.error().litPixels());
-        assertTrue(check.deltaEMean() <= 2.0, "held-out error " + check.deltaEMean() + " of " + choice.explanation());
+        List<BenchConfig> candidates = calibration.stream().filter(r -> r.deltaEMean() <= 2.0)
+                .map(BenchResult::config).toList();
+        assertTrue(candidates.contains(choice.chosen().config()));
+        for (BenchResult check : heldOut.run(candidates, Map.of(GRATING_NAME, new BenchPatch(GRATING_NAME, GRATING, 0)),
+                BASE, r -> { })) {
+            String what = AutoChoice.describe(check) + " held out (theta_i 30, 60): CIEDE2000 " + check.deltaEMean();
+            System.out.println(what);
+            assertTrue(check.error().litPixels() >= 20, "too few lit pixels: " + what);
+            assertTrue(check.deltaEMean() <= 2.0, what);
+        }
     }
 
     /** Every swept variant is measured, once per distinct point (NMM ignores the step). */
