@@ -158,10 +158,6 @@ final class BrdfMapCommand implements Callable<Integer> {
         boolean gpu = parseEngine(engine != null ? engine : auto ? "gpu" : "cpu");
         FloatTextureArray.Precision precision = TermFormats.parse(textureFormat);
         TaylorEvaluation.Mode expansionMode = TaylorEvaluation.Mode.parse(expansion);
-        if (auto && expansionMode == TaylorEvaluation.Mode.AUTO) {
-            // auto's calibration measured the thesis' series at each N: render its choice on that same path
-            expansionMode = TaylorEvaluation.Mode.PLAIN;
-        }
         Variant named = auto ? null : Variant.parse(variant);
         if (gpu && named == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
@@ -183,10 +179,12 @@ final class BrdfMapCommand implements Callable<Integer> {
         BrdfSettings settings = new BrdfSettings(auto ? Variant.FLSS : named, highestOrder,
                 automaticWindow ? 1 : parseWindowRadius(windowRadiusText), lambdaMinNm, lambdaMaxNm, lambdaStepNm,
                 coherenceLengthUm / 4.0, refractiveIndex, pqReplicas, taylorTolerance, automaticWindow,
-                bakedSamples[0], bakedSamples[1]);
+                bakedSamples[0], bakedSamples[1], expansionMode);
         if (auto) {
             AutoChoice choice = AutoVariant.choose(field, phiIDeg, settings, maxDeltaE, reporter);
-            settings = choice.chosen().config().settings();
+            // auto's calibration measured the thesis' series at each N: its choice renders on that same path
+            settings = choice.chosen().config().settings().withExpansion(
+                    expansionMode == TaylorEvaluation.Mode.AUTO ? TaylorEvaluation.Mode.PLAIN : expansionMode);
             highestOrder = settings.highestOrder();
             precision = choice.chosen().config().precision();
             textureFormat = choice.chosen().config().textureFormat();
@@ -207,7 +205,7 @@ final class BrdfMapCommand implements Callable<Integer> {
                 requireTermsMatchPatch(terms, field);
             }
         }
-        TaylorEvaluation evaluation = terms == null ? null : TaylorEvaluation.choose(expansionMode, field, terms,
+        TaylorEvaluation evaluation = terms == null ? null : TaylorEvaluation.choose(settings.expansion(), field, terms,
                 highestOrder, lambdaNm != null ? Math.min(lambdaNm, lambdaMinNm) : lambdaMinNm,
                 (patch, centres) -> TaylorTermComputer.computeCentred(patch, centres, reporter), reporter);
         DiffractionBrdf brdf = gpu ? null

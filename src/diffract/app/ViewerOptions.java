@@ -6,6 +6,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.GainFactor;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
+import diffract.optics.TaylorEvaluation;
 import diffract.optics.Variant;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.SamplingCheck;
@@ -204,8 +205,10 @@ final class ViewerOptions {
         if (!auto()) {
             return settings;
         }
+        // rendered on the thesis' series, the path the calibration measured (not the automatic expansion)
         return AutoVariant.choose(meanSubtracted, phiIDeg, settings, maxDeltaE, reporter,
-                r -> r.config().textureFormat().equals(diffract.bench.SweepPlan.EXACT_FORMAT)).chosen().config().settings();
+                r -> r.config().textureFormat().equals(diffract.bench.SweepPlan.EXACT_FORMAT)).chosen().config()
+                .settings().withExpansion(TaylorEvaluation.Mode.PLAIN);
     }
 
     /** The snake's procedural corn-snake pigmentation is the same every run. */

@@ -19,11 +19,14 @@ import diffract.util.UserInputException;
  * @param bakedUvSamples BAKED: samples of the table along u and along v over [-2, 2]; 0 = automatic
  *                      ({@link BakedGrid#automaticUvSamples})
  * @param bakedWSamples BAKED: samples along w over [-2, 0]; 0 = automatic ({@link BakedGrid#automaticWSamples})
+ * @param expansion     which Taylor expansion flss/nmm/pq sum (issue #6, {@link TaylorEvaluation}): AUTO (the
+ *                      thesis' series where it is accurate for the patch, else phase-centred), PLAIN or CENTRED
  */
 public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, double lambdaMinNm,
                            double lambdaMaxNm, double lambdaStepNm, double sigmaSpatialUm,
                            double refractiveIndex, int pqReplicas, double taylorTolerance,
-                           boolean automaticWindowRadius, int bakedUvSamples, int bakedWSamples) {
+                           boolean automaticWindowRadius, int bakedUvSamples, int bakedWSamples,
+                           TaylorEvaluation.Mode expansion) {
 
     public static final double LAMBDA_MIN_NM = 380;
     public static final double LAMBDA_MAX_NM = 780;
@@ -63,16 +66,19 @@ public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, 
             throw new UserInputException("baked w samples must be 0 (automatic) or 2.." + BakedGrid.MAX_SAMPLES
                     + ", got " + bakedWSamples);
         }
+        if (expansion == null) {
+            throw new IllegalArgumentException("the Taylor expansion mode is required (AUTO by default)");
+        }
     }
 
     /**
-     * The original nine components, with the new knobs at their old behaviour: fixed N (tolerance 0), the fixed
-     * window radius, automatic baked-table resolution.
+     * The original nine components, with the later knobs at their old behaviour: fixed N (tolerance 0), the fixed
+     * window radius, automatic baked-table resolution, the automatic Taylor expansion.
      */
     public BrdfSettings(Variant variant, int highestOrder, int windowRadius, double lambdaMinNm, double lambdaMaxNm,
                         double lambdaStepNm, double sigmaSpatialUm, double refractiveIndex, int pqReplicas) {
         this(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm, sigmaSpatialUm,
-                refractiveIndex, pqReplicas, 0.0, false, 0, 0);
+                refractiveIndex, pqReplicas, 0.0, false, 0, 0, TaylorEvaluation.Mode.AUTO);
     }
 
     /** The thesis' configuration for a variant. */
@@ -82,61 +88,111 @@ public record BrdfSettings(Variant variant, int highestOrder, int windowRadius, 
     }
 
     public BrdfSettings withVariant(Variant v) {
-        return new BrdfSettings(v, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.variant = v;
+        return c.build();
     }
 
     public BrdfSettings withHighestOrder(int n) {
-        return new BrdfSettings(variant, n, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.highestOrder = n;
+        return c.build();
     }
 
     public BrdfSettings withWindowRadius(int r) {
-        return new BrdfSettings(variant, highestOrder, r, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.windowRadius = r;
+        return c.build();
     }
 
     public BrdfSettings withLambdaStepNm(double step) {
-        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, step,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.lambdaStepNm = step;
+        return c.build();
     }
 
     public BrdfSettings withLambdaRangeNm(double min, double max) {
-        return new BrdfSettings(variant, highestOrder, windowRadius, min, max, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.lambdaMinNm = min;
+        c.lambdaMaxNm = max;
+        return c.build();
     }
 
     /** sigma_s of the coherence window (4 sigma_s = the coherence length). */
     public BrdfSettings withSigmaSpatialUm(double sigma) {
-        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigma, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.sigmaSpatialUm = sigma;
+        return c.build();
     }
 
     /** The per-fragment Taylor tolerance (0 = fixed N). */
     public BrdfSettings withTaylorTolerance(double tolerance) {
-        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, tolerance, automaticWindowRadius, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.taylorTolerance = tolerance;
+        return c.build();
     }
 
     /** The window radius from sigma_f (true) or the fixed {@code windowRadius} (false). */
     public BrdfSettings withAutomaticWindowRadius(boolean automatic) {
-        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automatic, bakedUvSamples,
-                bakedWSamples);
+        Copy c = new Copy(this);
+        c.automaticWindowRadius = automatic;
+        return c.build();
     }
 
     /** The baked table's samples along u and v, and along w (0 = automatic). */
     public BrdfSettings withBakedSamples(int uvSamples, int wSamples) {
-        return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
-                sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius, uvSamples,
-                wSamples);
+        Copy c = new Copy(this);
+        c.bakedUvSamples = uvSamples;
+        c.bakedWSamples = wSamples;
+        return c.build();
+    }
+
+    /** Which Taylor expansion flss/nmm/pq sum (AUTO, PLAIN or CENTRED). */
+    public BrdfSettings withExpansion(TaylorEvaluation.Mode mode) {
+        Copy c = new Copy(this);
+        c.expansion = mode;
+        return c.build();
+    }
+
+    /** A mutable copy for the with-methods: the one place besides the record header that lists every component. */
+    private static final class Copy {
+        Variant variant;
+        int highestOrder;
+        int windowRadius;
+        double lambdaMinNm;
+        double lambdaMaxNm;
+        double lambdaStepNm;
+        double sigmaSpatialUm;
+        double refractiveIndex;
+        int pqReplicas;
+        double taylorTolerance;
+        boolean automaticWindowRadius;
+        int bakedUvSamples;
+        int bakedWSamples;
+        TaylorEvaluation.Mode expansion;
+
+        Copy(BrdfSettings s) {
+            variant = s.variant;
+            highestOrder = s.highestOrder;
+            windowRadius = s.windowRadius;
+            lambdaMinNm = s.lambdaMinNm;
+            lambdaMaxNm = s.lambdaMaxNm;
+            lambdaStepNm = s.lambdaStepNm;
+            sigmaSpatialUm = s.sigmaSpatialUm;
+            refractiveIndex = s.refractiveIndex;
+            pqReplicas = s.pqReplicas;
+            taylorTolerance = s.taylorTolerance;
+            automaticWindowRadius = s.automaticWindowRadius;
+            bakedUvSamples = s.bakedUvSamples;
+            bakedWSamples = s.bakedWSamples;
+            expansion = s.expansion;
+        }
+
+        BrdfSettings build() {
+            return new BrdfSettings(variant, highestOrder, windowRadius, lambdaMinNm, lambdaMaxNm, lambdaStepNm,
+                    sigmaSpatialUm, refractiveIndex, pqReplicas, taylorTolerance, automaticWindowRadius,
+                    bakedUvSamples, bakedWSamples, expansion);
+        }
     }
 
     /**

@@ -98,17 +98,19 @@ final class ViewerMaterials {
     }
 
     /**
-     * The thesis' terms where their float32 series is accurate for this patch, else the phase-centred expansion
+     * The thesis' terms where their float32 series is accurate for this patch, else the phase-centred expansion, as
+     * the settings' expansion mode says (AUTO; PLAIN for auto's choice, which was calibrated on that path)
      * (issue #6, {@link TaylorEvaluation}): decided per N, since the estimate depends on it; the centred terms are
      * computed once per shortest wavelength, on this thread (a fraction of a second for the patches the viewer
      * shows). The decision and its reason are printed whenever the textures change.
      */
     private DiffractionTextures termTextures(TaylorTerms terms, BrdfSettings settings) {
-        if (Float32Cancellation.plainSeriesSuffices(terms, settings.highestOrder(), settings.lambdaMinNm())) {
+        if (settings.expansion() == TaylorEvaluation.Mode.PLAIN || settings.expansion() == TaylorEvaluation.Mode.AUTO
+                && Float32Cancellation.plainSeriesSuffices(terms, settings.highestOrder(), settings.lambdaMinNm())) {
             return DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
         }
         // decided for this N (the estimate depends on it); the centred terms are computed once per lambda_min
-        TaylorEvaluation evaluation = TaylorEvaluation.choose(TaylorEvaluation.Mode.AUTO, patch, terms,
+        TaylorEvaluation evaluation = TaylorEvaluation.choose(settings.expansion(), patch, terms,
                 settings.highestOrder(), settings.lambdaMinNm(), (p, centres) -> centredByLambdaMin.computeIfAbsent(
                         settings.lambdaMinNm(), lambdaMin -> TaylorTermComputer.computeCentred(p, centres, Reporter.SILENT)),
                 Reporter.STDERR);
