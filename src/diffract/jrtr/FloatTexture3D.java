@@ -2,8 +2,6 @@ package diffract.jrtr;
 
 import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL2ES2;
-import com.jogamp.opengl.GL2ES3;
-import com.jogamp.opengl.GL2GL3;
 import com.jogamp.opengl.GL3;
 
 import java.nio.FloatBuffer;
@@ -93,13 +91,8 @@ public final class FloatTexture3D extends Texture {
         int target = glTarget();
         gl.glTexImage3D(target, 0, precision.internalFormat, width, height, depth, 0, GL.GL_RGB, GL.GL_FLOAT,
                 FloatBuffer.wrap(rgb));
-        gl.glTexParameteri(target, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR);
-        gl.glTexParameteri(target, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
-        gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_S, GL.GL_CLAMP_TO_EDGE);
-        gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_T, GL.GL_CLAMP_TO_EDGE);
+        clampWithoutMipmaps(gl, target, GL.GL_LINEAR); // trilinear lookups between the table's samples
         gl.glTexParameteri(target, GL2ES2.GL_TEXTURE_WRAP_R, GL.GL_CLAMP_TO_EDGE);
-        gl.glTexParameteri(target, GL2ES3.GL_TEXTURE_BASE_LEVEL, 0);
-        gl.glTexParameteri(target, GL2ES3.GL_TEXTURE_MAX_LEVEL, 0);
     }
 
     @Override

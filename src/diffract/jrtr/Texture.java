@@ -60,8 +60,13 @@ public abstract class Texture extends GpuResource {
 
     /** Nearest filtering, no mipmaps, clamp to edge: what exact per-texel table lookups need. */
     static void nearestClamp(GL3 gl, int target) {
-        gl.glTexParameteri(target, GL.GL_TEXTURE_MIN_FILTER, GL.GL_NEAREST);
-        gl.glTexParameteri(target, GL.GL_TEXTURE_MAG_FILTER, GL.GL_NEAREST);
+        clampWithoutMipmaps(gl, target, GL.GL_NEAREST);
+    }
+
+    /** This filter for minification and magnification, no mipmaps, s and t clamped to the edge. */
+    static void clampWithoutMipmaps(GL3 gl, int target, int filter) {
+        gl.glTexParameteri(target, GL.GL_TEXTURE_MIN_FILTER, filter);
+        gl.glTexParameteri(target, GL.GL_TEXTURE_MAG_FILTER, filter);
         gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_S, GL.GL_CLAMP_TO_EDGE);
         gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_T, GL.GL_CLAMP_TO_EDGE);
         gl.glTexParameteri(target, GL3.GL_TEXTURE_BASE_LEVEL, 0);
