@@ -22,7 +22,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * (b) Our terms written in the thesis format equal an independent computation of the script's recipe: a literal
- * Java restatement ({@link ThesisRecipe}, always) and an Octave script ({@code tests/octave/compute_fft_images.m},
+ * Java restatement ({@link ThesisRecipe}, always) and an Octave script ({@code precompute/compute_fft_images.m},
  * when {@code octave} is on the PATH).
  *
  * <p>Tolerance, "float32 rounding": our file comes from the float32 terms (each component within half an ulp
@@ -79,7 +79,7 @@ class ThesisRecipeTest {
             }
             Files.writeString(heights, text);
             runOctave(String.format(Locale.ROOT, "addpath('%s'); compute_fft_images('%s', %.17g, %d, '%s')",
-                    Path.of("tests/octave").toAbsolutePath(), heights, h.pixelSizeXUm(), highestOrder, octave));
+                    Path.of("precompute").toAbsolutePath(), heights, h.pixelSizeXUm(), highestOrder, octave));
             List<ThesisExtrema.Term> oursExtrema = ThesisExtrema.read(ours.resolve(ThesisFormat.EXTREMA_FILE)).terms();
             ThesisExtrema.File octaveExtrema = ThesisExtrema.read(octave.resolve(ThesisFormat.EXTREMA_FILE));
             assertEquals(h.pixelSizeXUm() * 1e-6, octaveExtrema.pixelSizeMetres(), 1e-20);

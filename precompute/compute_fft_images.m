@@ -1,5 +1,5 @@
 function compute_fft_images(heightsFile, dHum, termCnt, outDir)
-% COMPUTE_FFT_IMAGES  An independent re-statement of the thesis' precompute (issue #7, 003 Algorithm 1), used by
+% COMPUTE_FFT_IMAGES  An independent re-statement of the thesis' precompute (003 Algorithm 1), used by
 % diffract's tests to check its thesis-format writer; it is not part of the program.
 %
 %   heightsFile: text matrix of the MEAN-SUBTRACTED heights in micrometres (row 1 = first row of the patch)
