@@ -16,6 +16,7 @@
 //   PHASE_CENTRED         expand around the nearest phase centre (taylor_centred.glsl); TAYLOR_HIGHEST_ORDER is
 //                         then the last order per centre
 //   TERMS_UNORM8          terms stored [0, 1]-normalised as 8-bit bytes (003 eq. 1.1; NormalisedTerms)
+//   FRESNEL_THESIS        the gain factor squares Schlick's reflectance as eq. cfact prints it (FresnelModel.THESIS)
 #if defined(TERMS_UNORM8) && defined(PHASE_CENTRED)
 #error "8-bit terms hold the thesis' series around 0 only (DiffractionTextures.ofPhaseCentred refuses them)"
 #endif
@@ -108,14 +109,25 @@ bool aboveHorizon(vec3 wi, vec3 wr) {
     return wi.z > 0.0 && wr.z > 0.0;
 }
 
-// The gain factor C of 004 eq. cfact: F^2 (1 + wi.wr)^2 / (F(0)^2 w^2 cos theta_r), w = cos theta_i + cos theta_r
+// The Fresnel factor of C (FresnelModel.factor): Schlick's power reflectance counted once, F / F(0), or with
+// FRESNEL_THESIS eq. cfact as printed, F^2 / F(0)^2.
+float fresnelFactor(float f, float r0) {
+    float ratio = f / r0;
+#ifdef FRESNEL_THESIS
+    return ratio * ratio;
+#else
+    return ratio;
+#endif
+}
+
+// The gain factor C of 004 eq. cfact: Phi(F) (1 + wi.wr)^2 / (w^2 cos theta_r), w = cos theta_i + cos theta_r
 // (GainFactor.gain). Callers check aboveHorizon first, so w^2 cos theta_r > 0: w >= cos theta_r > 0.
 float gainFactor(vec3 wi, vec3 wr) {
     float r0 = schlickR0(refractiveIndex);
     float f = schlickFresnel(cosHalfToView(wi, wr), r0);
     float onePlusDot = 1.0 + dot(wi, wr);
     float w = wi.z + wr.z;
-    return (f * f * onePlusDot * onePlusDot) / (r0 * r0 * w * w * wr.z);
+    return fresnelFactor(f, r0) * onePlusDot * onePlusDot / (w * w * wr.z);
 }
 
 // Stam's V-cavity shadowing and masking, min(1, 2 (n.h)(n.v)/(v.h), 2 (n.h)(n.l)/(v.h)) (GainFactor.shadowing;
@@ -295,7 +307,7 @@ vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
 // ---------------------------------------------------------------------------------------------------------
 // Texture blending (003 Algorithm 4, read as physics; the printed algorithm is garbled, see DiffractionShaders):
 // of the light reaching the skin a fraction alpha = clamp(F, 0, 1) is reflected at the interface (the structural
-// colour, whose gain factor already contains F^2 / F(0)^2) and 1 - alpha enters the skin, where the pigment
+// colour, whose gain factor already contains the Fresnel factor) and 1 - alpha enters the skin, where the pigment
 // scatters it diffusely (Lambert: times cos theta_i). A constant weight w_d mixes in the pigment as ambient light:
 //   c_total = (1 - w_d) (c_diffraction + (1 - alpha) cos(theta_i) c_pigment) + w_d c_pigment,
 // all in linear light. w_d = 0 shows pure structural colour; w_d = 1 pure pigment.

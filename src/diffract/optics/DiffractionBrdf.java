@@ -15,11 +15,19 @@ public final class DiffractionBrdf {
     private final PatchSpectrum spectrum;
     private final WavelengthSampling sampling;
     private final double refractiveIndex;
+    private final FresnelModel fresnel;
 
+    /** With the {@link FresnelModel#PHYSICAL} gain factor. */
     public DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex) {
+        this(spectrum, sampling, refractiveIndex, FresnelModel.PHYSICAL);
+    }
+
+    public DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex,
+                           FresnelModel fresnel) {
         this.spectrum = spectrum;
         this.sampling = sampling;
         this.refractiveIndex = refractiveIndex;
+        this.fresnel = fresnel;
     }
 
     /**
@@ -95,7 +103,7 @@ public final class DiffractionBrdf {
 
     /** The relative BRDF at one wavelength (grey BRDF maps, grating-equation tests). */
     public double relative(Direction wi, Direction wr, double lambdaNm) {
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
         if (gain == 0) {
             return 0;
         }
@@ -107,7 +115,7 @@ public final class DiffractionBrdf {
 
     /** CIE XYZ of the light reflected towards omega_r, relative to D65 white (Y = 1 for a flat mirror at normal incidence). */
     public Xyz xyz(Direction wi, Direction wr) {
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }

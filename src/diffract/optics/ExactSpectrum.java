@@ -17,7 +17,7 @@ import java.util.concurrent.ConcurrentMap;
  *
  * <p>The Gaussian window is summed over every texel whose weight is at least 1e-12.
  */
-public final class ExactSpectrum implements PatchSpectrum {
+public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
     /** Terms per centre: (1/2)^16 / 16! < 1e-18. */
     static final int ORDERS_PER_CENTRE = 15;
     /** The window is summed until its weights fall below this (issue #2: "until its weights fall below 1e-12"). */
@@ -106,6 +106,73 @@ public final class ExactSpectrum implements PatchSpectrum {
             }
         }
         return new double[] {re, im};
+    }
+
+    /** sigma_f in texels along x and y (the window this spectrum sums with). */
+    double sigmaTexelsX() {
+        return sigmaTexelsX;
+    }
+
+    double sigmaTexelsY() {
+        return sigmaTexelsY;
+    }
+
+    /**
+     * The exact coefficient T_m(a) = DFT(exp(i a h))(m) of texel m, the quantity the window sums in
+     * {@link #transformAt} (for the lobe decomposition of the filtered reference).
+     */
+    @Override
+    public Texel texel(int mx, int my) {
+        int cols = field.cols();
+        int rows = field.rows();
+        if (!TexelCoefficients.inBand(mx, my, rows, cols)) {
+            return null;
+        }
+        int index = 2 * ((my + rows / 2) * cols + mx + cols / 2);
+        return new Texel() {
+            private int cachedCentre = Integer.MIN_VALUE;
+            private double[][] e;
+
+            @Override
+            public void at(double a, double[] out) {
+                sum(a, out, false);
+            }
+
+            @Override
+            public void withDerivative(double a, double[] out) {
+                sum(a, out, true);
+            }
+
+            /** sum_n delta^n / n! E_{j,n}(texel), and its derivative sum_n delta^(n-1) / (n-1)! E_{j,n}. */
+            private void sum(double a, double[] out, boolean derivative) {
+                int centre = Double.isInfinite(centreSpacing) ? 0 : (int) Math.rint(a / centreSpacing);
+                double delta = Double.isInfinite(centreSpacing) ? 0 : a - centre * centreSpacing;
+                if (centre != cachedCentre) {
+                    e = expansions.computeIfAbsent(centre, ExactSpectrum.this::expand);
+                    cachedCentre = centre;
+                }
+                double c = 1.0;
+                double re = e[0][index];
+                double im = e[0][index + 1];
+                double dRe = 0;
+                double dIm = 0;
+                for (int n = 1; n <= ORDERS_PER_CENTRE; n++) {
+                    if (derivative) {
+                        dRe += c * e[n][index];
+                        dIm += c * e[n][index + 1];
+                    }
+                    c *= delta / n;
+                    re += c * e[n][index];
+                    im += c * e[n][index + 1];
+                }
+                out[0] = re;
+                out[1] = im;
+                if (derivative) {
+                    out[2] = dRe;
+                    out[3] = dIm;
+                }
+            }
+        };
     }
 
     /** E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..ORDERS_PER_CENTRE (PhaseCentres' arithmetic). */

@@ -5,10 +5,12 @@ package diffract.optics;
  * (004 eq. {@code cfact}) with Schlick's Fresnel term (000 appendix B.1), times Stam's shadowing and masking
  * factor for V-shaped grooves (Stam 1999, appendix; the thesis' {@code shadowF}, 003 Algorithm 3 line 27).
  *
- * <p>C = F^2(omega_i, omega_r) (1 + omega_i . omega_r)^2 / (F^2(omega_0, omega_0) w^2 cos(theta_r)) with
- * w^2 = (cos theta_i + cos theta_r)^2. The 1 / N_samples^2 of eq. {@code cfact} is already inside our DFT
- * terms: {@code ifft2} divides by N_samples, so a flat patch has DFT_0 = 1 at the zero frequency.
- * At normal incidence and viewing, C = 1 and the shadowing is 1: the relative BRDF of a flat mirror is exactly 1.
+ * <p>C = Phi(F(omega_i, omega_r), F_0) (1 + omega_i . omega_r)^2 / (w^2 cos(theta_r)) with
+ * w^2 = (cos theta_i + cos theta_r)^2 and the Fresnel factor Phi of {@link FresnelModel}: F / F_0 (Schlick's
+ * power reflectance counted once, the default) or the printed eq. {@code cfact}'s F^2 / F_0^2. The 1 / N_samples^2
+ * of eq. {@code cfact} is already inside our DFT terms: {@code ifft2} divides by N_samples, so a flat patch has
+ * DFT_0 = 1 at the zero frequency. At normal incidence and viewing, C = 1 and the shadowing is 1: the relative BRDF
+ * of a flat mirror is exactly 1 under either model.
  */
 public final class GainFactor {
     /** Refractive index of snake skin used by the thesis (003, after Algorithm 3: "close to the measured value"). */
@@ -31,10 +33,16 @@ public final class GainFactor {
         return r0 + (1.0 - r0) * m2 * m2 * m;
     }
 
-    /**
-     * C(omega_i, omega_r) of eq. {@code cfact}; 0 when either direction is at or below the horizon.
-     */
+    /** C(omega_i, omega_r) with the {@link FresnelModel#PHYSICAL} Fresnel factor. */
     public static double gain(Direction wi, Direction wr, double refractiveIndex) {
+        return gain(wi, wr, refractiveIndex, FresnelModel.PHYSICAL);
+    }
+
+    /**
+     * C(omega_i, omega_r) of eq. {@code cfact} with the given Fresnel factor; 0 when either direction is at or below
+     * the horizon.
+     */
+    public static double gain(Direction wi, Direction wr, double refractiveIndex, FresnelModel fresnel) {
         if (!(wi.z() > 0) || !(wr.z() > 0)) {
             return 0;
         }
@@ -42,7 +50,7 @@ public final class GainFactor {
         double f = schlickFresnel(cosHalfToView(wi, wr), r0);
         double oneplusDot = 1.0 + wi.dot(wr);
         double w = wi.z() + wr.z(); // |w|, w = -(cos theta_i + cos theta_r); w^2 >= cos^2 theta_r > 0 here
-        return (f * f * oneplusDot * oneplusDot) / (r0 * r0 * w * w * wr.z());
+        return fresnel.factor(f, r0) * oneplusDot * oneplusDot / (w * w * wr.z());
     }
 
     /**
@@ -64,9 +72,14 @@ public final class GainFactor {
         return Math.min(1.0, Math.min(masking, shadowing));
     }
 
-    /** C times the shadowing factor: everything of the relative BRDF except |P|^2 (eq. {@code cpterm}). */
+    /** C times the shadowing factor with the {@link FresnelModel#PHYSICAL} Fresnel factor. */
     public static double gainTimesShadowing(Direction wi, Direction wr, double refractiveIndex) {
-        return gain(wi, wr, refractiveIndex) * shadowing(wi, wr);
+        return gainTimesShadowing(wi, wr, refractiveIndex, FresnelModel.PHYSICAL);
+    }
+
+    /** C times the shadowing factor: everything of the relative BRDF except |P|^2 (eq. {@code cpterm}). */
+    public static double gainTimesShadowing(Direction wi, Direction wr, double refractiveIndex, FresnelModel fresnel) {
+        return gain(wi, wr, refractiveIndex, fresnel) * shadowing(wi, wr);
     }
 
     /** cos of the angle between the half vector of omega_i and omega_r and the view direction omega_r. */

@@ -1,0 +1,56 @@
+package diffract.optics;
+
+/**
+ * A distant light of angular diameter D (the sun: 0.53 degrees; a lamp or a window: several).
+ *
+ * <p>Profile: a Gaussian over the light's directions in the tangent plane of the unit sphere at its centre
+ * omega_i, with per-axis angular standard deviation sigma_a = D / 4, the standard deviation of a uniform disk of
+ * diameter D along any axis. A direction offset by (a, b) along the polar basis vector
+ * e_theta = (cos t cos p, cos t sin p, -sin t) and the azimuthal one e_phi = (-sin p, cos p, 0) moves
+ * (u, v) = -omega_i.xy - omega_r.xy by -(a e_theta.xy + b e_phi.xy): to first order a Gaussian in (u, v) of
+ * covariance sigma_a^2 J J^T, J = [e_theta.xy, e_phi.xy] = sigma_a^2 (cos^2 t r r^T + e e^T), r = (cos p, sin p),
+ * e = (-sin p, cos p): an ellipse cos(theta_i) times shorter in the plane of incidence. <b>This Gaussian in (u, v)
+ * is the definition</b> of the light throughout (reference and fast methods alike); the gain factor, the shadowing
+ * and w stay at the light's centre. Against the true directions of a disk it differs by the disk's flat top
+ * (a Gaussian of equal variance has tails instead) and by the linearisation, of relative size sigma_a^2 (8e-5 for a
+ * 2-degree light).
+ */
+public record LightSource(double angularDiameterDeg) {
+    /** The sun seen from the earth: 0.53 degrees. */
+    public static final double SUN_DEG = 0.53;
+    /** The largest diameter accepted: beyond it the linearised profile stops describing the light. */
+    public static final double MAX_DIAMETER_DEG = 20;
+    public static final LightSource POINT = new LightSource(0);
+
+    public LightSource {
+        if (!(angularDiameterDeg >= 0) || !(angularDiameterDeg <= MAX_DIAMETER_DEG)) {
+            throw new diffract.util.UserInputException("the light's angular diameter must be in [0, " + MAX_DIAMETER_DEG
+                    + "] degrees, got " + angularDiameterDeg);
+        }
+    }
+
+    public boolean isPoint() {
+        return angularDiameterDeg == 0;
+    }
+
+    /** sigma_a = D / 4 in radians. */
+    public double sigmaRad() {
+        return Math.toRadians(angularDiameterDeg) / 4.0;
+    }
+
+    /** The covariance in (u, v) of the light's directions around omega_i (see the class comment). */
+    public Covariance2 uvCovariance(Direction wi) {
+        if (isPoint()) {
+            return Covariance2.ZERO;
+        }
+        double variance = sigmaRad() * sigmaRad();
+        double sinTheta = Math.hypot(wi.x(), wi.y());
+        double cosTheta = wi.z();
+        if (sinTheta < 1e-12) {
+            return Covariance2.isotropic(variance);
+        }
+        double rx = wi.x() / sinTheta;
+        double ry = wi.y() / sinTheta;
+        return Covariance2.along(rx, ry, variance * cosTheta * cosTheta).plus(Covariance2.along(-ry, rx, variance));
+    }
+}
