@@ -12,6 +12,13 @@
 vec3 spectralXyz(vec3 uvw);
 float patchPower(vec3 uvw, float lambdaNm);
 
+#ifdef FILTERED
+// Variants that average over a pixel's footprint and the light (lobes.frag, lobes_footprint.glsl) are told the
+// footprint before spectralXyz runs: a BRDF-map pixel's square, or a surface pixel's (u, v) derivatives.
+void setMapPixel(float halfWidth);
+void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi);
+#endif
+
 // CIE XYZ of the light reflected towards omega_r, D65 white at Y = 1 (DiffractionBrdf.xyz; eq. finalexpression).
 vec3 diffractionXyz(vec3 wi, vec3 wr) {
     float gain = gainTimesShadowing(wi, wr);
@@ -54,6 +61,9 @@ void main() {
         return;
     }
     vec3 wr = vec3(xy, sqrt(zz)); // Direction.fromProjected
+#ifdef FILTERED
+    setMapPixel(1.0 / mapSizePx); // the pixel's square of side 2 / S (Footprint.mapPixel)
+#endif
 #ifdef MONOCHROMATIC
     fragColor = vec4(relativeBrdf(omegaI, wr, lambdaNm), 0.0, 0.0, 1.0);
 #elif defined(DISPLAY_SRGB)
@@ -78,6 +88,11 @@ uniform float diffuseWeight;      // w_d of Algorithm 4
 void main() {
     vec3 wi = safeNormalize(omegaITangent);
     vec3 wr = safeNormalize(toViewerTangent);
+#ifdef FILTERED
+    // screen-space derivatives in uniform control flow, before anything can return early (Footprint.surfacePixel)
+    vec2 uv = uvwOf(wi, wr).xy;
+    setSurfacePixel(dFdx(uv), dFdy(uv), wi);
+#endif
     vec3 linear = max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
 #ifdef PIGMENTATION
     vec3 pigment = srgbDecode(texture(pigmentation, surfaceTexcoord).rgb);

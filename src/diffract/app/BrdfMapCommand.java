@@ -8,7 +8,10 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
+import diffract.optics.FresnelModel;
 import diffract.optics.HeightField;
+import diffract.optics.LightSource;
+import diffract.optics.OpticsOptions;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
@@ -53,9 +56,19 @@ final class BrdfMapCommand implements Callable<Integer> {
     Double lambdaNm;
 
     @Option(names = "--variant", defaultValue = "reference", paramLabel = "V",
-            description = "reference (exact), flss, nmm, pq, baked (GPU table of flss), or auto: the cheapest GPU "
-                    + "configuration whose measured error on this patch meets --max-delta-e (default ${DEFAULT-VALUE}).")
+            description = "reference (exact; each pixel the average over its square), flss, nmm, pq, baked (GPU table "
+                    + "of flss), lobes (Gaussian lobes, pixel- and light-averaged, valid at 65 um), or auto: the cheapest "
+                    + "GPU configuration whose measured error on this patch meets --max-delta-e (default ${DEFAULT-VALUE}).")
     String variant;
+
+    @Option(names = "--light-size-deg", defaultValue = "0", paramLabel = "DEG",
+            description = "Angular diameter of the light (the sun: 0.53), a Gaussian of sigma D/4 per axis; "
+                    + "reference and lobes only (default ${DEFAULT-VALUE}: a point light).")
+    double lightSizeDeg;
+
+    @Option(names = "--fresnel", defaultValue = "physical", paramLabel = "F",
+            description = "physical (Schlick's reflectance counted once, default) or thesis (squared, as eq. cfact prints it).")
+    String fresnel;
 
     @Option(names = "--max-delta-e", paramLabel = "DE",
             description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the lit pixels.")
@@ -171,6 +184,11 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (time && !gpu) {
             throw new UserInputException("--time measures the GPU: add --engine gpu");
         }
+        OpticsOptions optics = OpticsOptions.DEFAULT.withFresnel(FresnelModel.parse(fresnel))
+                .withLight(new LightSource(lightSizeDeg));
+        if (!optics.light().isPoint() && lambdaNm != null) {
+            throw new UserInputException("--lambda maps sample the light at its centre: drop --light-size-deg");
+        }
         Reporter reporter = Reporter.STDERR;
         long start = System.nanoTime();
         HeightField field = input.load(reporter);
@@ -208,8 +226,8 @@ final class BrdfMapCommand implements Callable<Integer> {
         TaylorEvaluation evaluation = terms == null ? null : TaylorEvaluation.choose(settings.expansion(), field, terms,
                 highestOrder, lambdaNm != null ? Math.min(lambdaNm, lambdaMinNm) : lambdaMinNm,
                 (patch, centres) -> TaylorTermComputer.computeCentred(patch, centres, reporter), reporter);
-        DiffractionBrdf brdf = gpu ? null
-                : evaluation == null ? DiffractionBrdf.create(settings, field, null) : evaluation.brdf(settings, field);
+        DiffractionBrdf brdf = gpu ? null : evaluation == null ? DiffractionBrdf.create(settings, field, null, optics)
+                : evaluation.brdf(settings, field, optics);
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
         CoherenceWindow window = settings.coherenceWindow();
         reporter.info(String.format(Locale.ROOT, "%s, %dx%d patch of %.3f x %.3f um, sigma_f = %.3f x %.3f texels",
@@ -218,7 +236,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         float[] rho = null;
         float[] xyz = null;
         if (gpu) {
-            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, precision)) {
+            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, optics, precision)) {
                 reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
                 if (map.bakedTable() != null) {
                     System.out.printf(Locale.ROOT, "baked %s in %.1f s%n", map.bakedTable().describe(),

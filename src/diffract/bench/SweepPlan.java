@@ -22,7 +22,7 @@ public final class SweepPlan {
     public enum Axis { TERMS, LAMBDA_STEP, WINDOW_RADIUS, TEXTURE_FORMAT, SIZE, LEAN }
 
     /** Variants that are not GPU shaders of their own: the CPU yardstick and the app-level automatic choice. */
-    static final Set<String> NOT_SWEPT = Set.of("REFERENCE", "AUTO");
+    static final Set<String> NOT_SWEPT = Set.of("REFERENCE", "AUTO", "LOBES");
 
     /**
      * Variants left out of {@code --quick} and of auto's calibration: the baked table first bakes, 30 to 70 s per

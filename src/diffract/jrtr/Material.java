@@ -95,6 +95,11 @@ public final class Material {
                         + " texture units of this GPU");
             }
         }
+        // upload everything before binding anything: an upload binds its texture to unit 0 and unbinds it again,
+        // which would drop a texture of the same target already bound to unit 0 for this draw
+        for (Texture texture : textures.values()) {
+            texture.upload(gl);
+        }
         int unit = 0;
         for (Map.Entry<String, Texture> entry : textures.entrySet()) {
             entry.getValue().bind(gl, unit);

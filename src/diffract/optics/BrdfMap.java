@@ -9,8 +9,10 @@ import java.util.stream.IntStream;
 /**
  * A BRDF map, the thesis' way of looking at a BRDF (issue #2): pixel (i, j) of an S x S image (i column, j row,
  * from the top left) shows the viewing direction omega_r = (x, y, sqrt(1 - x^2 - y^2)) with
- * x = 2 (i + 0.5) / S - 1 and y = 1 - 2 (j + 0.5) / S, for a fixed light direction omega_i. Pixels outside the
- * unit disk are black (0).
+ * x = 2 (i + 0.5) / S - 1 and y = 1 - 2 (j + 0.5) / S, for a fixed light direction omega_i. Pixels whose centre
+ * lies outside the unit disk are black (0). A pixel shows the BRDF at that direction, or, for the reference and the
+ * lobes method with {@link PixelFilter#BOX}, its average over the pixel's square of side 2 / S
+ * ({@link DiffractionBrdf#mapPixel}).
  */
 public final class BrdfMap {
     private BrdfMap() {
@@ -31,12 +33,7 @@ public final class BrdfMap {
         float[] out = new float[size * size * 3];
         forEachRow(size, reporter, "BRDF map " + size + "x" + size, j -> {
             for (int i = 0; i < size; i++) {
-                double x = xOf(i, size);
-                double y = yOf(j, size);
-                if (x * x + y * y >= 1.0) {
-                    continue;
-                }
-                Xyz c = brdf.xyz(wi, Direction.fromProjected(x, y));
+                Xyz c = brdf.mapPixel(wi, i, j, size);
                 int p = 3 * (j * size + i);
                 out[p] = (float) c.x();
                 out[p + 1] = (float) c.y();

@@ -128,7 +128,7 @@ final class LobeGeometry {
     }
 
     /** One axis: sqrt(pi) sigmaUv times the average over [u - h, u + h] of the density N(mu, variance). */
-    private static double axis(double sigmaUv, double variance, double mu, double u, double h, boolean fast) {
+    static double axis(double sigmaUv, double variance, double mu, double u, double h, boolean fast) {
         double s = Math.sqrt(variance);
         if (h == 0 || (fast && 2 * h < NARROW_BOX * s)) {
             double d = (u - mu) / s;
@@ -136,7 +136,8 @@ final class LobeGeometry {
         }
         double a = (u - h - mu) / (SQRT_TWO * s);
         double b = (u + h - mu) / (SQRT_TWO * s);
-        double mass = fast ? ErrorFunction.fastMassInInterval(a, b) : ErrorFunction.massInInterval(a, b);
+        // the fast erf's absolute error (1.5e-7) could make a far tail's mass slightly negative
+        double mass = Math.max(0, fast ? ErrorFunction.fastMassInInterval(a, b) : ErrorFunction.massInInterval(a, b));
         return SQRT_PI * sigmaUv * mass / (2 * h);
     }
 }

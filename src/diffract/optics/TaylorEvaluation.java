@@ -113,10 +113,15 @@ public final class TaylorEvaluation {
         return centred;
     }
 
-    /** The CPU BRDF of a Taylor variant on this path. */
+    /** The CPU BRDF of a Taylor variant on this path, point-sampled. */
     public DiffractionBrdf brdf(BrdfSettings settings, HeightField meanSubtracted) {
-        return centred != null ? DiffractionBrdf.createPhaseCentred(settings, centred)
-                : DiffractionBrdf.create(settings, meanSubtracted, plain);
+        return brdf(settings, meanSubtracted, OpticsOptions.POINT_SAMPLED);
+    }
+
+    /** The CPU BRDF of a Taylor variant on this path with the optics options. */
+    public DiffractionBrdf brdf(BrdfSettings settings, HeightField meanSubtracted, OpticsOptions options) {
+        return centred != null ? DiffractionBrdf.createPhaseCentred(settings, centred, options)
+                : DiffractionBrdf.create(settings, meanSubtracted, plain, options);
     }
 
     /** "plain" or "centred (J x N)", for tables and logs. */

@@ -3,8 +3,8 @@ package diffract.optics;
 import java.util.Locale;
 
 /**
- * How the BRDF is evaluated: the exact reference, one of the thesis' three shader approximations, or a baked table
- * of FLSS (issue #5).
+ * How the BRDF is evaluated: the exact reference, one of the thesis' three shader approximations, a baked table of
+ * FLSS, or the filtered lobes method.
  */
 public enum Variant {
     /** exp(i k w h) exactly, window until weights < 1e-12, lambda at 1 nm: the yardstick. */
@@ -19,7 +19,12 @@ public enum Variant {
      * FLSS baked into a 3-D table XYZ(u, v, w) once per patch and settings, looked up trilinearly per fragment
      * (issue #5; after Dhillon and Ghosh 2016, Toisoul and Ghosh 2017). GPU only.
      */
-    BAKED;
+    BAKED,
+    /**
+     * The windowed spectrum's Gaussian lobes, each widened by the pixel's footprint and the light and integrated
+     * over wavelength by a rule fitted to its passage (LobeSpectrum, lobes.frag): valid at the true coherence length.
+     */
+    LOBES;
 
     /** Whether DiffractionBrdf evaluates it on the CPU (the baked table exists on the GPU only). */
     public boolean runsOnCpu() {
@@ -36,6 +41,6 @@ public enum Variant {
                 return v;
             }
         }
-        throw new diffract.util.UserInputException("unknown variant '" + text + "': use reference, flss, nmm, pq or baked");
+        throw new diffract.util.UserInputException("unknown variant '" + text + "': use reference, flss, nmm, pq, baked or lobes");
     }
 }

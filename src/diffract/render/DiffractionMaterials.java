@@ -5,9 +5,17 @@ import diffract.jrtr.Texture2D;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
+import diffract.optics.Covariance2;
 import diffract.optics.Direction;
+import diffract.optics.GaussHermite;
+import diffract.optics.LightSource;
+import diffract.optics.LobeQuadrature;
+import diffract.optics.OpticsOptions;
 import diffract.optics.PhaseCentres;
+import diffract.optics.PixelFilter;
 import diffract.optics.TaylorSincSpectrum;
+import diffract.optics.Variant;
+import diffract.util.UserInputException;
 
 /**
  * {@link Material}s of the diffraction shaders: program, textures and the uniforms that mirror
@@ -23,9 +31,18 @@ public final class DiffractionMaterials {
      * {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm} when monochromatic.
      */
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
-        Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.BRDF_MAP,
-                monochromatic, false));
-        return common(m, textures, settings);
+        return brdfMap(textures, settings, OpticsOptions.DEFAULT, monochromatic);
+    }
+
+    /**
+     * As above with the optics options (Fresnel model; for the lobes method the pixel filter and the light, whose
+     * uniforms {@link #setLight(Material, Direction, OpticsOptions)} sets with omega_i).
+     */
+    public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, OpticsOptions options,
+                                   boolean monochromatic) {
+        Material m = new Material(DiffractionShaders.program(settings, textures, options,
+                DiffractionShaders.Target.BRDF_MAP, monochromatic, false));
+        return common(m, textures, settings, options);
     }
 
     /**
@@ -35,7 +52,7 @@ public final class DiffractionMaterials {
      */
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
         Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures));
-        return common(m, textures, settings).setFloat("exposure", exposure);
+        return common(m, textures, settings, OpticsOptions.DEFAULT).setFloat("exposure", exposure);
     }
 
     /**
@@ -44,9 +61,15 @@ public final class DiffractionMaterials {
      */
     public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                    Texture2D pigmentation, float diffuseWeight) {
-        Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.SURFACE,
-                false, pigmentation != null));
-        common(m, textures, settings).setFloat("exposure", exposure);
+        return surface(textures, settings, OpticsOptions.DEFAULT, exposure, pigmentation, diffuseWeight);
+    }
+
+    /** As above with the optics options (the lobes method's pixels average over their footprint and the light). */
+    public static Material surface(DiffractionTextures textures, BrdfSettings settings, OpticsOptions options,
+                                   float exposure, Texture2D pigmentation, float diffuseWeight) {
+        Material m = new Material(DiffractionShaders.program(settings, textures, options,
+                DiffractionShaders.Target.SURFACE, false, pigmentation != null));
+        common(m, textures, settings, options).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }
@@ -59,15 +82,80 @@ public final class DiffractionMaterials {
      */
     static Material bake(DiffractionTextures textures, BrdfSettings flssSettings, BakedGrid grid) {
         Material m = new Material(DiffractionShaders.bakeProgram(flssSettings, textures));
-        return common(m, textures, flssSettings).setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
+        return common(m, textures, flssSettings, OpticsOptions.DEFAULT).setVec2("bakedSamples", grid.uvSamples(),
+                grid.wSamples());
     }
 
-    /** omega_i of a BRDF map (towards the light, tangent frame). */
+    /** omega_i of a BRDF map (towards the light, tangent frame), a point light. */
     public static Material setLight(Material brdfMap, Direction wi) {
-        return brdfMap.setVec3("omegaI", (float) wi.x(), (float) wi.y(), (float) wi.z());
+        return setLight(brdfMap, wi, OpticsOptions.DEFAULT);
     }
 
-    private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings) {
+    /**
+     * omega_i of a BRDF map and, for the lobes method, the light's (u, v) covariance at omega_i, split into its
+     * diagonal part and Gauss-Hermite shifts along the rest ({@link Covariance2#diagonalPlusRankOne}), which every
+     * pixel of the map shares.
+     */
+    public static Material setLight(Material brdfMap, Direction wi, OpticsOptions options) {
+        brdfMap.setVec3("omegaI", (float) wi.x(), (float) wi.y(), (float) wi.z());
+        LightSource light = options.light();
+        Covariance2 c = light.uvCovariance(wi);
+        double[] split = c.isDiagonal() ? new double[] {c.xx(), c.yy(), 1, 0, 0} : c.diagonalPlusRankOne();
+        brdfMap.setVec2("lightDiagonal", (float) split[0], (float) split[1]);
+        brdfMap.setVec3("lightRankOne", (float) (split[4] * split[2] * split[2]),
+                (float) (split[4] * split[2] * split[3]), (float) (split[4] * split[3] * split[3]));
+        float[] shifts = new float[3 * LIGHT_NODES_MAX];
+        int count = 0;
+        if (split[4] > 0) {
+            double sigma = Math.sqrt(split[4]);
+            double[] nodes = GaussHermite.nodes(options.lobes().lightNodes());
+            double[] weights = GaussHermite.weights(options.lobes().lightNodes());
+            for (int k = 0; k < nodes.length; k++) {
+                shifts[3 * k] = (float) (sigma * nodes[k] * split[2]);
+                shifts[3 * k + 1] = (float) (sigma * nodes[k] * split[3]);
+                shifts[3 * k + 2] = (float) weights[k];
+            }
+            count = nodes.length;
+        }
+        return brdfMap.setFloatArray("lightShifts", shifts).setInt("lightShiftCount", count)
+                .setFloat("lightSigmaRad", (float) light.sigmaRad());
+    }
+
+    /** The shader's light arrays hold this many Gauss-Hermite shifts (lobes_footprint.glsl). */
+    static final int LIGHT_NODES_MAX = 8;
+
+    /**
+     * The lobes method's uniforms: spectral weights, quadrature, pixel filter and light size. The shader sums whole
+     * texels only: a patch whose window keeps pairs of texels at the quadrature's threshold is refused.
+     */
+    private static void lobes(Material m, DiffractionTextures textures, BrdfSettings settings, OpticsOptions options) {
+        CoherenceWindow window = settings.coherenceWindow();
+        LobeQuadrature q = options.lobes();
+        int kx = LobeQuadrature.pairRadius(window.sigmaTexels(textures.extentXUm()), q.pairThreshold());
+        int ky = LobeQuadrature.pairRadius(window.sigmaTexels(textures.extentYUm()), q.pairThreshold());
+        if (kx > 0 || ky > 0) {
+            throw new UserInputException(String.format(java.util.Locale.ROOT, "the lobes shader sums whole texels, but "
+                    + "this %.1f x %.1f um patch at a %.0f um coherence length has sigma_f = %.2f texels: texel pairs "
+                    + "weigh more than the pair threshold %.0e; render it on the CPU (--engine cpu), or with a shorter "
+                    + "--coherence-length or a smaller patch", textures.extentXUm(), textures.extentYUm(),
+                    4 * settings.sigmaSpatialUm(), window.sigmaTexels(Math.max(textures.extentXUm(),
+                    textures.extentYUm())), q.pairThreshold()));
+        }
+        m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings))
+                .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings))
+                .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
+                .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
+                .setFloat("lobeReachSigmas", (float) q.reachSigmas())
+                .setFloat("lobeWeightStepNm", (float) q.weightStepNm())
+                .setFloat("pixelFootprintScale", options.pixelFilter() == PixelFilter.BOX ? 1f : 0f)
+                .setFloat("lightSigmaRad", (float) options.light().sigmaRad());
+    }
+
+    private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings,
+                                   OpticsOptions options) {
+        if (settings.variant() == Variant.LOBES) {
+            lobes(m, textures, settings, options);
+        }
         double extentX = textures.extentXUm();
         double extentY = textures.extentYUm();
         CoherenceWindow window = settings.coherenceWindow();

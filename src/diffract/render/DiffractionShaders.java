@@ -4,6 +4,8 @@ import diffract.colour.Srgb;
 import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
+import diffract.optics.FresnelModel;
+import diffract.optics.OpticsOptions;
 import diffract.optics.PhaseCentres;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
@@ -15,7 +17,8 @@ import java.util.TreeMap;
 
 /**
  * The GLSL programs of {@code shaders/diffraction/}: one thin fragment shader per variant ({@code flss.frag},
- * {@code nmm.frag}, {@code pq.frag}) over shared includes, specialised by compile-time {@code #define}s.
+ * {@code nmm.frag}, {@code pq.frag}, {@code baked.frag}, {@code lobes.frag}) over shared includes, specialised by
+ * compile-time {@code #define}s.
  *
  * <p>Texture blending on meshes (003 Algorithm 4) is printed garbled in the thesis (section 1.4.2: alpha = |F| is
  * called "the fraction which goes into the skin", and c_texture and c_pigmentation appear without a definition).
@@ -36,7 +39,7 @@ public final class DiffractionShaders {
 
     /** One line for the CLI and the API when the exact reference is asked of the GPU. */
     public static final String REFERENCE_IS_CPU_ONLY =
-            "the reference variant runs on the CPU only (--engine cpu); the GPU renders flss, nmm and pq";
+            "the reference variant runs on the CPU only (--engine cpu); the GPU renders flss, nmm, pq, baked and lobes";
 
     private DiffractionShaders() {
     }
@@ -118,22 +121,35 @@ public final class DiffractionShaders {
 
     /**
      * The program for the order, radii and expansion of these textures (what DiffractionMaterials uses): plain, or
-     * phase-centred when the textures hold phase-centred terms.
+     * phase-centred when the textures hold phase-centred terms; the physical Fresnel factor.
      */
     public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, Target target,
                                         boolean monochromatic, boolean pigmentation) {
-        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
-                definesFor(settings, textures, target, monochromatic, pigmentation));
+        return program(settings, textures, OpticsOptions.DEFAULT, target, monochromatic, pigmentation);
     }
 
-    /** Defines for these textures: their order, radii, expansion and, for 8-bit terms, {@code TERMS_UNORM8}. */
-    private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures, Target target,
-                                                  boolean monochromatic, boolean pigmentation) {
+    /** As above with the optics options (the Fresnel model is a define). */
+    public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, OpticsOptions options,
+                                        Target target, boolean monochromatic, boolean pigmentation) {
+        return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
+                definesFor(settings, textures, options, target, monochromatic, pigmentation));
+    }
+
+    /**
+     * Defines for these textures: their order, radii, expansion, for 8-bit terms {@code TERMS_UNORM8}, and
+     * {@code FRESNEL_THESIS} for the thesis' squared Fresnel factor.
+     */
+    private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures,
+                                                  OpticsOptions options, Target target, boolean monochromatic,
+                                                  boolean pigmentation) {
         Map<String, String> defines = defines(settings, textures.highestOrder(), textures.windowRadii(),
                 textures.phaseCentres(), target, monochromatic, pigmentation);
         if (textures.normalisedTerms()) {
             // the term lookup de-normalises 8-bit [0, 1] terms with the per-term extrema (NormalisedTerms)
             defines.put("TERMS_UNORM8", "1");
+        }
+        if (options.fresnel() == FresnelModel.THESIS) {
+            defines.put("FRESNEL_THESIS", "1");
         }
         return defines;
     }
@@ -143,7 +159,8 @@ public final class DiffractionShaders {
      * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
      */
     public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(flssSettings, textures, Target.BRDF_MAP, false, false);
+        Map<String, String> defines = definesFor(flssSettings, textures, OpticsOptions.DEFAULT, Target.BRDF_MAP, false,
+                false);
         defines.put("BAKE", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
     }
@@ -153,7 +170,13 @@ public final class DiffractionShaders {
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
     public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(settings, textures, Target.BRDF_MAP, false, false);
+        return displayBrdfMapProgram(settings, textures, OpticsOptions.DEFAULT);
+    }
+
+    /** As above with the optics options. */
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures,
+                                                      OpticsOptions options) {
+        Map<String, String> defines = definesFor(settings, textures, options, Target.BRDF_MAP, false, false);
         defines.put("DISPLAY_SRGB", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }

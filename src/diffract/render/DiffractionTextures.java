@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.colour.Cie1931;
 import diffract.colour.D65;
+import diffract.colour.HatFilteredSpectrum;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
 import diffract.jrtr.FloatTexture1D;
@@ -54,6 +55,8 @@ public final class DiffractionTextures {
     private final BakedTable baked;
     private final FloatTexture3D bakedTexture;
     private final PhaseCentres phaseCentres;
+    private HatFilteredSpectrum lobeSpectrum;
+    private FloatTexture1D lobeSpectralTable;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
                                 FloatTexture1D spectralTable, double spectralTableFirstNm, TaylorTerms source,
@@ -73,7 +76,10 @@ public final class DiffractionTextures {
         this.phaseCentres = phaseCentres;
     }
 
-    /** Terms 0..settings.highestOrder() (which the terms must hold) and the tables for the settings' wavelengths. */
+    /**
+     * Terms 0..settings.highestOrder() (which the terms must hold) and the tables for the settings' wavelengths.
+     * The lobes method reads the terms too, and {@link #lobeSpectralTable}.
+     */
     public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
         return of(terms, settings, precision, Reporter.SILENT);
     }
@@ -184,6 +190,24 @@ public final class DiffractionTextures {
 
     public double spectralTableFirstNm() {
         return spectralTableFirstNm;
+    }
+
+    /**
+     * The lobes method's spectral weights ({@link HatFilteredSpectrum}) for the settings' band, made on first use:
+     * one 1-D RGBA32F texture, level-major.
+     */
+    public synchronized FloatTexture1D lobeSpectralTable(BrdfSettings settings) {
+        if (lobeSpectralTable == null) {
+            lobeSpectrum = new HatFilteredSpectrum(settings.lambdaMinNm(), settings.lambdaMaxNm());
+            lobeSpectralTable = new FloatTexture1D(lobeSpectrum.rgba());
+        }
+        return lobeSpectralTable;
+    }
+
+    /** Entries per level of {@link #lobeSpectralTable}. */
+    public synchronized int lobeSpectralTablePositions(BrdfSettings settings) {
+        lobeSpectralTable(settings);
+        return lobeSpectrum.positions();
     }
 
     /** The phase centres of a phase-centred term array, null for the thesis' terms around 0. */

@@ -12,6 +12,7 @@ import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.OpticsOptions;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
@@ -29,6 +30,7 @@ import java.util.function.Supplier;
  */
 public final class GpuBrdfMap implements AutoCloseable {
     private final BrdfSettings settings;
+    private final OpticsOptions options;
     private final DiffractionTextures textures;
     private final ShapeNode quad;
     private final OffscreenTarget target;
@@ -41,31 +43,58 @@ public final class GpuBrdfMap implements AutoCloseable {
      * @throws UserInputException for the reference variant, or when no GL context can be opened
      */
     public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, () -> DiffractionTextures.of(terms, settings, precision)), settings);
+        this(terms, settings, OpticsOptions.DEFAULT, precision);
+    }
+
+    /** As above with the optics options (Fresnel model; the lobes method's pixel filter and light). */
+    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, OpticsOptions options,
+                      FloatTextureArray.Precision precision) {
+        this(checkVariant(settings, options, () -> DiffractionTextures.of(terms, settings, precision)), settings,
+                options);
     }
 
     /** The phase-centred expansion (issue #6): the same maps for patches too tall for the thesis' series. */
     public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, () -> DiffractionTextures.ofPhaseCentred(terms, settings, precision)), settings);
+        this(terms, settings, OpticsOptions.DEFAULT, precision);
+    }
+
+    /** As above with the optics options. */
+    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, OpticsOptions options,
+                      FloatTextureArray.Precision precision) {
+        this(checkVariant(settings, options, () -> DiffractionTextures.ofPhaseCentred(terms, settings, precision)),
+                settings, options);
     }
 
     /** The map of a scene on the path {@link TaylorEvaluation#choose} picked for it. */
     public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        return evaluation.isPhaseCentred() ? new GpuBrdfMap(evaluation.centredTerms(), settings, precision)
-                : new GpuBrdfMap(evaluation.plainTerms(), settings, precision);
+        return of(evaluation, settings, OpticsOptions.DEFAULT, precision);
     }
 
-    private static DiffractionTextures checkVariant(BrdfSettings settings, Supplier<DiffractionTextures> textures) {
+    /** As above with the optics options. */
+    public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, OpticsOptions options,
+                                FloatTextureArray.Precision precision) {
+        return evaluation.isPhaseCentred() ? new GpuBrdfMap(evaluation.centredTerms(), settings, options, precision)
+                : new GpuBrdfMap(evaluation.plainTerms(), settings, options, precision);
+    }
+
+    private static DiffractionTextures checkVariant(BrdfSettings settings, OpticsOptions options,
+                                                   Supplier<DiffractionTextures> textures) {
         if (settings.variant() == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+        }
+        if (settings.variant() != Variant.LOBES && !options.light().isPoint()) {
+            throw new UserInputException(settings.variant().cliName() + " samples the light at its centre only: for a "
+                    + "light of " + options.light().angularDiameterDeg() + " degrees use --variant lobes (or "
+                    + "--light-size-deg 0)");
         }
         return textures.get();
     }
 
-    private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings) {
+    private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings, OpticsOptions options) {
         this.settings = settings;
+        this.options = options;
         this.textures = textures;
-        this.xyzMaterial = DiffractionMaterials.brdfMap(textures, settings, false);
+        this.xyzMaterial = DiffractionMaterials.brdfMap(textures, settings, options, false);
         this.quad = new ShapeNode(Shapes.fullScreenQuad(), xyzMaterial);
         this.target = new OffscreenTarget(new Renderer(new Group("brdf map").add(quad), new Camera(), new Frustum()));
     }
@@ -134,7 +163,7 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     private void useMonochromatic(Direction wi, double lambdaNm, int size) {
         if (monochromaticMaterial == null) {
-            monochromaticMaterial = DiffractionMaterials.brdfMap(textures, settings, true);
+            monochromaticMaterial = DiffractionMaterials.brdfMap(textures, settings, options, true);
         }
         use(monochromaticMaterial, wi, size);
         monochromaticMaterial.setFloat("lambdaNm", (float) lambdaNm);
@@ -144,7 +173,7 @@ public final class GpuBrdfMap implements AutoCloseable {
         if (size < 1) {
             throw new IllegalArgumentException("map size must be >= 1, got " + size);
         }
-        DiffractionMaterials.setLight(material, wi).setFloat("mapSizePx", size);
+        DiffractionMaterials.setLight(material, wi, options).setFloat("mapSizePx", size);
         quad.setMaterial(material);
     }
 

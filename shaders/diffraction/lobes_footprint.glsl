@@ -1,0 +1,122 @@
+// What a pixel of the lobes method averages over (Footprint, LightSource, LobeGeometry on the CPU): a BRDF-map
+// pixel's square in (u, v) with the light's Gaussian folded into each axis, or a surface pixel's Gaussian (its
+// screen-space derivatives) plus the light's. Included by lobes.frag.
+#ifndef LOBES_FOOTPRINT_GLSL
+#define LOBES_FOOTPRINT_GLSL
+#include "diffraction_common.glsl"
+
+#define LIGHT_NODES_MAX 8
+
+// 1: pixels average over their footprint (PixelFilter.BOX); 0: the centre direction only (PixelFilter.POINT).
+uniform float pixelFootprintScale;
+// BRDF maps (one omega_i per map): the light's (u, v) covariance split on the CPU (Covariance2.diagonalPlusRankOne)
+// into a diagonal part (variances along u and v) and Gauss-Hermite shifts along the rest: (du, dv, weight) per node.
+uniform vec2 lightDiagonal;
+uniform vec3 lightRankOne; // the rest, (xx, xy, yy): a point pixel takes the light's full covariance
+uniform float lightShifts[3 * LIGHT_NODES_MAX];
+uniform int lightShiftCount;
+// Surfaces: sigma_a = D / 4 of the light in radians (LightSource.sigmaRad); its covariance follows omega_i.
+uniform float lightSigmaRad;
+
+// The footprint of the fragment being shaded, set by setMapPixel or setSurfacePixel before spectralXyz runs.
+vec2 footprintHalfWidth;   // the box's half-widths in (u, v) (0: none)
+vec3 footprintGaussian;    // (xx, xy, yy): the Gaussian convolved with the box (diagonal when there is a box)
+int footprintShiftCount;   // Gauss-Hermite shifts of the light's off-axis part (box only; 1 = none)
+
+// LightSource.uvCovariance: sigma_a^2 (cos^2 theta r r^T + e e^T), r = (cos phi, sin phi), e = (-sin phi, cos phi).
+vec3 lightCovariance(vec3 wi) {
+    float variance = lightSigmaRad * lightSigmaRad;
+    float sinTheta = length(wi.xy);
+    if (variance == 0.0) {
+        return vec3(0.0);
+    }
+    if (sinTheta < 1e-6) {
+        return vec3(variance, 0.0, variance);
+    }
+    vec2 r = wi.xy / sinTheta;
+    float c2 = wi.z * wi.z;
+    return variance * vec3(c2 * r.x * r.x + r.y * r.y, (c2 - 1.0) * r.x * r.y, c2 * r.y * r.y + r.x * r.x);
+}
+
+// A BRDF-map pixel of an S x S map: a square of half-width 1 / S (Footprint.mapPixel), the light from uniforms.
+void setMapPixel(float halfWidth) {
+    footprintHalfWidth = vec2(halfWidth * pixelFootprintScale);
+    footprintGaussian = vec3(lightDiagonal.x, 0.0, lightDiagonal.y);
+    footprintShiftCount = max(lightShiftCount, 1);
+    if (footprintHalfWidth.x == 0.0 && footprintHalfWidth.y == 0.0) {
+        // no box: the light's full Gaussian is the footprint
+        footprintGaussian += lightRankOne;
+        footprintShiftCount = 1;
+    }
+}
+
+// A surface pixel: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v) derivatives (Footprint.surfacePixel),
+// plus the light's covariance at omega_i.
+void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
+    vec3 pixel = pixelFootprintScale * vec3(dUvDx.x * dUvDx.x + dUvDy.x * dUvDy.x, dUvDx.x * dUvDx.y
+            + dUvDy.x * dUvDy.y, dUvDx.y * dUvDx.y + dUvDy.y * dUvDy.y) / 12.0;
+    footprintHalfWidth = vec2(0.0);
+    footprintGaussian = pixel + lightCovariance(wi);
+    footprintShiftCount = 1;
+}
+
+// ErrorFunction.fastErfc: Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7.
+float fastErfc(float x) {
+    float a = abs(x);
+    float t = 1.0 / (1.0 + 0.3275911 * a);
+    float e = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))))
+            * exp(-a * a);
+    return x >= 0.0 ? e : 2.0 - e;
+}
+
+// ErrorFunction.fastMassInInterval: (erf(b) - erf(a)) / 2 on the side where it does not cancel.
+float massInInterval(float a, float b) {
+    if (a >= 0.0) {
+        return 0.5 * (fastErfc(a) - fastErfc(b));
+    }
+    if (b <= 0.0) {
+        return 0.5 * (fastErfc(-b) - fastErfc(-a));
+    }
+    return 0.5 * (2.0 - fastErfc(-a) - fastErfc(b));
+}
+
+// LobeGeometry.axis: sqrt(pi) sigmaUv times the average over [u - h, u + h] of N(mu, variance); the density at the
+// centre for a box narrower than 0.05 of the spread (LobeGeometry.NARROW_BOX).
+float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
+    float s = sqrt(variance);
+    if (h == 0.0 || 2.0 * h < 0.05 * s) {
+        float d = (u - mu) / s;
+        return sigmaUv / (1.41421356 * s) * exp(-0.5 * d * d);
+    }
+    float scale = 1.0 / (1.41421356 * s);
+    // the fast erf's absolute error (1.5e-7) could make a far tail's mass slightly negative
+    float mass = max(0.0, massInInterval((u - h - mu) * scale, (u + h - mu) * scale));
+    return 1.77245385 * sigmaUv * mass / (2.0 * h);
+}
+
+// LobeGeometry.averagedLobe: the lobe of spread sigmaUv at mu, averaged over the fragment's footprint at uv (peak 1
+// for a point on the lobe's centre).
+float averagedLobe(float sigmaUv, vec2 mu, vec2 uv) {
+    float lobeVariance = 0.5 * sigmaUv * sigmaUv;
+    if (footprintHalfWidth.x == 0.0 && footprintHalfWidth.y == 0.0) {
+        vec3 s = footprintGaussian + vec3(lobeVariance, 0.0, lobeVariance);
+        float det = s.x * s.z - s.y * s.y;
+        vec2 d = uv - mu;
+        float q = (s.z * d.x * d.x - 2.0 * s.y * d.x * d.y + s.x * d.y * d.y) / det;
+        return sigmaUv * sigmaUv / (2.0 * sqrt(det)) * exp(-0.5 * q);
+    }
+    float sum = 0.0;
+    for (int k = 0; k < LIGHT_NODES_MAX; k++) {
+        if (k >= footprintShiftCount) {
+            break;
+        }
+        vec3 shift = lightShiftCount > 0 ? vec3(lightShifts[3 * k], lightShifts[3 * k + 1], lightShifts[3 * k + 2])
+                : vec3(0.0, 0.0, 1.0);
+        vec2 at = uv + shift.xy;
+        sum += shift.z * lobeAxis(sigmaUv, lobeVariance + footprintGaussian.x, mu.x, at.x, footprintHalfWidth.x)
+                * lobeAxis(sigmaUv, lobeVariance + footprintGaussian.z, mu.y, at.y, footprintHalfWidth.y);
+    }
+    return sum;
+}
+
+#endif

@@ -1,0 +1,201 @@
+package diffract.colour;
+
+/**
+ * The spectral weights of the lobes method's wavelength rule: the tristimulus density f = S (xbar, ybar, zbar) / N
+ * (D65 times CIE 1931, interpolated linearly between whole nanometres as the product S xbar etc., truncated to the
+ * band [lambda_min, lambda_max] and normalised to N = integral of S ybar over the band), and its averages over hat
+ * functions of half-width h = 1, 2, 4, 8 and 16 nm,
+ * <pre>
+ *   f_h(lambda) = (1 / h) integral f(l) max(0, 1 - |l - lambda| / h) dl,
+ * </pre>
+ * both tabulated every nanometre from lambda_min. A rule with nodes lambda_j = lambda_min + j h and weights
+ * h f_h(lambda_j) is the trapezoid rule for the smooth factor g of integral f g: exact for the spectral structure of
+ * f (its kinks every nanometre) and for any g that is linear between the nodes, and exactly D65 white with Y = 1
+ * for g = 1 (the hats of a grid starting at lambda_min sum to 1 on the band). For node spacings below 1 nm the
+ * weight is h f(lambda_j). The GPU receives the same table (level 0 = f, level l = f_{2^(l-1)}).
+ */
+public final class HatFilteredSpectrum {
+    /** Hat half-widths 2^0 .. 2^(LEVELS - 2) nm: 1, 2, 4, 8, 16. */
+    public static final int LEVELS = 6;
+    /** The widest hat, nm: the largest node spacing the rule takes. */
+    public static final int WIDEST_HAT_NM = 1 << (LEVELS - 2);
+
+    private final double lambdaMinNm;
+    private final double lambdaMaxNm;
+    private final int positions;
+    /** [level][position][channel], normalised by N. */
+    private final double[][][] table;
+    private final double normaliser;
+
+    public HatFilteredSpectrum(double lambdaMinNm, double lambdaMaxNm) {
+        if (!(lambdaMinNm > 0) || !(lambdaMaxNm > lambdaMinNm)) {
+            throw new IllegalArgumentException("need 0 < lambda_min < lambda_max, got " + lambdaMinNm + ", " + lambdaMaxNm);
+        }
+        this.lambdaMinNm = lambdaMinNm;
+        this.lambdaMaxNm = lambdaMaxNm;
+        // nodes up to lambda_max + 16 nm: hats beyond lambda_max still overlap the band
+        this.positions = (int) Math.ceil(lambdaMaxNm - lambdaMinNm) + WIDEST_HAT_NM + 1;
+        double n = 0;
+        for (double lo = lambdaMinNm; lo < lambdaMaxNm; ) {
+            double hi = Math.min(lambdaMaxNm, Math.floor(lo) + 1);
+            n += 0.5 * (hi - lo) * (product(lo)[1] + product(hi)[1]); // linear between whole nm: exact
+            lo = hi;
+        }
+        if (!(n > 0)) {
+            throw new IllegalArgumentException("the band " + lambdaMinNm + ".." + lambdaMaxNm + " nm sees no D65 luminance");
+        }
+        this.normaliser = n;
+        this.table = new double[LEVELS][positions][3];
+        for (int p = 0; p < positions; p++) {
+            double lambda = lambdaMinNm + p;
+            table[0][p] = truncated(lambda);
+            for (int c = 0; c < 3; c++) {
+                table[0][p][c] /= n;
+            }
+            for (int level = 1; level < LEVELS; level++) {
+                double h = 1 << (level - 1);
+                table[level][p] = hatAverage(lambda, h);
+                for (int c = 0; c < 3; c++) {
+                    table[level][p][c] /= n;
+                }
+            }
+        }
+    }
+
+    /** S (xbar, ybar, zbar) with S and each CMF at whole nanometres, multiplied there, linear in between. */
+    private static double[] product(double lambdaNm) {
+        double lo = Math.floor(lambdaNm);
+        double t = lambdaNm - lo;
+        double[] a = atWholeNm(lo);
+        if (t == 0) {
+            return a;
+        }
+        double[] b = atWholeNm(lo + 1);
+        return new double[] {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
+    }
+
+    private static double[] atWholeNm(double lambdaNm) {
+        double s = D65.relativePower(lambdaNm);
+        return new double[] {s * Cie1931.xBar(lambdaNm), s * Cie1931.yBar(lambdaNm), s * Cie1931.zBar(lambdaNm)};
+    }
+
+    private double[] truncated(double lambdaNm) {
+        return lambdaNm < lambdaMinNm || lambdaNm > lambdaMaxNm ? new double[3] : product(lambdaNm);
+    }
+
+    /** (1 / h) integral of f times the hat of half-width h at lambda: Simpson's rule between breakpoints (exact). */
+    private double[] hatAverage(double lambda, double h) {
+        double from = Math.max(lambda - h, lambdaMinNm);
+        double to = Math.min(lambda + h, lambdaMaxNm);
+        double[] sum = new double[3];
+        if (!(to > from)) {
+            return sum;
+        }
+        // breakpoints: whole nanometres (f's kinks), the hat's apex, the ends
+        java.util.TreeSet<Double> cuts = new java.util.TreeSet<>();
+        cuts.add(from);
+        cuts.add(to);
+        if (lambda > from && lambda < to) {
+            cuts.add(lambda);
+        }
+        for (double k = Math.ceil(from); k < to; k++) {
+            if (k > from) {
+                cuts.add(k);
+            }
+        }
+        Double previous = null;
+        for (double cut : cuts) {
+            if (previous != null) {
+                double a = previous;
+                double b = cut;
+                double m = 0.5 * (a + b);
+                double[] fa = product(a);
+                double[] fm = product(m);
+                double[] fb = product(b);
+                double ha = hat(a, lambda, h);
+                double hm = hat(m, lambda, h);
+                double hb = hat(b, lambda, h);
+                for (int c = 0; c < 3; c++) {
+                    sum[c] += (b - a) / 6 * (fa[c] * ha + 4 * fm[c] * hm + fb[c] * hb);
+                }
+            }
+            previous = cut;
+        }
+        for (int c = 0; c < 3; c++) {
+            sum[c] /= h;
+        }
+        return sum;
+    }
+
+    private static double hat(double l, double centre, double h) {
+        return Math.max(0, 1 - Math.abs(l - centre) / h);
+    }
+
+    /**
+     * The weight {X, Y, Z} of node lambda_j for node spacing h into out: h f_h(lambda_j) for h = 1, 2, 4, 8, 16 nm
+     * (lambda_j = lambda_min + j h, a whole number of nanometres from lambda_min), h f(lambda_j) below 1 nm (f
+     * interpolated linearly between the table's nanometres).
+     */
+    public void weight(double lambdaNm, double spacingNm, double[] out) {
+        double position = lambdaNm - lambdaMinNm;
+        if (spacingNm >= 1) {
+            int level = levelOf(spacingNm);
+            int p = (int) Math.rint(position);
+            double[] v = p >= 0 && p < positions ? table[level][p] : ZERO;
+            out[0] = spacingNm * v[0];
+            out[1] = spacingNm * v[1];
+            out[2] = spacingNm * v[2];
+            return;
+        }
+        int p = (int) Math.floor(position);
+        double t = position - p;
+        double[] a = p >= 0 && p < positions ? table[0][p] : ZERO;
+        double[] b = p + 1 >= 0 && p + 1 < positions ? table[0][p + 1] : ZERO;
+        for (int c = 0; c < 3; c++) {
+            out[c] = spacingNm * (a[c] + t * (b[c] - a[c]));
+        }
+    }
+
+    private static final double[] ZERO = new double[3];
+
+    /** The table level of a spacing of 1, 2, 4, 8 or 16 nm. */
+    public static int levelOf(double spacingNm) {
+        int level = 1 + (int) Math.round(Math.log(spacingNm) / Math.log(2));
+        if (level < 1 || level >= LEVELS || (1 << (level - 1)) != spacingNm) {
+            throw new IllegalArgumentException("hat spacings are 1, 2, 4, 8 or 16 nm, got " + spacingNm);
+        }
+        return level;
+    }
+
+    /** Table entries per level (every nanometre from lambda_min to lambda_max + 16 nm). */
+    public int positions() {
+        return positions;
+    }
+
+    /** The table for the GPU: RGBA32F texels, level-major, (X, Y, Z, 0) per position, normalised. */
+    public float[] rgba() {
+        float[] out = new float[4 * LEVELS * positions];
+        for (int level = 0; level < LEVELS; level++) {
+            for (int p = 0; p < positions; p++) {
+                int i = 4 * (level * positions + p);
+                out[i] = (float) table[level][p][0];
+                out[i + 1] = (float) table[level][p][1];
+                out[i + 2] = (float) table[level][p][2];
+            }
+        }
+        return out;
+    }
+
+    /** N = integral over the band of S ybar (the product interpolated between whole nanometres). */
+    public double normaliser() {
+        return normaliser;
+    }
+
+    public double lambdaMinNm() {
+        return lambdaMinNm;
+    }
+
+    public double lambdaMaxNm() {
+        return lambdaMaxNm;
+    }
+}

@@ -1,0 +1,82 @@
+package diffract.optics;
+
+import diffract.colour.HatFilteredSpectrum;
+import diffract.util.UserInputException;
+
+/**
+ * The accuracy knobs of the lobes method ({@link LobeSpectrum}, {@code lobes.frag}); docs/filtering.md measures
+ * each.
+ *
+ * @param pairThreshold  texel pairs m != m' are summed while their window weight exp(-|m - m'|^2_sigma / 4) is at
+ *                       least this (relative to the product of their coefficients); in (0, 1]. The GPU sums whole
+ *                       texels only: it needs a threshold that keeps no pair for the patch
+ * @param nodesPerSigma  wavelength nodes per standard deviation of a lobe's passage through the footprint (the
+ *                       width, in nm, of its erf edges or Gaussian profile); &gt; 0
+ * @param maxStepNm      the widest node spacing: 1, 2, 4, 8 or 16 nm (the hat-filtered spectral weights), or any
+ *                       spacing below 1 nm (point weights): bounds how coarsely the spectrum is followed across a
+ *                       wide lobe
+ * @param reachSigmas    a lobe is summed where it comes within this many standard deviations of the footprint
+ * @param weightStepNm   the lobe's slowly varying factors (its weight W_c(k w), and the footprint's average along
+ *                       an axis the lobe does not move on) are evaluated every this many nanometres of its passage and
+ *                       at its ends, linearly interpolated between; 0 = at every node
+ * @param lightNodes     Gauss-Hermite nodes along the part of a light's covariance that a BRDF-map pixel's box
+ *                       cannot average analytically (lights off the axes of the patch), 1..8
+ */
+public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
+                             double weightStepNm, int lightNodes) {
+    public static final LobeQuadrature DEFAULT = new LobeQuadrature(1e-4, 0.67, 8, 4.0, 8, 3);
+
+    public LobeQuadrature {
+        if (!(pairThreshold > 0 && pairThreshold <= 1)) {
+            throw new UserInputException("the lobes' pair threshold must be in (0, 1], got " + pairThreshold);
+        }
+        if (!(nodesPerSigma > 0) || !Double.isFinite(nodesPerSigma)) {
+            throw new UserInputException("the lobes' nodes per sigma must be > 0, got " + nodesPerSigma);
+        }
+        if (!(maxStepNm > 0 && maxStepNm < 1)) {
+            HatFilteredSpectrum.levelOf(maxStepNm);
+        }
+        if (!(reachSigmas >= 2 && reachSigmas <= 10)) {
+            throw new UserInputException("the lobes' reach must be 2..10 standard deviations, got " + reachSigmas);
+        }
+        if (!(weightStepNm >= 0) || !Double.isFinite(weightStepNm)) {
+            throw new UserInputException("the lobes' weight step must be >= 0 nm (0 = every node), got " + weightStepNm);
+        }
+        if (lightNodes < 1 || lightNodes > GaussHermite.MAX_NODES) {
+            throw new UserInputException("the lobes' light nodes must be 1.." + GaussHermite.MAX_NODES + ", got "
+                    + lightNodes);
+        }
+    }
+
+    /**
+     * K = floor(2 sigma sqrt(ln(1 / threshold))): the largest texel offset |m - m'| along an axis of sigma_f =
+     * {@code sigmaTexels} whose pair weight exp(-K^2 / (4 sigma^2)) reaches the threshold (0: whole texels only).
+     */
+    public static int pairRadius(double sigmaTexels, double pairThreshold) {
+        return GaussianLobes.pairRadius(sigmaTexels, pairThreshold);
+    }
+
+    public LobeQuadrature withNodesPerSigma(double nodes) {
+        return new LobeQuadrature(pairThreshold, nodes, maxStepNm, reachSigmas, weightStepNm, lightNodes);
+    }
+
+    public LobeQuadrature withMaxStepNm(double step) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, step, reachSigmas, weightStepNm, lightNodes);
+    }
+
+    public LobeQuadrature withPairThreshold(double threshold) {
+        return new LobeQuadrature(threshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes);
+    }
+
+    public LobeQuadrature withReachSigmas(double reach) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reach, weightStepNm, lightNodes);
+    }
+
+    public LobeQuadrature withWeightStepNm(double step) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, step, lightNodes);
+    }
+
+    public LobeQuadrature withLightNodes(int nodes) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, nodes);
+    }
+}

@@ -1,0 +1,338 @@
+package diffract.optics;
+
+import diffract.colour.HatFilteredSpectrum;
+
+/**
+ * The lobes method: the windowed spectrum's Gaussian lobes ({@link GaussianLobes}), each widened by the pixel's
+ * footprint and the light and integrated over wavelength by a rule fitted to the lobe (docs/filtering.md, section
+ * 4). The CPU mirror of {@code shaders/diffraction/lobes.frag}, step for step, in double.
+ *
+ * <p>Per fragment, with (u, v, w) at the footprint's centre:
+ * <ol>
+ *   <li>March over the lobe centres c near the segment s(lambda) = (u L_x, v L_y) / lambda, lambda in the band,
+ *       along its major axis; for each c the wavelengths at which its centre mu_c(lambda) = lambda (c_x / L_x,
+ *       c_y / L_y) comes within reach of the footprint (the box plus {@link LobeQuadrature#reachSigmas} of the
+ *       widened lobe's standard deviation) follow from a linear inequality per axis; a lobe out of reach is skipped
+ *       before its terms are read.</li>
+ *   <li>A lobe's terms are read once; its weight W_c(k w) (|T_m|^2 without pairs) is evaluated at every node.</li>
+ *   <li>Nodes: lambda_j = lambda_min + j h inside that interval, h = the passage's width in nanometres (the lobe's
+ *       widened standard deviation over the speed |d mu / d lambda|) over {@link LobeQuadrature#nodesPerSigma},
+ *       rounded down to 1, 2, 4, 8 or 16 nm and at most {@link LobeQuadrature#maxStepNm}, or any spacing below
+ *       1 nm; weights of {@link HatFilteredSpectrum}. A lobe that does not move (c = 0) gets the widest step.</li>
+ *   <li>The lobe at each node averaged over the footprint ({@link LobeGeometry}): a BRDF-map pixel's box exactly
+ *       (erf per axis) with the light's Gaussian folded into each axis (its off-axis part by
+ *       {@link LobeQuadrature#lightNodes} Gauss-Hermite nodes), a surface pixel as a Gaussian.</li>
+ * </ol>
+ * The gain factor, the shadowing and w are the caller's, at the footprint's centre. Each call allocates its own
+ * state: thread-safe.
+ */
+public final class LobeSpectrum {
+    /**
+     * The most wavelength nodes one lobe gets when its spacing is below 1 nm (the shader's loop bound; the default
+     * quadrature asks for about ten).
+     */
+    static final int MAX_NODES = 512;
+
+    private final GaussianLobes lobes;
+    private final HatFilteredSpectrum spectral;
+    private final LobeQuadrature quadrature;
+    private final double extentXUm;
+    private final double extentYUm;
+    private final double sigmaFPerUm;
+    private final double lambdaMinNm;
+    private final double lambdaMaxNm;
+    private final boolean fastErf;
+
+    /**
+     * @param fastErf the shader's erf (Abramowitz and Stegun 7.1.26) instead of the accurate one
+     */
+    LobeSpectrum(TexelCoefficients coefficients, CoherenceWindow window, double lambdaMinNm, double lambdaMaxNm,
+                 LobeQuadrature quadrature, boolean fastErf) {
+        this.extentXUm = coefficients.extentXUm();
+        this.extentYUm = coefficients.extentYUm();
+        this.lobes = new GaussianLobes(coefficients, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm),
+                quadrature.pairThreshold());
+        this.spectral = new HatFilteredSpectrum(lambdaMinNm, lambdaMaxNm);
+        this.quadrature = quadrature;
+        this.sigmaFPerUm = window.sigmaFrequencyPerUm();
+        this.lambdaMinNm = lambdaMinNm;
+        this.lambdaMaxNm = lambdaMaxNm;
+        this.fastErf = fastErf;
+    }
+
+    /** Over the float32 Taylor terms, the plain series to {@code highestOrder}: what the shader reads. */
+    public static LobeSpectrum ofTerms(TaylorTerms terms, int highestOrder, CoherenceWindow window, double lambdaMinNm,
+                                       double lambdaMaxNm, LobeQuadrature quadrature) {
+        return new LobeSpectrum(new TaylorTexels(terms, highestOrder), window, lambdaMinNm, lambdaMaxNm, quadrature,
+                true);
+    }
+
+    /** Over the float32 terms of the phase-centred expansion. */
+    public static LobeSpectrum ofTerms(PhaseCentredTerms terms, CoherenceWindow window, double lambdaMinNm,
+                                       double lambdaMaxNm, LobeQuadrature quadrature) {
+        return new LobeSpectrum(new TaylorTexels(terms), window, lambdaMinNm, lambdaMaxNm, quadrature, true);
+    }
+
+    /** Texel pairs kept per axis (0: whole texels only, what the shader sums). */
+    public int pairRadiusX() {
+        return lobes.pairRadiusX();
+    }
+
+    public int pairRadiusY() {
+        return lobes.pairRadiusY();
+    }
+
+    public double extentXUm() {
+        return extentXUm;
+    }
+
+    public double extentYUm() {
+        return extentYUm;
+    }
+
+    /** The per-fragment shape of the footprint, prepared once. */
+    private static final class Shape {
+        final double hx;
+        final double hy;
+        final Covariance2 gaussian; // full when there is no box, else its diagonal part
+        final double[] shiftU;      // Gauss-Hermite shifts of the rank-one part (box only)
+        final double[] shiftV;
+        final double[] shiftWeight;
+        final double reachU;
+        final double reachV;
+
+        Shape(Footprint footprint, LobeQuadrature quadrature, double widestLobeVariance) {
+            hx = footprint.halfWidthU();
+            hy = footprint.halfWidthV();
+            Covariance2 g = footprint.gaussian();
+            if (footprint.hasBox() && !g.isDiagonal()) {
+                double[] split = g.diagonalPlusRankOne();
+                gaussian = new Covariance2(split[0], 0, split[1]);
+                int n = quadrature.lightNodes();
+                double[] nodes = GaussHermite.nodes(n);
+                double sigma = Math.sqrt(split[4]);
+                shiftU = new double[n];
+                shiftV = new double[n];
+                shiftWeight = GaussHermite.weights(n);
+                for (int k = 0; k < n; k++) {
+                    shiftU[k] = sigma * nodes[k] * split[2];
+                    shiftV[k] = sigma * nodes[k] * split[3];
+                }
+            } else {
+                gaussian = g;
+                shiftU = new double[] {0};
+                shiftV = new double[] {0};
+                shiftWeight = new double[] {1};
+            }
+            // the full Gaussian's marginals bound the reach on each axis
+            reachU = hx + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx());
+            reachV = hy + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy());
+        }
+
+        boolean hasBox() {
+            return hx > 0 || hy > 0;
+        }
+    }
+
+    /**
+     * XYZ of D65 light diffracted at (u, v, w), averaged over the footprint around (u, v), before the gain factor
+     * and shadowing: {X, Y, Z}, D65 white at Y = 1.
+     */
+    public double[] xyz(double u, double v, double w, Footprint footprint) {
+        double widest = 0.5 * square(lambdaMaxNm * 1e-3 * sigmaFPerUm);
+        Shape shape = new Shape(footprint, quadrature, widest);
+        double[] total = new double[3];
+        double[] node = new double[3];
+        int step = lobes.hasPairs() ? 1 : 2;
+        double shortest = lambdaMinNm * 1e-3;
+        double longest = lambdaMaxNm * 1e-3;
+        double[] xRange = range(u, shape.reachU, extentXUm, shortest, longest);
+        double[] yRange = range(v, shape.reachV, extentYUm, shortest, longest);
+        boolean majorIsX = (xRange[1] - xRange[0]) >= (yRange[1] - yRange[0]);
+        double[] major = majorIsX ? xRange : yRange;
+        for (int tMajor = first(major[0], step); tMajor <= Math.ceil(2 * major[1]); tMajor += step) {
+            double[] along = majorIsX
+                    ? LobeGeometry.lambdaIntervalNm(0.5 * tMajor / extentXUm, 0, u, 0, shape.reachU, 1, lambdaMinNm,
+                    lambdaMaxNm)
+                    : LobeGeometry.lambdaIntervalNm(0, 0.5 * tMajor / extentYUm, 0, v, 1, shape.reachV, lambdaMinNm,
+                    lambdaMaxNm);
+            if (along == null) {
+                continue;
+            }
+            double[] minor = majorIsX ? range(v, shape.reachV, extentYUm, along[0] * 1e-3, along[1] * 1e-3)
+                    : range(u, shape.reachU, extentXUm, along[0] * 1e-3, along[1] * 1e-3);
+            for (int tMinor = first(minor[0], step); tMinor <= Math.ceil(2 * minor[1]); tMinor += step) {
+                int tx = majorIsX ? tMajor : tMinor;
+                int ty = majorIsX ? tMinor : tMajor;
+                double cx = 0.5 * tx / extentXUm;
+                double cy = 0.5 * ty / extentYUm;
+                double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, shape.reachU, shape.reachV,
+                        lambdaMinNm, lambdaMaxNm);
+                if (interval == null) {
+                    continue;
+                }
+                GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+                if (lobe == null) {
+                    continue;
+                }
+                integrate(lobe, cx, cy, u, v, w, shape, interval[0], interval[1], node, total);
+            }
+        }
+        return total;
+    }
+
+    /** The lobe centres (texels) one axis can reach over wavelengths [shortest, longest] um: {lo, hi}. */
+    private static double[] range(double u, double reach, double extentUm, double shortestUm, double longestUm) {
+        double a = (u - reach) * extentUm;
+        double b = (u + reach) * extentUm;
+        return new double[] {Math.min(a / shortestUm, a / longestUm), Math.max(b / shortestUm, b / longestUm)};
+    }
+
+    /** The first doubled centre at or above 2 lo with the lattice's parity (even without pairs). */
+    private static int first(double lo, int step) {
+        int t = (int) Math.floor(2 * lo);
+        return step == 2 && Math.floorMod(t, 2) != 0 ? t + 1 : t;
+    }
+
+    /**
+     * One lobe's wavelength integral over [from, to] nm, added to total: the lobe's slow factor (its weight, times
+     * the footprint's average along an axis it does not move on) at the weight points, linearly interpolated; the
+     * moving axes' average at every node.
+     */
+    private void integrate(GaussianLobes.Lobe lobe, double cx, double cy, double u, double v, double w, Shape shape,
+                           double from, double to, double[] node, double[] total) {
+        double spacing = spacingNm(cx, cy, shape, from);
+        int j0 = (int) Math.ceil((from - lambdaMinNm) / spacing - 1e-9);
+        int j1 = (int) Math.floor((to - lambdaMinNm) / spacing + 1e-9);
+        if (spacing < 1 && j1 - j0 + 1 > MAX_NODES) {
+            spacing = Math.min(1.0, (to - from) / (MAX_NODES - 1));
+            j0 = (int) Math.ceil((from - lambdaMinNm) / spacing - 1e-9);
+            j1 = (int) Math.floor((to - lambdaMinNm) / spacing + 1e-9);
+        }
+        if (j1 < j0) {
+            return;
+        }
+        // the axes the lobe moves on are averaged at every node; a static axis (c_i = 0) joins the slow factor
+        boolean hoist = shape.hasBox() && shape.shiftWeight.length == 1 && (cx == 0 || cy == 0);
+        double step = quadrature.weightStepNm();
+        double first = lambdaMinNm + j0 * spacing;
+        double last = lambdaMinNm + j1 * spacing;
+        double slowStep = step > 0 && last > first ? (last - first) / Math.max(1, Math.ceil((last - first) / step)) : 0;
+        double slowLo = first;
+        double slowHi = first;
+        double slowAtLo = slow(lobe, cx, cy, u, v, w, shape, first, hoist);
+        double slowAtHi = slowAtLo;
+        for (int j = j0; j <= j1; j++) {
+            double lambdaNm = lambdaMinNm + j * spacing;
+            double slowValue;
+            if (slowStep == 0) {
+                slowValue = j == j0 ? slowAtLo : slow(lobe, cx, cy, u, v, w, shape, lambdaNm, hoist);
+            } else {
+                while (lambdaNm > slowHi + 1e-9) {
+                    slowLo = slowHi;
+                    slowAtLo = slowAtHi;
+                    slowHi = Math.min(last, slowLo + slowStep);
+                    slowAtHi = slow(lobe, cx, cy, u, v, w, shape, slowHi, hoist);
+                }
+                double t = slowHi > slowLo ? (lambdaNm - slowLo) / (slowHi - slowLo) : 0;
+                slowValue = slowAtLo + t * (slowAtHi - slowAtLo);
+            }
+            double a = fast(lambdaNm * 1e-3, cx, cy, u, v, shape, hoist);
+            spectral.weight(lambdaNm, spacing, node);
+            double scale = slowValue * a;
+            total[0] += scale * node[0];
+            total[1] += scale * node[1];
+            total[2] += scale * node[2];
+        }
+    }
+
+    /** The lobe's slowly varying factor at lambda: W_c(k w), times a static axis' average when hoisted. */
+    private double slow(GaussianLobes.Lobe lobe, double cx, double cy, double u, double v, double w, Shape shape,
+                        double lambdaNm, boolean hoist) {
+        double lambdaUm = lambdaNm * 1e-3;
+        double weight = lobe.weight(2 * Math.PI / lambdaUm * w);
+        if (!hoist) {
+            return weight;
+        }
+        double sigmaUv = lambdaUm * sigmaFPerUm;
+        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
+        return weight * (cx == 0 ? LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.xx(), 0, u, shape.hx, fastErf)
+                : LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), 0, v, shape.hy, fastErf));
+    }
+
+    /** The footprint's average of the lobe at lambda, over the axes it moves on when a static axis is hoisted. */
+    private double fast(double lambdaUm, double cx, double cy, double u, double v, Shape shape, boolean hoist) {
+        if (!hoist) {
+            return averaged(lambdaUm, cx, cy, u, v, shape);
+        }
+        double sigmaUv = lambdaUm * sigmaFPerUm;
+        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
+        if (cx == 0 && cy == 0) {
+            // both static: the y axis joins the node's factor, x is the slow one
+            return LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), 0, v, shape.hy, fastErf);
+        }
+        return cx == 0 ? LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), lambdaUm * cy, v, shape.hy, fastErf)
+                : LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.xx(), lambdaUm * cx, u, shape.hx, fastErf);
+    }
+
+    /**
+     * The node spacing for a lobe: the width in nm of its passage (its standard deviation, widened by the footprint's
+     * Gaussian, over the speed lambda -&gt; mu per nm) over the nodes per sigma, on the hat levels or below 1 nm.
+     */
+    private double spacingNm(double cx, double cy, Shape shape, double fromNm) {
+        double lobeVariance = 0.5 * square(fromNm * 1e-3 * sigmaFPerUm);
+        double widthNm = Double.POSITIVE_INFINITY;
+        if (cx != 0) {
+            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.xx()) / Math.abs(cx) * 1e3);
+        }
+        if (cy != 0) {
+            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.yy()) / Math.abs(cy) * 1e3);
+        }
+        double target = Math.min(widthNm / quadrature.nodesPerSigma(), quadrature.maxStepNm());
+        if (target >= 1) {
+            return Math.pow(2, Math.floor(Math.log(target) / Math.log(2) + 1e-12));
+        }
+        return Math.max(target, 1e-3);
+    }
+
+    /** The lobe at wavelength lambda averaged over the footprint. */
+    private double averaged(double lambdaUm, double cx, double cy, double u, double v, Shape shape) {
+        double sigmaUv = lambdaUm * sigmaFPerUm;
+        double muU = lambdaUm * cx;
+        double muV = lambdaUm * cy;
+        if (!shape.hasBox()) {
+            return LobeGeometry.averagedLobe(sigmaUv, muU, muV, u, v, 0, 0, shape.gaussian, fastErf);
+        }
+        double sum = 0;
+        for (int k = 0; k < shape.shiftWeight.length; k++) {
+            sum += shape.shiftWeight[k] * LobeGeometry.averagedLobe(sigmaUv, muU, muV, u + shape.shiftU[k],
+                    v + shape.shiftV[k], shape.hx, shape.hy, shape.gaussian, fastErf);
+        }
+        return sum;
+    }
+
+    /** |P|^2 at one wavelength averaged over the footprint: sum over lobes of W_c A_c (monochromatic maps). */
+    public double power(double u, double v, double w, double lambdaNm, Footprint footprint) {
+        double lambdaUm = lambdaNm * 1e-3;
+        Shape shape = new Shape(footprint, quadrature, 0.5 * square(lambdaUm * sigmaFPerUm));
+        int step = lobes.hasPairs() ? 1 : 2;
+        double a = 2 * Math.PI / lambdaUm * w;
+        double sum = 0;
+        for (int tx = first((u - shape.reachU) * extentXUm / lambdaUm, step);
+             tx <= Math.ceil(2 * (u + shape.reachU) * extentXUm / lambdaUm); tx += step) {
+            for (int ty = first((v - shape.reachV) * extentYUm / lambdaUm, step);
+                 ty <= Math.ceil(2 * (v + shape.reachV) * extentYUm / lambdaUm); ty += step) {
+                GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+                if (lobe == null) {
+                    continue;
+                }
+                sum += lobe.weight(a) * averaged(lambdaUm, 0.5 * tx / extentXUm, 0.5 * ty / extentYUm, u, v, shape);
+            }
+        }
+        return sum;
+    }
+
+    private static double square(double x) {
+        return x * x;
+    }
+}

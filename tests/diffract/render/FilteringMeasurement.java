@@ -1,0 +1,185 @@
+package diffract.render;
+
+import diffract.app.AutoExposure;
+import diffract.app.BrdfMapDifference;
+import diffract.bench.BenchPatch;
+import diffract.jrtr.FloatTextureArray;
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.LightSource;
+import diffract.optics.LobeQuadrature;
+import diffract.optics.OpticsOptions;
+import diffract.optics.TaylorEvaluation;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.optics.io.HeightFieldReader;
+import diffract.precompute.TaylorTermComputer;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The measurements of docs/filtering.md (not a test: it asserts nothing and runs only with
+ * {@code -Ddiffract.measure=filtering}). At the thesis' 65 um coherence, 64 x 64 BRDF maps at theta_i = 30 degrees
+ * (light azimuth in the plane of the patch's period) of the bench patches and of the shared Elaphe patch
+ * ({@code ../shared/data/patches/elaphe-100px.png}, 0.375 um, 0.0686 um pixels), with a point light and a 2-degree
+ * light: CIEDE2000 (mean and 95th percentile over lit pixels, the reference's auto exposure) of the lobes method
+ * (CPU and GPU) and of FLSS in the thesis' configuration (30 terms, 5 nm, 3 x 3; point-sampled, point light only)
+ * against the filtered reference, and the GPU's median ms per frame of both on the same context. The reference
+ * maps are cached under target/filtering-cache. Prints markdown rows.
+ *
+ * <pre>xvfb-run -a mvn -q test -Dtest=FilteringMeasurement -Ddiffract.measure=filtering</pre>
+ *
+ * Options: {@code -Ddiffract.patches=blazed,elaphe-like,...}, {@code -Ddiffract.lights=0,2},
+ * {@code -Ddiffract.thetas=30}, {@code -Ddiffract.size=64}, {@code -Ddiffract.lobes=q,step,reach,wstep} (the
+ * quadrature), {@code -Ddiffract.gpu=false}.
+ */
+@Tag("gl")
+class FilteringMeasurement {
+    static final Path CACHE = Path.of("target", "filtering-cache");
+    static final Path ELAPHE = Path.of("..", "shared", "data", "patches", "elaphe-100px.png");
+
+    @Test
+    void measure() throws IOException {
+        Assumptions.assumeTrue("filtering".equals(System.getProperty("diffract.measure")), "measurement only on request");
+        int size = Integer.getInteger("diffract.size", 64);
+        boolean gpu = Boolean.parseBoolean(System.getProperty("diffract.gpu", "true"));
+        if (gpu) {
+            RenderTestSupport.assumeDisplay();
+        }
+        LobeQuadrature quadrature = quadrature(System.getProperty("diffract.lobes"));
+        System.out.println("lobes quadrature: " + quadrature);
+        System.out.println("| patch | light | theta_i | lit px | lobes CPU: mean / p95 | lobes GPU: mean / p95 | "
+                + "flss (thesis): mean / p95 | lobes ms | flss ms | flss / lobes |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+        for (String name : System.getProperty("diffract.patches", "blazed,elaphe-like,xenopeltis-like,tall,elaphe-100px")
+                .split(",")) {
+            HeightField field;
+            double phi;
+            if (name.equals("elaphe-100px")) {
+                if (!Files.exists(ELAPHE)) {
+                    continue;
+                }
+                field = HeightFieldReader.load(ELAPHE, 0.375, 0.0686, Reporter.SILENT).meanSubtracted();
+                phi = 90;
+            } else {
+                BenchPatch patch = BenchPatch.named(name);
+                field = patch.field();
+                phi = patch.phiIDeg();
+            }
+            TaylorTerms terms = TaylorTermComputer.compute(field, 30, Reporter.SILENT);
+            for (String light : System.getProperty("diffract.lights", "0,2").split(",")) {
+                for (String theta : System.getProperty("diffract.thetas", "30").split(",")) {
+                    measure(name, field, terms, phi, Double.parseDouble(theta), Double.parseDouble(light), size,
+                            quadrature, gpu);
+                }
+            }
+        }
+    }
+
+    static LobeQuadrature quadrature(String text) {
+        LobeQuadrature q = LobeQuadrature.DEFAULT;
+        if (text == null) {
+            return q;
+        }
+        String[] p = text.split(",");
+        return q.withNodesPerSigma(Double.parseDouble(p[0])).withMaxStepNm(Double.parseDouble(p[1]))
+                .withReachSigmas(Double.parseDouble(p[2])).withWeightStepNm(Double.parseDouble(p[3]));
+    }
+
+    private static void measure(String name, HeightField field, TaylorTerms terms, double phi, double thetaDeg,
+                                double lightDeg, int size, LobeQuadrature quadrature, boolean gpu) throws IOException {
+        Direction wi = Direction.fromSphericalDeg(thetaDeg, phi);
+        OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(lightDeg)).withLobes(quadrature);
+        BrdfSettings thesis = BrdfSettings.thesis(Variant.FLSS);
+        TaylorEvaluation evaluation = TaylorEvaluation.choose(TaylorEvaluation.Mode.AUTO, field, terms, 30, 380,
+                (patch, centres) -> TaylorTermComputer.computeCentred(patch, centres, Reporter.SILENT), Reporter.SILENT);
+        float[] reference = referenceMap(name, field, wi, options, size, thetaDeg, lightDeg);
+        float[] luminance = new float[size * size];
+        for (int p = 0; p < luminance.length; p++) {
+            luminance[p] = reference[3 * p + 1];
+        }
+        double exposure = AutoExposure.of(luminance, size, -wi.x(), -wi.y());
+        BrdfSettings lobesSettings = thesis.withVariant(Variant.LOBES);
+        DiffractionBrdf lobes = evaluation.brdf(lobesSettings, field, options);
+        float[] lobesCpu = BrdfMap.xyz(lobes, wi, size, Reporter.SILENT);
+        BrdfMapDifference cpu = BrdfMapDifference.of(reference, lobesCpu, size, exposure);
+        String gpuCell = "-";
+        String flssCell = "-";
+        String times = "- | - | -";
+        if (gpu) {
+            double lobesMs;
+            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, lobesSettings, options, FloatTextureArray.Precision.FLOAT32)) {
+                BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
+                gpuCell = cell(d);
+                lobesMs = map.medianMsPerFrame(wi, size, 2, 10);
+            }
+            OpticsOptions pointLight = options.withLight(LightSource.POINT);
+            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, thesis, pointLight, FloatTextureArray.Precision.FLOAT32)) {
+                BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
+                flssCell = cell(d);
+                double flssMs = map.medianMsPerFrame(wi, size, 2, 10);
+                times = String.format(Locale.ROOT, "%.1f | %.1f | %.1f", lobesMs, flssMs, flssMs / lobesMs);
+            }
+        }
+        System.out.printf(Locale.ROOT, "| %s | %s deg | %.0f | %d | %s | %s | %s | %s |%n", name, fmt(lightDeg), thetaDeg,
+                cpu.litPixels(), cell(cpu), gpuCell, flssCell, times);
+    }
+
+    private static String fmt(double v) {
+        return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
+    }
+
+    private static String cell(BrdfMapDifference d) {
+        if (d.lit() == null) {
+            return "- / -";
+        }
+        return String.format(Locale.ROOT, "%.2f / %.2f", d.lit().mean(), d.lit().p95());
+    }
+
+    /** The filtered reference's map, cached by patch, angle, light and size. */
+    static float[] referenceMap(String name, HeightField field, Direction wi, OpticsOptions options, int size,
+                                double thetaDeg, double lightDeg) throws IOException {
+        Path file = CACHE.resolve(String.format(Locale.ROOT, "%s-%.1f-%.4f-%.4f-%.2f-%d-%s.bin", name, thetaDeg, wi.x(),
+                wi.y(), lightDeg, size, field.contentSha256().substring(0, 12)));
+        if (Files.exists(file)) {
+            try (DataInputStream in = new DataInputStream(Files.newInputStream(file))) {
+                float[] map = new float[3 * size * size];
+                for (int i = 0; i < map.length; i++) {
+                    map[i] = in.readFloat();
+                }
+                return map;
+            }
+        }
+        BrdfSettings settings = BrdfSettings.thesis(Variant.REFERENCE);
+        DiffractionBrdf reference = DiffractionBrdf.create(settings, field, null, options);
+        float[] map = BrdfMap.xyz(reference, wi, size, Reporter.SILENT);
+        Files.createDirectories(CACHE);
+        try (DataOutputStream out = new DataOutputStream(Files.newOutputStream(file))) {
+            for (float v : map) {
+                out.writeFloat(v);
+            }
+        }
+        return map;
+    }
+
+    /** The patches' names, for other measurements. */
+    static List<String> names() {
+        List<String> names = new ArrayList<>(BenchPatch.NAMES);
+        names.add("elaphe-100px");
+        return names;
+    }
+}
