@@ -28,10 +28,10 @@ import diffract.colour.HatFilteredSpectrum;
  */
 public final class LobeSpectrum {
     /**
-     * The most wavelength nodes one lobe gets when its spacing is below 1 nm (the shader's loop bound; the default
-     * quadrature asks for about ten).
+     * The most wavelength nodes one lobe gets when its spacing is below 1 nm: a guard only (the default quadrature
+     * asks for about ten; the shader's bound is 512, which only fine test quadratures exceed).
      */
-    static final int MAX_NODES = 512;
+    static final int MAX_NODES = 1 << 20;
 
     private final GaussianLobes lobes;
     private final HatFilteredSpectrum spectral;
