@@ -36,8 +36,12 @@ public record Covariance2(double xx, double xy, double yy) {
         return xx * yy - xy * xy;
     }
 
+    /**
+     * Whether the off-diagonal entry is negligible (below 1e-9 of the geometric mean of the variances: a light
+     * whose azimuth lies on an axis, up to rounding of sin and cos).
+     */
     public boolean isDiagonal() {
-        return xy == 0;
+        return Math.abs(xy) <= 1e-9 * Math.sqrt(xx * yy);
     }
 
     public boolean isZero() {
@@ -54,7 +58,7 @@ public record Covariance2(double xx, double xy, double yy) {
      * @return {diagonal xx, diagonal yy, direction x, direction y, variance along the direction}
      */
     public double[] diagonalPlusRankOne() {
-        if (xy == 0 || xx == 0 || yy == 0) {
+        if (isDiagonal()) {
             return new double[] {xx, yy, 1, 0, 0};
         }
         double b = Math.abs(xy);
