@@ -5,6 +5,8 @@
 // w in [-2, 0] (BakedGrid) by this very file compiled with BAKE, which runs FLSS (flss.frag's spectrum and
 // wavelength rule) per table sample; without BAKE each fragment reads the table with one trilinear lookup and
 // multiplies by its own gain factor and shadowing (diffraction_main.glsl), which depend on the directions.
+// A table of the lobes method (baked_lobes.frag bakes it: each sample averaged over its cell and the light) is
+// mip-mapped and looked up over the pixel's footprint with textureGrad (BAKED_FILTERED).
 #include "spectrum_gaussian.glsl"
 #include "wavelengths_uniform.glsl"
 
@@ -33,7 +35,9 @@ void main() {
 }
 #else
 // ---- The lookup: XYZ(u, v, w) of the table (RGB), trilinear.
+#ifndef BAKED_FILTERED
 uniform sampler3D bakedXyz;
+#endif
 
 // Sample index t = (x - x_min) / (x_max - x_min) (n - 1) per axis; texel i's centre is at (i + 0.5) / n.
 vec3 bakedTexcoord(vec3 uvw) {
@@ -41,9 +45,42 @@ vec3 bakedTexcoord(vec3 uvw) {
     return (t + 0.5) / bakedSamples.xxy;
 }
 
+#ifdef BAKED_FILTERED
+// The table as one mip-mapped 2-D layer per w sample (FloatTexture3D mipmapped): the pixel's footprint becomes
+// texture-coordinate gradients in (u, v), GL picks the mip level whose cells match it (2 x 2 box averages of the
+// cell-averaged samples within a slice), and the shader interpolates linearly between the two nearest w slices.
+#define FILTERED 1
+uniform sampler2DArray bakedLayers;
+vec2 footprintGradientX;
+vec2 footprintGradientY;
+
+float texcoordPerUv() {
+    return 0.25 * (bakedSamples.x - 1.0) / bakedSamples.x;
+}
+
+void setMapPixel(float halfWidth) {
+    footprintGradientX = vec2(2.0 * halfWidth * texcoordPerUv(), 0.0);
+    footprintGradientY = vec2(0.0, 2.0 * halfWidth * texcoordPerUv());
+}
+
+void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
+    footprintGradientX = dUvDx * texcoordPerUv();
+    footprintGradientY = dUvDy * texcoordPerUv();
+}
+
+vec3 spectralXyz(vec3 uvw) {
+    vec3 tc = bakedTexcoord(uvw);
+    float slice = clamp((uvw.z + 2.0) * 0.5 * (bakedSamples.y - 1.0), 0.0, bakedSamples.y - 1.0);
+    float below = min(floor(slice), bakedSamples.y - 2.0);
+    vec3 a = textureGrad(bakedLayers, vec3(tc.xy, below), footprintGradientX, footprintGradientY).rgb;
+    vec3 b = textureGrad(bakedLayers, vec3(tc.xy, below + 1.0), footprintGradientX, footprintGradientY).rgb;
+    return mix(a, b, slice - below);
+}
+#else
 vec3 spectralXyz(vec3 uvw) {
     return texture(bakedXyz, bakedTexcoord(uvw)).rgb;
 }
+#endif
 
 #include "diffraction_main.glsl"
 #endif

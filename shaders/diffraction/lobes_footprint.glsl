@@ -50,6 +50,14 @@ void setMapPixel(float halfWidth) {
     }
 }
 
+// A sample of the baked table (baked.frag's bake pass): the box of its cell, half-width halfWidth in u and v, and the
+// light as an isotropic Gaussian of sigma_a (its spread at normal incidence: the table does not know omega_i).
+void setTableCell(float halfWidth) {
+    footprintHalfWidth = vec2(halfWidth);
+    footprintGaussian = vec3(lightSigmaRad * lightSigmaRad, 0.0, lightSigmaRad * lightSigmaRad);
+    footprintShiftCount = 1;
+}
+
 // A surface pixel: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v) derivatives (Footprint.surfacePixel),
 // plus the light's covariance at omega_i.
 void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {

@@ -2,6 +2,7 @@ package diffract.jrtr;
 
 import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL2ES2;
+import com.jogamp.opengl.GL2ES3;
 import com.jogamp.opengl.GL3;
 
 import java.nio.FloatBuffer;
@@ -38,8 +39,19 @@ public final class FloatTexture3D extends Texture {
     private final int depth;
     private final float[] rgb;
     private final Precision precision;
+    private final boolean mipmapped;
 
     public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision) {
+        this(width, height, depth, rgb, precision, false);
+    }
+
+    /**
+     * @param mipmapped a GL_TEXTURE_2D_ARRAY instead (layer z = the z-th slice, same data layout) with mip levels per
+     *                  layer (2 x 2 box averages within a slice) and GL_LINEAR_MIPMAP_LINEAR, for lookups with
+     *                  {@code textureGrad} that average over a footprint larger than a texel without blurring the
+     *                  slices into each other (the shader interpolates between slices itself)
+     */
+    public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision, boolean mipmapped) {
         if (width <= 0 || height <= 0 || depth <= 0) {
             throw new IllegalArgumentException("need a positive size, got " + width + "x" + height + "x" + depth);
         }
@@ -52,6 +64,7 @@ public final class FloatTexture3D extends Texture {
         this.depth = depth;
         this.rgb = rgb;
         this.precision = precision;
+        this.mipmapped = mipmapped;
     }
 
     public int width() {
@@ -70,14 +83,15 @@ public final class FloatTexture3D extends Texture {
         return precision;
     }
 
-    /** The nominal GPU memory of the texture: texels x bytes per texel of its format. */
+    /** The nominal GPU memory of the texture: texels x bytes per texel of its format (mip levels add about 1/3). */
     public long gpuBytes() {
-        return (long) width * height * depth * precision.bytesPerTexel();
+        long base = (long) width * height * depth * precision.bytesPerTexel();
+        return mipmapped ? base * 4 / 3 : base;
     }
 
     @Override
     public int glTarget() {
-        return GL2ES2.GL_TEXTURE_3D;
+        return mipmapped ? GL2ES3.GL_TEXTURE_2D_ARRAY : GL2ES2.GL_TEXTURE_3D;
     }
 
     @Override
@@ -91,7 +105,15 @@ public final class FloatTexture3D extends Texture {
         int target = glTarget();
         gl.glTexImage3D(target, 0, precision.internalFormat, width, height, depth, 0, GL.GL_RGB, GL.GL_FLOAT,
                 FloatBuffer.wrap(rgb));
-        clampWithoutMipmaps(gl, target, GL.GL_LINEAR); // trilinear lookups between the table's samples
+        if (mipmapped) {
+            gl.glGenerateMipmap(target);
+            gl.glTexParameteri(target, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR_MIPMAP_LINEAR);
+            gl.glTexParameteri(target, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
+            gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_S, GL.GL_CLAMP_TO_EDGE);
+            gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_T, GL.GL_CLAMP_TO_EDGE);
+        } else {
+            clampWithoutMipmaps(gl, target, GL.GL_LINEAR); // trilinear lookups between the table's samples
+        }
         gl.glTexParameteri(target, GL2ES2.GL_TEXTURE_WRAP_R, GL.GL_CLAMP_TO_EDGE);
     }
 

@@ -12,6 +12,7 @@ import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
+import diffract.optics.OpticsOptions;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
@@ -34,8 +35,13 @@ public final class BakedTable {
     private final float[] rgb;
     private final FloatTexture3D.Precision precision;
     private final double bakeSeconds;
+    private final boolean filtered;
 
     BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds) {
+        this(grid, rgb, precision, bakeSeconds, false);
+    }
+
+    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds, boolean filtered) {
         if (rgb.length != 3 * grid.texels()) {
             throw new IllegalArgumentException("table of " + grid + " needs " + 3 * grid.texels() + " floats, got "
                     + rgb.length);
@@ -44,6 +50,7 @@ public final class BakedTable {
         this.rgb = rgb;
         this.precision = precision;
         this.bakeSeconds = bakeSeconds;
+        this.filtered = filtered;
     }
 
     /**
@@ -52,11 +59,29 @@ public final class BakedTable {
      */
     public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, FloatTexture3D.Precision precision,
                                   Reporter reporter) {
+        return bake(terms, settings, null, precision, reporter);
+    }
+
+    /**
+     * As above; with {@code filtering} (not null) the lobes method is baked instead: each sample is the average of
+     * the spectral XYZ over its cell of the table (a box of 4 / (n - 1) in u and v) and over the light (isotropic,
+     * sigma_a; the table does not know omega_i), and the table is mip-mapped for lookups that average over a pixel's
+     * footprint (docs/filtering.md, section 8).
+     */
+    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, OpticsOptions filtering,
+                                  FloatTexture3D.Precision precision, Reporter reporter) {
         long start = System.nanoTime();
-        BrdfSettings flss = settings.withVariant(Variant.FLSS);
         BakedGrid grid = BakedGrid.of(settings, terms.maxAbsHeightUm());
-        DiffractionTextures textures = DiffractionTextures.of(terms, flss, FloatTextureArray.Precision.FLOAT32);
-        Material material = DiffractionMaterials.bake(textures, flss, grid);
+        Material material;
+        if (filtering == null) {
+            BrdfSettings flss = settings.withVariant(Variant.FLSS);
+            DiffractionTextures textures = DiffractionTextures.of(terms, flss, FloatTextureArray.Precision.FLOAT32);
+            material = DiffractionMaterials.bake(textures, flss, grid);
+        } else {
+            BrdfSettings lobes = settings.withVariant(Variant.LOBES);
+            DiffractionTextures textures = DiffractionTextures.of(terms, lobes, FloatTextureArray.Precision.FLOAT32);
+            material = DiffractionMaterials.bakeLobes(textures, lobes, grid, filtering);
+        }
         int n = grid.uvSamples();
         float[] rgb = new float[Math.multiplyExact(3, Math.toIntExact(grid.texels()))];
         ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
@@ -79,9 +104,14 @@ public final class BakedTable {
             }
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
-        BakedTable table = new BakedTable(grid, rgb, precision, seconds);
+        BakedTable table = new BakedTable(grid, rgb, precision, seconds, filtering != null);
         reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
         return table;
+    }
+
+    /** Whether the samples are cell and light averages of the lobes method (else FLSS point samples). */
+    public boolean filtered() {
+        return filtered;
     }
 
     public BakedGrid grid() {
@@ -95,7 +125,7 @@ public final class BakedTable {
 
     /** A new texture of the table for one GL context (the host values are shared, not copied). */
     public FloatTexture3D texture() {
-        return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), rgb, precision);
+        return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), rgb, precision, filtered);
     }
 
     /** XYZ of sample (i, j, k) = (u_i, v_j, w_k), float32 as baked. */
@@ -107,7 +137,8 @@ public final class BakedTable {
 
     /** Nominal GPU memory of the table: texels x bytes per texel of its format. */
     public long gpuBytes() {
-        return grid.bytes(precision.bytesPerTexel());
+        long base = grid.bytes(precision.bytesPerTexel());
+        return filtered ? base * 4 / 3 : base; // mip levels per w slice
     }
 
     /** Host memory of the float32 copy kept for uploads: texels x 12 bytes. */
@@ -125,7 +156,8 @@ public final class BakedTable {
 
     /** One line: grid, format and memory. */
     public String describe() {
-        return String.format(Locale.ROOT, "%d x %d x %d table (u, v, w), %s, %.1f MB on the GPU, %.1f MB on the host",
-                grid.uvSamples(), grid.uvSamples(), grid.wSamples(), precision, gpuBytes() / 1e6, hostBytes() / 1e6);
+        return String.format(Locale.ROOT, "%d x %d x %d table (u, v, w) of %s, %s, %.1f MB on the GPU, %.1f MB on the host",
+                grid.uvSamples(), grid.uvSamples(), grid.wSamples(), filtered ? "lobes, cell- and light-averaged"
+                        : "flss", precision, gpuBytes() / 1e6, hostBytes() / 1e6);
     }
 }

@@ -1,6 +1,9 @@
 package diffract.render;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.CoherenceWindow;
+import diffract.optics.LobeQuadrature;
+import diffract.optics.OpticsOptions;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
@@ -18,15 +21,16 @@ public final class BakedTables {
     /** Tables kept at once. */
     public static final int MAX_TABLES = 2;
 
-    private record Key(TaylorTerms terms, BrdfSettings settings) {
+    private record Key(TaylorTerms terms, BrdfSettings settings, OpticsOptions filtering) {
         @Override
         public boolean equals(Object o) {
-            return o instanceof Key k && k.terms == terms && k.settings.equals(settings);
+            return o instanceof Key k && k.terms == terms && k.settings.equals(settings)
+                    && java.util.Objects.equals(k.filtering, filtering);
         }
 
         @Override
         public int hashCode() {
-            return System.identityHashCode(terms) * 31 + settings.hashCode();
+            return System.identityHashCode(terms) * 31 + settings.hashCode() * 7 + java.util.Objects.hashCode(filtering);
         }
     }
 
@@ -41,16 +45,38 @@ public final class BakedTables {
     private BakedTables() {
     }
 
-    /** The table of these terms and settings, baked on the first request. */
+    /** The FLSS table of these terms and settings, baked on the first request. */
     public static synchronized BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
-        Key key = new Key(terms, settings.withVariant(Variant.BAKED));
+        return of(terms, settings, null, reporter);
+    }
+
+    /**
+     * The table of these terms and settings: of the lobes method, cell- and light-averaged, when {@code options}
+     * filter (a pixel box or a light) and the lobes shader can take the patch (no texel pairs); else of FLSS.
+     */
+    public static synchronized BakedTable of(TaylorTerms terms, BrdfSettings settings, OpticsOptions options,
+                                             Reporter reporter) {
+        OpticsOptions filtering = filteringFor(terms, settings, options);
+        Key key = new Key(terms, settings.withVariant(Variant.BAKED), filtering);
         BakedTable table = CACHE.get(key);
         if (table == null) {
-            table = bakeOffThisThread(terms, settings, reporter);
+            table = bakeOffThisThread(terms, settings, filtering, reporter);
             CACHE.put(key, table);
             bakes++;
         }
         return table;
+    }
+
+    /** The options to bake the lobes method with, or null for FLSS (see {@link #of}). */
+    static OpticsOptions filteringFor(TaylorTerms terms, BrdfSettings settings, OpticsOptions options) {
+        if (options == null || !options.filters()) {
+            return null;
+        }
+        CoherenceWindow window = settings.coherenceWindow();
+        double threshold = options.lobes().pairThreshold();
+        boolean pairs = LobeQuadrature.pairRadius(window.sigmaTexels(terms.cols() * terms.pixelSizeXUm()), threshold) > 0
+                || LobeQuadrature.pairRadius(window.sigmaTexels(terms.rows() * terms.pixelSizeYUm()), threshold) > 0;
+        return pairs ? null : options;
     }
 
     /**
@@ -59,12 +85,13 @@ public final class BakedTables {
      * (making the caller's context current again lets JOGL rebind its own framebuffer, and the frame came out
      * black). The caller waits for the table.
      */
-    private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+    private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, OpticsOptions filtering,
+                                                Reporter reporter) {
         if (com.jogamp.opengl.GLContext.getCurrent() == null) {
-            return BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter);
+            return BakedTable.bake(terms, settings, filtering, BakedTable.PRECISION, reporter);
         }
         java.util.concurrent.CompletableFuture<BakedTable> bake = java.util.concurrent.CompletableFuture.supplyAsync(
-                () -> BakedTable.bake(terms, settings, BakedTable.PRECISION, reporter),
+                () -> BakedTable.bake(terms, settings, filtering, BakedTable.PRECISION, reporter),
                 command -> new Thread(command, "bake").start());
         try {
             return bake.join();

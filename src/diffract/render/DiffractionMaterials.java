@@ -31,7 +31,7 @@ public final class DiffractionMaterials {
      * {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm} when monochromatic.
      */
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
-        return brdfMap(textures, settings, OpticsOptions.DEFAULT, monochromatic);
+        return brdfMap(textures, settings, OpticsOptions.POINT_SAMPLED, monochromatic);
     }
 
     /**
@@ -52,7 +52,7 @@ public final class DiffractionMaterials {
      */
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
         Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures));
-        return common(m, textures, settings, OpticsOptions.DEFAULT).setFloat("exposure", exposure);
+        return common(m, textures, settings, OpticsOptions.POINT_SAMPLED).setFloat("exposure", exposure);
     }
 
     /**
@@ -61,7 +61,7 @@ public final class DiffractionMaterials {
      */
     public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                    Texture2D pigmentation, float diffuseWeight) {
-        return surface(textures, settings, OpticsOptions.DEFAULT, exposure, pigmentation, diffuseWeight);
+        return surface(textures, settings, OpticsOptions.POINT_SAMPLED, exposure, pigmentation, diffuseWeight);
     }
 
     /** As above with the optics options (the lobes method's pixels average over their footprint and the light). */
@@ -82,13 +82,24 @@ public final class DiffractionMaterials {
      */
     static Material bake(DiffractionTextures textures, BrdfSettings flssSettings, BakedGrid grid) {
         Material m = new Material(DiffractionShaders.bakeProgram(flssSettings, textures));
-        return common(m, textures, flssSettings, OpticsOptions.DEFAULT).setVec2("bakedSamples", grid.uvSamples(),
+        return common(m, textures, flssSettings, OpticsOptions.POINT_SAMPLED).setVec2("bakedSamples", grid.uvSamples(),
                 grid.wSamples());
+    }
+
+    /**
+     * The bake pass of a BAKED table of the lobes method: every sample averaged over its cell of the grid and the
+     * light ({@code setTableCell} in {@code lobes_footprint.glsl}).
+     */
+    static Material bakeLobes(DiffractionTextures textures, BrdfSettings lobesSettings, BakedGrid grid,
+                              OpticsOptions options) {
+        Material m = new Material(DiffractionShaders.bakeLobesProgram(lobesSettings, textures));
+        return common(m, textures, lobesSettings, options.withPixelFilter(PixelFilter.BOX))
+                .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
     }
 
     /** omega_i of a BRDF map (towards the light, tangent frame), a point light. */
     public static Material setLight(Material brdfMap, Direction wi) {
-        return setLight(brdfMap, wi, OpticsOptions.DEFAULT);
+        return setLight(brdfMap, wi, OpticsOptions.POINT_SAMPLED);
     }
 
     /**
@@ -167,7 +178,7 @@ public final class DiffractionMaterials {
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             BakedGrid grid = textures.baked().grid();
-            m.setTexture("bakedXyz", textures.bakedTexture())
+            m.setTexture(textures.baked().filtered() ? "bakedLayers" : "bakedXyz", textures.bakedTexture())
                     .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
         } else {
             m.setTexture("taylorTerms", textures.terms())

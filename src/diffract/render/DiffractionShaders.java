@@ -125,7 +125,7 @@ public final class DiffractionShaders {
      */
     public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, Target target,
                                         boolean monochromatic, boolean pigmentation) {
-        return program(settings, textures, OpticsOptions.DEFAULT, target, monochromatic, pigmentation);
+        return program(settings, textures, OpticsOptions.POINT_SAMPLED, target, monochromatic, pigmentation);
     }
 
     /** As above with the optics options (the Fresnel model is a define). */
@@ -151,6 +151,10 @@ public final class DiffractionShaders {
         if (options.fresnel() == FresnelModel.THESIS) {
             defines.put("FRESNEL_THESIS", "1");
         }
+        if (textures.baked() != null && textures.baked().filtered()) {
+            // the table holds cell- and light-averaged samples with mip levels: look up over the pixel's footprint
+            defines.put("BAKED_FILTERED", "1");
+        }
         return defines;
     }
 
@@ -159,10 +163,20 @@ public final class DiffractionShaders {
      * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
      */
     public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(flssSettings, textures, OpticsOptions.DEFAULT, Target.BRDF_MAP, false,
+        Map<String, String> defines = definesFor(flssSettings, textures, OpticsOptions.POINT_SAMPLED, Target.BRDF_MAP, false,
                 false);
         defines.put("BAKE", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
+    }
+
+    /**
+     * The bake pass of a BAKED table of the lobes method ({@code baked_lobes.frag}): spectral XYZ averaged over each
+     * sample's cell and the light.
+     */
+    public static ShaderProgram bakeLobesProgram(BrdfSettings lobesSettings, DiffractionTextures textures) {
+        Map<String, String> defines = definesFor(lobesSettings, textures, OpticsOptions.POINT_SAMPLED, Target.BRDF_MAP, false,
+                false);
+        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
     }
 
     /**
@@ -170,7 +184,7 @@ public final class DiffractionShaders {
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
     public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures) {
-        return displayBrdfMapProgram(settings, textures, OpticsOptions.DEFAULT);
+        return displayBrdfMapProgram(settings, textures, OpticsOptions.POINT_SAMPLED);
     }
 
     /** As above with the optics options. */

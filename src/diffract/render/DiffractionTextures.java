@@ -9,6 +9,7 @@ import diffract.jrtr.FloatTexture1D;
 import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
+import diffract.optics.OpticsOptions;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
 import diffract.optics.TaylorTerms;
@@ -87,6 +88,15 @@ public final class DiffractionTextures {
     /** As above; a BAKED table that is not cached yet is baked first, with progress on {@code reporter}. */
     public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision,
                                          Reporter reporter) {
+        return of(terms, settings, null, precision, reporter);
+    }
+
+    /**
+     * As above; a BAKED table bakes the lobes method, cell- and light-averaged, when the options filter
+     * ({@link BakedTables#of(TaylorTerms, BrdfSettings, OpticsOptions, Reporter)}).
+     */
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, OpticsOptions options,
+                                         FloatTextureArray.Precision precision, Reporter reporter) {
         if (settings.highestOrder() > terms.highestOrder()) {
             throw new IllegalArgumentException("Taylor order " + settings.highestOrder() + " requested, the terms hold 0.."
                     + terms.highestOrder());
@@ -102,7 +112,8 @@ public final class DiffractionTextures {
             }
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
-        BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
+        BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, options, reporter)
+                : null;
         return new DiffractionTextures(termTexture, normalised ? NormalisedTerms.extremaTable(terms, highestOrder) : null,
                 buildUniformNodeTable(settings), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
                 baked, null);

@@ -17,6 +17,7 @@ import diffract.optics.PhaseCentredTerms;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
 import java.util.function.Supplier;
@@ -43,19 +44,22 @@ public final class GpuBrdfMap implements AutoCloseable {
      * @throws UserInputException for the reference variant, or when no GL context can be opened
      */
     public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(terms, settings, OpticsOptions.DEFAULT, precision);
+        this(terms, settings, OpticsOptions.POINT_SAMPLED, precision);
     }
 
-    /** As above with the optics options (Fresnel model; the lobes method's pixel filter and light). */
+    /**
+     * As above with the optics options (Fresnel model; the lobes method's pixel filter and light; a BAKED table of
+     * the lobes method when they filter). The constructors without options point-sample.
+     */
     public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, OpticsOptions options,
                       FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, options, () -> DiffractionTextures.of(terms, settings, precision)), settings,
-                options);
+        this(checkVariant(settings, options, () -> DiffractionTextures.of(terms, settings, options, precision,
+                Reporter.SILENT)), settings, options);
     }
 
     /** The phase-centred expansion (issue #6): the same maps for patches too tall for the thesis' series. */
     public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(terms, settings, OpticsOptions.DEFAULT, precision);
+        this(terms, settings, OpticsOptions.POINT_SAMPLED, precision);
     }
 
     /** As above with the optics options. */
@@ -67,7 +71,7 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /** The map of a scene on the path {@link TaylorEvaluation#choose} picked for it. */
     public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        return of(evaluation, settings, OpticsOptions.DEFAULT, precision);
+        return of(evaluation, settings, OpticsOptions.POINT_SAMPLED, precision);
     }
 
     /** As above with the optics options. */
@@ -82,7 +86,7 @@ public final class GpuBrdfMap implements AutoCloseable {
         if (settings.variant() == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
-        if (settings.variant() != Variant.LOBES && !options.light().isPoint()) {
+        if (settings.variant() != Variant.LOBES && settings.variant() != Variant.BAKED && !options.light().isPoint()) {
             throw new UserInputException(settings.variant().cliName() + " samples the light at its centre only: for a "
                     + "light of " + options.light().angularDiameterDeg() + " degrees use --variant lobes (or "
                     + "--light-size-deg 0)");

@@ -1,0 +1,27 @@
+#version 330 core
+// The bake pass of a BAKED table of the lobes method (BakedTable.bake with filtering): pixel (i, j) of an n x n
+// viewport is the sample (u_i, v_j) of the slice w = bakeW (baked.frag's grid), the lobes method's spectral XYZ
+// averaged over the sample's cell of the grid, a box of side 4 / (n - 1) in u and v, and over the light taken
+// isotropic with sigma_a (setTableCell). Box averages of the cells add up to the integral of the BRDF, so the table
+// keeps every order's energy at any resolution; baked.frag looks it up with mip levels over a pixel's footprint.
+#define FILTERED 1
+#include "lobes_spectrum.glsl"
+
+uniform vec2 bakedSamples; // samples along u and v (.x) and along w (.y), both ends included (BakedGrid)
+uniform float bakeW;
+out vec4 fragColor;
+
+// Unreachable samples (farther than a cell diagonal beyond |(u, v, w)| = 2) are 0, as in baked.frag.
+void main() {
+    vec2 ij = floor(gl_FragCoord.xy);
+    vec2 uv = -2.0 + 4.0 * ij / (bakedSamples.x - 1.0);
+    vec3 uvw = vec3(uv, bakeW);
+    float cellDiagonal = length(vec3(4.0 / (bakedSamples.x - 1.0), 4.0 / (bakedSamples.x - 1.0),
+                                     2.0 / (bakedSamples.y - 1.0)));
+    if (length(uvw) > 2.0 + cellDiagonal) {
+        fragColor = vec4(0.0, 0.0, 0.0, 1.0);
+        return;
+    }
+    setTableCell(2.0 / (bakedSamples.x - 1.0));
+    fragColor = vec4(spectralXyz(uvw), 1.0);
+}

@@ -1,0 +1,285 @@
+// The lobes method's spectrum (LobeSpectrum): spectralXyz(uvw) over the footprint set by lobes_footprint.glsl, and
+// the monochromatic patchPower. Included by lobes.frag (maps and surfaces) and by baked.frag's bake pass.
+#ifndef LOBES_SPECTRUM_GLSL
+#define LOBES_SPECTRUM_GLSL
+#include "lobes_footprint.glsl"
+
+// sigma_f in texels per axis (CoherenceWindow.sigmaTexels); sigma_f per um is sigmaTexels / patchExtentUm.
+uniform vec2 sigmaTexels;
+uniform float lambdaMinNm;
+uniform float lambdaMaxNm;
+// HatFilteredSpectrum.rgba(): level-major, (X, Y, Z, 0) per nanometre from lambda_min; level 0 = the density f,
+// level l = f averaged over a hat of half-width 2^(l-1) nm; lobeTablePositions entries per level.
+uniform sampler1D lobeSpectralTable;
+uniform int lobeTablePositions;
+// LobeQuadrature.
+uniform float lobeNodesPerSigma;
+uniform float lobeMaxStepNm;
+uniform float lobeReachSigmas;
+uniform float lobeWeightStepNm;
+
+#ifdef TERMS_UNORM8
+uniform sampler1D termExtrema;
+#endif
+
+const int MAX_NODES = 512;   // nodes per lobe below 1 nm spacing (LobeSpectrum.MAX_NODES is a looser guard)
+const int MAX_MARCH = 4096;  // texels along the major axis (a guard: 2 x 2048 texels)
+
+// The Gaussian window (spectrum_gaussian.glsl's), for diffraction_common's windowed sum, which lobes do not use.
+float windowWeight(float offsetTexels, int axis) {
+    float q = offsetTexels / sigmaTexels[axis];
+    return exp(-0.5 * q * q);
+}
+
+float sigmaFPerUm() {
+    return sigmaTexels.x / patchExtentUm.x;
+}
+
+// One texel's terms divided by n!, fetched once per lobe (per phase centre on the centred path), so that T_m is a
+// plain polynomial in x evaluated by Horner's rule without divisions.
+vec2 lobeTerms[TERM_COUNT];
+int lobeTermsCentre;
+
+void fetchTerms(ivec2 m, int centre) {
+    ivec2 texel = m + termCentre();
+    float inverseFactorial = 1.0;
+    for (int n = 0; n < TERM_COUNT; n++) {
+        vec2 raw = texelFetch(taylorTerms, ivec3(texel, centre * TERM_COUNT + n), 0).rg;
+#ifdef TERMS_UNORM8
+        vec4 e = texelFetch(termExtrema, n, 0);
+        raw = e.xy + e.zw * raw;
+#endif
+        if (n > 0) {
+            inverseFactorial /= float(n);
+        }
+        lobeTerms[n] = raw * inverseFactorial;
+    }
+    lobeTermsCentre = centre;
+}
+
+// |T_m(a)|^2 = |sum_n (a - a_j)^n / n! terms_n|^2 (TaylorTexels; the plain series has the one centre a_0 = 0).
+float lobeWeight(ivec2 m, float a) {
+#ifdef PHASE_CENTRED
+    int centre = nearestPhaseCentre(a);
+    float x = a + float(centre) * centreSpacingPerUm;
+#else
+    int centre = 0;
+    float x = a;
+#endif
+    if (centre != lobeTermsCentre) {
+        fetchTerms(m, centre);
+    }
+    vec2 sum = lobeTerms[TERM_COUNT - 1];
+    for (int n = TERM_COUNT - 2; n >= 0; n--) {
+        sum = sum * x + lobeTerms[n];
+    }
+    return dot(sum, sum);
+}
+
+// The wavelengths (nm) at which a lobe moving as mu = lambda_um c (c per um) comes within reach of uv on both axes,
+// clipped to the band (LobeGeometry.lambdaIntervalNm); empty when .x >= .y.
+vec2 lambdaInterval(vec2 c, vec2 uv, vec2 reach) {
+    vec2 interval = vec2(lambdaMinNm, lambdaMaxNm);
+    for (int axis = 0; axis < 2; axis++) {
+        if (c[axis] == 0.0) {
+            if (abs(uv[axis]) > reach[axis]) {
+                return vec2(1.0, 0.0);
+            }
+        } else {
+            float a = (uv[axis] - reach[axis]) / c[axis] * 1e3;
+            float b = (uv[axis] + reach[axis]) / c[axis] * 1e3;
+            interval = vec2(max(interval.x, min(a, b)), min(interval.y, max(a, b)));
+        }
+    }
+    return interval;
+}
+
+// The texel range {lo, hi} of one axis a footprint can reach over wavelengths [shortest, longest] um.
+vec2 texelRange(float u, float reach, float extentUm, float shortestUm, float longestUm) {
+    float a = (u - reach) * extentUm;
+    float b = (u + reach) * extentUm;
+    return vec2(min(a / shortestUm, a / longestUm), max(b / shortestUm, b / longestUm));
+}
+
+// LobeSpectrum.spacingNm: the passage's width in nm over the nodes per sigma, on the hat levels or below 1 nm.
+float nodeSpacingNm(vec2 c, float fromNm) {
+    float lobeVariance = 0.5 * pow(fromNm * 1e-3 * sigmaFPerUm(), 2.0);
+    float width = 1e30;
+    if (c.x != 0.0) {
+        width = min(width, sqrt(lobeVariance + footprintGaussian.x) / abs(c.x) * 1e3);
+    }
+    if (c.y != 0.0) {
+        width = min(width, sqrt(lobeVariance + footprintGaussian.z) / abs(c.y) * 1e3);
+    }
+    float target = min(width / lobeNodesPerSigma, lobeMaxStepNm);
+    if (target >= 1.0) {
+        return exp2(floor(log2(target) + 1e-6));
+    }
+    return max(target, 1e-3);
+}
+
+// The first table entry of a node spacing's level: HatFilteredSpectrum level 1 + log2(h) for h = 1..16 nm; -1 below
+// 1 nm (point weights from level 0, interpolated).
+int spectralLevelBase(float spacingNm) {
+    return spacingNm >= 1.0 ? (1 + int(floor(log2(spacingNm) + 0.5))) * lobeTablePositions : -1;
+}
+
+// HatFilteredSpectrum.weight: h f_h(lambda_j) for node j of a spacing of 1..16 nm, h f(lambda_j) below 1 nm.
+vec3 spectralWeight(float lambdaNm, float spacingNm, int levelBase) {
+    float position = lambdaNm - lambdaMinNm;
+    if (levelBase >= 0) {
+        int p = int(floor(position + 0.5));
+        if (p < 0 || p >= lobeTablePositions) {
+            return vec3(0.0);
+        }
+        return spacingNm * texelFetch(lobeSpectralTable, levelBase + p, 0).xyz;
+    }
+    int p = int(floor(position));
+    float t = position - float(p);
+    vec3 a = p >= 0 && p < lobeTablePositions ? texelFetch(lobeSpectralTable, p, 0).xyz : vec3(0.0);
+    vec3 b = p + 1 >= 0 && p + 1 < lobeTablePositions ? texelFetch(lobeSpectralTable, p + 1, 0).xyz : vec3(0.0);
+    return spacingNm * mix(a, b, t);
+}
+
+// The lobe's slowly varying factor at lambda (LobeSpectrum.slow): W_c(k w), times the footprint's average along a
+// static axis (c_i = 0) when that axis is hoisted out of the nodes.
+float slowFactor(ivec2 m, vec2 c, vec3 uvw, float lambdaNm, bool hoist) {
+    float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * uvw.z);
+    if (!hoist) {
+        return weight;
+    }
+    float sigmaUv = lambdaNm * 1e-3 * sigmaFPerUm();
+    float lobeVariance = 0.5 * sigmaUv * sigmaUv;
+    return weight * (c.x == 0.0
+            ? lobeAxis(sigmaUv, lobeVariance + footprintGaussian.x, 0.0, uvw.x, footprintHalfWidth.x)
+            : lobeAxis(sigmaUv, lobeVariance + footprintGaussian.z, 0.0, uvw.y, footprintHalfWidth.y));
+}
+
+// The footprint's average of the lobe at lambda over the axes it moves on (LobeSpectrum.fast).
+float fastFactor(vec2 c, vec2 uv, float lambdaUm, bool hoist) {
+    float sigmaUv = lambdaUm * sigmaFPerUm();
+    if (!hoist) {
+        return averagedLobe(sigmaUv, lambdaUm * c, uv);
+    }
+    float lobeVariance = 0.5 * sigmaUv * sigmaUv;
+    return c.x == 0.0 ? lobeAxis(sigmaUv, lobeVariance + footprintGaussian.z, lambdaUm * c.y, uv.y, footprintHalfWidth.y)
+            : lobeAxis(sigmaUv, lobeVariance + footprintGaussian.x, lambdaUm * c.x, uv.x, footprintHalfWidth.x);
+}
+
+// One lobe's wavelength integral over [fromNm, toNm] (LobeSpectrum.integrate): the slow factor at the weight points
+// (every lobeWeightStepNm and the ends), linearly interpolated, times the moving axes' average at every node.
+vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
+    float spacing = nodeSpacingNm(c, fromNm);
+    int j0 = int(ceil((fromNm - lambdaMinNm) / spacing - 1e-4));
+    int j1 = int(floor((toNm - lambdaMinNm) / spacing + 1e-4));
+    if (spacing < 1.0 && j1 - j0 + 1 > MAX_NODES) {
+        spacing = min(1.0, (toNm - fromNm) / float(MAX_NODES - 1));
+        j0 = int(ceil((fromNm - lambdaMinNm) / spacing - 1e-4));
+        j1 = int(floor((toNm - lambdaMinNm) / spacing + 1e-4));
+    }
+    vec3 xyz = vec3(0.0);
+    if (j1 < j0) {
+        return xyz;
+    }
+    bool box = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0;
+    bool hoist = box && footprintShiftCount == 1 && (c.x == 0.0 || c.y == 0.0);
+    float first = lambdaMinNm + float(j0) * spacing;
+    float last = lambdaMinNm + float(j1) * spacing;
+    float slowStep = lobeWeightStepNm > 0.0 && last > first
+            ? (last - first) / max(1.0, ceil((last - first) / lobeWeightStepNm)) : 0.0;
+    float slowLo = first;
+    float slowHi = first;
+    float slowAtLo = slowFactor(m, c, uvw, first, hoist);
+    float slowAtHi = slowAtLo;
+    int levelBase = spectralLevelBase(spacing);
+    for (int j = j0; j <= j1; j++) {
+        float lambdaNm = lambdaMinNm + float(j) * spacing;
+        float slowValue;
+        if (slowStep == 0.0) {
+            slowValue = j == j0 ? slowAtLo : slowFactor(m, c, uvw, lambdaNm, hoist);
+        } else {
+            for (int guard = 0; guard < MAX_NODES && lambdaNm > slowHi + 1e-4; guard++) {
+                slowLo = slowHi;
+                slowAtLo = slowAtHi;
+                slowHi = min(last, slowLo + slowStep);
+                slowAtHi = slowFactor(m, c, uvw, slowHi, hoist);
+            }
+            float t = slowHi > slowLo ? (lambdaNm - slowLo) / (slowHi - slowLo) : 0.0;
+            slowValue = mix(slowAtLo, slowAtHi, t);
+        }
+        xyz += slowValue * fastFactor(c, uvw.xy, lambdaNm * 1e-3, hoist) * spectralWeight(lambdaNm, spacing, levelBase);
+    }
+    return xyz;
+}
+
+// LobeSpectrum.xyz: the march over the texels whose lobes can reach the footprint.
+vec3 spectralXyz(vec3 uvw) {
+    vec2 uv = uvw.xy;
+    float sigmaF = sigmaFPerUm();
+    float widest = 0.5 * pow(lambdaMaxNm * 1e-3 * sigmaF, 2.0);
+    // the full Gaussian's marginals bound the reach (a box's footprintGaussian is only the light's diagonal part)
+    bool box = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0;
+    vec3 full = footprintGaussian + (box ? lightRankOne : vec3(0.0));
+    vec2 reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz);
+    float shortest = lambdaMinNm * 1e-3;
+    float longest = lambdaMaxNm * 1e-3;
+    vec2 xRange = texelRange(uv.x, reach.x, patchExtentUm.x, shortest, longest);
+    vec2 yRange = texelRange(uv.y, reach.y, patchExtentUm.y, shortest, longest);
+    int major = xRange.y - xRange.x >= yRange.y - yRange.x ? 0 : 1;
+    int minor = 1 - major;
+    vec2 majorRange = major == 0 ? xRange : yRange;
+    vec3 xyz = vec3(0.0);
+    int first = int(floor(majorRange.x));
+    int last = min(int(ceil(majorRange.y)), first + MAX_MARCH);
+    for (int i = first; i <= last; i++) {
+        vec2 cMajor = vec2(0.0);
+        cMajor[major] = float(i) / patchExtentUm[major];
+        vec2 reachMajor = vec2(1e30);
+        reachMajor[major] = reach[major];
+        vec2 along = lambdaInterval(cMajor, uv * vec2(major == 0 ? 1.0 : 0.0, major == 1 ? 1.0 : 0.0), reachMajor);
+        if (along.x >= along.y) {
+            continue;
+        }
+        vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3, along.y * 1e-3);
+        for (int k = int(floor(minorRange.x)); k <= int(ceil(minorRange.y)); k++) {
+            ivec2 m = major == 0 ? ivec2(i, k) : ivec2(k, i);
+            if (!inBand(m)) {
+                continue;
+            }
+            vec2 c = vec2(m) / patchExtentUm;
+            vec2 interval = lambdaInterval(c, uv, reach);
+            if (interval.x >= interval.y) {
+                continue;
+            }
+            lobeTermsCentre = -1;
+            xyz += integrateLobe(m, c, uvw, interval.x, interval.y);
+        }
+    }
+    return xyz;
+}
+
+// The monochromatic map: |P(lambda)|^2 at the centre direction, sum_m |T_m|^2 exp(-|uv - lambda m / L|^2 /
+// (lambda sigma_f)^2) (LobeSpectrum.power with a point footprint).
+float patchPower(vec3 uvw, float lambdaNm) {
+    float lambdaUm = lambdaNm * 1e-3;
+    float sigmaUv = lambdaUm * sigmaFPerUm();
+    vec2 reach = vec2(lobeReachSigmas * sigmaUv * 0.70710678);
+    vec2 lo = (uvw.xy - reach) * patchExtentUm / lambdaUm;
+    vec2 hi = (uvw.xy + reach) * patchExtentUm / lambdaUm;
+    float a = waveNumberPerUm(lambdaNm) * uvw.z;
+    float sum = 0.0;
+    for (int y = int(floor(lo.y)); y <= int(ceil(hi.y)); y++) {
+        for (int x = int(floor(lo.x)); x <= int(ceil(hi.x)); x++) {
+            ivec2 m = ivec2(x, y);
+            if (!inBand(m)) {
+                continue;
+            }
+            vec2 d = (uvw.xy - lambdaUm * vec2(m) / patchExtentUm) / sigmaUv;
+            lobeTermsCentre = -1;
+            sum += lobeWeight(m, a) * exp(-dot(d, d));
+        }
+    }
+    return sum;
+}
+
+#endif
