@@ -189,6 +189,11 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (!optics.light().isPoint() && lambdaNm != null) {
             throw new UserInputException("--lambda maps sample the light at its centre: drop --light-size-deg");
         }
+        if (!optics.light().isPoint() && named != null && named != Variant.LOBES && named != Variant.REFERENCE
+                && named != Variant.BAKED) {
+            throw new UserInputException(named.cliName() + " samples the light at its centre only: for "
+                    + "--light-size-deg " + lightSizeDeg + " use --variant lobes or reference (or baked on the GPU)");
+        }
         Reporter reporter = Reporter.STDERR;
         long start = System.nanoTime();
         HeightField field = input.load(reporter);

@@ -38,7 +38,9 @@ import java.util.Locale;
  * ({@code ../shared/data/patches/elaphe-100px.png}, 0.375 um, 0.0686 um pixels), with a point light and a 2-degree
  * light: CIEDE2000 (mean and 95th percentile over lit pixels, the reference's auto exposure) of the lobes method
  * (CPU and GPU) and of FLSS in the thesis' configuration (30 terms, 5 nm, 3 x 3; point-sampled, point light only)
- * against the filtered reference, and the GPU's median ms per frame of both on the same context. The reference
+ * against the filtered reference, the baked table of the lobes method ({@code -Ddiffract.bakedSamples}, 256 (u, v)
+ * samples by default, cell- and light-averaged, mip-mapped), and the GPU's median ms per frame of each on the same
+ * context (FLSS on the path TaylorEvaluation picks, the lobes method likewise). The reference
  * maps are cached under target/filtering-cache. Prints markdown rows.
  *
  * <pre>xvfb-run -a mvn -q test -Dtest=FilteringMeasurement -Ddiffract.measure=filtering</pre>
@@ -62,9 +64,11 @@ class FilteringMeasurement {
         }
         LobeQuadrature quadrature = quadrature(System.getProperty("diffract.lobes"));
         System.out.println("lobes quadrature: " + quadrature);
+        int bakedSamples = Integer.getInteger("diffract.bakedSamples", 256);
         System.out.println("| patch | light | theta_i | lit px | lobes CPU: mean / p95 | lobes GPU: mean / p95 | "
-                + "flss (thesis): mean / p95 | lobes ms | flss ms | flss / lobes |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|");
+                + "flss (thesis): mean / p95 | baked " + bakedSamples + ": mean / p95 | lobes ms | flss ms | "
+                + "flss / lobes | baked ms (bake s, MB) |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|");
         for (String name : System.getProperty("diffract.patches", "blazed,elaphe-like,xenopeltis-like,tall,elaphe-100px")
                 .split(",")) {
             HeightField field;
@@ -84,7 +88,7 @@ class FilteringMeasurement {
             for (String light : System.getProperty("diffract.lights", "0,2").split(",")) {
                 for (String theta : System.getProperty("diffract.thetas", "30").split(",")) {
                     measure(name, field, terms, phi, Double.parseDouble(theta), Double.parseDouble(light), size,
-                            quadrature, gpu);
+                            quadrature, gpu, bakedSamples);
                 }
             }
         }
@@ -101,7 +105,8 @@ class FilteringMeasurement {
     }
 
     private static void measure(String name, HeightField field, TaylorTerms terms, double phi, double thetaDeg,
-                                double lightDeg, int size, LobeQuadrature quadrature, boolean gpu) throws IOException {
+                                double lightDeg, int size, LobeQuadrature quadrature, boolean gpu, int bakedSamples)
+            throws IOException {
         Direction wi = Direction.fromSphericalDeg(thetaDeg, phi);
         OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(lightDeg)).withLobes(quadrature);
         BrdfSettings thesis = BrdfSettings.thesis(Variant.FLSS);
@@ -120,12 +125,28 @@ class FilteringMeasurement {
         String gpuCell = "-";
         String flssCell = "-";
         String times = "- | - | -";
+        String bakedCell = "-";
+        String bakedTime = "-";
         if (gpu) {
             double lobesMs;
             try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, lobesSettings, options, FloatTextureArray.Precision.FLOAT32)) {
                 BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
                 gpuCell = cell(d);
                 lobesMs = map.medianMsPerFrame(wi, size, 2, 10);
+            }
+            BrdfSettings bakedSettings = thesis.withVariant(Variant.BAKED).withBakedSamples(bakedSamples, 0);
+            // the baked table holds the thesis' series around 0 only: not on the phase-centred path
+            try (GpuBrdfMap map = evaluation.isPhaseCentred() ? null : GpuBrdfMap.of(evaluation, bakedSettings,
+                    options, FloatTextureArray.Precision.FLOAT32)) {
+                if (map == null) {
+                    throw new SkipBaked();
+                }
+                BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
+                bakedCell = cell(d);
+                bakedTime = String.format(Locale.ROOT, "%.2f (%.0f s, %.1f MB)", map.medianMsPerFrame(wi, size, 2, 10),
+                        map.bakedTable().bakeSeconds(), map.bakedTable().gpuBytes() / 1e6);
+            } catch (SkipBaked e) {
+                bakedCell = "(centred)";
             }
             OpticsOptions pointLight = options.withLight(LightSource.POINT);
             try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, thesis, pointLight, FloatTextureArray.Precision.FLOAT32)) {
@@ -135,8 +156,8 @@ class FilteringMeasurement {
                 times = String.format(Locale.ROOT, "%.1f | %.1f | %.1f", lobesMs, flssMs, flssMs / lobesMs);
             }
         }
-        System.out.printf(Locale.ROOT, "| %s | %s deg | %.0f | %d | %s | %s | %s | %s |%n", name, fmt(lightDeg), thetaDeg,
-                cpu.litPixels(), cell(cpu), gpuCell, flssCell, times);
+        System.out.printf(Locale.ROOT, "| %s | %s deg | %.0f | %d | %s | %s | %s | %s | %s | %s |%n", name, fmt(lightDeg),
+                thetaDeg, cpu.litPixels(), cell(cpu), gpuCell, flssCell, bakedCell, times, bakedTime);
     }
 
     private static String fmt(double v) {
@@ -174,6 +195,13 @@ class FilteringMeasurement {
             }
         }
         return map;
+    }
+
+    /** The baked table is not made on the phase-centred path. */
+    private static final class SkipBaked extends RuntimeException {
+        SkipBaked() {
+            super(null, null, false, false);
+        }
     }
 
     /** The patches' names, for other measurements. */

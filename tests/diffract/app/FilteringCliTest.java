@@ -1,0 +1,69 @@
+package diffract.app;
+
+import diffract.optics.SyntheticPatches;
+import diffract.optics.io.GsfWriter;
+import diffract.util.ImageFiles;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** brdfmap's filtering options: --variant lobes, --light-size-deg, --fresnel, and their one-line errors. */
+class FilteringCliTest {
+    @TempDir
+    static Path dir;
+    static Path grating;
+
+    @BeforeAll
+    static void writeGrating() throws Exception {
+        grating = dir.resolve("blazed.gsf");
+        GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.2, 20, 4, 16));
+    }
+
+    @Test
+    void lobesWithALightAndTheThesisFresnelWriteAMap() throws Exception {
+        Path pfm = dir.resolve("lobes.pfm");
+        Object[] result = CliTest.run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "lobes",
+                "--light-size-deg", "2", "--fresnel", "thesis", "--size", "16", "-o", dir.resolve("lobes.png").toString(),
+                "--pfm", pfm.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        assertTrue(Files.isRegularFile(dir.resolve("lobes.png")));
+        int[] whc = new int[3];
+        float[] map = ImageFiles.readPfm(pfm, whc);
+        double sum = 0;
+        for (float v : map) {
+            assertTrue(Float.isFinite(v));
+            sum += Math.abs(v);
+        }
+        assertTrue(sum > 0, "the map is lit");
+    }
+
+    @Test
+    void badFilteringOptionsEndWithOneLine() {
+        assertOneLine(run("--variant", "flss", "--light-size-deg", "2"), "lobes or reference");
+        assertOneLine(run("--variant", "lobes", "--fresnel", "squared"), "--fresnel");
+        assertOneLine(run("--variant", "lobes", "--light-size-deg", "25"), "angular diameter");
+        assertOneLine(run("--variant", "lobes", "--light-size-deg", "1", "--lambda", "550"), "--light-size-deg");
+    }
+
+    private static Object[] run(String... extra) {
+        String[] base = {"brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--size", "8", "-o",
+            dir.resolve("bad.png").toString()};
+        String[] args = new String[base.length + extra.length];
+        System.arraycopy(base, 0, args, 0, base.length);
+        System.arraycopy(extra, 0, args, base.length, extra.length);
+        return CliTest.run(args);
+    }
+
+    private static void assertOneLine(Object[] result, String mentions) {
+        String err = (String) result[2];
+        assertEquals(2, result[0], err);
+        assertEquals(1, err.strip().lines().count(), err);
+        assertTrue(err.startsWith("diffract: ") && err.contains(mentions), err);
+    }
+}
