@@ -27,8 +27,6 @@ import java.io.DataOutputStream;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
-import java.util.List;
 import java.util.Locale;
 
 /**
@@ -202,12 +200,5 @@ class FilteringMeasurement {
         SkipBaked() {
             super(null, null, false, false);
         }
-    }
-
-    /** The patches' names, for other measurements. */
-    static List<String> names() {
-        List<String> names = new ArrayList<>(BenchPatch.NAMES);
-        names.add("elaphe-100px");
-        return names;
     }
 }
