@@ -142,4 +142,26 @@ class SnakeMeshTest {
                 100, 32, SnakeMesh.RidgeDirection.ALONG_BODY));
         assertTrue(e.getMessage().contains("radiusM"), e.getMessage());
     }
+
+    @Test
+    void theCoiledSnakeIsClosedLiesOnTheGroundAndItsCoilsDoNotTouch() {
+        SnakeMesh coiled = SnakeMesh.generate(SnakeMesh.Parameters.defaults().withPose(SnakeMesh.Pose.COILED));
+        Mesh m = coiled.mesh();
+        assertTrue(m.isClosed());
+        double[] b = m.bounds();
+        assertEquals(0, b[1], 2e-3, "the belly rests on y = 0");
+        // a 1.2 m snake in a flat coil is a disc of about 0.3 m, far smaller than when stretched out
+        assertTrue(b[3] - b[0] < 0.4 && b[5] - b[2] < 0.4, "coil extent " + (b[3] - b[0]) + " x " + (b[5] - b[2]));
+        // the profile: v rises from snout to tail, the vent where the tail begins
+        SnakeMesh.Profile profile = coiled.profile();
+        assertEquals(SnakeMesh.Parameters.defaults().rings(), profile.v().length);
+        assertTrue(profile.ventV() > 0.6 && profile.ventV() < 0.9, "vent at v " + profile.ventV());
+        assertTrue(profile.lengthAlongM() > 1.2, "the side is longer than the body's x extent");
+        float[] p = m.positions();
+        float[] n = m.normals();
+        float[] c = coiled.centreCurvePoints();
+        for (int v = 0; v < m.vertexCount(); v++) {
+            assertTrue(Vec3.at(p, v).minus(Vec3.at(c, v)).dot(Vec3.at(n, v)) > 0, "vertex " + v + " normal points in");
+        }
+    }
 }
