@@ -283,7 +283,7 @@ final class ViewerOptions {
         return new ViewerSetup(s.patch(), s.patchName(), s.shape(), s.pigmentation(),
                 given("--diffuse-weight") ? diffuseWeight : s.diffuseWeight(), settings, camera, light,
                 given("--exposure") ? exposure : s.exposure(), brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
-                s.pigmentationOn() && !noPigmentation, s.verticalFovDeg());
+                s.pigmentationOn() && !noPigmentation, s.verticalFovDeg()).withStage(s.stage());
     }
 
     /**

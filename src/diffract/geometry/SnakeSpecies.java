@@ -6,14 +6,14 @@ import java.util.Locale;
  * The two snakes whose skin the project renders, with the scale counts taxonomists record for them and the shape
  * of their scales. Counts are mid-range values of the species' descriptions: Elaphe (Pantherophis) guttata, the
  * corn snake, 27 dorsal scale rows at mid-body and about 215 ventral scales; Xenopeltis unicolor, the sunbeam snake,
- * 15 rows and about 180 ventral scales. Corn snake scales are narrow and only slightly domed; Xenopeltis' are broad,
- * smooth and strongly domed (each one a small convex mirror, which is why the animal flashes scale by scale).
+ * 15 rows and about 180 ventral scales. Corn snake scales are narrow, Xenopeltis' broad and smooth; both are gently
+ * domed and each lies at its own small tilt, which is why the animal flashes scale by scale.
  */
 public enum SnakeSpecies {
     ELAPHE_GUTTATA("elapheGuttata",
-            new ScaleLattice.Parameters(27, 215, 0.28, 12, 6, 4, 5, 1.3, 1)),
+            new ScaleLattice.Parameters(27, 215, 0.28, 8, 6, 5, 5, 1.3, 1)),
     XENOPELTIS_UNICOLOR("xenopeltisUnicolor",
-            new ScaleLattice.Parameters(15, 180, 0.22, 18, 7, 5, 6, 1.3, 1));
+            new ScaleLattice.Parameters(15, 180, 0.22, 8, 7, 6, 6, 1.3, 1));
 
     private final String sceneName;
     private final ScaleLattice.Parameters scales;

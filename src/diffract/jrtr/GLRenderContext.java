@@ -133,6 +133,24 @@ public final class GLRenderContext implements RenderContext {
         }
     }
 
+    /**
+     * Draws every shape of {@code list} with {@code program} alone (no material uniforms or textures), through the
+     * given view and projection, with depth testing: for depth-only passes such as {@link ShadowMap}'s.
+     */
+    public void drawDepthOnly(RenderList list, ShaderProgram program, Matrix4f view, Matrix4f projection) {
+        requireAlive();
+        gl.glEnable(GL.GL_DEPTH_TEST);
+        program.use(gl);
+        resources.add(program);
+        for (RenderItem item : list.items()) {
+            setMatrix(program, "model", item.modelMatrix());
+            setMatrix(program, "view", view);
+            setMatrix(program, "projection", projection);
+            meshes.computeIfAbsent(item.shape(), shape -> GLMesh.upload(gl, shape.vertexData())).draw(gl);
+        }
+        GLErrors.check(gl, "drawing depth with " + program);
+    }
+
     private static void putVector(float[] array, int index, javax.vecmath.Tuple3f value) {
         array[index * 3] = value.x;
         array[index * 3 + 1] = value.y;

@@ -54,6 +54,21 @@ public final class DiffractionMaterials {
     }
 
     /**
+     * A mesh material on a {@link Stage} (set its textures and per-frame uniforms with {@link StageResources}):
+     * the same constants as {@link #surface}, the program compiled with the stage's defines.
+     */
+    static Material staged(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
+                           float diffuseWeight, Stage stage) {
+        Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
+                stage));
+        common(m, textures, settings).setFloat("exposure", exposure);
+        if (pigmentation != null) {
+            m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
+        }
+        return m;
+    }
+
+    /**
      * The bake pass of a BAKED table: FLSS of {@code flssSettings} per sample of {@code grid}; set {@code bakeW} per
      * slice and draw on the full-screen quad into a grid.uvSamples()^2 viewport.
      */

@@ -126,6 +126,17 @@ public final class DiffractionShaders {
                 definesFor(settings, textures, target, monochromatic, pigmentation));
     }
 
+    /**
+     * The surface program on a {@link Stage}: the same BRDF, evaluated per fragment in each scale's frame for the key
+     * and environment lights, tone mapped ({@code surface_stage.glsl}, switched on by the stage's defines).
+     */
+    public static ShaderProgram stagedSurfaceProgram(BrdfSettings settings, DiffractionTextures textures,
+                                                     boolean pigmentation, Stage stage) {
+        Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);
+        defines.putAll(stage.defines());
+        return ShaderProgram.fromClasspath(vertexPath(Target.SURFACE), fragmentPath(settings.variant()), defines);
+    }
+
     /** Defines for these textures: their order, radii, expansion and, for 8-bit terms, {@code TERMS_UNORM8}. */
     private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures, Target target,
                                                   boolean monochromatic, boolean pigmentation) {

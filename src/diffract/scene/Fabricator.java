@@ -41,11 +41,12 @@ public final class Fabricator {
         MaterialManager material = new MaterialManager(scene.material(), reporter);
         Shape shape = ShapeManager.shape(scene.shape());
         Scene.MaterialSpec m = scene.material();
-        var pigmentation = material.pigmentation();
+        var species = m.pigmentation().species();
+        var pigmentation = species != null ? StageManager.speciesPigment(scene, species) : material.pigmentation();
         ViewerSetup setup = new ViewerSetup(material.patch(), material.patchName(), shape, pigmentation,
                 m.diffuseWeight(), material.settings(), CameraManager.orbit(scene.camera()),
                 LightManager.light(scene.light()), m.exposure(), scene.mode(), m.pigmentationOn() && pigmentation != null,
-                scene.camera().fieldOfViewDeg());
+                scene.camera().fieldOfViewDeg(), StageManager.stage(scene));
         return new Fabricated(scene, setup, scene.image(), material.termSource());
     }
 }

@@ -15,7 +15,12 @@ import java.nio.file.Path;
  * @param source the file it was read from (messages name it)
  */
 public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec light, ShapeSpec shape,
-                    MaterialSpec material, DisplayMode mode) {
+                    MaterialSpec material, DisplayMode mode, StageSpec stage) {
+    /** A scene without staging keys. */
+    public Scene(Path source, ImageSize image, CameraSpec camera, LightSpec light, ShapeSpec shape,
+                 MaterialSpec material, DisplayMode mode) {
+        this(source, image, camera, light, shape, material, mode, StageSpec.none());
+    }
 
     /** Pixels of the rendered picture (the window's size for {@code view}). */
     public record ImageSize(int width, int height) {
@@ -51,7 +56,12 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
      * @param ridges   how the patch lies on the snake (kind snake)
      */
     public record ShapeSpec(ShapeKind kind, Path file, TangentSource tangents, SnakeMesh.RidgeDirection ridges,
-                            Transform transform) {
+                            Transform transform, SnakeMesh.Pose pose, StageSpec.ScalesSpec scales) {
+        /** A smooth snake in S-bends, or another kind. */
+        public ShapeSpec(ShapeKind kind, Path file, TangentSource tangents, SnakeMesh.RidgeDirection ridges,
+                         Transform transform) {
+            this(kind, file, tangents, ridges, transform, SnakeMesh.Pose.S_CURVE, null);
+        }
     }
 
     /** A height field: a file, or a procedural patch. */
@@ -66,14 +76,21 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     public record ProceduralPatch(ProceduralPatches.Spec spec) implements PatchSpec {
     }
 
-    /** The pigmentation image: none, the procedural corn-snake pattern, or an sRGB image file. */
-    public record PigmentationSpec(boolean procedural, Path file) {
+    /**
+     * The pigmentation image: none, the procedural corn-snake pattern, an sRGB image file, or a species' pattern
+     * painted on the snake's scales.
+     */
+    public record PigmentationSpec(boolean procedural, Path file, diffract.geometry.SnakeSpecies species) {
+        public PigmentationSpec(boolean procedural, Path file) {
+            this(procedural, file, null);
+        }
+
         public static PigmentationSpec none() {
             return new PigmentationSpec(false, null);
         }
 
         public boolean present() {
-            return procedural || file != null;
+            return procedural || file != null || species != null;
         }
     }
 

@@ -66,7 +66,8 @@ public final class SceneFile {
         SceneObject root = SceneObject.root(where, tree);
         Scene scene = new Scene(source, image(root), camera(root.object("camera")), light(root.object("light")),
                 shape(root.object("shape")), material(root.object("material")),
-                root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE);
+                root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE,
+                StageKeys.stage(root));
         root.finish();
         return scene;
     }
@@ -137,6 +138,12 @@ public final class SceneFile {
         Path file = null;
         TangentSource tangents = null;
         SnakeMesh.RidgeDirection ridges = null;
+        SnakeMesh.Pose pose = SnakeMesh.Pose.S_CURVE;
+        StageSpec.ScalesSpec scales = null;
+        if (kind == Scene.ShapeKind.SNAKE) {
+            pose = StageKeys.pose(shape);
+            scales = StageKeys.scales(shape);
+        }
         if (kind == Scene.ShapeKind.OBJ) {
             file = shape.existingFile("file");
             tangents = tangents(shape, TangentSource.fromUvs(), true);
@@ -149,7 +156,7 @@ public final class SceneFile {
         Scene.Transform transform = shape.has("transform") ? transform(shape.object("transform"))
                 : Scene.Transform.identity();
         shape.finish();
-        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform);
+        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform, pose, scales);
     }
 
     private static TangentSource tangents(SceneObject shape, TangentSource defaultSource, boolean obj) {
@@ -236,10 +243,15 @@ public final class SceneFile {
                 return Scene.PigmentationSpec.none();
             } else if (text.equals("procedural")) {
                 return new Scene.PigmentationSpec(true, null);
+            } else if (StageKeys.speciesNames().contains(text)) {
+                return new Scene.PigmentationSpec(false, null, diffract.geometry.SnakeSpecies.fromSceneName(text));
             }
+            List<String> known = new java.util.ArrayList<>(List.of("none", "procedural"));
+            known.addAll(StageKeys.speciesNames());
             throw material.problem("pigmentation", "unknown value \"" + text + "\""
-                    + SceneObject.suggestion(text, List.of("none", "procedural"))
-                    + "; use \"none\", \"procedural\" or {\"file\": \"IMAGE\"}");
+                    + SceneObject.suggestion(text, known)
+                    + "; use \"none\", \"procedural\", a species (\"" + String.join("\", \"", StageKeys.speciesNames())
+                    + "\") or {\"file\": \"IMAGE\"}");
         }
         if (node.value() instanceof Map) {
             SceneObject object = material.child("pigmentation", node);

@@ -27,7 +27,7 @@ final class ShapeManager {
     private static Shape untransformed(Scene.ShapeSpec spec) {
         switch (spec.kind()) {
             case SNAKE:
-                return ViewerShapes.snake(SnakeMesh.Parameters.defaults().withRidges(spec.ridges()));
+                return ViewerShapes.snake(snakeParameters(spec));
             case OBJ:
                 return fromMesh(spec.file().getFileName().toString(), ObjReader.read(spec.file(), spec.tangents()));
             case PLANE:
@@ -37,6 +37,11 @@ final class ShapeManager {
             default:
                 return ViewerShapes.sphere(direction(spec.tangents()));
         }
+    }
+
+    /** The procedural snake of a shape of kind snake: default size, the scene's ridges and pose. */
+    static SnakeMesh.Parameters snakeParameters(Scene.ShapeSpec spec) {
+        return SnakeMesh.Parameters.defaults().withRidges(spec.ridges()).withPose(spec.pose());
     }
 
     private static double[] direction(TangentSource tangents) {

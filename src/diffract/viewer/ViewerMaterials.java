@@ -58,6 +58,8 @@ final class ViewerMaterials {
 
     private final Texture2D pigmentationTexture;
     private final float diffuseWeight;
+    /** The stage's GPU side when the setup stages the surface (scales, environment, ground), else null. */
+    private diffract.render.StageResources stage;
     private final HeightField patch;
     /** The phase-centred terms of the patch (issue #6) by the shortest wavelength they were planned for. */
     /** The phase-centred terms per shortest wavelength (they do not depend on N; the decision does). */
@@ -72,6 +74,11 @@ final class ViewerMaterials {
         this.pigmentationTexture = pigmentation == null ? null : new Texture2D(pigmentation);
         this.diffuseWeight = (float) diffuseWeight;
         this.patch = patch;
+    }
+
+    /** Draws surfaces on this stage from now on (materials built later use it). */
+    void useStage(diffract.render.StageResources stageResources) {
+        this.stage = stageResources;
     }
 
     /** The material for this state's display mode and drawable settings, built if anything it depends on changed. */
@@ -128,6 +135,10 @@ final class ViewerMaterials {
         if (mode == DisplayMode.BRDF_MAP) {
             return DiffractionMaterials.brdfMapForDisplay(textures, settings, (float) exposure);
         }
+        if (stage != null) {
+            return stage.surface(textures, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
+                    diffuseWeight);
+        }
         return DiffractionMaterials.surface(textures, settings, (float) exposure,
                 pigmentation ? pigmentationTexture : null, diffuseWeight);
     }
@@ -155,6 +166,9 @@ final class ViewerMaterials {
         releaseAll(context);
         if (includingPigmentation && pigmentationTexture != null) {
             context.release(pigmentationTexture);
+        }
+        if (includingPigmentation && stage != null) {
+            stage.release(context);
         }
     }
 }

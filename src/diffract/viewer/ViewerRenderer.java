@@ -10,7 +10,10 @@ import diffract.jrtr.Renderer;
 import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.Direction;
+import diffract.jrtr.RenderList;
+import diffract.jrtr.ShaderProgram;
 import diffract.render.DiffractionMaterials;
+import diffract.render.StageResources;
 
 import javax.vecmath.Point3f;
 import javax.vecmath.Vector3f;
@@ -33,6 +36,13 @@ public final class ViewerRenderer extends Renderer {
     private final Group surfaceScene;
     private final ShapeNode mapQuad;
     private final Group mapScene;
+    /** The stage's GPU side (scales, environment, ground, shadow), or null for the plain surface. */
+    private final StageResources stage;
+    private final Group casters;
+    private final Group maskScene;
+    private Material maskMaterial;
+    private volatile boolean maskOnly;
+    private volatile double lightTurnDeg;
     private volatile boolean drawingStopped;
     private volatile boolean inFrame;
     private int widthPx;
@@ -46,9 +56,34 @@ public final class ViewerRenderer extends Renderer {
         // the nodes get their materials on the render thread, at the first frame
         this.surface = new ShapeNode(model.shape(), null);
         this.surfaceScene = new Group("surface").add(light, surface);
+        this.casters = new Group("shadow casters").add(new ShapeNode(model.shape(), null));
+        this.maskScene = new Group("mask").add(new ShapeNode(model.shape(), null));
+        this.stage = model.setup().stage().staged() ? new StageResources(model.setup().stage(), model.shape()) : null;
+        if (stage != null) {
+            materials.useStage(stage);
+            if (stage.groundNode() != null) {
+                surfaceScene.add(stage.groundNode());
+            }
+        }
         this.mapQuad = new ShapeNode(Shapes.fullScreenQuad(), null);
         this.mapScene = new Group("brdf map").add(mapQuad);
         setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+    }
+
+    /**
+     * Turns the key light (and the environment with it) about the world y axis by {@code degrees} from the state's
+     * light: a light going round the subject, for turntables.
+     */
+    public void setLightTurnDeg(double degrees) {
+        lightTurnDeg = degrees;
+    }
+
+    /**
+     * With {@code on}, frames show only the shape, white on black, unlit: the mask of where the subject is in the
+     * picture (for measurements of the picture).
+     */
+    public void setMaskOnly(boolean on) {
+        maskOnly = on;
     }
 
     public FrameStats stats() {
@@ -95,6 +130,10 @@ public final class ViewerRenderer extends Renderer {
     private void drawFrame(GLAutoDrawable drawable) {
         long start = System.nanoTime();
         ViewerState state = model.state();
+        if (maskOnly) {
+            showMask(drawable);
+            return;
+        }
         Material material = materials.materialFor(state, context());
         material.setFloat("exposure", (float) state.exposure());
         if (state.mode() == DisplayMode.BRDF_MAP) {
@@ -114,9 +153,36 @@ public final class ViewerRenderer extends Renderer {
                 new Point3f((float) orbit.targetX(), (float) orbit.targetY(), (float) orbit.targetZ()),
                 new Vector3f(0, 1, 0));
         Direction towardsLight = state.light().direction();
-        light.setDirection(new Vector3f((float) towardsLight.x(), (float) towardsLight.y(), (float) towardsLight.z()));
+        double turn = Math.toRadians(lightTurnDeg);
+        // turned about +y: (x, z) -> (x cos + z sin, -x sin + z cos), as Environment.rotatedAboutY
+        Vector3f towards = new Vector3f((float) (towardsLight.x() * Math.cos(turn) + towardsLight.z() * Math.sin(turn)),
+                (float) towardsLight.y(), (float) (-towardsLight.x() * Math.sin(turn) + towardsLight.z() * Math.cos(turn)));
+        light.setDirection(towards);
         surface.setMaterial(material);
+        if (stage != null && state.mode() == DisplayMode.SURFACE) {
+            stage.beforeFrame(context(), RenderList.collect(casters), towards, lightTurnDeg, material);
+        }
         setRoot(surfaceScene);
+    }
+
+    private void showMask(GLAutoDrawable drawable) {
+        if (maskMaterial == null) {
+            maskMaterial = new Material(ShaderProgram.fromClasspath("engine/unlit.vert", "engine/unlit.frag",
+                    java.util.Map.of())).setVec4("color", 1, 1, 1, 1);
+            for (diffract.jrtr.RenderItem item : RenderList.collect(maskScene).items()) {
+                ((ShapeNode) item.node()).setMaterial(maskMaterial);
+            }
+        }
+        double[] eye = model.state().camera().eye();
+        OrbitCamera orbit = model.state().camera();
+        camera().set(new Point3f((float) eye[0], (float) eye[1], (float) eye[2]),
+                new Point3f((float) orbit.targetX(), (float) orbit.targetY(), (float) orbit.targetZ()),
+                new Vector3f(0, 1, 0));
+        setRoot(maskScene);
+        setClearColor(0, 0, 0, 1);
+        super.display(drawable);
+        setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+        context().gl().glFinish();
     }
 
     /** The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. */

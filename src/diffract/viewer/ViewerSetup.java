@@ -6,6 +6,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.Variant;
 import diffract.render.DiffractionShaders;
+import diffract.render.Stage;
 import diffract.util.UserInputException;
 
 import java.awt.image.BufferedImage;
@@ -24,11 +25,27 @@ import java.util.Objects;
  * @param diffuseWeight  w_d of 003 Algorithm 4: how much pigment is mixed in as ambient light
  * @param exposure       multiplies linear XYZ before display encoding
  * @param verticalFovDeg the camera's vertical field of view in degrees, in (0, 180)
+ * @param stage          scales, environment light, ground and tone mapping around the surface
+ *                       ({@link Stage#none()}: the plain surface)
  */
 public record ViewerSetup(HeightField patch, String patchName, Shape shape, BufferedImage pigmentation,
                           double diffuseWeight, BrdfSettings settings, OrbitCamera camera, LightDirection light,
                           double exposure, DisplayMode mode, boolean pigmentationOn,
-                          double verticalFovDeg) {
+                          double verticalFovDeg, Stage stage) {
+    /** A setup without staging ({@link Stage#none()}). */
+    public ViewerSetup(HeightField patch, String patchName, Shape shape, BufferedImage pigmentation,
+                       double diffuseWeight, BrdfSettings settings, OrbitCamera camera, LightDirection light,
+                       double exposure, DisplayMode mode, boolean pigmentationOn, double verticalFovDeg) {
+        this(patch, patchName, shape, pigmentation, diffuseWeight, settings, camera, light, exposure, mode,
+                pigmentationOn, verticalFovDeg, Stage.none());
+    }
+
+    /** This setup on another stage. */
+    public ViewerSetup withStage(Stage newStage) {
+        return new ViewerSetup(patch, patchName, shape, pigmentation, diffuseWeight, settings, camera, light, exposure,
+                mode, pigmentationOn, verticalFovDeg, newStage);
+    }
+
     /** The field of view the viewer had before scene files could choose one. */
     public static final double DEFAULT_VERTICAL_FOV_DEG = 45;
 
@@ -41,6 +58,7 @@ public record ViewerSetup(HeightField patch, String patchName, Shape shape, Buff
     }
 
     public ViewerSetup {
+        Objects.requireNonNull(stage, "stage");
         Objects.requireNonNull(patch, "patch");
         Objects.requireNonNull(patchName, "patchName");
         Objects.requireNonNull(shape, "shape");
