@@ -32,15 +32,34 @@ final class RenderCommand implements Callable<Integer> {
     @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default: the scene's image, else ${DEFAULT-VALUE}).")
     String size;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png", description = "PNG to write.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png",
+            description = "PNG to write; with --turntable a .gif (animated, looping) or a .png name for a numbered sequence.")
     Path output;
+
+    @Option(names = "--turntable", paramLabel = "FRAMES",
+            description = "Render FRAMES frames with the camera going once round the scene (2..720).")
+    Integer turntableFrames;
+
+    @Option(names = "--orbit-light", description = "With --turntable: the key light (and the environment) goes round instead of the camera.")
+    boolean orbitLight;
+
+    @Option(names = "--frame-ms", defaultValue = "80", paramLabel = "MS", description = "With --turntable and a .gif: milliseconds per frame (default ${DEFAULT-VALUE}).")
+    int frameMs;
 
     @Override
     public Integer call() throws IOException {
         options.validate();
         ViewerOptions.parseSize(size); // bad usage fails before any work
-        if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
-            throw new UserInputException("render writes PNG files; name the output OUT.png");
+        String name = output.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (turntableFrames == null && orbitLight) {
+            throw new UserInputException("--orbit-light goes with --turntable FRAMES");
+        }
+        if (turntableFrames != null && !(turntableFrames >= 2 && turntableFrames <= 720)) {
+            throw new UserInputException("--turntable takes 2..720 frames, got " + turntableFrames);
+        }
+        if (!name.endsWith(".png") && !(turntableFrames != null && name.endsWith(".gif"))) {
+            throw new UserInputException(turntableFrames == null ? "render writes PNG files; name the output OUT.png"
+                    : "a turntable is written as OUT.gif or as a PNG sequence OUT-000.png, ...: name the output so");
         }
         DisplayCheck.requireDisplay();
         long start = System.nanoTime();
@@ -49,11 +68,16 @@ final class RenderCommand implements Callable<Integer> {
         int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
         model.bakeIfNeeded(reporter);
-        try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
-            target.writePng(output, widthHeight[0], widthHeight[1]);
+        ViewerRenderer renderer = new ViewerRenderer(model);
+        try (OffscreenTarget target = new OffscreenTarget(renderer)) {
+            if (turntableFrames != null) {
+                Turntable.render(target, renderer, model, turntableFrames, orbitLight, output, widthHeight, frameMs);
+            } else {
+                target.writePng(output, widthHeight[0], widthHeight[1]);
+            }
         }
-        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
-                widthHeight[0], widthHeight[1], setup.mode() == diffract.viewer.DisplayMode.BRDF_MAP ? "BRDF map"
+        System.out.printf(Locale.ROOT, "wrote %s (%s%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
+                turntableFrames == null ? "" : turntableFrames + " frames of ", widthHeight[0], widthHeight[1], setup.mode() == diffract.viewer.DisplayMode.BRDF_MAP ? "BRDF map"
                         : setup.shape().name(), setup.settings().variant().cliName(), setup.settings().highestOrder(),
                 setup.settings().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;

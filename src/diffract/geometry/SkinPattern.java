@@ -22,7 +22,7 @@ public interface SkinPattern {
         static final int EDGE = rgb(24, 16, 12);
         static final int BELLY = rgb(236, 226, 206);
         /** Saddles along the body, head to vent (corn snakes have 30 to 50). */
-        static final int SADDLES = 40;
+        static final int SADDLES = 32;
 
         private final ScaleLattice lattice;
         private final ScaleLattice.Parameters p;
@@ -70,7 +70,7 @@ public interface SkinPattern {
             long n = Math.round(q / period - 0.5);
             double centre = (n + 0.5) * period + 0.6 * (lattice.hash(n + seed, 11) - 0.5);
             double size = 1 + 0.25 * (lattice.hash(n + seed, 12) - 0.5);
-            if (superellipse((q - centre) / (0.38 * period * size), c / (0.42 * halfRows * size)) < 1) {
+            if (superellipse((q - centre) / (0.4 * period * size), c / (0.4 * halfRows * size)) < 1) {
                 return (int) (2 * n + 1);
             }
             // flank blotches between the saddles, on both sides

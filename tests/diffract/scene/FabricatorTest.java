@@ -37,22 +37,41 @@ class FabricatorTest {
         assertEquals(10, s.settings().lambdaStepNm());
         assertEquals(2.5, s.settings().sigmaSpatialUm());
         assertEquals(1, s.settings().windowRadius());
-        assertEquals(50, s.exposure());
-        // eye [0.403459, 0.9, 1.505729] is the orbit camera at azimuth 15, elevation 30, distance 1.8 (to 6 digits)
+        // eye - lookAt = (0.3, 1.47, 1.68): the orbit camera's distance and azimuth
         OrbitCamera c = s.camera();
-        assertEquals(15, c.azimuthDeg(), 1e-4);
-        assertEquals(30, c.elevationDeg(), 1e-4);
-        assertEquals(1.8, c.distance(), 1e-6);
-        assertEquals(0, c.targetX());
-        // direction [0, 0.8660254, 0.5] towards the light is theta 60 from +z, phi 90 from +x
-        assertEquals(60, s.light().thetaDeg(), 1e-5);
-        assertEquals(90, s.light().phiDeg(), 1e-9);
+        assertEquals(Math.sqrt(0.3 * 0.3 + 1.47 * 1.47 + 1.68 * 1.68), c.distance(), 1e-9);
+        assertEquals(Math.toDegrees(Math.atan2(0.3, 1.68)), c.azimuthDeg(), 1e-9);
+        assertEquals(-0.12, c.targetY(), 1e-12);
         assertEquals(45, s.verticalFovDeg());
-        assertNotNull(s.pigmentation(), "the corn-snake pigmentation is there for P");
-        assertFalse(s.pigmentationOn());
+        // the corn snake's own pattern, painted on its scales, shown from the start
+        assertNotNull(s.pigmentation());
+        assertEquals(512, s.pigmentation().getWidth());
+        assertEquals(4096, s.pigmentation().getHeight());
+        assertTrue(s.pigmentationOn());
         assertEquals(DisplayMode.SURFACE, s.mode());
         assertEquals(640, f.image().width());
         assertEquals(400, f.image().height());
+        // staged: scales, a clear sky as 8 extended lights, a ground with the key light's shadow, Reinhard
+        diffract.render.Stage stage = s.stage();
+        assertTrue(stage.staged());
+        assertEquals(512, stage.scaleFrames().width());
+        assertEquals(4096, stage.scaleFrames().height());
+        assertEquals(8, stage.environment().lights().size());
+        assertTrue(stage.shadows());
+        assertEquals(diffract.colour.ToneMapping.Operator.REINHARD, stage.toneMapping().operator());
+        assertEquals("1", stage.defines().get("SCALE_FRAMES"));
+        assertEquals("8", stage.defines().get("ENVIRONMENT_LIGHTS"));
+    }
+
+    @Test
+    void aSceneWithoutStagingKeysIsNotStaged() throws IOException {
+        Path file = dir.resolve("plain.json");
+        Files.writeString(file, "{\"camera\": {\"eye\": [0, 1, 4]}, \"light\": {\"direction\": [0, 0, 1]},"
+                + " \"shape\": {\"kind\": \"snake\"}, \"material\": {\"patch\": {\"procedural\": \"elapheLike\"},"
+                + " \"taylorTerms\": 4}}");
+        ViewerSetup s = Fabricator.fabricate(file, Reporter.SILENT).setup();
+        assertFalse(s.stage().staged());
+        assertTrue(s.stage().defines().isEmpty());
     }
 
     @Test
@@ -60,7 +79,8 @@ class FabricatorTest {
         ViewerSetup xenopeltis = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-xenopeltis.json"),
                 Reporter.SILENT).setup();
         assertEquals(16 * 0.65 / 128, xenopeltis.patch().pixelSizeYUm(), 1e-12);
-        assertEquals(null, xenopeltis.pigmentation());
+        assertNotNull(xenopeltis.pigmentation());
+        assertEquals(8, xenopeltis.stage().environment().lights().size());
         ViewerSetup blazed = Fabricator.fabricate(SceneFileTest.SCENES.resolve("blazed-grating-plane.json"),
                 Reporter.SILENT).setup();
         assertEquals("plane", blazed.shape().name());

@@ -138,4 +138,43 @@ class SceneFileTest {
         assertTrue(message("").startsWith("1: (json): the file is empty"));
         assertTrue(message("[1, 2]").startsWith("1: (scene): must be a JSON object"));
     }
+
+    /** The staging keys: values read with their units, mistakes named by key with the way out. */
+    @Test
+    void stagingKeysAreReadAndTheirMistakesNamed() throws IOException {
+        String snake = "{\n  \"camera\": {\"eye\": [0, 1, 3]},\n  \"light\": {\"thetaDeg\": 30},\n"
+                + "  \"shape\": {\"kind\": \"snake\", \"pose\": \"coiled\", \"scales\": {\"species\": \"elapheGuttata\","
+                + " \"dorsalScaleRows\": 25, \"tiltDeg\": 9}},\n"
+                + "  \"material\": {\"patch\": {\"procedural\": \"elapheLike\"}, \"pigmentation\": \"xenopeltisUnicolor\"},\n"
+                + "  \"environment\": {\"sky\": {\"irradianceRatio\": 0.2}, \"lights\": 4},\n"
+                + "  \"ground\": {\"albedoSrgb\": [0.5, 0.4, 0.3], \"shadows\": false},\n"
+                + "  \"toneMapping\": {\"operator\": \"aces\", \"exposureStops\": -1.5}\n}\n";
+        Path file = dir.resolve("staged.json");
+        Files.writeString(file, snake);
+        Scene scene = SceneFile.load(file);
+        assertEquals(diffract.geometry.SnakeMesh.Pose.COILED, scene.shape().pose());
+        assertEquals(25, scene.shape().scales().lattice().dorsalRows());
+        assertEquals(9, scene.shape().scales().lattice().tiltDeg());
+        assertEquals(diffract.geometry.SnakeSpecies.ELAPHE_GUTTATA.scales().ventralScales(),
+                scene.shape().scales().lattice().ventralScales());
+        assertEquals(diffract.geometry.SnakeSpecies.XENOPELTIS_UNICOLOR, scene.material().pigmentation().species());
+        assertEquals(4, scene.stage().environment().lights());
+        assertEquals(0.2, scene.stage().environment().skyIrradianceRatio());
+        assertEquals(false, scene.stage().ground().shadows());
+        assertEquals(diffract.colour.ToneMapping.Operator.ACES, scene.stage().toneMapping().operator());
+        assertEquals(-1.5, scene.stage().toneMapping().exposureStops());
+
+        String m = message(snake.replace("\"lights\": 4", "\"lights\": 6"));
+        assertTrue(m.startsWith("6: environment.lights: must be a power of two"), m);
+        m = message(snake.replace("\"species\": \"elapheGuttata\"", "\"species\": \"elapheGutata\""));
+        assertTrue(m.contains("shape.scales.species: unknown value \"elapheGutata\" (did you mean \"elapheGuttata\"?)"), m);
+        m = message(snake.replace("\"sky\": {\"irradianceRatio\": 0.2}, ", ""));
+        assertTrue(m.contains("environment.sky: missing; add \"sky\""), m);
+        m = message(snake.replace("\"operator\": \"aces\"", "\"operator\": \"filmic\""));
+        assertTrue(m.contains("toneMapping.operator: unknown value \"filmic\""), m);
+        m = message(snake.replace("\"tiltDeg\": 9", "\"tiltDeg\": 45"));
+        assertTrue(m.contains("shape.scales.tiltDeg: must be in [0, 30], got 45"), m);
+        m = message(snake.replace("\"kind\": \"snake\", \"pose\": \"coiled\"", "\"kind\": \"snake\", \"pose\": \"curled\""));
+        assertTrue(m.contains("shape.pose: unknown value \"curled\""), m);
+    }
 }
