@@ -56,11 +56,12 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
      * @param ridges   how the patch lies on the snake (kind snake)
      */
     public record ShapeSpec(ShapeKind kind, Path file, TangentSource tangents, SnakeMesh.RidgeDirection ridges,
-                            Transform transform, SnakeMesh.Pose pose, StageSpec.ScalesSpec scales) {
-        /** A smooth snake in S-bends, or another kind. */
+                            Transform transform, SnakeMesh.Pose pose, StageSpec.ScalesSpec scales,
+                            StageSpec.NormalMapSpec normalMap) {
+        /** A smooth snake in S-bends, or another kind, without a normal map. */
         public ShapeSpec(ShapeKind kind, Path file, TangentSource tangents, SnakeMesh.RidgeDirection ridges,
                          Transform transform) {
-            this(kind, file, tangents, ridges, transform, SnakeMesh.Pose.S_CURVE, null);
+            this(kind, file, tangents, ridges, transform, SnakeMesh.Pose.S_CURVE, null, null);
         }
     }
 

@@ -140,6 +140,10 @@ public final class SceneFile {
         SnakeMesh.RidgeDirection ridges = null;
         SnakeMesh.Pose pose = SnakeMesh.Pose.S_CURVE;
         StageSpec.ScalesSpec scales = null;
+        StageSpec.NormalMapSpec normalMap = null;
+        if (kind == Scene.ShapeKind.OBJ && shape.has("normalMap")) {
+            normalMap = new StageSpec.NormalMapSpec(shape.existingFile("normalMap"));
+        }
         if (kind == Scene.ShapeKind.SNAKE) {
             pose = StageKeys.pose(shape);
             scales = StageKeys.scales(shape);
@@ -156,7 +160,7 @@ public final class SceneFile {
         Scene.Transform transform = shape.has("transform") ? transform(shape.object("transform"))
                 : Scene.Transform.identity();
         shape.finish();
-        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform, pose, scales);
+        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform, pose, scales, normalMap);
     }
 
     private static TangentSource tangents(SceneObject shape, TangentSource defaultSource, boolean obj) {

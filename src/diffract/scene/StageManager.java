@@ -35,6 +35,11 @@ final class StageManager {
             frames = new Stage.ScaleFrames(scales.mapWidthPx(), scales.mapHeightPx(),
                     skin.frameMap(scales.mapWidthPx(), scales.mapHeightPx()));
         }
+        if (scene.shape().normalMap() != null) {
+            java.awt.image.BufferedImage image = diffract.geometry.NormalMapImage.read(scene.shape().normalMap().file());
+            frames = new Stage.ScaleFrames(image.getWidth(), image.getHeight(),
+                    diffract.geometry.NormalMapImage.frameMap(image));
+        }
         double[] groundLinear = spec.ground() == null ? new double[] {0.2, 0.2, 0.2}
                 : new double[] {Srgb.decode(spec.ground().albedoSrgb()[0]),
                     Srgb.decode(spec.ground().albedoSrgb()[1]), Srgb.decode(spec.ground().albedoSrgb()[2])};

@@ -42,4 +42,8 @@ public record StageSpec(EnvironmentSpec environment, GroundSpec ground, ToneMapp
      */
     public record ScalesSpec(SnakeSpecies species, ScaleLattice.Parameters lattice, int mapWidthPx, int mapHeightPx) {
     }
+
+    /** An OBJ shape's tangent-space normal map (OpenGL convention), or none. */
+    public record NormalMapSpec(Path file) {
+    }
 }
