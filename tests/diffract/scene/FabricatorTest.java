@@ -134,4 +134,37 @@ class FabricatorTest {
             assertEquals(0, t[i] * n[i] + t[i + 1] * n[i + 1] + t[i + 2] * n[i + 2], 1e-5, "tangent in the surface");
         }
     }
+
+    @Test
+    void anHdrEnvironmentBecomesExtendedLightsCarryingItsPower() throws IOException {
+        // a dim grey map with one bright pixel: the brightest light points at it; scale doubles every light
+        int w = 64;
+        int h = 32;
+        float[] rgb = new float[3 * w * h];
+        java.util.Arrays.fill(rgb, 0.01f);
+        int column = 16;
+        int row = 8;
+        for (int k = 0; k < 3; k++) {
+            rgb[3 * (row * w + column) + k] = 400;
+        }
+        diffract.lighting.LatLongMap map = new diffract.lighting.LatLongMap(w, h, rgb);
+        diffract.lighting.RadianceHdr.write(dir.resolve("probe.hdr"), map, true);
+        Path file = dir.resolve("probe.json");
+        Files.writeString(file, "{\"camera\": {\"eye\": [0, 1, 4]}, \"light\": {\"direction\": [0, 1, 1]},"
+                + " \"shape\": {\"kind\": \"sphere\"}, \"environment\": {\"file\": \"probe.hdr\", \"scale\": 2,"
+                + " \"lights\": 4}, \"material\": {\"patch\": {\"procedural\": \"elapheLike\"}, \"taylorTerms\": 4}}");
+        diffract.render.Stage stage = Fabricator.fabricate(file, Reporter.SILENT).setup().stage();
+        java.util.List<diffract.lighting.ExtendedLight> lights = stage.environment().lights();
+        assertEquals(4, lights.size());
+        double[] expected = map.pixelDirection(column, row);
+        double[] d = lights.get(0).direction();
+        assertTrue(d[0] * expected[0] + d[1] * expected[1] + d[2] * expected[2] > Math.cos(Math.toRadians(1)));
+        double total = 0;
+        for (diffract.lighting.ExtendedLight l : lights) {
+            total += l.rgb()[1];
+        }
+        assertEquals(2 * map.totalPower()[1], total, 0.01 * total, "scale 2, RGBE rounding within 1 %");
+        assertEquals(null, stage.ground());
+        assertEquals("4", stage.defines().get("ENVIRONMENT_LIGHTS"));
+    }
 }
