@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Reruns the extremes matrix of issue #6 (tests/diffract/render/ExtremesReportTest.java) and writes
+# Reruns the extremes matrix (tests/diffract/render/ExtremesReportTest.java) and writes
 # docs/extremes.md from its two tables (target/extremes-threshold.md, target/extremes.md). Needs Xvfb + Mesa.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 xvfb-run -a -s "-screen 0 1280x1024x24" mvn -B -ntp -q test -Dtest=ExtremesReportTest > /dev/null
 {
 cat <<'INTRO'
-# Numerical stability at the extremes (issue #6)
+# Numerical stability at the extremes
 
 Made by `bash docs/extremes.sh` (it runs `ExtremesReportTest`, which also fails if any map holds a NaN, an Inf or a
 negative value, or if FLSS on the automatic expansion misses the reference by more than mean CIEDE2000 1 or 10 %

@@ -13,8 +13,8 @@ import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
-import diffract.render.TermFormats;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
@@ -50,12 +50,14 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
     boolean quick;
 
-    @Option(names = "--patches", defaultValue = "blazed,elaphe-like,xenopeltis-like,tall", paramLabel = "LIST",
-            description = "Patches (default ${DEFAULT-VALUE}).")
-    String patches;
+    @Option(names = "--patches", defaultValue = "blazed-10um,elaphe-like,xenopeltis-like,tall", paramLabel = "LIST",
+            split = ",", completionCandidates = OptionTypes.PatchNames.class,
+            description = "Named patches, of ${COMPLETION-CANDIDATES} (default ${DEFAULT-VALUE}).")
+    List<String> patches;
 
-    @Option(names = "--variants", paramLabel = "LIST", description = "Variants (default: every GPU variant).")
-    String variants;
+    @Option(names = "--variants", paramLabel = "LIST", split = ",", converter = VariantConverter.class,
+            description = "Variants: flss, nmm, pq, baked (default: every GPU variant).")
+    List<Variant> variants;
 
     @Option(names = "--size", defaultValue = "64", paramLabel = "S", description = "Map size of the sweep (default ${DEFAULT-VALUE}).")
     int sizePx;
@@ -64,20 +66,21 @@ final class BenchCommand implements Callable<Integer> {
             description = "The full sweep also measures the thesis' configuration at this size (default ${DEFAULT-VALUE}).")
     int largeSizePx;
 
-    @Option(names = "--terms", paramLabel = "LIST", description = "Own grid: highest Taylor orders N (default 30 when another grid option is given).")
-    String termsList;
+    @Option(names = "--terms", paramLabel = "LIST", split = ",",
+            description = "Own grid: highest Taylor orders N (default 30 when another grid option is given).")
+    List<Integer> termsList;
 
-    @Option(names = "--lambda-steps", paramLabel = "LIST", description = "Own grid: wavelength steps in nm (default 5).")
-    String stepsList;
+    @Option(names = "--lambda-steps", paramLabel = "LIST", split = ",", description = "Own grid: wavelength steps in nm (default 5).")
+    List<Double> stepsList;
 
-    @Option(names = "--window-radii", paramLabel = "LIST", description = "Own grid: window radii R (default 1).")
-    String radiiList;
+    @Option(names = "--window-radii", paramLabel = "LIST", split = ",", description = "Own grid: window radii R (default 1).")
+    List<Integer> radiiList;
 
-    @Option(names = "--texture-formats", paramLabel = "LIST", description = "Own grid: rg32f, rg16f, rg8 (default rg32f).")
-    String formatsList;
+    @Option(names = "--texture-formats", paramLabel = "LIST", split = ",", description = "Own grid: rg32f, rg16f, rg8 (default rg32f).")
+    List<TermFormat> formatsList;
 
-    @Option(names = "--sizes", paramLabel = "LIST", description = "Own grid: map sizes (default --size).")
-    String sizesList;
+    @Option(names = "--sizes", paramLabel = "LIST", split = ",", description = "Own grid: map sizes (default --size).")
+    List<Integer> sizesList;
 
     @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
             description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the "
@@ -96,16 +99,14 @@ final class BenchCommand implements Callable<Integer> {
         if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
-        BrdfSettings thesis = BrdfSettings.thesis(Variant.FLSS);
         // the thesis' settings except the wavelength range and the coherence length asked for
-        BrdfSettings base = new BrdfSettings(thesis.variant(), thesis.highestOrder(), thesis.windowRadius(), lambdaMinNm,
-                lambdaMaxNm, thesis.lambdaStepNm(), coherenceLengthUm / 4.0, thesis.refractiveIndex(), 0);
+        BrdfSettings base = BrdfSettings.thesis(Variant.FLSS).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
+                .coherenceLengthUm(coherenceLengthUm));
         Map<String, BenchPatch> patchMap = new LinkedHashMap<>();
-        for (BenchPatch p : BenchPatch.named(SweepPlan.list(patches))) {
+        for (BenchPatch p : BenchPatch.named(patches)) {
             patchMap.put(p.name(), p);
         }
-        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants(quick)
-                : SweepPlan.list(variants).stream().map(Variant::parse).toList();
+        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants(quick) : variants;
         if (variantList.contains(Variant.REFERENCE)) {
             throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
         }
@@ -157,27 +158,25 @@ final class BenchCommand implements Callable<Integer> {
                         + "--window-radii, --texture-formats and --sizes, or --quick");
             }
             SweepPlan.Point t = SweepPlan.thesis(sizePx);
-            List<String> formats = formatsList == null ? List.of(t.textureFormat()) : SweepPlan.list(formatsList);
-            formats.forEach(TermFormats::parse); // fails early on an unknown name
-            return SweepPlan.grid(ints(termsList, t.terms()), doubles(stepsList, t.lambdaStepNm()),
-                    ints(radiiList, t.windowRadius()), formats, ints(sizesList, sizePx));
+            return SweepPlan.grid(or(termsList, t.terms()), or(stepsList, t.lambdaStepNm()),
+                    or(radiiList, t.windowRadius()), or(formatsList, t.textureFormat()), or(sizesList, sizePx));
         }
         return quick ? SweepPlan.quick(sizePx) : SweepPlan.full(sizePx, largeSizePx);
     }
 
-    private static List<Integer> ints(String list, int fallback) {
-        try {
-            return list == null ? List.of(fallback) : SweepPlan.list(list).stream().map(Integer::parseInt).toList();
-        } catch (NumberFormatException e) {
-            throw new UserInputException("not a list of integers: '" + list + "'");
-        }
+    private static <T> List<T> or(List<T> given, T fallback) {
+        return given == null ? List.of(fallback) : given;
     }
 
-    private static List<Double> doubles(String list, double fallback) {
-        try {
-            return list == null ? List.of(fallback) : SweepPlan.list(list).stream().map(Double::parseDouble).toList();
-        } catch (NumberFormatException e) {
-            throw new UserInputException("not a list of numbers: '" + list + "'");
+    /** A variant by name (the reference is refused later, with the reason). */
+    static final class VariantConverter implements picocli.CommandLine.ITypeConverter<Variant> {
+        @Override
+        public Variant convert(String text) {
+            try {
+                return Variant.parse(text);
+            } catch (UserInputException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage());
+            }
         }
     }
 

@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.optics.BrdfSettings;
+import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorBound;
 import diffract.optics.TaylorTerms;
 import diffract.precompute.TermFolders;
@@ -32,18 +32,18 @@ final class ConvertTermsCommand implements Callable<Integer> {
 
     @Option(names = "--format", paramLabel = "F",
             description = "native or thesis; default: the other format than --from's.")
-    String format;
+    TermFolders.Format format;
 
-    @Option(names = "--height-unit", defaultValue = "auto", paramLabel = "UNIT",
+    @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
+            converter = OptionTypes.HeightUnitConverter.class,
             description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
-    String heightUnit;
+    ThesisFormat.HeightUnit unit;
 
     @Override
     public Integer call() throws IOException {
         Reporter reporter = Reporter.STDERR;
-        ThesisFormat.HeightUnit unit = ThesisFormat.HeightUnit.parse(heightUnit);
         TermFolders.Format source = TermFolders.detect(from);
-        TermFolders.Format target = format != null ? TermFolders.Format.parse(format)
+        TermFolders.Format target = format != null ? format
                 : source == TermFolders.Format.NATIVE ? TermFolders.Format.THESIS : TermFolders.Format.NATIVE;
         if (Files.exists(to) && Files.isSameFile(from, to)) {
             throw new UserInputException("--to must differ from --from (" + to + ")");
@@ -72,7 +72,7 @@ final class ConvertTermsCommand implements Callable<Integer> {
 
     /** A thesis folder does not say how N was chosen: record "converted" and the bound N gives at 380 nm. */
     private static TermSidecar.Selection convertedSelection(TaylorTerms terms) {
-        double lambdaMinNm = BrdfSettings.LAMBDA_MIN_NM;
+        double lambdaMinNm = SpectralSettings.LAMBDA_MIN_NM;
         double x = TaylorBound.maxPhase(lambdaMinNm, terms.maxAbsHeightUm());
         return new TermSidecar.Selection("converted", null, lambdaMinNm, x,
                 TaylorBound.lagrangeRemainder(x, terms.highestOrder()));

@@ -1,8 +1,6 @@
 package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
-import diffract.optics.SyntheticPatches;
-import diffract.optics.io.GsfWriter;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 
@@ -28,8 +26,9 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
     Path outputDir;
 
-    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", description = "Picture size (default ${DEFAULT-VALUE}).")
-    String size;
+    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+            description = "Picture size (default ${DEFAULT-VALUE}).")
+    OptionTypes.ImageSize size;
 
     /**
      * The view: the default scene {@code assets/scenes/snake-elaphe.json}. Its numbers: 20 Taylor terms and 10 nm
@@ -59,26 +58,29 @@ final class DemoCommand implements Callable<Integer> {
         }
     }
 
+    private String sizeText() {
+        return size.width() + "x" + size.height();
+    }
+
     @Override
     public Integer call() throws Exception {
         boolean gl = DisplayCheck.problem().isEmpty();
         boolean screen = gl && !"1".equals(System.getenv(ViewCommand.PRIVATE_XVFB_VARIABLE));
         if (screen) {
-            return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
+            return Main.execute("view", defaultScene(outputDir).toString(), "--size", sizeText());
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
-            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", size, "-o", png.toString());
+            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", sizeText(), "-o",
+                    png.toString());
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }
             return code;
         }
         System.err.println("no OpenGL display (install xvfb for the rendered view): CPU BRDF map instead");
-        Path patch = outputDir.resolve("demo-blazed-grating.gsf");
-        GsfWriter.write(patch, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16));
         Path png = outputDir.resolve("demo-brdfmap.png");
-        int code = Main.execute("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant", "reference",
+        int code = Main.execute("brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--variant", "reference",
                 "--exposure", "auto", "--size", "256", "-o", png.toString());
         if (code == 0) {
             System.out.println(png.toAbsolutePath());

@@ -1,11 +1,12 @@
 package diffract.app;
 
+import diffract.optics.InvalidSettingException;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.UserInputException;
 import diffract.util.Version;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine;
 
 /**
  * {@code ./diffract}: the command line. Every command answers {@code --help}; bad usage or input ends with a
@@ -40,11 +41,16 @@ public final class Main implements Runnable {
 
     /** Runs the command line and returns the exit code (tests call this). */
     public static int execute(String... args) {
-        CommandLine cli = new CommandLine(new Main());
+        CommandLine cli = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true);
+        cli.getSubcommands().get("patch").getCommandSpec().usageMessage().footer(PatchCommand.catalogueText());
         boolean debug = java.util.Arrays.asList(args).contains("--debug");
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
             if (debug) {
                 ex.printStackTrace();
+            }
+            if (ex instanceof InvalidSettingException setting) {
+                System.err.println("diffract: " + OptionNames.of(setting.quantity()) + ": " + ex.getMessage());
+                return EXIT_USAGE;
             }
             if (ex instanceof UserInputException) {
                 System.err.println("diffract: " + ex.getMessage());
@@ -54,8 +60,8 @@ public final class Main implements Runnable {
             return 1;
         });
         cli.setParameterExceptionHandler((ex, args1) -> {
-            System.err.println("diffract: " + ex.getMessage());
-            System.err.println("try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help'");
+            System.err.println("diffract: " + ex.getMessage() + "; try '"
+                    + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help'");
             return EXIT_USAGE;
         });
         return cli.execute(args);

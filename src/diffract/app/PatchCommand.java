@@ -1,80 +1,93 @@
 package diffract.app;
 
 import diffract.optics.HeightField;
+import diffract.optics.PatchCatalogue;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.io.GsfWriter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
-/** {@code diffract patch}: writes a synthetic height field made by code as a Gwyddion .gsf file. */
+/** {@code diffract patch}: writes a named patch made by code as a Gwyddion .gsf file. */
 @Command(name = "patch", mixinStandardHelpOptions = true,
-        description = {"Write a synthetic grating as a Gwyddion Simple Field (.gsf, heights and pixel size in metres).",
+        description = {"Write a patch made by code as a Gwyddion Simple Field (.gsf, heights and pixel size in metres).",
                 "Grating grooves run along y (rows); the period lies along x (columns).",
                 "The snake patches' ridges run along x; their period lies along y (view them with --phi-i 90)."})
 final class PatchCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "KIND",
-            description = "blazed (sawtooth), sinusoid, elaphe-like (a procedural snake-skin patch: 128 x 128 pixels "
-                    + "of 0.0715 um, ridges along x with period 1.144 um along y, 0.3 um high) or xenopeltis-like "
-                    + "(128 x 128 pixels of 0.08125 um, smooth ridges along x, period 0.65 um, 0.1 um high); "
-                    + "for the snake patches only --seed applies")
-    String kind;
+    @Spec
+    CommandSpec spec;
 
-    @Option(names = "--period", defaultValue = "2.5", paramLabel = "UM", description = "Grating period d (default ${DEFAULT-VALUE}).")
-    double periodUm;
+    @Parameters(index = "0", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
+            description = "One of ${COMPLETION-CANDIDATES}; the options below change its parameters.")
+    String name;
 
-    @Option(names = "--height", defaultValue = "0.2", paramLabel = "UM", description = "Peak-to-valley height (default ${DEFAULT-VALUE}).")
-    double heightUm;
+    @Option(names = "--period", paramLabel = "UM", description = "Grating or ridge period d.")
+    Double periodUm;
 
-    @Option(names = "--samples-per-period", defaultValue = "25", paramLabel = "K", description = "Pixels per period (default ${DEFAULT-VALUE}).")
-    int samplesPerPeriod;
+    @Option(names = "--height", paramLabel = "UM", description = "Peak-to-valley height.")
+    Double heightUm;
 
-    @Option(names = "--periods", defaultValue = "26", paramLabel = "P", description = "Whole periods across (default ${DEFAULT-VALUE}: 65 um at 2.5 um).")
-    int periods;
+    @Option(names = "--periods", paramLabel = "P", description = "Whole periods across.")
+    Integer periods;
 
-    @Option(names = "--rows", defaultValue = "16", paramLabel = "R", description = "Rows (default ${DEFAULT-VALUE}).")
-    int rows;
+    @Option(names = "--samples-per-period", paramLabel = "K", description = "Gratings: pixels per period.")
+    Integer samplesPerPeriod;
 
-    @Option(names = "--seed", defaultValue = "1", paramLabel = "S", description = "Noise seed of the snake patches (default ${DEFAULT-VALUE}).")
-    long seed;
+    @Option(names = "--rows", paramLabel = "R", description = "Gratings: rows.")
+    Integer rows;
+
+    @Option(names = "--seed", paramLabel = "S", description = "Snake patches: the noise seed.")
+    Long seed;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf")
     Path output;
 
     @Override
     public Integer call() throws IOException {
-        HeightField field = spec().build();
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gsf")) {
             throw new UserInputException("patch writes Gwyddion .gsf files; name the output FILE.gsf");
         }
+        HeightField field = spec(PatchCatalogue.named(name)).build();
         GsfWriter.write(output, field);
         System.out.printf(Locale.ROOT, "wrote %s: %d x %d pixels of %.4f um (%.2f x %.2f um)%n", output, field.cols(),
                 field.rows(), field.pixelSizeXUm(), field.widthUm(), field.heightExtentUm());
         return 0;
     }
 
-    /** The CLI's kind as a procedural patch: gratings take the options, the snake patches their defaults and seed. */
-    private ProceduralPatches.Spec spec() {
-        switch (kind.toLowerCase(Locale.ROOT)) {
-            case "blazed":
-            case "sinusoid":
-                return new ProceduralPatches.Spec(kind.toLowerCase(Locale.ROOT), periodUm, heightUm, periods,
-                        samplesPerPeriod, rows, 0, 0, seed);
-            case "elaphe-like":
-            case "xenopeltis-like":
-                ProceduralPatches.Spec d = ProceduralPatches.Spec.defaults(
-                        kind.toLowerCase(Locale.ROOT).equals("elaphe-like") ? "elapheLike" : "xenopeltisLike");
-                return new ProceduralPatches.Spec(d.kind(), d.periodUm(), d.heightUm(), d.periods(),
-                        d.samplesPerPeriod(), d.rows(), d.sizePx(), d.roughnessUm(), seed);
-            default:
-                throw new UserInputException("unknown patch kind '" + kind
-                        + "': use blazed, sinusoid, elaphe-like or xenopeltis-like");
+    /** The named patch with the options given in place of its parameters. */
+    private ProceduralPatches.Spec spec(PatchCatalogue.Entry entry) {
+        ProceduralPatches.Spec d = entry.spec();
+        boolean grating = d.kind().isGrating();
+        if (!grating && (samplesPerPeriod != null || rows != null)) {
+            throw new UserInputException("--samples-per-period and --rows size a grating; " + entry.name()
+                    + " is " + d.sizePx() + " x " + d.sizePx() + " pixels");
         }
+        if (grating && seed != null) {
+            throw new UserInputException("--seed is the noise of the snake patches; a grating has none");
+        }
+        return new ProceduralPatches.Spec(d.kind(), or(periodUm, d.periodUm()), or(heightUm, d.heightUm()),
+                or(periods, d.periods()), or(samplesPerPeriod, d.samplesPerPeriod()), or(rows, d.rows()), d.sizePx(),
+                d.roughnessUm(), seed != null ? seed : d.seed());
+    }
+
+    private static <T> T or(T given, T fallback) {
+        return given != null ? given : fallback;
+    }
+
+    /** The catalogue with each patch's description, for the help's footer. */
+    static String catalogueText() {
+        StringBuilder b = new StringBuilder("Patches:%n");
+        for (PatchCatalogue.Entry e : PatchCatalogue.ALL) {
+            b.append(String.format(Locale.ROOT, "  %s%%n      %s%%n", e.name(), e.description()));
+        }
+        return b.toString();
     }
 }

@@ -2,15 +2,15 @@ package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.OffscreenTarget;
+import diffract.scene.DisplayMode;
+import diffract.scene.Scene;
+import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.ViewerModel;
 import diffract.viewer.ViewerRenderer;
-import diffract.viewer.ViewerSetup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -26,11 +26,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
-    @Spec
-    CommandSpec spec;
-
-    @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default: the scene's image, else ${DEFAULT-VALUE}).")
-    String size;
+    @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+            description = "Image size (default: the scene's image, else 512x512).")
+    OptionTypes.ImageSize size;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png", description = "PNG to write.")
     Path output;
@@ -38,24 +36,24 @@ final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         options.validate();
-        ViewerOptions.parseSize(size); // bad usage fails before any work
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new UserInputException("render writes PNG files; name the output OUT.png");
         }
         DisplayCheck.requireDisplay();
         long start = System.nanoTime();
         Reporter reporter = Reporter.STDERR;
-        ViewerSetup setup = options.setup(reporter);
-        int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
-        ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        Scene.ImageSize image = size != null ? new Scene.ImageSize(size.width(), size.height())
+                : options.imageSize(new Scene.ImageSize(512, 512));
+        SceneSetup setup = options.setup(image, reporter);
+        ViewerModel model = ViewerModel.load(setup, reporter);
         model.bakeIfNeeded(reporter);
         try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
-            target.writePng(output, widthHeight[0], widthHeight[1]);
+            target.writePng(output, image.width(), image.height());
         }
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
-                widthHeight[0], widthHeight[1], setup.mode() == diffract.viewer.DisplayMode.BRDF_MAP ? "BRDF map"
-                        : setup.shape().name(), setup.settings().variant().cliName(), setup.settings().highestOrder(),
-                setup.settings().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
+                image.width(), image.height(), setup.mode() == DisplayMode.BRDF_MAP ? "BRDF map" : setup.shape().name(),
+                setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
+                setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
     }
 }

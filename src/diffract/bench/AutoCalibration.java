@@ -72,8 +72,9 @@ public final class AutoCalibration {
 
     static String key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
         String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
-                Csv.number(base.lambdaMinNm()), Csv.number(base.lambdaMaxNm()), Csv.number(base.sigmaSpatialUm()),
-                Csv.number(base.refractiveIndex()), Integer.toString(base.pqReplicas()), plan.toString());
+                Csv.number(base.spectral().lambdaMinNm()), Csv.number(base.spectral().lambdaMaxNm()),
+                Csv.number(base.illumination().sigmaSpatialUm()), Csv.number(base.illumination().refractiveIndex()),
+                Integer.toString(base.window().pqReplicas()), plan.toString());
         try {
             byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));
             return HexFormat.of().formatHex(hash).substring(0, 32);

@@ -30,11 +30,12 @@ public final class ReferenceMaps {
 
     /** XYZ of the reference map (3 floats per pixel, rows from the top), from the cache or computed and cached. */
     public float[] xyz(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
-        BrdfSettings reference = base.withVariant(Variant.REFERENCE);
+        BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
         Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-c%s-n%s.pfm",
                 patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
-                sizePx, Csv.number(reference.lambdaMinNm()), Csv.number(reference.lambdaMaxNm()),
-                Csv.number(reference.sigmaSpatialUm()), Csv.number(reference.refractiveIndex())));
+                sizePx, Csv.number(reference.spectral().lambdaMinNm()), Csv.number(reference.spectral().lambdaMaxNm()),
+                Csv.number(reference.illumination().sigmaSpatialUm()),
+                Csv.number(reference.illumination().refractiveIndex())));
         try {
             if (Files.isRegularFile(file)) {
                 int[] whc = new int[3];

@@ -1,6 +1,7 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
@@ -38,12 +39,12 @@ public final class ResultsTable {
     public static String csvRow(BenchResult r, boolean onFront) {
         BenchConfig c = r.config();
         BrdfSettings s = c.settings();
-        return String.join(",", s.variant().cliName(), c.patch(), Integer.toString(s.highestOrder()),
-                Csv.number(s.lambdaStepNm()), c.windowRadiusLabel(), c.textureFormat(),
+        return String.join(",", s.variant().label(), c.patch(), Integer.toString(s.taylor().highestOrder()),
+                Csv.number(s.spectral().lambdaStepNm()), c.windowRadiusLabel(), c.textureFormat(),
                 Integer.toString(c.sizePx()), Integer.toString(c.sizePx()), Csv.number(r.msPerFrame()),
                 Csv.number(r.error().mean()), Csv.number(r.error().p95()), Csv.number(r.error().diskMean()),
-                Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront),
-                Csv.number(s.taylorTolerance()));
+                Integer.toString(r.error().litPixels()), Csv.number(s.illumination().coherenceLengthUm()),
+                Boolean.toString(onFront), Csv.number(s.taylor().tolerance()));
     }
 
     /** The rows on the Pareto front of one patch at one map size. */
@@ -89,11 +90,12 @@ public final class ResultsTable {
         for (String line : lines.subList(1, lines.size())) {
             String[] f = line.split(",", -1);
             boolean automaticWindow = f[4].equals("auto");
-            BrdfSettings s = base.withVariant(Variant.parse(f[0])).withHighestOrder(Integer.parseInt(f[2]))
-                    .withLambdaStepNm(Double.parseDouble(f[3]))
-                    .withWindowRadius(automaticWindow ? base.windowRadius() : Integer.parseInt(f[4]))
-                    .withAutomaticWindowRadius(automaticWindow).withTaylorTolerance(Double.parseDouble(f[15]));
-            BenchConfig c = new BenchConfig(f[1], s, f[5], Integer.parseInt(f[6]));
+            BrdfSettings s = base.toBuilder().variant(Variant.parse(f[0])).highestOrder(Integer.parseInt(f[2]))
+                    .lambdaStepNm(Double.parseDouble(f[3]))
+                    .windowRadius(automaticWindow ? base.window().radius() : Integer.parseInt(f[4]))
+                    .automaticWindowRadius(automaticWindow).taylorTolerance(Double.parseDouble(f[15]))
+                    .termFormat(TermFormat.valueOf(f[5].toUpperCase(Locale.ROOT))).build();
+            BenchConfig c = new BenchConfig(f[1], s, Integer.parseInt(f[6]));
             results.add(new BenchResult(c, Double.parseDouble(f[8]), new MapError(parse(f[9]), parse(f[10]),
                     parse(f[11]), Integer.parseInt(f[12]))));
         }
@@ -125,8 +127,8 @@ public final class ResultsTable {
                 BenchConfig c = r.config();
                 BrdfSettings s = c.settings();
                 b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %s | %s | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
-                        patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), c.windowRadiusLabel(),
-                        Csv.number(s.taylorTolerance()), c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
+                        patch, s.variant().label(), s.taylor().highestOrder(), Csv.number(s.spectral().lambdaStepNm()),
+                        c.windowRadiusLabel(), Csv.number(s.taylor().tolerance()), c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
                         r.error().diskMean(), onFront.contains(r) ? "**yes**" : ""));
             }
         }

@@ -20,7 +20,7 @@ import java.util.concurrent.ConcurrentMap;
 public final class ExactSpectrum implements PatchSpectrum {
     /** Terms per centre: (1/2)^16 / 16! < 1e-18. */
     static final int ORDERS_PER_CENTRE = 15;
-    /** The window is summed until its weights fall below this (issue #2: "until its weights fall below 1e-12"). */
+    /** The window is summed until its weights fall below this (1e-12: beyond it they change no double sum). */
     public static final double WINDOW_CUTOFF = 1e-12;
 
     private final HeightField field;

@@ -1,7 +1,11 @@
 package diffract.precompute;
 
 import diffract.optics.HeightField;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorBound;
+import diffract.optics.TaylorExpansion;
+import diffract.optics.TaylorSettings;
 import diffract.optics.TaylorTerms;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -9,6 +13,7 @@ import diffract.util.Version;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.Locale;
 
 /**
  * Precomputes Taylor terms once per (patch content, N): into a folder the user names, or into the user cache
@@ -33,16 +38,18 @@ public final class Precomputation {
                           Double tolerance, double lambdaMinNm) {
         public Request {
             if ((highestOrder == null) == (tolerance == null)) {
-                throw new UserInputException("give either --terms N or --tolerance EPS (not both, not neither)");
+                throw new IllegalArgumentException("give either N or a tolerance (not both, not neither)");
             }
-            if (highestOrder != null && (highestOrder < 0 || highestOrder > 200)) {
-                throw new UserInputException("--terms must be between 0 and 200, got " + highestOrder);
+            if (highestOrder != null) {
+                new TaylorSettings(highestOrder, 0, TaylorExpansion.AUTO); // N's one range
             }
             if (tolerance != null && !(tolerance > 0 && tolerance < 1)) {
-                throw new UserInputException("--tolerance must be in (0, 1), got " + tolerance);
+                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, Quantity.ORDER_TOLERANCE.capitalised()
+                        + " must be in (0, 1), got " + tolerance);
             }
             if (!(lambdaMinNm > 0)) {
-                throw new UserInputException("--lambda-min must be > 0 nm, got " + lambdaMinNm);
+                throw new InvalidSettingException(Quantity.LAMBDA_MIN, Quantity.LAMBDA_MIN.capitalised()
+                        + " must be > 0 nm, got " + lambdaMinNm);
             }
         }
     }
@@ -59,6 +66,12 @@ public final class Precomputation {
         if (request.tolerance() != null) {
             n = TaylorBound.termsForTolerance(x, request.tolerance());
             mode = "tolerance";
+            if (n > TaylorSettings.MAX_HIGHEST_ORDER) {
+                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, String.format(Locale.ROOT,
+                        "the tolerance %s needs N = %d for this patch (x = %.1f), above the limit %d: use a larger "
+                                + "tolerance; the phase-centred expansion needs no large N", request.tolerance(), n,
+                        x, TaylorSettings.MAX_HIGHEST_ORDER));
+            }
         } else {
             n = request.highestOrder();
             mode = "terms";

@@ -24,7 +24,7 @@ public final class TaylorTermComputer {
     }
 
     /**
-     * The terms of the expansion around every centre of {@code centres} (issue #6):
+     * The terms of the expansion around every centre of {@code centres}:
      * E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..centres.highestOrder(), as float32 like the thesis'
      * terms (which are the centre a_0 = 0). Progress per centre.
      */

@@ -19,19 +19,7 @@ public final class TermFolders {
     /** The two on-disk formats. */
     public enum Format {
         NATIVE,
-        THESIS;
-
-        /** "native" or "thesis". */
-        public static Format parse(String text) {
-            switch (text.toLowerCase(java.util.Locale.ROOT)) {
-                case "native":
-                    return NATIVE;
-                case "thesis":
-                    return THESIS;
-                default:
-                    throw new UserInputException("unknown term format '" + text + "': use native or thesis");
-            }
-        }
+        THESIS
     }
 
     /** The format of {@code dir}; a folder with neither format's files is a one-line error. */

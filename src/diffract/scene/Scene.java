@@ -2,9 +2,8 @@ package diffract.scene;
 
 import diffract.geometry.SnakeMesh;
 import diffract.geometry.TangentSource;
+import diffract.optics.BrdfSettings;
 import diffract.optics.ProceduralPatches;
-import diffract.optics.Variant;
-import diffract.viewer.DisplayMode;
 
 import java.nio.file.Path;
 
@@ -62,8 +61,12 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     public record FilePatch(Path file, Double maxHeightUm, Double pixelSizeUm) implements PatchSpec {
     }
 
-    /** A patch made by code. */
-    public record ProceduralPatch(ProceduralPatches.Spec spec) implements PatchSpec {
+    /**
+     * A patch made by code.
+     *
+     * @param name the catalogue name it starts from ({@link diffract.optics.PatchCatalogue})
+     */
+    public record ProceduralPatch(String name, ProceduralPatches.Spec spec) implements PatchSpec {
     }
 
     /** The pigmentation image: none, the procedural corn-snake pattern, or an sRGB image file. */
@@ -78,12 +81,17 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     }
 
     /**
-     * Everything about the surface's reflectance and its display. Exactly one of {@code taylorTerms} and
-     * {@code tolerance} is set.
+     * Everything about the surface's reflectance and its display.
+     *
+     * @param settings       the BRDF settings
+     * @param orderTolerance when not null, N is the smallest order whose Lagrange bound meets it for the patch at
+     *                       the shortest wavelength (001 sec. 3.3.3), instead of the settings' N
      */
-    public record MaterialSpec(PatchSpec patch, Variant variant, Integer taylorTerms, Double tolerance,
-                               double lambdaMinNm, double lambdaMaxNm, double lambdaStepNm, int windowRadius,
-                               double sigmaSpatialUm, double refractiveIndex, PigmentationSpec pigmentation,
-                               boolean pigmentationOn, double diffuseWeight, double exposure) {
+    public record MaterialSpec(PatchSpec patch, BrdfSettings settings, Double orderTolerance,
+                               PigmentationSpec pigmentation, boolean pigmentationOn, double diffuseWeight,
+                               double exposure) {
+        public MaterialSpec withSettings(BrdfSettings s) {
+            return new MaterialSpec(patch, s, orderTolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);
+        }
     }
 }

@@ -11,6 +11,8 @@ import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.Direction;
 import diffract.render.DiffractionMaterials;
+import diffract.scene.DisplayMode;
+import diffract.scene.OrbitCamera;
 
 import javax.vecmath.Point3f;
 import javax.vecmath.Vector3f;
@@ -42,7 +44,7 @@ public final class ViewerRenderer extends Renderer {
         super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, (float) model.setup().verticalFovDeg()));
         this.model = model;
         this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight(),
-                model.setup().patch());
+                model.pipeline());
         // the nodes get their materials on the render thread, at the first frame
         this.surface = new ShapeNode(model.shape(), null);
         this.surfaceScene = new Group("surface").add(light, surface);
@@ -96,8 +98,8 @@ public final class ViewerRenderer extends Renderer {
         long start = System.nanoTime();
         ViewerState state = model.state();
         Material material = materials.materialFor(state, context());
-        material.setFloat("exposure", (float) state.exposure());
-        if (state.mode() == DisplayMode.BRDF_MAP) {
+        material.setFloat("exposure", (float) state.view().exposure());
+        if (state.view().mode() == DisplayMode.BRDF_MAP) {
             showBrdfMap(state, material);
         } else {
             showSurface(state, material);
@@ -108,12 +110,12 @@ public final class ViewerRenderer extends Renderer {
     }
 
     private void showSurface(ViewerState state, Material material) {
-        double[] eye = state.camera().eye();
-        OrbitCamera orbit = state.camera();
+        double[] eye = state.view().camera().eye();
+        OrbitCamera orbit = state.view().camera();
         camera().set(new Point3f((float) eye[0], (float) eye[1], (float) eye[2]),
                 new Point3f((float) orbit.targetX(), (float) orbit.targetY(), (float) orbit.targetZ()),
                 new Vector3f(0, 1, 0));
-        Direction towardsLight = state.light().direction();
+        Direction towardsLight = state.view().light().direction();
         light.setDirection(new Vector3f((float) towardsLight.x(), (float) towardsLight.y(), (float) towardsLight.z()));
         surface.setMaterial(material);
         setRoot(surfaceScene);
@@ -122,7 +124,7 @@ public final class ViewerRenderer extends Renderer {
     /** The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. */
     private void showBrdfMap(ViewerState state, Material material) {
         int size = Math.max(1, Math.min(widthPx, heightPx));
-        DiffractionMaterials.setLight(material, state.light().direction())
+        DiffractionMaterials.setLight(material, state.view().light().direction())
                 .setFloat("mapSizePx", size)
                 .setVec2("mapOriginPx", (widthPx - size) / 2, (heightPx - size) / 2);
         mapQuad.setMaterial(material);

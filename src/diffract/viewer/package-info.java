@@ -1,5 +1,5 @@
 /**
- * The interactive viewer (issue #4 item 5), model-view-controller:
+ * The interactive viewer, model-view-controller:
  *
  * <ul>
  *   <li>Model: {@link diffract.viewer.ViewerModel} holds what does not change while the window is open (the patch,

@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.util.TestReport;
 import diffract.jrtr.DisplayCheck;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
@@ -90,7 +91,7 @@ class SceneCliTest {
         assertEquals(48, image.getHeight());
         assertEquals(Pictures.clearColour(), image.getRGB(0, 0) & 0xffffff, "the corner is background");
         int coloured = Pictures.count(image, Pictures.COLOURED);
-        System.out.println("OBJ square 64x48: " + coloured + " coloured pixels");
+        TestReport.line(SceneCliTest.class, "OBJ square 64x48: " + coloured + " coloured pixels");
         assertTrue(coloured >= 20, "only " + coloured + " coloured pixels on the OBJ square");
     }
 

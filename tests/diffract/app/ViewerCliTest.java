@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.util.TestReport;
 import diffract.jrtr.DisplayCheck;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
@@ -35,7 +36,7 @@ class ViewerCliTest {
         int centre = image.getRGB(48, 32) & 0xffffff;
         assertNotEquals(Pictures.clearColour(), centre, "the centre shows the background, not the sphere");
         int coloured = Pictures.count(image, Pictures.COLOURED);
-        System.out.println("render 96x64: " + coloured + " coloured pixels");
+        TestReport.line(ViewerCliTest.class, "render 96x64: " + coloured + " coloured pixels");
         assertTrue(coloured >= 5, "only " + coloured + " coloured pixels: no structural colour on the sphere");
     }
 
@@ -54,7 +55,7 @@ class ViewerCliTest {
         int red = Pictures.count(image, (r, g, b) -> r > g + 30 && r > b + 30);
         int green = Pictures.count(image, (r, g, b) -> g > r + 30 && g > b + 30);
         int blue = Pictures.count(image, (r, g, b) -> b > r + 30 && b > g + 30);
-        System.out.printf("snake 160x100: %d red, %d green, %d blue pixels%n", red, green, blue);
+        TestReport.printf(ViewerCliTest.class, "snake 160x100: %d red, %d green, %d blue pixels%n", red, green, blue);
         assertTrue(red >= 3 && green >= 3 && blue >= 3, "not a rainbow: " + red + " red, " + green + " green, "
                 + blue + " blue pixels");
     }
@@ -66,14 +67,14 @@ class ViewerCliTest {
         assertOneLine(CliTest.run("render", "scene.json", "-o", out), "cannot read scene file scene.json");
         assertOneLine(CliTest.run("render", "assets/scenes/snake-elaphe.json", "--shape", "sphere", "-o", out),
                 "--shape cannot be combined with a SCENE");
-        assertOneLine(CliTest.run("render", "--variant", "reference", "-o", out), "flss, nmm or pq");
+        assertOneLine(CliTest.run("render", "--variant", "reference", "-o", out), "the GPU renders flss, nmm, pq and baked");
         assertOneLine(CliTest.run("render", "--shape", "teapot", "-o", out), "sphere, plane, cylinder or snake");
         assertOneLine(CliTest.run("render", "--size", "12x9000", "-o", out), "--size");
         assertOneLine(CliTest.run("render", "--tangent", "0,0,0", "-o", out), "--tangent");
-        assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "elaphe-like or blazed");
+        assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "unknown patch 'zebra': use blazed, sinusoid");
         assertOneLine(CliTest.run("render", "--patch", "missing.png", "--synthetic", "blazed", "-o", out), "not both");
         assertOneLine(CliTest.run("render", "-o", dir.resolve("x.jpg").toString()), "PNG");
-        assertOneLine(CliTest.run("view", "--terms", "500"), "--terms");
+        assertOneLine(CliTest.run("view", "--terms", "500"), "--terms: the highest Taylor order N must be in 0..100, got 500");
         Object[] missingOutput = CliTest.run("render");
         assertEquals(2, missingOutput[0]);
     }

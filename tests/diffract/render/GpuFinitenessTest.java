@@ -57,7 +57,7 @@ class GpuFinitenessTest {
             TaylorTerms terms = RenderTestSupport.terms(patch);
             BrdfSettings settings = RenderTestSupport.settings(variant);
             DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, terms);
-            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
                 String where = variant + " " + RenderTestSupport.name(patch);
                 assertFiniteAndNonNegative(gpu.xyz(Direction.fromSphericalDeg(89.9, 0), 32), where + " at 89.9 deg");
                 assertFiniteAndNonNegative(gpu.xyz(Direction.fromSphericalDeg(89.9, 90), 32), where + " at 89.9 deg");
@@ -105,7 +105,7 @@ class GpuFinitenessTest {
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS);
-        DiffractionTextures textures = DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures textures = DiffractionTextures.of(terms, settings);
         float exposure = 20;
         Material material = DiffractionMaterials.surface(textures, settings, exposure, null, 0);
         Vector3f towardsLight = new Vector3f(0.5f, 0, 1);
@@ -139,8 +139,7 @@ class GpuFinitenessTest {
         RenderTestSupport.assumeDisplay();
         HeightField patch = RenderTestSupport.BLAZED;
         BrdfSettings settings = RenderTestSupport.settings(Variant.NMM);
-        DiffractionTextures textures = DiffractionTextures.of(RenderTestSupport.terms(patch), settings,
-                FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures textures = DiffractionTextures.of(RenderTestSupport.terms(patch), settings);
         BufferedImage pigment = new BufferedImage(4, 4, BufferedImage.TYPE_INT_ARGB);
         for (int y = 0; y < 4; y++) {
             for (int x = 0; x < 4; x++) {

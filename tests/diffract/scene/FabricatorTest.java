@@ -3,10 +3,6 @@ package diffract.scene;
 import diffract.jrtr.VertexAttribute;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
-import diffract.viewer.DisplayMode;
-import diffract.viewer.LightDirection;
-import diffract.viewer.OrbitCamera;
-import diffract.viewer.ViewerSetup;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -26,17 +22,17 @@ class FabricatorTest {
 
     @Test
     void theDefaultSceneIsTheDemosView() {
-        Fabricator.Fabricated f = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-elaphe.json"), Reporter.SILENT);
-        ViewerSetup s = f.setup();
+        Scene scene = SceneFile.load(SceneFileTest.SCENES.resolve("snake-elaphe.json"));
+        SceneSetup s = Fabricator.fabricate(scene, Reporter.SILENT);
         assertEquals("snake", s.shape().name());
         assertEquals(128, s.patch().rows());
         assertEquals(128, s.patch().cols());
         assertEquals(8 * 1.144 / 128, s.patch().pixelSizeXUm(), 1e-12);
         assertEquals(Variant.FLSS, s.settings().variant());
-        assertEquals(20, s.settings().highestOrder());
-        assertEquals(10, s.settings().lambdaStepNm());
-        assertEquals(2.5, s.settings().sigmaSpatialUm());
-        assertEquals(1, s.settings().windowRadius());
+        assertEquals(20, s.settings().taylor().highestOrder());
+        assertEquals(10, s.settings().spectral().lambdaStepNm());
+        assertEquals(2.5, s.settings().illumination().sigmaSpatialUm());
+        assertEquals(1, s.settings().window().radius());
         assertEquals(50, s.exposure());
         // eye [0.403459, 0.9, 1.505729] is the orbit camera at azimuth 15, elevation 30, distance 1.8 (to 6 digits)
         OrbitCamera c = s.camera();
@@ -51,18 +47,18 @@ class FabricatorTest {
         assertNotNull(s.pigmentation(), "the corn-snake pigmentation is there for P");
         assertFalse(s.pigmentationOn());
         assertEquals(DisplayMode.SURFACE, s.mode());
-        assertEquals(640, f.image().width());
-        assertEquals(400, f.image().height());
+        assertEquals(640, scene.image().width());
+        assertEquals(400, scene.image().height());
     }
 
     @Test
     void theOtherDefaultScenes() {
-        ViewerSetup xenopeltis = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-xenopeltis.json"),
-                Reporter.SILENT).setup();
+        SceneSetup xenopeltis = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-xenopeltis.json"),
+                Reporter.SILENT);
         assertEquals(16 * 0.65 / 128, xenopeltis.patch().pixelSizeYUm(), 1e-12);
         assertEquals(null, xenopeltis.pigmentation());
-        ViewerSetup blazed = Fabricator.fabricate(SceneFileTest.SCENES.resolve("blazed-grating-plane.json"),
-                Reporter.SILENT).setup();
+        SceneSetup blazed = Fabricator.fabricate(SceneFileTest.SCENES.resolve("blazed-grating-plane.json"),
+                Reporter.SILENT);
         assertEquals("plane", blazed.shape().name());
         assertEquals(16, blazed.patch().rows());
         assertEquals(26 * 25, blazed.patch().cols());
@@ -70,7 +66,7 @@ class FabricatorTest {
         assertEquals(0, blazed.camera().elevationDeg(), 1e-12);
         assertEquals(30, blazed.light().thetaDeg(), 1e-9);
         assertEquals(0, blazed.light().phiDeg(), 1e-9);
-        ViewerSetup map = Fabricator.fabricate(SceneFileTest.SCENES.resolve("brdfmap-elaphe.json"), Reporter.SILENT).setup();
+        SceneSetup map = Fabricator.fabricate(SceneFileTest.SCENES.resolve("brdfmap-elaphe.json"), Reporter.SILENT);
         assertEquals(DisplayMode.BRDF_MAP, map.mode());
     }
 
@@ -100,9 +96,9 @@ class FabricatorTest {
                 + " \"scale\": 0.5}, \"tangents\": {\"project\": [0, 1, 0]}},"
                 + " \"material\": {\"patch\": {\"procedural\": \"xenopeltisLike\"}, \"tolerance\": 1e-3,"
                 + " \"variant\": \"pq\"}}");
-        ViewerSetup s = Fabricator.fabricate(file, Reporter.SILENT).setup();
+        SceneSetup s = Fabricator.fabricate(file, Reporter.SILENT);
         assertEquals(Variant.PQ, s.settings().variant());
-        assertTrue(s.settings().highestOrder() > 0 && s.settings().highestOrder() < 20, "N " + s.settings().highestOrder());
+        assertTrue(s.settings().taylor().highestOrder() > 0 && s.settings().taylor().highestOrder() < 20, "N " + s.settings().taylor().highestOrder());
         assertEquals(30, s.verticalFovDeg());
         assertEquals(2.0, s.camera().targetX());
         float[] p = s.shape().vertexData().attribute(VertexAttribute.POSITION);

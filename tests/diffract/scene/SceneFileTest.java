@@ -54,7 +54,7 @@ class SceneFileTest {
     void theValidSceneParses() throws IOException {
         Path file = dir.resolve("ok.json");
         Files.writeString(file, valid(""));
-        assertEquals(diffract.optics.Variant.FLSS, SceneFile.load(file).material().variant());
+        assertEquals(diffract.optics.Variant.FLSS, SceneFile.load(file).material().settings().variant());
     }
 
     @Test

@@ -1,7 +1,7 @@
-package diffract.app;
+package diffract.optics;
 
 /**
- * Picks a display exposure for a BRDF map (pixel convention of {@link diffract.optics.BrdfMap}): the brightest diffracted pixel, ignoring the specular highlight (the
+ * Picks a display exposure for a BRDF map (pixel convention of {@link BrdfMap}): the brightest diffracted pixel, ignoring the specular highlight (the
  * pixels within 3 pixels of the mirror direction), is mapped to 1. Diffraction orders are typically 10-1000 times
  * dimmer than the specular peak, so exposure 1 shows mostly black; this keeps their colours visible.
  */
