@@ -106,6 +106,11 @@ public final class Material {
                         + " texture units of this GPU");
             }
         }
+        // all uploads first: an upload binds its texture on unit 0 and unbinds it there afterwards, which would
+        // undo the binding of a texture of the same target already bound to unit 0 for this draw
+        for (Texture texture : textures.values()) {
+            texture.upload(gl);
+        }
         int unit = 0;
         for (Map.Entry<String, Texture> entry : textures.entrySet()) {
             entry.getValue().bind(gl, unit);

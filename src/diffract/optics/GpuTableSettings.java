@@ -14,7 +14,7 @@ public record GpuTableSettings(TermFormat termFormat, int bakedUvSamples, int ba
         }
         for (int samples : new int[] {bakedUvSamples, bakedWSamples}) {
             if (samples != 0 && (samples < 2 || samples > BakedGrid.MAX_SAMPLES)) {
-                throw new InvalidSettingException(Quantity.BAKED_SAMPLES, Quantity.BAKED_SAMPLES.capitalised()
+                throw new InvalidSettingException(Quantity.BAKED_SAMPLES, Quantity.BAKED_SAMPLES.words()
                         + " must be 0 (automatic) or 2.." + BakedGrid.MAX_SAMPLES + " per axis, got " + samples);
             }
         }

@@ -15,7 +15,7 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
 
     public IlluminationSettings {
         if (!(sigmaSpatialUm > 0 && 4 * sigmaSpatialUm <= MAX_COHERENCE_LENGTH_UM)) {
-            throw new InvalidSettingException(Quantity.COHERENCE_LENGTH, Quantity.COHERENCE_LENGTH.capitalised()
+            throw new InvalidSettingException(Quantity.COHERENCE_LENGTH, Quantity.COHERENCE_LENGTH.words()
                     + " must be in (0, " + InvalidSettingException.number(MAX_COHERENCE_LENGTH_UM) + "] um, got "
                     + InvalidSettingException.number(4 * sigmaSpatialUm));
         }

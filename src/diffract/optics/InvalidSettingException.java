@@ -23,7 +23,7 @@ public final class InvalidSettingException extends UserInputException {
     /** Throws unless {@code lowest <= value <= highest}: "the wavelength step must be in [a, b], got v". */
     static void requireWithin(Quantity quantity, double value, double lowest, double highest) {
         if (!(value >= lowest && value <= highest)) {
-            throw new InvalidSettingException(quantity, quantity.capitalised() + " must be in [" + number(lowest)
+            throw new InvalidSettingException(quantity, quantity.words() + " must be in [" + number(lowest)
                     + ", " + number(highest) + "], got " + number(value));
         }
     }

@@ -1,7 +1,5 @@
 package diffract.optics;
 
-import java.util.Locale;
-
 /**
  * The quantities a user gives, by a command-line option or a scene-file key. Messages about one of them name the
  * quantity in words ({@link #words()}); the command line and the scene reader each say where the user gives it
@@ -36,10 +34,5 @@ public enum Quantity {
     /** The quantity in words, e.g. "the highest Taylor order N". */
     public String words() {
         return words;
-    }
-
-    /** As {@link #words()}, starting with a capital letter. */
-    public String capitalised() {
-        return words.substring(0, 1).toUpperCase(Locale.ROOT) + words.substring(1);
     }
 }

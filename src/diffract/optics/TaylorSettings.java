@@ -18,11 +18,11 @@ public record TaylorSettings(int highestOrder, double tolerance, TaylorExpansion
 
     public TaylorSettings {
         if (highestOrder < 0 || highestOrder > MAX_HIGHEST_ORDER) {
-            throw new InvalidSettingException(Quantity.HIGHEST_ORDER, Quantity.HIGHEST_ORDER.capitalised()
+            throw new InvalidSettingException(Quantity.HIGHEST_ORDER, Quantity.HIGHEST_ORDER.words()
                     + " must be in 0.." + MAX_HIGHEST_ORDER + ", got " + highestOrder);
         }
         if (!(tolerance >= 0 && tolerance < 1)) {
-            throw new InvalidSettingException(Quantity.TAYLOR_TOLERANCE, Quantity.TAYLOR_TOLERANCE.capitalised()
+            throw new InvalidSettingException(Quantity.TAYLOR_TOLERANCE, Quantity.TAYLOR_TOLERANCE.words()
                     + " must be in [0, 1) (0 = always N), got " + tolerance);
         }
         if (expansion == null) {

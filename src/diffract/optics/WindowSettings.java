@@ -18,11 +18,11 @@ public record WindowSettings(int radius, boolean automatic, int pqReplicas) {
 
     public WindowSettings {
         if (radius < 0 || radius > MAX_RADIUS) {
-            throw new InvalidSettingException(Quantity.WINDOW_RADIUS, Quantity.WINDOW_RADIUS.capitalised()
+            throw new InvalidSettingException(Quantity.WINDOW_RADIUS, Quantity.WINDOW_RADIUS.words()
                     + " must be in 0.." + MAX_RADIUS + " texels, got " + radius);
         }
         if (pqReplicas < 0 || pqReplicas > MAX_PQ_REPLICAS) {
-            throw new InvalidSettingException(Quantity.PQ_REPLICAS, Quantity.PQ_REPLICAS.capitalised()
+            throw new InvalidSettingException(Quantity.PQ_REPLICAS, Quantity.PQ_REPLICAS.words()
                     + " must be in 0.." + MAX_PQ_REPLICAS + " (0 = span the coherence length), got " + pqReplicas);
         }
     }

@@ -44,11 +44,11 @@ public final class Precomputation {
                 new TaylorSettings(highestOrder, 0, TaylorExpansion.AUTO); // N's one range
             }
             if (tolerance != null && !(tolerance > 0 && tolerance < 1)) {
-                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, Quantity.ORDER_TOLERANCE.capitalised()
+                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, Quantity.ORDER_TOLERANCE.words()
                         + " must be in (0, 1), got " + tolerance);
             }
             if (!(lambdaMinNm > 0)) {
-                throw new InvalidSettingException(Quantity.LAMBDA_MIN, Quantity.LAMBDA_MIN.capitalised()
+                throw new InvalidSettingException(Quantity.LAMBDA_MIN, Quantity.LAMBDA_MIN.words()
                         + " must be > 0 nm, got " + lambdaMinNm);
             }
         }

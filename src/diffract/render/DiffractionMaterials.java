@@ -70,36 +70,35 @@ public final class DiffractionMaterials {
     /**
      * The uniforms of the variant's program, each set once, by the include that declares it: the window
      * ({@code spectrum_gaussian.glsl} or PQ's {@code spectrum_sinc.glsl}), the wavelengths
-     * ({@code wavelengths_uniform.glsl} or NMM's {@code wavelengths_nmm.glsl}), the terms or the baked table, and
+     * ({@code wavelengths_uniform.glsl}, and NMM's {@code wavelengths_nmm.glsl} over it), the terms or the baked table, and
      * the shared ones of {@code diffraction_common.glsl}.
      */
     private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings) {
         double extentX = textures.extentXUm();
         double extentY = textures.extentYUm();
         CoherenceWindow window = settings.coherenceWindow();
-        if (settings.variant() == Variant.PQ) {
-            // the replica counts of DiffractionBrdf.create(PQ)
-            m.setVec2("pqReplicas", settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
-        } else {
-            m.setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY));
-        }
-        if (settings.variant() == Variant.NMM) {
-            m.setTexture("spectralTable", textures.spectralTable())
-                    .setFloat("spectralTableFirstNm", (float) textures.spectralTableFirstNm())
-                    .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
-                    .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
-        } else {
-            m.setTexture("uniformNodeTable", textures.uniformNodeTable());
-        }
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             BakedGrid grid = textures.baked().grid();
             m.setTexture("bakedXyz", textures.bakedTexture()).setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
         } else {
             m.setTexture("taylorTerms", textures.terms());
-            if (textures.normalisedTerms()) {
-                m.setTexture("termExtrema", textures.termExtrema());
-            }
+        }
+        m.setTexture("uniformNodeTable", textures.uniformNodeTable()); // NMM's fallback grid too
+        if (settings.variant() == Variant.NMM) {
+            m.setTexture("spectralTable", textures.spectralTable())
+                    .setFloat("spectralTableFirstNm", (float) textures.spectralTableFirstNm())
+                    .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
+                    .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
+        }
+        if (textures.baked() == null && textures.normalisedTerms()) {
+            m.setTexture("termExtrema", textures.termExtrema());
+        }
+        if (settings.variant() == Variant.PQ) {
+            // the replica counts of DiffractionBrdf.create(PQ)
+            m.setVec2("pqReplicas", settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
+        } else {
+            m.setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY));
         }
         PhaseCentres centres = textures.phaseCentres();
         if (centres != null) { // taylor_centred.glsl

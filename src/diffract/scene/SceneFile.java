@@ -23,6 +23,7 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -34,7 +35,9 @@ import java.util.Map;
  * exist (paths are relative to the scene file's folder). Nothing else escapes, whatever the text.
  */
 public final class SceneFile {
-    static final List<String> VARIANTS = List.of("flss", "nmm", "pq", "baked");
+    /** The variants a scene can draw: those with a GPU shader. */
+    static final List<String> VARIANTS = Arrays.stream(Variant.values()).filter(Variant::runsOnGpu)
+            .map(Variant::label).toList();
     static final List<String> EXPANSIONS = List.of("auto", "plain", "centred");
     static final List<String> TERM_FORMATS = List.of("rg32f", "rg16f", "rg8");
     static final List<String> MODES = List.of("surface", "brdfMap");
@@ -229,8 +232,7 @@ public final class SceneFile {
             Map.entry(Quantity.WINDOW_RADIUS, "windowRadius"), Map.entry(Quantity.PQ_REPLICAS, "pqReplicas"),
             Map.entry(Quantity.LAMBDA_MIN, "lambdaMinNm"), Map.entry(Quantity.LAMBDA_MAX, "lambdaMaxNm"),
             Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
-            Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
-            Map.entry(Quantity.BAKED_SAMPLES, "bakedSamples"));
+            Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"));
 
     private static Scene.MaterialSpec material(SceneObject material) {
         Scene.PatchSpec patch = patch(material.object("patch"));

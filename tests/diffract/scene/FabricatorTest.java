@@ -32,6 +32,7 @@ class FabricatorTest {
         assertEquals(20, s.settings().taylor().highestOrder());
         assertEquals(10, s.settings().spectral().lambdaStepNm());
         assertEquals(2.5, s.settings().illumination().sigmaSpatialUm());
+        assertEquals(10, s.settings().illumination().coherenceLengthUm());
         assertEquals(1, s.settings().window().radius());
         assertEquals(50, s.exposure());
         // eye [0.403459, 0.9, 1.505729] is the orbit camera at azimuth 15, elevation 30, distance 1.8 (to 6 digits)

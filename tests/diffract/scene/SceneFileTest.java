@@ -138,4 +138,33 @@ class SceneFileTest {
         assertTrue(message("").startsWith("1: (json): the file is empty"));
         assertTrue(message("[1, 2]").startsWith("1: (scene): must be a JSON object"));
     }
+
+    /** Every BRDF setting has its key, with the option's meaning: a radius or "auto", the coherence length. */
+    @Test
+    void theBrdfKeysMeanWhatTheOptionsMean() throws IOException {
+        Path file = dir.resolve("keys.json");
+        Files.writeString(file, valid(",\n    \"windowRadius\": \"auto\", \"coherenceLengthUm\": 10, \"taylorTolerance\": 1e-4,"
+                + " \"expansion\": \"centred\", \"termFormat\": \"rg16f\", \"pqReplicas\": 3, \"taylorTerms\": 12")
+                .replace("\"blazed\"", "\"elapheLike\""));
+        Scene scene = SceneFile.load(file);
+        diffract.optics.BrdfSettings s = scene.material().settings();
+        assertTrue(s.window().automatic());
+        assertEquals(3, s.window().pqReplicas());
+        assertEquals(10, s.illumination().coherenceLengthUm(), 1e-12);
+        assertEquals(1e-4, s.taylor().tolerance());
+        assertEquals(12, s.taylor().highestOrder());
+        assertEquals(diffract.optics.TaylorExpansion.CENTRED, s.taylor().expansion());
+        assertEquals(diffract.optics.TermFormat.RG16F, s.gpu().termFormat());
+        assertEquals("elaphe-like", ((Scene.ProceduralPatch) scene.material().patch()).name(),
+                "a camelCase name is the catalogue's patch");
+    }
+
+    /** A value the settings refuse is reported at its key, in the settings' words. */
+    @Test
+    void aValueTheSettingsRefuseNamesItsKey() throws IOException {
+        String m = message(valid(",\n    \"taylorTolerance\": 1"));
+        assertTrue(m.startsWith("7: material.taylorTolerance: the per-lookup Taylor tolerance must be in [0, 1)"), m);
+        String both = message(valid(",\n    \"sigmaSpatialUm\": 2.5, \"coherenceLengthUm\": 10"));
+        assertTrue(both.contains("material.sigmaSpatialUm: give either"), both);
+    }
 }

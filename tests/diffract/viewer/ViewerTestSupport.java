@@ -4,7 +4,6 @@ import diffract.jrtr.DisplayCheck;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;
@@ -53,35 +52,13 @@ final class ViewerTestSupport {
     }
 
     /**
-     * Terms computed directly, but only after {@code seconds} of reported progress: a precompute slow enough to
-     * count the frames the window draws meanwhile.
-     */
-    static TermSource slowTerms(double seconds) {
-        return (n, reporter) -> {
-            int steps = 10;
-            for (int i = 0; i < steps; i++) {
-                reporter.progress("test precompute", i / (double) steps);
-                try {
-                    Thread.sleep((long) (seconds * 1000 / steps));
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    throw new IllegalStateException("interrupted", e);
-                }
-            }
-            TaylorTerms terms = TaylorTermComputer.compute(PATCH, n, Reporter.SILENT);
-            reporter.progress("test precompute", 1);
-            return terms;
-        };
-    }
-
-    /**
      * Terms computed directly, but those beyond the model's initial N only once {@code gate} opens: the test decides
      * when a background precompute finishes, so what it asserts meanwhile does not depend on the machine's speed.
      */
     static TermSource gatedTerms(java.util.concurrent.CountDownLatch gate) {
         return (n, reporter) -> {
             try {
-                if (n > settings().taylor().highestOrder() && !gate.await(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                if (n > settings().taylor().highestOrder() && !gate.await(600, java.util.concurrent.TimeUnit.SECONDS)) {
                     throw new IllegalStateException("the test never opened the gate");
                 }
             } catch (InterruptedException e) {
