@@ -22,6 +22,7 @@ import diffract.render.GpuBrdfMap;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
@@ -32,10 +33,10 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /** {@code diffract brdfmap}: the BRDF of a patch for one light direction, over all viewing directions. */
-@Command(name = "brdfmap", mixinStandardHelpOptions = true,
-        description = {"Render a BRDF map: pixel (i, j) of the S x S map is the viewing direction",
-                "(x, y, sqrt(1 - x^2 - y^2)), x = 2(i + 0.5)/S - 1, y = 1 - 2(j + 0.5)/S; outside the unit disk is black.",
-                "The tangent frame's x axis runs along the height field's columns, y along its rows."})
+@Command(name = "brdfmap", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
+        description = "Render a BRDF map: pixel (i, j) of the S x S map is the viewing direction (x, y, sqrt(1 - x^2 - "
+                + "y^2)), x = 2(i + 0.5)/S - 1, y = 1 - 2(j + 0.5)/S; outside the unit disk is black. The tangent "
+                + "frame's x axis runs along the height field's columns, y along its rows.")
 final class BrdfMapCommand implements Callable<Integer> {
     /** Where a map is computed. */
     enum Engine { CPU, GPU }
@@ -49,47 +50,69 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
     double thetaIDeg;
 
-    @Option(names = "--phi-i", paramLabel = "DEG",
-            description = "Azimuth of the light (default: in the plane of a named patch's period, else 0).")
-    Double phiIDeg;
-
-    @Option(names = "--lambda", paramLabel = "NM",
-            description = "Monochromatic map of the relative BRDF at this wavelength (grey).")
-    Double lambdaNm;
-
-    @Option(names = "--terms-dir", paramLabel = "DIR",
-            description = "Use precomputed terms instead of the cache: diffract's format or the thesis' Octave format (detected).")
-    Path termsDir;
-
-    @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
-            converter = OptionTypes.HeightUnitConverter.class,
-            description = "Heights' unit of a --terms-dir from the thesis' script: auto, m or um (default ${DEFAULT-VALUE}).")
-    ThesisFormat.HeightUnit termsHeightUnit;
-
-    @Option(names = "--engine", paramLabel = "E",
-            description = "cpu (default; gpu with --variant auto) or gpu: the GLSL shaders rendered offscreen (OpenGL 3.3).")
-    Engine engine;
-
-    @Option(names = "--time", description = "With --engine gpu: print the median GPU time per frame (GL timer queries).")
-    boolean time;
-
-    @Option(names = "--size", defaultValue = "256", paramLabel = "S", description = "Map size in pixels (default ${DEFAULT-VALUE}).")
-    int size;
-
-    @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto", converter = OptionTypes.Exposure.Converter.class,
-            description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}); "
-                    + "auto maps the brightest diffracted pixel (not the specular highlight) to 1. The PFM is never scaled.")
-    OptionTypes.Exposure exposure;
-
-    @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH",
-            description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
-    ColourPath colour;
-
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
     Path output;
 
-    @Option(names = "--pfm", paramLabel = "MAP.pfm", description = "Also write floats: linear sRGB (unclipped), or the relative BRDF with --lambda.")
-    Path pfm;
+    @ArgGroup(exclusive = false, validate = false, heading = "Light:%n")
+    Light light = new Light();
+
+    @ArgGroup(exclusive = false, validate = false, heading = "Terms and engine:%n")
+    Engines engines = new Engines();
+
+    @ArgGroup(exclusive = false, validate = false, heading = "Picture:%n")
+    Picture picture = new Picture();
+
+    /** Where the light comes from and what it holds. */
+    static final class Light {
+        @Option(names = "--phi-i", paramLabel = "DEG",
+                description = "Azimuth of the light (default: in the plane of a named patch's period, else 0).")
+        Double phiIDeg;
+
+        @Option(names = "--lambda", paramLabel = "NM",
+                description = "Monochromatic map of the relative BRDF at this wavelength (grey).")
+        Double lambdaNm;
+    }
+
+    /** Where the terms come from and where the map is computed. */
+    static final class Engines {
+        @Option(names = "--terms-dir", paramLabel = "DIR",
+                description = "Use precomputed terms instead of the cache: diffract's format or the thesis' Octave "
+                        + "format (detected).")
+        Path termsDir;
+
+        @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
+                converter = OptionTypes.HeightUnitConverter.class,
+                description = "Heights' unit of a --terms-dir from the thesis' script: auto, m or um (default "
+                        + "${DEFAULT-VALUE}).")
+        ThesisFormat.HeightUnit termsHeightUnit = ThesisFormat.HeightUnit.AUTO;
+
+        @Option(names = "--engine", paramLabel = "E",
+                description = "cpu (default; gpu with --variant auto) or gpu: the GLSL shaders rendered offscreen "
+                        + "(OpenGL 3.3).")
+        Engine engine;
+
+        @Option(names = "--time", description = "With --engine gpu: print the median GPU time per frame (GL timer queries).")
+        boolean time;
+    }
+
+    /** The map's size and how it is shown. */
+    static final class Picture {
+        @Option(names = "--size", defaultValue = "256", paramLabel = "S", description = "Map size in pixels (default ${DEFAULT-VALUE}).")
+        int size = 256;
+
+        @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto", converter = OptionTypes.Exposure.Converter.class,
+                description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}); auto "
+                        + "maps the brightest diffracted pixel (not the specular highlight) to 1. The PFM is never scaled.")
+        OptionTypes.Exposure exposure = new OptionTypes.Exposure(1.0);
+
+        @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH",
+                description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
+        ColourPath colour = ColourPath.SRGB;
+
+        @Option(names = "--pfm", paramLabel = "MAP.pfm",
+                description = "Also write floats: linear sRGB (unclipped), or the relative BRDF with --lambda.")
+        Path pfm;
+    }
 
     @Override
     public Integer call() throws IOException {
@@ -98,15 +121,15 @@ final class BrdfMapCommand implements Callable<Integer> {
         long start = System.nanoTime();
         NamedPatch named = patch.load("", reporter);
         HeightField field = named.meanSubtracted();
-        double phi = phiIDeg != null ? phiIDeg : patch.periodAzimuthDeg("");
+        double phi = light.phiIDeg != null ? light.phiIDeg : patch.periodAzimuthDeg("");
         BrdfSettings settings = settings(field, phi, reporter);
-        double shortestLambdaNm = lambdaNm != null ? Math.min(lambdaNm, settings.spectral().lambdaMinNm())
+        double shortestLambdaNm = light.lambdaNm != null ? Math.min(light.lambdaNm, settings.spectral().lambdaMinNm())
                 : settings.spectral().lambdaMinNm();
-        SamplingCheck.warnAboutAliasing(field, lambdaNm != null ? lambdaNm : settings.spectral().lambdaMinNm(),
-                lambdaNm != null ? lambdaNm : settings.spectral().lambdaMaxNm(), reporter);
-        DiffractionPipeline pipeline = termsDir != null
-                ? DiffractionPipeline.withTerms(named, TermFolders.read(termsDir, termsHeightUnit, reporter),
-                        termsDir.toString())
+        SamplingCheck.warnAboutAliasing(field, light.lambdaNm != null ? light.lambdaNm : settings.spectral().lambdaMinNm(),
+                light.lambdaNm != null ? light.lambdaNm : settings.spectral().lambdaMaxNm(), reporter);
+        DiffractionPipeline pipeline = engines.termsDir != null
+                ? DiffractionPipeline.withTerms(named,
+                        TermFolders.read(engines.termsDir, engines.termsHeightUnit, reporter), engines.termsDir.toString())
                 : DiffractionPipeline.cached(named, settings.spectral().lambdaMinNm());
         CoherenceWindow window = settings.coherenceWindow();
         reporter.info(String.format(Locale.ROOT, "%s, %dx%d patch of %.3f x %.3f um, sigma_f = %.3f x %.3f texels",
@@ -116,9 +139,9 @@ final class BrdfMapCommand implements Callable<Integer> {
         float[] map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
                 : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
         write(map, wi, reporter);
-        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, size, size,
+        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, picture.size, picture.size,
                 settings.variant().label(), where == Engine.GPU ? ", gpu" : "",
-                lambdaNm != null ? ", " + lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
+                light.lambdaNm != null ? ", " + light.lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
     }
 
@@ -126,19 +149,19 @@ final class BrdfMapCommand implements Callable<Integer> {
     private Engine validate() {
         patch.validateRequired();
         brdf.validate();
-        if (size < 1 || size > 8192) {
-            throw new UserInputException("--size must be between 1 and 8192, got " + size);
+        if (picture.size < 1 || picture.size > 8192) {
+            throw new UserInputException("--size must be between 1 and 8192, got " + picture.size);
         }
         if (!(thetaIDeg >= 0 && thetaIDeg < 90)) {
             throw new UserInputException("--theta-i must be in [0, 90) degrees, got " + thetaIDeg);
         }
-        if (lambdaNm != null && !(lambdaNm > 0)) {
-            throw new UserInputException("--lambda must be > 0 nm, got " + lambdaNm);
+        if (light.lambdaNm != null && !(light.lambdaNm > 0)) {
+            throw new UserInputException("--lambda must be > 0 nm, got " + light.lambdaNm);
         }
-        if (brdf.auto() && lambdaNm != null) {
+        if (brdf.auto() && light.lambdaNm != null) {
             throw new UserInputException("--variant auto is calibrated on colour maps; leave out --lambda");
         }
-        Engine where = engine != null ? engine : brdf.auto() ? Engine.GPU : Engine.CPU;
+        Engine where = engines.engine != null ? engines.engine : brdf.auto() ? Engine.GPU : Engine.CPU;
         Variant named = brdf.variantOr(Variant.REFERENCE);
         if (where == Engine.GPU && !named.runsOnGpu()) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY + " (--engine cpu)");
@@ -147,10 +170,10 @@ final class BrdfMapCommand implements Callable<Integer> {
             throw new UserInputException("the baked variant is a table on the GPU (--engine gpu); on the CPU use "
                     + "--variant flss, which it tabulates");
         }
-        if (named == Variant.BAKED && lambdaNm != null) {
+        if (named == Variant.BAKED && light.lambdaNm != null) {
             throw new UserInputException(GpuBrdfMap.BAKED_HAS_NO_MONOCHROMATIC + " (--lambda)");
         }
-        if (time && where != Engine.GPU) {
+        if (engines.time && where != Engine.GPU) {
             throw new UserInputException("--time measures the GPU: add --engine gpu");
         }
         brdf.apply(BrdfSettings.thesis(named)); // a refused value fails now too
@@ -176,12 +199,13 @@ final class BrdfMapCommand implements Callable<Integer> {
                 System.out.printf(Locale.ROOT, "baked %s in %.1f s%n", map.bakedTable().describe(),
                         map.bakedTable().bakeSeconds());
             }
-            float[] values = lambdaNm != null ? map.monochromatic(wi, lambdaNm, size) : map.xyz(wi, size);
-            if (time) {
-                double ms = lambdaNm != null ? map.medianMsPerFrameMonochromatic(wi, lambdaNm, size, 2, 10)
-                        : map.medianMsPerFrame(wi, size, 2, 10);
+            float[] values = light.lambdaNm != null ? map.monochromatic(wi, light.lambdaNm, picture.size)
+                    : map.xyz(wi, picture.size);
+            if (engines.time) {
+                double ms = light.lambdaNm != null ? map.medianMsPerFrameMonochromatic(wi, light.lambdaNm, picture.size, 2, 10)
+                        : map.medianMsPerFrame(wi, picture.size, 2, 10);
                 System.out.printf(Locale.ROOT, "gpu %.1f ms/frame (%s, %dx%d, median of 10, %s, %s)%n", ms,
-                        settings.variant().label(), size, size, settings.gpu().termFormat().label(),
+                        settings.variant().label(), picture.size, picture.size, settings.gpu().termFormat().label(),
                         map.info().renderer());
             }
             return values;
@@ -191,19 +215,20 @@ final class BrdfMapCommand implements Callable<Integer> {
     private float[] cpuMap(DiffractionPipeline pipeline, BrdfSettings settings, Direction wi, double shortestLambdaNm,
                            Reporter reporter) {
         var cpu = pipeline.cpuBrdf(settings, shortestLambdaNm, reporter);
-        return lambdaNm != null ? BrdfMap.monochromatic(cpu, wi, lambdaNm, size, reporter)
-                : BrdfMap.xyz(cpu, wi, size, reporter);
+        return light.lambdaNm != null ? BrdfMap.monochromatic(cpu, wi, light.lambdaNm, picture.size, reporter)
+                : BrdfMap.xyz(cpu, wi, picture.size, reporter);
     }
 
     /** The PNG (display-encoded at the exposure) and the optional PFM (linear) of a colour or monochromatic map. */
     private void write(float[] map, Direction wi, Reporter reporter) throws IOException {
-        int channels = lambdaNm != null ? 1 : 3;
-        float[] luminance = new float[size * size];
+        int channels = light.lambdaNm != null ? 1 : 3;
+        float[] luminance = new float[picture.size * picture.size];
         for (int p = 0; p < luminance.length; p++) {
             luminance[p] = map[channels * p + channels / 2]; // rho, or Y of XYZ
         }
-        double e = exposure.automatic() ? AutoExposure.of(luminance, size, -wi.x(), -wi.y()) : exposure.factor();
-        if (exposure.automatic()) {
+        double e = picture.exposure.automatic() ? AutoExposure.of(luminance, picture.size, -wi.x(), -wi.y())
+                : picture.exposure.factor();
+        if (picture.exposure.automatic()) {
             reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
         }
         float[] display = new float[map.length];
@@ -215,15 +240,15 @@ final class BrdfMapCommand implements Callable<Integer> {
                 continue;
             }
             Xyz c = new Xyz(map[p], map[p + 1], map[p + 2]);
-            System.arraycopy(colour.displayRgb(c.scaled(e)), 0, display, p, 3);
+            System.arraycopy(picture.colour.displayRgb(c.scaled(e)), 0, display, p, 3);
             double[] lin = Srgb.linearFromXyz(c);
             for (int k = 0; k < 3; k++) {
                 linear[p + k] = (float) lin[k];
             }
         }
-        ImageFiles.writePng(output, display, size, size, channels);
-        if (pfm != null) {
-            ImageFiles.writePfm(pfm, linear, size, size, channels);
+        ImageFiles.writePng(output, display, picture.size, picture.size, channels);
+        if (picture.pfm != null) {
+            ImageFiles.writePfm(picture.pfm, linear, picture.size, picture.size, channels);
         }
     }
 }

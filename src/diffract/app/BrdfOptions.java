@@ -7,13 +7,15 @@ import diffract.optics.TaylorExpansion;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.UserInputException;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Option;
 
 /**
- * The BRDF settings as options, the same on {@code brdfmap}, {@code view} and {@code render}. Each option changes
- * its setting only when given: on top of the thesis' configuration, or of a scene file's material. The settings
- * check the values ({@link BrdfSettings}); the command line names the option of a refused value
- * ({@link OptionNames}).
+ * The BRDF settings as options, the same on {@code brdfmap}, {@code view} and {@code render}, in the groups of
+ * {@link BrdfSettings} (the help lists them under one heading each). Each option changes its setting only when
+ * given: on top of the thesis' configuration, or of a scene file's material. The settings check the values; the
+ * command line names the option of a refused value ({@link OptionNames}). A new group of settings is a new nested
+ * group here, read in {@link #apply}.
  */
 final class BrdfOptions {
     @Option(names = "--variant", paramLabel = "V", converter = OptionTypes.VariantChoice.Converter.class,
@@ -25,60 +27,94 @@ final class BrdfOptions {
     OptionTypes.VariantChoice variant;
 
     @Option(names = "--max-delta-e", paramLabel = "DE",
-            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the lit pixels.")
+            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the "
+                    + "lit pixels.")
     Double maxDeltaE;
 
-    @Option(names = "--terms", paramLabel = "N", description = "Highest Taylor order N, terms n = 0..N (default 30).")
-    Integer highestOrder;
+    @ArgGroup(exclusive = false, validate = false, heading = "Taylor approximation:%n")
+    Taylor taylor = new Taylor();
 
-    @Option(names = "--taylor-tolerance", paramLabel = "EPS",
-            description = "Stop each lookup's Taylor loop at the first order whose Lagrange bound x^(n+1) e^x/(n+1)! "
-                    + "(x = k|w|max|h|) is <= EPS; 0 = always N (default 0).")
-    Double taylorTolerance;
+    @ArgGroup(exclusive = false, validate = false, heading = "Window between the DFT texels:%n")
+    Window window = new Window();
 
-    @Option(names = "--expansion", paramLabel = "E",
-            description = "Taylor expansion: auto (default: the thesis' series around 0 where the patch lets it "
-                    + "reach 1e-3 in P, else around the nearest of several phase centres), plain or centred. "
-                    + "With --variant auto the default is plain: the path its calibration measured.")
-    TaylorExpansion expansion;
+    @ArgGroup(exclusive = false, validate = false, heading = "Spectral model:%n")
+    Spectral spectral = new Spectral();
 
-    @Option(names = "--window-radius", paramLabel = "R|auto", converter = OptionTypes.WindowRadius.Converter.class,
-            description = "Window of (2R+1)^2 texels (default 1); auto: per axis the smallest R capturing 99.73 "
-                    + "%% of the Gaussian window's weight (sigma_f in texels).")
-    OptionTypes.WindowRadius windowRadius;
+    @ArgGroup(exclusive = false, validate = false, heading = "Illumination:%n")
+    Illumination illumination = new Illumination();
 
-    @Option(names = "--pq-replicas", paramLabel = "R",
-            description = "PQ replicas per axis; 0 spans the coherence length (default 0).")
-    Integer pqReplicas;
+    @ArgGroup(exclusive = false, validate = false, heading = "GPU tables:%n")
+    GpuTables gpu = new GpuTables();
 
-    @Option(names = "--lambda-min", paramLabel = "NM", description = "Shortest wavelength (default 380, within 360..830).")
-    Double lambdaMinNm;
+    /** {@link diffract.optics.TaylorSettings}. */
+    static final class Taylor {
+        @Option(names = "--terms", paramLabel = "N", description = "Highest Taylor order N, terms n = 0..N (default 30).")
+        Integer highestOrder;
 
-    @Option(names = "--lambda-max", paramLabel = "NM", description = "Longest wavelength (default 780, within 360..830).")
-    Double lambdaMaxNm;
+        @Option(names = "--taylor-tolerance", paramLabel = "EPS",
+                description = "Stop each lookup's Taylor loop at the first order whose Lagrange bound "
+                        + "x^(n+1) e^x/(n+1)! (x = k|w|max|h|) is <= EPS; 0 = always N (default 0).")
+        Double tolerance;
 
-    @Option(names = "--lambda-step", paramLabel = "NM",
-            description = "Wavelength step of flss and pq, nmm's fallback step (default 5).")
-    Double lambdaStepNm;
+        @Option(names = "--expansion", paramLabel = "E",
+                description = "auto (default: the thesis' series around 0 where the patch lets it reach 1e-3 in P, "
+                        + "else around the nearest of several phase centres), plain or centred. With --variant auto "
+                        + "the default is plain: the path its calibration measured.")
+        TaylorExpansion expansion;
+    }
 
-    @Option(names = "--coherence-length", paramLabel = "UM",
-            description = "4 sigma_s of the Gaussian coherence window (default 65, filtered sunlight).")
-    Double coherenceLengthUm;
+    /** {@link diffract.optics.WindowSettings}. */
+    static final class Window {
+        @Option(names = "--window-radius", paramLabel = "R|auto", converter = OptionTypes.WindowRadius.Converter.class,
+                description = "Window of (2R+1)^2 texels (default 1); auto: per axis the smallest R capturing "
+                        + "99.73 %% of the Gaussian window's weight (sigma_f in texels).")
+        OptionTypes.WindowRadius radius;
 
-    @Option(names = "--refractive-index", paramLabel = "N", description = "For Schlick's Fresnel term (default 1.5).")
-    Double refractiveIndex;
+        @Option(names = "--pq-replicas", paramLabel = "R", description = "PQ replicas per axis; 0 spans the coherence length (default 0).")
+        Integer pqReplicas;
+    }
 
-    @Option(names = "--texture-format", paramLabel = "F",
-            description = "GPU storage of the Taylor terms: rg32f (default, exact), rg16f (half precision) or rg8 "
-                    + "(the thesis' [0, 1]-normalised bytes, 003 eq. 1.1).")
-    TermFormat termFormat;
+    /** {@link SpectralSettings}. */
+    static final class Spectral {
+        @Option(names = "--lambda-min", paramLabel = "NM", description = "Shortest wavelength (default 380, within 360..830).")
+        Double minNm;
 
-    @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class,
-            description = "baked: table samples along u and v (each) and along w; 0 = automatic (default 0,0).")
-    OptionTypes.BakedSamples bakedSamples;
+        @Option(names = "--lambda-max", paramLabel = "NM", description = "Longest wavelength (default 780, within 360..830).")
+        Double maxNm;
+
+        @Option(names = "--lambda-step", paramLabel = "NM", description = "Step of flss and pq, nmm's fallback step (default 5).")
+        Double stepNm;
+    }
+
+    /** {@link IlluminationSettings}. */
+    static final class Illumination {
+        @Option(names = "--coherence-length", paramLabel = "UM",
+                description = "4 sigma_s of the Gaussian coherence window (default 65, filtered sunlight).")
+        Double coherenceLengthUm;
+
+        @Option(names = "--refractive-index", paramLabel = "N", description = "For Schlick's Fresnel term (default 1.5).")
+        Double refractiveIndex;
+    }
+
+    /** {@link diffract.optics.GpuTableSettings}. */
+    static final class GpuTables {
+        @Option(names = "--texture-format", paramLabel = "F",
+                description = "Storage of the Taylor terms: rg32f (default, exact), rg16f (half precision) or rg8 "
+                        + "(the thesis' [0, 1]-normalised bytes, 003 eq. 1.1).")
+        TermFormat termFormat;
+
+        @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class,
+                description = "baked: table samples along u and v (each) and along w; 0 = automatic (default 0,0).")
+        OptionTypes.BakedSamples bakedSamples;
+    }
 
     boolean auto() {
         return variant != null && variant.auto();
+    }
+
+    /** Whether N was given (it replaces a scene's tolerance-chosen N). */
+    boolean highestOrderGiven() {
+        return taylor.highestOrder != null;
     }
 
     /** Checks the options that go together: an accuracy target exactly with auto. */
@@ -103,44 +139,47 @@ final class BrdfOptions {
         if (variant != null && !variant.auto()) {
             b.variant(variant.variant());
         }
-        if (highestOrder != null) {
-            b.highestOrder(highestOrder);
+        if (taylor.highestOrder != null) {
+            b.highestOrder(taylor.highestOrder);
         }
-        if (taylorTolerance != null) {
-            b.taylorTolerance(taylorTolerance);
+        if (taylor.tolerance != null) {
+            b.taylorTolerance(taylor.tolerance);
         }
-        if (expansion != null) {
-            b.expansion(expansion);
+        if (taylor.expansion != null) {
+            b.expansion(taylor.expansion);
         }
-        if (windowRadius != null) {
-            if (windowRadius.automatic()) {
+        if (window.radius != null) {
+            if (window.radius.automatic()) {
                 b.automaticWindowRadius(true);
             } else {
-                b.windowRadius(windowRadius.radius());
+                b.windowRadius(window.radius.radius());
             }
         }
-        if (pqReplicas != null) {
-            b.pqReplicas(pqReplicas);
+        if (window.pqReplicas != null) {
+            b.pqReplicas(window.pqReplicas);
         }
-        SpectralSettings spectral = base.spectral();
-        if (lambdaMinNm != null || lambdaMaxNm != null || lambdaStepNm != null) {
-            b.spectral(new SpectralSettings(lambdaMinNm != null ? lambdaMinNm : spectral.lambdaMinNm(),
-                    lambdaMaxNm != null ? lambdaMaxNm : spectral.lambdaMaxNm(),
-                    lambdaStepNm != null ? lambdaStepNm : spectral.lambdaStepNm()));
+        SpectralSettings s = base.spectral();
+        if (spectral.minNm != null || spectral.maxNm != null || spectral.stepNm != null) {
+            b.spectral(new SpectralSettings(or(spectral.minNm, s.lambdaMinNm()), or(spectral.maxNm, s.lambdaMaxNm()),
+                    or(spectral.stepNm, s.lambdaStepNm())));
         }
-        IlluminationSettings illumination = base.illumination();
-        if (coherenceLengthUm != null || refractiveIndex != null) {
+        IlluminationSettings i = base.illumination();
+        if (illumination.coherenceLengthUm != null || illumination.refractiveIndex != null) {
             b.illumination(IlluminationSettings.ofCoherenceLength(
-                    coherenceLengthUm != null ? coherenceLengthUm : illumination.coherenceLengthUm(),
-                    refractiveIndex != null ? refractiveIndex : illumination.refractiveIndex()));
+                    or(illumination.coherenceLengthUm, i.coherenceLengthUm()),
+                    or(illumination.refractiveIndex, i.refractiveIndex())));
         }
-        if (termFormat != null) {
-            b.termFormat(termFormat);
+        if (gpu.termFormat != null) {
+            b.termFormat(gpu.termFormat);
         }
-        if (bakedSamples != null) {
-            b.bakedSamples(bakedSamples.uv(), bakedSamples.w());
+        if (gpu.bakedSamples != null) {
+            b.bakedSamples(gpu.bakedSamples.uv(), gpu.bakedSamples.w());
         }
         return b.build();
+    }
+
+    private static double or(Double given, double fallback) {
+        return given != null ? given : fallback;
     }
 
     /** The variant asked for, or {@code fallback} when none (or auto) was given. */

@@ -17,10 +17,10 @@ import java.util.concurrent.Callable;
 
 /** {@code diffract compare}: CIEDE2000 between two colour BRDF maps written by {@code brdfmap --pfm}. */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"CIEDE2000 between two colour BRDF maps (the linear sRGB PFMs of brdfmap --pfm), pixel by pixel",
-                "inside the unit disk: both are turned back into XYZ, multiplied by the same exposure and converted",
-                "to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over the whole disk",
-                "and over the lit pixels (exposed Y above 1 %% of white in either map)."})
+        description = "CIEDE2000 between two colour BRDF maps (the linear sRGB PFMs of brdfmap --pfm), pixel by pixel "
+                + "inside the unit disk: both are turned back into XYZ, multiplied by the same exposure and "
+                + "converted to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over "
+                + "the whole disk and over the lit pixels (exposed Y above 1 %% of white in either map).")
 final class CompareCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "A.pfm")
     Path first;

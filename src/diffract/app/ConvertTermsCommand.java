@@ -21,8 +21,8 @@ import java.util.concurrent.Callable;
 
 /** {@code diffract convert-terms}: precomputed terms from one on-disk format into the other, without any FFT. */
 @Command(name = "convert-terms", mixinStandardHelpOptions = true,
-        description = {"Convert a folder of precomputed Taylor terms between diffract's format (terms.f32 + terms.json)",
-                "and the thesis' Octave format (AmpReIm<n>.txt + extrema.txt); see docs/formats.md."})
+        description = "Convert a folder of precomputed Taylor terms between diffract's format (terms.f32 + terms.json) "
+                + "and the thesis' Octave format (AmpReIm<n>.txt + extrema.txt); see docs/formats.md.")
 final class ConvertTermsCommand implements Callable<Integer> {
     @Option(names = "--from", required = true, paramLabel = "DIR", description = "Folder in either format (detected).")
     Path from;

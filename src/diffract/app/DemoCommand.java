@@ -19,9 +19,9 @@ import java.util.concurrent.Callable;
  * the path of every picture it writes.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = {"The demo: the viewer on the iridescent procedural snake (Elaphe-like skin patch) when there is a",
-                "screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map of",
-                "a blazed grating to out/demo-brdfmap.png)."})
+        description = "The demo: the viewer on the iridescent procedural snake (Elaphe-like skin patch) when there is a "
+                + "screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map "
+                + "of a blazed grating to out/demo-brdfmap.png).")
 final class DemoCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
     Path outputDir;

@@ -2,10 +2,12 @@ package diffract.app;
 
 import diffract.optics.HeightField;
 import diffract.optics.PatchCatalogue;
+import diffract.optics.ProceduralPatches;
 import diffract.optics.io.HeightFieldReader;
 import diffract.pipeline.NamedPatch;
 import diffract.scene.Scene;
 import diffract.util.Reporter;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.nio.file.Path;
@@ -21,8 +23,12 @@ final class PatchOptions {
     Path file;
 
     @Option(names = "--synthetic", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
-            description = "A patch made by code instead of --patch: ${COMPLETION-CANDIDATES} (diffract patch --help says what they are).")
+            description = "A patch made by code instead of --patch: ${COMPLETION-CANDIDATES} (diffract patch --help "
+                    + "says what they are); --period, --height, ... change it.")
     String synthetic;
+
+    @Mixin
+    ProceduralOptions parameters;
 
     @Option(names = "--max-height", paramLabel = "UM",
             description = "Height of the brightest grey value in micrometres (images; rescales text/.gsf if given).")
@@ -33,7 +39,8 @@ final class PatchOptions {
     Double pixelSizeUm;
 
     /** The options a scene file says by itself. */
-    static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size"};
+    static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size", "--period", "--height",
+        "--periods", "--samples-per-period", "--rows", "--seed"};
 
     boolean given() {
         return file != null || synthetic != null;
@@ -44,8 +51,12 @@ final class PatchOptions {
         if (file != null && synthetic != null) {
             throw new diffract.util.UserInputException("give --patch FILE or --synthetic NAME, not both");
         }
+        if (synthetic == null && parameters.given()) {
+            throw new diffract.util.UserInputException("--period, --height, --periods, --samples-per-period, --rows "
+                    + "and --seed change a patch made by code: add --synthetic NAME");
+        }
         if (synthetic != null) {
-            PatchCatalogue.named(synthetic);
+            parameters.spec(PatchCatalogue.named(synthetic));
             if (maxHeightUm != null || pixelSizeUm != null) {
                 throw new diffract.util.UserInputException("--max-height and --pixel-size size a --patch FILE; "
                         + "a --synthetic patch has its own");
@@ -68,7 +79,9 @@ final class PatchOptions {
             return new NamedPatch(file.getFileName().toString(), field.meanSubtracted(), maxHeightUm);
         }
         PatchCatalogue.Entry entry = PatchCatalogue.named(synthetic != null ? synthetic : fallback);
-        return NamedPatch.of(entry.name(), entry.build());
+        ProceduralPatches.Spec spec = parameters.spec(entry);
+        return NamedPatch.of(spec.equals(entry.spec()) ? entry.name() : entry.name() + "(" + spec.periodUm() + " um)",
+                spec.build());
     }
 
     /** As a scene's patch ({@code fallback} when none was given). */
@@ -77,7 +90,7 @@ final class PatchOptions {
             return new Scene.FilePatch(file, maxHeightUm, pixelSizeUm);
         }
         PatchCatalogue.Entry entry = PatchCatalogue.named(synthetic != null ? synthetic : fallback);
-        return new Scene.ProceduralPatch(entry.name(), entry.spec());
+        return new Scene.ProceduralPatch(entry.name(), parameters.spec(entry));
     }
 
     /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */

@@ -17,8 +17,8 @@ import java.util.concurrent.Callable;
 
 /** {@code diffract precompute}: thesis Algorithm 1, the Taylor-term DFTs of a patch, into a folder. */
 @Command(name = "precompute", mixinStandardHelpOptions = true,
-        description = {"Precompute the Taylor-term DFTs DFT_n = fftshift(ifft2((i h)^n)), n = 0..N, of a height field.",
-                "A rerun with the same patch and N reuses the folder without any FFT."})
+        description = "Precompute the Taylor-term DFTs DFT_n = fftshift(ifft2((i h)^n)), n = 0..N, of a height field. A "
+                + "rerun with the same patch and N reuses the folder without any FFT.")
 final class PrecomputeCommand implements Callable<Integer> {
     @Mixin
     PatchOptions patch;

@@ -19,9 +19,9 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
-@Command(name = "render", mixinStandardHelpOptions = true,
-        description = {"Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and",
-                "shaders as 'diffract view', without a window (runs under xvfb-run; the launcher starts one)."})
+@Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
+        description = "Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and "
+                + "shaders as 'diffract view', without a window (runs under xvfb-run; the launcher starts one).")
 final class RenderCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;

@@ -18,10 +18,10 @@ import java.util.Optional;
 import java.util.concurrent.Callable;
 
 /** {@code diffract view}: the interactive viewer. */
-@Command(name = "view", mixinStandardHelpOptions = true,
-        description = {"Open the interactive viewer: a shape covered with the patch's structural colour, lit by a",
-                "distant light, seen from a camera you orbit with the mouse. Press H in the window for the keys.",
-                "Without a display, use 'diffract render' with the same options."})
+@Command(name = "view", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
+        description = "Open the interactive viewer: a shape covered with the patch's structural colour, lit by a "
+                + "distant light, seen from a camera you orbit with the mouse. Press H in the window for the keys. "
+                + "Without a display, use 'diffract render' with the same options.")
 final class ViewCommand implements Callable<Integer> {
     /** Set by the launcher when it runs a command under its own private Xvfb, which nobody can see. */
     static final String PRIVATE_XVFB_VARIABLE = "DIFFRACT_PRIVATE_XVFB";

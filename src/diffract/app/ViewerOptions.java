@@ -16,6 +16,7 @@ import diffract.scene.SceneFile;
 import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -49,48 +50,60 @@ final class ViewerOptions {
     @Mixin
     BrdfOptions brdf;
 
-    @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S", converter = ShapeConverter.class,
-            completionCandidates = OptionTypes.ShapeNames.class,
-            description = "${COMPLETION-CANDIDATES} (procedural, with corn-snake pigmentation; default ${DEFAULT-VALUE}).")
-    Scene.ShapeKind shape;
+    @ArgGroup(exclusive = false, validate = false, heading = "Shape and pigment (without a SCENE):%n")
+    Surface surface = new Surface();
 
-    @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
-            description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
-    OptionTypes.Vector3 tangent;
+    @ArgGroup(exclusive = false, validate = false, heading = "Light and camera:%n")
+    View view = new View();
 
-    @Option(names = "--pigmentation", paramLabel = "IMAGE",
-            description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
-    Path pigmentation;
+    /** What the patch covers, and the pigment over it. */
+    static final class Surface {
+        @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S", converter = ShapeConverter.class,
+                completionCandidates = OptionTypes.ShapeNames.class,
+                description = "${COMPLETION-CANDIDATES} (procedural, with corn-snake pigmentation; default ${DEFAULT-VALUE}).")
+        Scene.ShapeKind shape = Scene.ShapeKind.SPHERE;
 
-    @Option(names = "--no-pigmentation", description = "Start with the pigmentation off (structural colour only; P toggles it).")
-    boolean noPigmentation;
+        @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
+                description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
+        OptionTypes.Vector3 tangent = new OptionTypes.Vector3(1, 0, 0);
 
-    @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
-            description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
-    double diffuseWeight;
+        @Option(names = "--pigmentation", paramLabel = "IMAGE",
+                description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
+        Path pigmentation;
 
-    @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
-    double thetaIDeg;
+        @Option(names = "--no-pigmentation", description = "Start with the pigmentation off (structural colour only; P toggles it).")
+        boolean noPigmentation;
 
-    @Option(names = "--phi-i", paramLabel = "DEG",
-            description = "Light azimuth from the world x axis (default: in the plane of a named patch's period, 90 "
-                    + "for the snake patches; else 0).")
-    Double phiIDeg;
+        @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
+                description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
+        double diffuseWeight = 0.2;
+    }
 
-    @Option(names = "--exposure", defaultValue = "10", paramLabel = "E", description = "Multiplies linear XYZ before display (default ${DEFAULT-VALUE}).")
-    double exposure;
+    /** The light, the orbit camera and what is shown. */
+    static final class View {
+        @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
+        double thetaIDeg = 30;
 
-    @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
-    boolean brdfMap;
+        @Option(names = "--phi-i", paramLabel = "DEG",
+                description = "Light azimuth from the world x axis (default: in the plane of a named patch's period, 90 "
+                        + "for the snake patches; else 0).")
+        Double phiIDeg;
 
-    @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
-    double azimuthDeg;
+        @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
+        double azimuthDeg;
 
-    @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}).")
-    double elevationDeg;
+        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}).")
+        double elevationDeg = 20;
 
-    @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
-    double distance;
+        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
+        double distance = 3.5;
+
+        @Option(names = "--exposure", defaultValue = "10", paramLabel = "E", description = "Multiplies linear XYZ before display (default ${DEFAULT-VALUE}).")
+        double exposure = 10;
+
+        @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
+        boolean brdfMap;
+    }
 
     /** The patch a command line without --patch or --synthetic shows. */
     static final String DEFAULT_PATCH = "elaphe-like";
@@ -139,15 +152,16 @@ final class ViewerOptions {
                     + " (the reference is drawn by ./diffract brdfmap)");
         }
         brdf.apply(BrdfSettings.thesis(Variant.FLSS)); // a refused value fails now too
-        if (!(distance >= OrbitCamera.MIN_DISTANCE && distance <= OrbitCamera.MAX_DISTANCE)) {
+        if (!(view.distance >= OrbitCamera.MIN_DISTANCE && view.distance <= OrbitCamera.MAX_DISTANCE)) {
             throw new UserInputException("--distance must be in [" + OrbitCamera.MIN_DISTANCE + ", "
-                    + OrbitCamera.MAX_DISTANCE + "], got " + distance);
+                    + OrbitCamera.MAX_DISTANCE + "], got " + view.distance);
         }
-        if (!(thetaIDeg >= 0 && thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
+        if (!(view.thetaIDeg >= 0 && view.thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
             throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG + "] degrees, got "
-                    + thetaIDeg);
+                    + view.thetaIDeg);
         }
-        if (!Double.isFinite(azimuthDeg) || !Double.isFinite(elevationDeg) || (phiIDeg != null && !Double.isFinite(phiIDeg))) {
+        if (!Double.isFinite(view.azimuthDeg) || !Double.isFinite(view.elevationDeg)
+                || (view.phiIDeg != null && !Double.isFinite(view.phiIDeg))) {
             throw new UserInputException("angles must be finite numbers");
         }
     }
@@ -172,27 +186,29 @@ final class ViewerOptions {
         Scene.MaterialSpec m = s.material();
         // --terms replaces a scene's tolerance-chosen N
         Scene.MaterialSpec material = new Scene.MaterialSpec(m.patch(), brdf.apply(m.settings()),
-                brdf.highestOrder != null ? null : m.orderTolerance(), m.pigmentation(), m.pigmentationOn(),
+                brdf.highestOrderGiven() ? null : m.orderTolerance(), m.pigmentation(), m.pigmentationOn(),
                 m.diffuseWeight(), m.exposure());
         return new Scene(s.source(), s.image(), s.camera(), s.light(), s.shape(), material, s.mode());
     }
 
     /** The scene the options describe: the patch on a shape, the thesis' settings, an orbit camera, one light. */
     private Scene optionsScene(Scene.ImageSize size) {
-        double phi = phiIDeg != null ? phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
-        double[] eye = new OrbitCamera(azimuthDeg, elevationDeg, distance, 0, 0, 0).eye();
+        double phi = view.phiIDeg != null ? view.phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
+        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, view.distance, 0, 0, 0).eye();
         Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
                 SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
-        Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(thetaIDeg, phi)), "D65");
-        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(shape, null,
-                TangentSource.projected(tangent.x(), tangent.y(), tangent.z()), SnakeMesh.RidgeDirection.ALONG_BODY,
+        Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(view.thetaIDeg, phi)), "D65");
+        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null,
+                TangentSource.projected(surface.tangent.x(), surface.tangent.y(), surface.tangent.z()),
+                SnakeMesh.RidgeDirection.ALONG_BODY,
                 Scene.Transform.identity());
-        Scene.PigmentationSpec pigment = pigmentation != null ? new Scene.PigmentationSpec(false, pigmentation)
-                : shape == Scene.ShapeKind.SNAKE ? new Scene.PigmentationSpec(true, null) : Scene.PigmentationSpec.none();
+        Scene.PigmentationSpec pigment = surface.pigmentation != null
+                ? new Scene.PigmentationSpec(false, surface.pigmentation)
+                : surface.shape == Scene.ShapeKind.SNAKE ? new Scene.PigmentationSpec(true, null) : Scene.PigmentationSpec.none();
         Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), BrdfSettings.thesis(Variant.FLSS),
-                null, pigment, pigment.present() && !noPigmentation, diffuseWeight, exposure);
+                null, pigment, pigment.present() && !surface.noPigmentation, surface.diffuseWeight, view.exposure);
         return new Scene(null, size, camera, light, shapeSpec, material,
-                brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE);
+                view.brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE);
     }
 
     private static double[] vector(LightDirection light) {
@@ -221,14 +237,15 @@ final class ViewerOptions {
     /** The scene's setup with the view options the command line gives in its place. */
     private SceneSetup withOverrides(SceneSetup s) {
         OrbitCamera c = s.camera();
-        OrbitCamera camera = new OrbitCamera(given("--azimuth") ? azimuthDeg : c.azimuthDeg(),
-                given("--elevation") ? elevationDeg : c.elevationDeg(), given("--distance") ? distance : c.distance(),
+        OrbitCamera camera = new OrbitCamera(given("--azimuth") ? view.azimuthDeg : c.azimuthDeg(),
+                given("--elevation") ? view.elevationDeg : c.elevationDeg(),
+                given("--distance") ? view.distance : c.distance(),
                 c.targetX(), c.targetY(), c.targetZ());
-        LightDirection light = new LightDirection(given("--theta-i") ? thetaIDeg : s.light().thetaDeg(),
-                given("--phi-i") ? phiIDeg : s.light().phiDeg());
+        LightDirection light = new LightDirection(given("--theta-i") ? view.thetaIDeg : s.light().thetaDeg(),
+                given("--phi-i") ? view.phiIDeg : s.light().phiDeg());
         return new SceneSetup(s.pipeline(), s.shape(), s.pigmentation(),
-                given("--diffuse-weight") ? diffuseWeight : s.diffuseWeight(), s.settings(), camera, light,
-                given("--exposure") ? exposure : s.exposure(), brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
-                s.pigmentationOn() && !noPigmentation, s.verticalFovDeg());
+                given("--diffuse-weight") ? surface.diffuseWeight : s.diffuseWeight(), s.settings(), camera, light,
+                given("--exposure") ? view.exposure : s.exposure(), view.brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
+                s.pigmentationOn() && !surface.noPigmentation, s.verticalFovDeg());
     }
 }
