@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's "Speed versus accuracy" from the repository root: bash docs/bench.sh
+# Regenerates docs/bench.md's tables and plot from the repository root: bash docs/bench.sh
 # The full sweep (540 configurations, the baked table and the lean rows included) takes about 15-20 minutes on
 # 2 cores with Mesa llvmpipe; OpenGL 3.3 is needed (without a display the launcher runs it under
 # xvfb-run). Reference maps are cached in out/bench/reference-maps.

@@ -41,7 +41,7 @@ Columns: "expansion" is what `--expansion auto` chose (centred: centres x orders
 CPU reference, colour maps as mean CIEDE2000 over the unit disk (and over the lit pixels) after the reference's
 automatic exposure, monochromatic maps as max |rho - rho_ref| / max rho_ref. "GPU error, plain series" is the
 thesis' series around 0 on the GPU for the cases where the switch chose the centred one. NMM's and PQ's own errors
-(NMM's nodes on a 10 um patch, PQ's sinc and replication) are the variants', not the extremes' (README, Accuracy).
+(NMM's nodes on a 10 um patch, PQ's sinc and replication) are the variants', not the extremes' (docs/accuracy.md).
 
 MATRIX
 cat target/extremes.md

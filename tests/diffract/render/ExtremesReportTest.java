@@ -31,7 +31,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * table of {@code docs/extremes.md} ({@code bash docs/extremes.sh} reruns it and copies
  * {@code target/extremes.md} there). Every map (colour, and monochromatic at 380 and 780 nm) of every variant on
  * every engine must be finite and non-negative; FLSS on the automatic expansion must meet the reference (the other
- * variants' errors are their own, measured and printed, see README "Accuracy").
+ * variants' errors are their own, measured and reported, see docs/accuracy.md).
  *
  * <p>Cases: blazed gratings (period 2.5 um, 20 pixels of 0.125 um, 4 periods, 8 rows) with max|h| 0.01, 0.1, 0.5,
  * 1 and 2 um (x = 2 k max|h| up to 66 at 380 nm), a flat (constant) patch, a 1 x 1 patch, an odd non-square
