@@ -50,7 +50,7 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
     boolean quick;
 
-    @Option(names = "--patches", defaultValue = "blazed-10um,elaphe-like,xenopeltis-like,tall", paramLabel = "LIST",
+    @Option(names = "--patches", defaultValue = BenchPatch.DEFAULT_NAMES, paramLabel = "LIST",
             split = ",", completionCandidates = OptionTypes.PatchNames.class,
             description = "Named patches, of ${COMPLETION-CANDIDATES} (default ${DEFAULT-VALUE}).")
     List<String> patches;

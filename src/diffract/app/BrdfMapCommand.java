@@ -162,7 +162,7 @@ final class BrdfMapCommand implements Callable<Integer> {
             throw new UserInputException("--variant auto is calibrated on colour maps; leave out --lambda");
         }
         Engine where = engines.engine != null ? engines.engine : brdf.auto() ? Engine.GPU : Engine.CPU;
-        Variant named = brdf.variantOr(Variant.REFERENCE);
+        Variant named = requested();
         if (where == Engine.GPU && !named.runsOnGpu()) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY + " (--engine cpu)");
         }
@@ -180,9 +180,14 @@ final class BrdfMapCommand implements Callable<Integer> {
         return where;
     }
 
+    /** The variant asked for: the reference by default; with auto, FLSS stands in until the calibration chose. */
+    private Variant requested() {
+        return brdf.auto() ? Variant.FLSS : brdf.variantOr(Variant.REFERENCE);
+    }
+
     /** The thesis' settings with the options given; with auto, the configuration its calibration chose. */
     private BrdfSettings settings(HeightField field, double phiDeg, Reporter reporter) {
-        BrdfSettings settings = brdf.apply(BrdfSettings.thesis(brdf.variantOr(Variant.REFERENCE)));
+        BrdfSettings settings = brdf.apply(BrdfSettings.thesis(requested()));
         if (!brdf.auto()) {
             return settings;
         }

@@ -18,7 +18,7 @@ public record BenchPatch(String name, HeightField field, double phiIDeg) {
      * The bench's default patches: each about one coherence length (10 um) wide, so their orders are a few map
      * pixels wide; and the tall patch, where the thesis' series needs the phase-centred expansion.
      */
-    public static final List<String> DEFAULT_NAMES = List.of("blazed-10um", "elaphe-like", "xenopeltis-like", "tall");
+    public static final String DEFAULT_NAMES = "blazed-10um,elaphe-like,xenopeltis-like,tall";
 
     /** A patch of the {@link PatchCatalogue}. */
     public static BenchPatch named(String name) {

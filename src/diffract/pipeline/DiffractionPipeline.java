@@ -72,11 +72,6 @@ public final class DiffractionPipeline {
         return termSource.terms(highestOrder, reporter);
     }
 
-    /** The source of terms, for a viewer that asks for more while it runs. */
-    public TermSource termSource() {
-        return termSource;
-    }
-
     /**
      * The expansion the settings ask for over these terms ({@link TaylorEvaluation#choose}), with the centred terms
      * computed once per shortest wavelength.
@@ -91,12 +86,7 @@ public final class DiffractionPipeline {
                                 lambda -> TaylorTermComputer.computeCentred(field, centres, reporter)), reporter);
     }
 
-    /** As above with the terms of N from the term source and the settings' shortest wavelength. */
-    public TaylorEvaluation evaluation(BrdfSettings settings, Reporter reporter) {
-        return evaluation(settings, settings.spectral().lambdaMinNm(), reporter);
-    }
-
-    /** As above for a shortest wavelength of its own (a monochromatic map below the range). */
+    /** As above with the terms of N from the term source. */
     public TaylorEvaluation evaluation(BrdfSettings settings, double shortestLambdaNm, Reporter reporter) {
         return evaluation(settings, terms(settings.taylor().highestOrder(), reporter), shortestLambdaNm, reporter);
     }
