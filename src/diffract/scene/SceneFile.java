@@ -2,6 +2,7 @@ package diffract.scene;
 
 import diffract.geometry.SnakeMesh;
 import diffract.geometry.TangentSource;
+import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.GainFactor;
@@ -232,7 +233,8 @@ public final class SceneFile {
             Map.entry(Quantity.WINDOW_RADIUS, "windowRadius"), Map.entry(Quantity.PQ_REPLICAS, "pqReplicas"),
             Map.entry(Quantity.LAMBDA_MIN, "lambdaMinNm"), Map.entry(Quantity.LAMBDA_MAX, "lambdaMaxNm"),
             Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
-            Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"));
+            Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
+            Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"));
 
     private static Scene.MaterialSpec material(SceneObject material) {
         Scene.PatchSpec patch = patch(material.object("patch"));
@@ -266,6 +268,8 @@ public final class SceneFile {
             b.illumination(illumination(material));
             b.termFormat(TermFormat.valueOf(material.choice("termFormat", TERM_FORMATS, "rg32f")
                     .toUpperCase(Locale.ROOT)));
+            SceneObject.Range samples = SceneObject.Range.closed(0, BakedGrid.MAX_SAMPLES);
+            b.bakedSamples(material.integer("bakedUvSamples", samples, 0), material.integer("bakedWSamples", samples, 0));
         } catch (InvalidSettingException e) {
             throw material.problem(MATERIAL_KEYS.getOrDefault(e.quantity(), "variant"), e.getMessage());
         }

@@ -155,6 +155,7 @@ class SceneFileTest {
         assertEquals(12, s.taylor().highestOrder());
         assertEquals(diffract.optics.TaylorExpansion.CENTRED, s.taylor().expansion());
         assertEquals(diffract.optics.TermFormat.RG16F, s.gpu().termFormat());
+        assertEquals(0, s.gpu().bakedUvSamples(), "automatic unless given");
         assertEquals("elaphe-like", ((Scene.ProceduralPatch) scene.material().patch()).name(),
                 "a camelCase name is the catalogue's patch");
     }
@@ -164,6 +165,8 @@ class SceneFileTest {
     void aValueTheSettingsRefuseNamesItsKey() throws IOException {
         String m = message(valid(",\n    \"taylorTolerance\": 1"));
         assertTrue(m.startsWith("7: material.taylorTolerance: the per-lookup Taylor tolerance must be in [0, 1)"), m);
+        String baked = message(valid(",\n    \"bakedUvSamples\": 1"));
+        assertTrue(baked.startsWith("7: material.bakedUvSamples: the baked table's samples must be 0 (automatic)"), baked);
         String both = message(valid(",\n    \"sigmaSpatialUm\": 2.5, \"coherenceLengthUm\": 10"));
         assertTrue(both.contains("material.sigmaSpatialUm: give either"), both);
     }
