@@ -9,7 +9,7 @@ import diffract.bench.ReferenceMaps;
 import diffract.bench.ResultsTable;
 import diffract.bench.SweepPlan;
 import diffract.bench.Targets;
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
@@ -110,7 +110,7 @@ final class BenchCommand implements Callable<Integer> {
             throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
         }
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
-        DisplayCheck.requireDisplay();
+        HeadlessGL.require();
         Files.createDirectories(outputDir);
         Reporter reporter = Reporter.STDERR;
         reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "

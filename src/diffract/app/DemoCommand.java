@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import picocli.CommandLine.Command;
@@ -16,7 +16,7 @@ import java.util.concurrent.Callable;
 
 /**
  * {@code diffract demo}, the main job: with a screen, the interactive viewer on the procedural snake covered with the
- * Elaphe-like snake-skin patch; without one (the launcher then runs it under a private Xvfb), the same view rendered
+ * Elaphe-like snake-skin patch; without one, the same view rendered (headless EGL, no X server needed)
  * offscreen to {@code out/demo.png}; without any OpenGL, the CPU reference BRDF map of a blazed grating. It prints
  * the path of every picture it writes.
  */
@@ -61,8 +61,8 @@ final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        boolean gl = DisplayCheck.problem().isEmpty();
-        boolean screen = gl && !"1".equals(System.getenv(ViewCommand.PRIVATE_XVFB_VARIABLE));
+        boolean screen = ViewCommand.noDisplayProblem(System.getenv(), System.getProperty("os.name", "")).isEmpty();
+        boolean gl = HeadlessGL.problem().isEmpty();
         if (screen) {
             return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
         }
@@ -74,7 +74,7 @@ final class DemoCommand implements Callable<Integer> {
             }
             return code;
         }
-        System.err.println("no OpenGL display (install xvfb for the rendered view): CPU BRDF map instead");
+        System.err.println(HeadlessGL.problem().orElse("no OpenGL") + ": CPU BRDF map instead");
         Path patch = outputDir.resolve("demo-blazed-grating.gsf");
         GsfWriter.write(patch, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16));
         Path png = outputDir.resolve("demo-brdfmap.png");

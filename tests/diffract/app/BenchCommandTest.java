@@ -1,8 +1,7 @@
 package diffract.app;
 
 import diffract.bench.ResultsTable;
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -17,7 +16,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class BenchCommandTest {
     @Test
     void aTinySweepWritesOneCsvRowPerConfigurationAndThePlot(@TempDir Path dir) throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path out = dir.resolve("bench");
         // flss: 2 orders x 2 formats = 4; nmm ignores the step, same 4; 24 px maps keep it to seconds
         int code = Main.execute("bench", "--patches", "blazed", "--variants", "flss,nmm", "--terms", "4,8",
