@@ -4,6 +4,7 @@ import diffract.jrtr.HeadlessGL;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import diffract.util.UserInputException;
@@ -12,6 +13,8 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 
 /**
@@ -25,6 +28,9 @@ import java.util.concurrent.Callable;
                 "screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map of",
                 "a blazed grating to out/demo-brdfmap.png)."})
 final class DemoCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
     Path outputDir;
 
@@ -68,7 +74,10 @@ final class DemoCommand implements Callable<Integer> {
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
-            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", size, "-o", png.toString());
+            List<String> render = new ArrayList<>(List.of("render", defaultScene(outputDir).toString(), "--size", size,
+                    "-o", png.toString()));
+            render.addAll(gpu.arguments());
+            int code = Main.execute(render.toArray(new String[0]));
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }

@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.jrtr.GLInfo;
+import diffract.jrtr.HeadlessGL;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.UserInputException;
 import diffract.util.Version;
@@ -43,6 +44,7 @@ public final class Main implements Runnable {
     public static int execute(String... args) {
         CommandLine cli = new CommandLine(new Main());
         reportGlOncePerRenderer(System.err);
+        HeadlessGL.useGpu(null); // --gpu, where given, applies to this command only
         boolean debug = java.util.Arrays.asList(args).contains("--debug");
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
             if (debug) {

@@ -23,6 +23,9 @@ import java.util.concurrent.Callable;
                 "shaders as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md)."})
 final class RenderCommand implements Callable<Integer> {
     @Mixin
+    GpuOption gpu;
+
+    @Mixin
     ViewerOptions options;
 
     @Spec

@@ -3,6 +3,7 @@ package diffract.jrtr;
 import com.jogamp.opengl.GLContext;
 import diffract.util.UserInputException;
 
+import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Optional;
@@ -27,19 +28,21 @@ public final class HeadlessGL {
     public static final String PLATFORM_VARIABLE = "DIFFRACT_GL";
 
     private static Integer gpu;
-    private static EglDisplay display;
-    private static String eglProblem;
+    /** Opened EGL displays by choice ("auto" or the device index): each is opened once per process. */
+    private static final Map<String, EglDisplay> DISPLAYS = new HashMap<>();
+    /** Why a choice has no display, by choice. */
+    private static final Map<String, String> PROBLEMS = new HashMap<>();
 
     private HeadlessGL() {
     }
 
-    /** Renders on EGL device {@code index} (as {@code --gpu N}); call before the first context is made. */
-    public static synchronized void useGpu(int index) {
-        if (index < 0) {
+    /**
+     * Later offscreen contexts render on EGL device {@code index} ({@code --gpu N}); null goes back to
+     * {@value #GPU_VARIABLE} or the automatic choice.
+     */
+    public static synchronized void useGpu(Integer index) {
+        if (index != null && index < 0) {
             throw new UserInputException("--gpu must be 0 or more, got " + index);
-        }
-        if (display != null && !Integer.valueOf(index).equals(gpu)) {
-            throw new IllegalStateException("the GPU is chosen before the first GL context");
         }
         gpu = index;
     }
@@ -61,7 +64,7 @@ public final class HeadlessGL {
             return Optional.empty();
         }
         return Optional.of(platform.equals("x11") ? DisplayCheck.NO_DISPLAY_MESSAGE
-                : "no headless OpenGL: " + eglProblem + (platform.equals("egl") ? ""
+                : "no headless OpenGL: " + PROBLEMS.get(choice(environment)) + (platform.equals("egl") ? ""
                 : "; and no X display for the fallback (" + DisplayCheck.NO_DISPLAY_MESSAGE + ")"));
     }
 
@@ -82,7 +85,7 @@ public final class HeadlessGL {
             return jogl;
         }
         synchronized (HeadlessGL.class) {
-            if (display == null) {
+            if (DISPLAYS.isEmpty()) {
                 return null; // no EGL context was ever made in this process
             }
         }
@@ -109,21 +112,28 @@ public final class HeadlessGL {
         return new JoglOffscreenContext();
     }
 
-    /** The EGL display (opened on first use), or null with {@link #eglProblem} set. */
+    /** The EGL display of the current choice (opened on first use), or null with the reason in {@link #PROBLEMS}. */
     private static EglDisplay eglDisplay(Map<String, String> environment) {
-        if (display == null && eglProblem == null) {
+        Integer index = gpuIndex(environment);
+        String choice = choice(environment);
+        if (!DISPLAYS.containsKey(choice) && !PROBLEMS.containsKey(choice)) {
             try {
-                display = EglDisplay.open(gpuIndex(environment));
+                DISPLAYS.put(choice, EglDisplay.open(index));
             } catch (UserInputException e) {
-                if (gpuIndex(environment) != null) {
+                if (index != null) {
                     throw e; // a GPU asked for by number is not silently replaced
                 }
-                eglProblem = e.getMessage();
+                PROBLEMS.put(choice, e.getMessage());
             } catch (LinkageError | RuntimeException e) {
-                eglProblem = "EGL unavailable (" + e + "): install libegl1 libegl-mesa0 libgl1-mesa-dri";
+                PROBLEMS.put(choice, "EGL unavailable (" + e + "): install libegl1 libegl-mesa0 libgl1-mesa-dri");
             }
         }
-        return display;
+        return DISPLAYS.get(choice);
+    }
+
+    private static String choice(Map<String, String> environment) {
+        Integer index = gpuIndex(environment);
+        return index == null ? "auto" : "device " + index;
     }
 
     private static String osName() {

@@ -35,8 +35,13 @@ public final class OffscreenTarget implements AutoCloseable {
      * made (no EGL and no X display), {@link GLVersionException} when it is older than OpenGL 3.3.
      */
     public OffscreenTarget(GLEventListener listener) {
+        this(listener, HeadlessGL.newContext());
+    }
+
+    /** On a given context (tests compare the EGL and JOGL contexts this way). */
+    OffscreenTarget(GLEventListener listener, OffscreenContext context) {
         this.listener = listener;
-        this.context = HeadlessGL.newContext();
+        this.context = context;
         this.drawable = context.drawable();
         try {
             withContext(gl -> {

@@ -10,6 +10,7 @@ import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** {@code diffract bench} on a tiny sweep: the files, the CSV's columns and one row per configuration. */
@@ -35,6 +36,8 @@ class BenchCommandTest {
             assertEquals(header.size(), f.length, line);
             assertEquals("blazed", f[header.indexOf("patch")]);
             assertEquals("24", f[header.indexOf("width")]);
+            assertFalse(f[header.indexOf("gl_renderer")].isBlank(), "the renderer is recorded: " + line);
+            assertFalse(f[header.indexOf("gl_version")].isBlank(), line);
             double ms = Double.parseDouble(f[header.indexOf("ms_per_frame")]);
             double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
             double p95 = Double.parseDouble(f[header.indexOf("deltaE_p95")]);

@@ -28,6 +28,8 @@ class ViewerCliTest {
                 "--coherence-length", "10", "--size", "96x64", "-o", png.toString());
         assertEquals(0, result[0], (String) result[2]);
         assertTrue(((String) result[1]).contains("wrote " + png), (String) result[1]);
+        assertTrue(((String) result[2]).matches("(?s).*diffract: OpenGL \\d\\.\\d.*, GLSL .*"),
+                "render names the OpenGL it draws with: " + result[2]);
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(96, image.getWidth());
         assertEquals(64, image.getHeight());
