@@ -3,7 +3,7 @@ package diffract.app;
 import diffract.bench.AutoCalibration;
 import diffract.bench.AutoChoice;
 import diffract.bench.BenchResult;
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.util.Reporter;
@@ -51,7 +51,7 @@ final class AutoVariant {
     /** As above, among the calibrated configurations the caller can render ({@code usable}). */
     static AutoChoice choose(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, double maxDeltaE,
                              Reporter reporter, Predicate<BenchResult> usable) {
-        DisplayCheck.requireDisplay();
+        HeadlessGL.require();
         List<BenchResult> calibration = AutoCalibration.of(meanSubtracted, phiIDeg, base,
                 AutoCalibration.defaultCacheRoot(), reporter).stream().filter(usable).toList();
         AutoChoice choice = AutoChoice.choose(calibration, maxDeltaE).orElseThrow(() -> {

@@ -41,6 +41,9 @@ import java.util.concurrent.Callable;
                 "The tangent frame's x axis runs along the height field's columns, y along its rows."})
 final class BrdfMapCommand implements Callable<Integer> {
     @Mixin
+    GpuOption gpu;
+
+    @Mixin
     PatchInput input;
 
     @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")

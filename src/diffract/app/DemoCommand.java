@@ -1,9 +1,10 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import diffract.util.UserInputException;
@@ -12,11 +13,13 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 
 /**
  * {@code diffract demo}, the main job: with a screen, the interactive viewer on the procedural snake covered with the
- * Elaphe-like snake-skin patch; without one (the launcher then runs it under a private Xvfb), the same view rendered
+ * Elaphe-like snake-skin patch; without one, the same view rendered (headless EGL, no X server needed)
  * offscreen to {@code out/demo.png}; without any OpenGL, the CPU reference BRDF map of a blazed grating. It prints
  * the path of every picture it writes.
  */
@@ -25,6 +28,9 @@ import java.util.concurrent.Callable;
                 "screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map of",
                 "a blazed grating to out/demo-brdfmap.png)."})
 final class DemoCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
     Path outputDir;
 
@@ -61,20 +67,23 @@ final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        boolean gl = DisplayCheck.problem().isEmpty();
-        boolean screen = gl && !"1".equals(System.getenv(ViewCommand.PRIVATE_XVFB_VARIABLE));
+        boolean screen = ViewCommand.noDisplayProblem(System.getenv(), System.getProperty("os.name", "")).isEmpty();
+        boolean gl = HeadlessGL.problem().isEmpty();
         if (screen) {
             return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
-            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", size, "-o", png.toString());
+            List<String> render = new ArrayList<>(List.of("render", defaultScene(outputDir).toString(), "--size", size,
+                    "-o", png.toString()));
+            render.addAll(gpu.arguments());
+            int code = Main.execute(render.toArray(new String[0]));
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }
             return code;
         }
-        System.err.println("no OpenGL display (install xvfb for the rendered view): CPU BRDF map instead");
+        System.err.println(HeadlessGL.problem().orElse("no OpenGL") + ": CPU BRDF map instead");
         Path patch = outputDir.resolve("demo-blazed-grating.gsf");
         GsfWriter.write(patch, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16));
         Path png = outputDir.resolve("demo-brdfmap.png");

@@ -1,5 +1,7 @@
 package diffract.app;
 
+import diffract.jrtr.GLInfo;
+import diffract.jrtr.HeadlessGL;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.UserInputException;
 import diffract.util.Version;
@@ -41,6 +43,8 @@ public final class Main implements Runnable {
     /** Runs the command line and returns the exit code (tests call this). */
     public static int execute(String... args) {
         CommandLine cli = new CommandLine(new Main());
+        reportGlOncePerRenderer(System.err);
+        HeadlessGL.useGpu(null); // --gpu, where given, applies to this command only
         boolean debug = java.util.Arrays.asList(args).contains("--debug");
         cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
             if (debug) {
@@ -59,5 +63,15 @@ public final class Main implements Runnable {
             return EXIT_USAGE;
         });
         return cli.execute(args);
+    }
+
+    /** Every GPU command says once which OpenGL it draws with (vendor, renderer, version, platform). */
+    private static void reportGlOncePerRenderer(java.io.PrintStream err) {
+        java.util.Set<String> seen = java.util.concurrent.ConcurrentHashMap.newKeySet();
+        GLInfo.reportTo(info -> {
+            if (seen.add(info.toString())) {
+                err.println("diffract: " + info);
+            }
+        });
     }
 }

@@ -1,6 +1,5 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.OffscreenTarget;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -21,8 +20,11 @@ import java.util.concurrent.Callable;
 /** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
 @Command(name = "render", mixinStandardHelpOptions = true,
         description = {"Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and",
-                "shaders as 'diffract view', without a window (runs under xvfb-run; the launcher starts one)."})
+                "shaders as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md)."})
 final class RenderCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
     @Mixin
     ViewerOptions options;
 
@@ -42,7 +44,6 @@ final class RenderCommand implements Callable<Integer> {
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new UserInputException("render writes PNG files; name the output OUT.png");
         }
-        DisplayCheck.requireDisplay();
         long start = System.nanoTime();
         Reporter reporter = Reporter.STDERR;
         ViewerSetup setup = options.setup(reporter);

@@ -58,7 +58,7 @@ public final class AutoCalibration {
                     reporter);
             List<BenchResult> results = runner.run(configs, Map.of(patch.name(), patch), base, r -> { });
             Files.createDirectories(file.getParent());
-            ResultsTable.writeCsv(file, results);
+            ResultsTable.writeCsv(file, results, runner.glInfo());
             return results;
         } catch (IOException e) {
             throw new UserInputException("cannot read or write the calibration " + file + ": " + e.getMessage(), e);

@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.app.BrdfMapDifference;
 import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
@@ -74,7 +75,7 @@ class ExtremesReportTest {
 
     @Test
     void everyExtremeCaseIsFiniteAndMeasuredAgainstTheReference() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         StringBuilder table = new StringBuilder();
         table.append("| case | theta_i | output | variant | expansion | CPU error | GPU error | GPU error, plain series |\n")
                 .append("|---|---|---|---|---|---|---|---|\n");
@@ -157,7 +158,7 @@ class ExtremesReportTest {
      */
     @Test
     void thePlainSeriesFailsWhereTheSwitchSaysItDoes() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         StringBuilder table = new StringBuilder("| max\\|h\\| um | x at 380 nm | estimated plain error in P | automatic"
                 + " choice | GPU plain N = 30 | GPU centred |\n|---|---|---|---|---|---|\n");
         List<String> failures = new ArrayList<>();
@@ -208,7 +209,7 @@ class ExtremesReportTest {
      */
     @Test
     void a4096By4096PatchMeetsTheReferenceInThePlaneOfIncidence() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         int size = 33;
         int middleRow = size / 2; // y = 0 exactly
         HeightField big = SyntheticPatches.blazed(0.8, 0.02, 16, 256, 4096).meanSubtracted();

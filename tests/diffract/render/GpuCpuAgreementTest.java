@@ -3,6 +3,7 @@ package diffract.render;
 import diffract.app.BrdfMapDifference;
 
 import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
@@ -60,7 +61,7 @@ class GpuCpuAgreementTest {
      * degrees, held to {@link #MAX_MEAN} and {@link #MAX_P99} over the disk (other GPU tests reuse it).
      */
     static void assertGpuEqualsCpu(HeightField patch, BrdfSettings settings, String label) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(patch);
         DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, terms);
         try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
@@ -85,7 +86,7 @@ class GpuCpuAgreementTest {
      */
     @Test
     void halfPrecisionTermsGiveAFiniteCloseMap() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS);

@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.app.BrdfMapDifference;
 import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
@@ -25,7 +26,7 @@ class NormalisedTermsGpuTest {
 
     @Test
     void gpuMapOfByteTermsEqualsTheCpuMapOfTheDeNormalisedTerms() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).withHighestOrder(12);

@@ -2,6 +2,7 @@ package diffract.viewer;
 
 import com.jogamp.newt.event.KeyEvent;
 import com.jogamp.newt.event.MouseEvent;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.Variant;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -27,6 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * keys, the background precompute, screenshots. One 128 x 128 window for the class (opening one costs a second).
  */
 @Tag("gl")
+@Tag(GlTestSupport.WINDOW_TAG)
 class ViewerWindowTest {
     static final int SIZE_PX = 128;
     @TempDir
@@ -36,7 +38,7 @@ class ViewerWindowTest {
 
     @BeforeAll
     static void open() {
-        if (!diffract.jrtr.DisplayCheck.problem().isEmpty()) {
+        if (diffract.jrtr.DisplayCheck.problem().isPresent()) {
             return;
         }
         model = ViewerTestSupport.model(ViewerTestSupport.slowTerms(2.0));
@@ -53,7 +55,7 @@ class ViewerWindowTest {
 
     @BeforeEach
     void resetModel() throws InterruptedException {
-        ViewerTestSupport.assumeDisplay();
+        GlTestSupport.assumeWindow();
         model.reset(null);
         awaitFreshFrames(2); // so every test starts from frames of the reset state
     }
