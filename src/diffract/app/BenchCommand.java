@@ -15,9 +15,11 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.Variant;
 import diffract.render.TermFormats;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -91,8 +93,12 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
     double lambdaMaxNm;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws IOException {
+        OutputPaths.requireWritableFolder(outputDir, "-o");
         if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
@@ -112,7 +118,7 @@ final class BenchCommand implements Callable<Integer> {
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
         DisplayCheck.requireDisplay();
         Files.createDirectories(outputDir);
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
                         + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
                 coherenceLengthUm, outputDir));

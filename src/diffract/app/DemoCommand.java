@@ -4,8 +4,10 @@ import diffract.jrtr.DisplayCheck;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
+import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
@@ -30,6 +32,16 @@ final class DemoCommand implements Callable<Integer> {
 
     @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", description = "Picture size (default ${DEFAULT-VALUE}).")
     String size;
+
+    /** The arguments of a command the demo runs, with {@code --quiet} when the demo was given it. */
+    private String[] quietly(String... args) {
+        if (!quiet.quiet) {
+            return args;
+        }
+        String[] out = java.util.Arrays.copyOf(args, args.length + 1);
+        out[args.length] = "--quiet";
+        return out;
+    }
 
     /**
      * The view: the default scene {@code assets/scenes/snake-elaphe.json}. Its numbers: 20 Taylor terms and 10 nm
@@ -59,16 +71,21 @@ final class DemoCommand implements Callable<Integer> {
         }
     }
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
+        OutputPaths.requireWritableFolder(outputDir, "-o");
         boolean gl = DisplayCheck.problem().isEmpty();
         boolean screen = gl && !"1".equals(System.getenv(ViewCommand.PRIVATE_XVFB_VARIABLE));
         if (screen) {
-            return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
+            return Main.execute(quietly("view", defaultScene(outputDir).toString(), "--size", size));
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
-            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", size, "-o", png.toString());
+            int code = Main.execute(quietly("render", defaultScene(outputDir).toString(), "--size", size, "-o",
+                    png.toString()));
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }
@@ -78,8 +95,8 @@ final class DemoCommand implements Callable<Integer> {
         Path patch = outputDir.resolve("demo-blazed-grating.gsf");
         GsfWriter.write(patch, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16));
         Path png = outputDir.resolve("demo-brdfmap.png");
-        int code = Main.execute("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant", "reference",
-                "--exposure", "auto", "--size", "256", "-o", png.toString());
+        int code = Main.execute(quietly("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant",
+                "reference", "--exposure", "auto", "--size", "256", "-o", png.toString()));
         if (code == 0) {
             System.out.println(png.toAbsolutePath());
         }

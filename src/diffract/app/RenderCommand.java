@@ -2,6 +2,7 @@ package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.OffscreenTarget;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.ViewerModel;
@@ -26,6 +27,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
+    @Mixin
+    QuietOption quiet;
+
     @Spec
     CommandSpec spec;
 
@@ -42,9 +46,10 @@ final class RenderCommand implements Callable<Integer> {
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new UserInputException("render writes PNG files; name the output OUT.png");
         }
+        OutputPaths.requireWritableFile(output, "-o", "render.png");
         DisplayCheck.requireDisplay();
         long start = System.nanoTime();
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         ViewerSetup setup = options.setup(reporter);
         int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);

@@ -60,6 +60,8 @@ public final class BakedTable {
         int n = grid.uvSamples();
         float[] rgb = new float[Math.multiplyExact(3, Math.toIntExact(grid.texels()))];
         ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
+        String task = String.format(Locale.ROOT, "baking the %d x %d x %d table", n, n, grid.wSamples());
+        reporter.progress(task, 0);
         try (OffscreenTarget target = new OffscreenTarget(new Renderer(new Group("bake").add(quad), new Camera(),
                 new Frustum()))) {
             for (int k = 0; k < grid.wSamples(); k++) {
@@ -75,7 +77,7 @@ public final class BakedTable {
                         rgb[to + 2] = rgba[from + 2];
                     }
                 }
-                reporter.progress("baking", (k + 1.0) / grid.wSamples());
+                reporter.progress(task, (k + 1.0) / grid.wSamples());
             }
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
