@@ -458,4 +458,67 @@ class FaultsCliTest {
         long allowed = seconds < 2 ? 0 : 2 + (long) ((seconds - 2) / 5);
         assertTrue(progressLines <= allowed, progressLines + " progress lines in " + seconds + " s: " + err(result));
     }
+    /** The smaller faults: each message names the file, the value or the line, in the user's words. */
+    @Test
+    void messagesNameTheValueTheLineAndTheFileWithoutInternals() throws IOException {
+        Path png = dir.resolve("map.png");
+        Path pfm = dir.resolve("map.pfm");
+        assertEquals(0, run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "flss",
+                "--terms", "4", "--size", "8", "-o", png.toString(), "--pfm", pfm.toString())[0]);
+        assertOneLineRefusal(run("compare", png.toString(), pfm.toString()),
+                png + ": not a PFM file: it does not start with PF or Pf (it is a PNG); compare reads the float maps"
+                        + " brdfmap writes with --pfm MAP.pfm");
+        assertOneLineRefusal(run("patch", "blazed", "--period", "0", "-o", dir.resolve("p.gsf").toString()),
+                "--period must be a positive number of micrometres, got 0.0");
+        assertOneLineRefusal(run("patch", "sinusoid", "--samples-per-period", "1", "-o",
+                dir.resolve("p.gsf").toString()), "--samples-per-period must be at least 2, got 1");
+
+        // 100 arrays nested on lines 3, 4, ...: the 64th array (depth 65 under the root object) is on line 66
+        Path deep = dir.resolve("deep.json");
+        Files.writeString(deep, "{\n\"camera\":\n" + "[\n".repeat(100) + "]".repeat(100) + "\n}\n");
+        assertOneLineRefusal(run("render", deep.toString(), "-o", dir.resolve("r.png").toString()),
+                "deep.json:66: (json): objects and arrays nest more than 64 levels deep here");
+        assertFalse(err(run("render", deep.toString(), "-o", dir.resolve("r.png").toString()))
+                .contains("StreamReadConstraints"));
+
+        Object[] none = run();
+        assertEquals(2, none[0]);
+        assertEquals(List.of("diffract: missing command: one of demo, precompute, brdfmap, compare, convert-terms,"
+                + " patch, view, render, bench", "try 'diffract --help'"), err(none).lines().toList());
+    }
+
+    /**
+     * The aliasing note follows the light: the default grating (0.1 um pixels) aliases for no wavelength at
+     * theta_i = 30 (|u| <= 1.5, lambda < 300 nm), and for 380-393 nm at 75 degrees (|u| <= 1.966); precompute knows
+     * no light and notes nothing. One line for both axes of a square pixel.
+     */
+    @Test
+    void theAliasingNoteFollowsTheLightAndSparesTheDefaultGrating() {
+        Path patch = dir.resolve("default.gsf");
+        assertEquals(0, run("patch", "blazed", "-o", patch.toString())[0]);
+        Object[] precompute = run("precompute", "--patch", patch.toString(), "--terms", "4", "-o",
+                dir.resolve("T").toString());
+        assertFalse(err(precompute).contains("lambda/"), err(precompute));
+        Object[] at30 = run("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant", "flss", "--terms",
+                "4", "--terms-dir", dir.resolve("T").toString(), "--size", "8", "-o", dir.resolve("m.png").toString());
+        assertFalse(err(at30).contains("lambda/"), err(at30));
+        Object[] at75 = run("brdfmap", "--patch", patch.toString(), "--theta-i", "75", "--variant", "flss", "--terms",
+                "4", "--terms-dir", dir.resolve("T").toString(), "--size", "8", "-o", dir.resolve("m.png").toString());
+        List<String> notes = err(at75).lines().filter(l -> l.contains("lambda/")).toList();
+        assertEquals(List.of("pixel size 0.1 um along x and y is coarser than lambda/3.932 for 380-393.2 nm: those"
+                + " wavelengths alias only towards the rim of the map (views near grazing) with the light at 75"
+                + " degrees; <= 0.09665 um avoids it"), notes);
+    }
+
+    /** The plain series asked for on a tall patch: the warning names the option that avoids it, not the one in use. */
+    @Test
+    void thePlainSeriesWarningNamesTheCentredExpansion() throws IOException {
+        Path tall = dir.resolve("tall.gsf");
+        GsfWriter.write(tall, SyntheticPatches.blazed(2.5, 2.0, 50, 4, 4));
+        Object[] plain = run("brdfmap", "--patch", tall.toString(), "--theta-i", "30", "--variant", "flss",
+                "--expansion", "plain", "--size", "8", "-o", dir.resolve("m.png").toString());
+        assertEquals(0, plain[0], err(plain));
+        assertTrue(err(plain).contains("--expansion centred avoids it"), err(plain));
+        assertFalse(err(plain).contains("use --expansion auto"), err(plain));
+    }
 }
