@@ -231,10 +231,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (gpu) {
             try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, precision, reporter)) {
                 reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
-                if (map.bakedTable() != null) {
-                    System.out.printf(Locale.ROOT, "baked %s in %.1f s%n", map.bakedTable().describe(),
-                            map.bakedTable().bakeSeconds());
-                }
+                // the bake's own note says what it baked and how long it took
                 if (lambdaNm != null) {
                     rho = map.monochromatic(wi, lambdaNm, size);
                 } else {

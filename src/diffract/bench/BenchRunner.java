@@ -75,7 +75,10 @@ public final class BenchRunner {
             frameMsSum += r.msPerFrame();
             double elapsedS = (System.nanoTime() - start) * 1e-9;
             if (progressTask != null) {
-                reporter.progress(progressTask + " " + configs.size() + " configurations", (i + 1.0) / configs.size());
+                // the share of the time, from the same model as the lines' ETA: the time left it implies is that ETA
+                double left = eta(elapsedS, i + 1, doneWork, frameMsSum, configs.size(), totalWork);
+                reporter.progress(progressTask + " " + configs.size() + " configurations",
+                        i + 1 == configs.size() ? 1.0 : elapsedS / (elapsedS + left));
                 continue;
             }
             reporter.info(String.format(Locale.ROOT, "[%d/%d] %-16s %-5s N=%-2d step %-2s nm R=%-4s tol %-6s %-5s %dpx: "

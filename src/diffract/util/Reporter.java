@@ -25,9 +25,6 @@ public interface Reporter {
      */
     Reporter STDERR = new ConsoleReporter(false);
 
-    /** Warnings only (the command line's {@code --quiet}). */
-    Reporter QUIET = new ConsoleReporter(true);
-
     /** Says nothing. */
     Reporter SILENT = new Reporter() {
         @Override
