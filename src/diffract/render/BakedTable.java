@@ -15,6 +15,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
+import diffract.util.UserInputException;
 
 import java.util.Locale;
 
@@ -58,7 +59,11 @@ public final class BakedTable {
         DiffractionTextures textures = DiffractionTextures.of(terms, flss, FloatTextureArray.Precision.FLOAT32);
         Material material = DiffractionMaterials.bake(textures, flss, grid);
         int n = grid.uvSamples();
-        float[] rgb = new float[Math.multiplyExact(3, Math.toIntExact(grid.texels()))];
+        if (3 * grid.texels() > Integer.MAX_VALUE - 8) {
+            throw new UserInputException(String.format(Locale.ROOT, "a %d x %d x %d baked table holds more samples than"
+                    + " one array can (2^31 floats); use fewer samples", n, n, grid.wSamples()));
+        }
+        float[] rgb = new float[(int) (3 * grid.texels())];
         ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
         String task = String.format(Locale.ROOT, "baking the %d x %d x %d table", n, n, grid.wSamples());
         reporter.progress(task, 0);
