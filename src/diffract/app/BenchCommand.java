@@ -15,6 +15,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.Variant;
 import diffract.render.TermFormats;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
@@ -95,6 +96,9 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
     double lambdaMaxNm;
 
+    @Mixin
+    QuietOption quiet;
+
     @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/bench.md): the default scene "
             + "at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, ms/frame and "
             + "CIEDE2000; 1/8 of the size on a software rasteriser. Writes gpu-suite.csv, gpu-suite.md and scene-*.png.")
@@ -114,13 +118,14 @@ final class BenchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
+        OutputPaths.requireWritableFolder(outputDir, "-o");
         if (gpuSuite) {
             HeadlessGL.require();
             long start = System.nanoTime();
             List<Variant> suiteVariants = variants == null ? GpuSuite.gpuVariants()
                     : SweepPlan.list(variants).stream().map(Variant::parse).toList();
             List<GpuSuite.Row> rows = new GpuSuite(outputDir, suiteSize == null ? null : ViewerOptions.parseSize(suiteSize),
-                    errorSizePx, frames, suiteVariants, Reporter.STDERR).run();
+                    errorSizePx, frames, suiteVariants, quiet.reporter()).run();
             System.out.printf(Locale.ROOT, "gpu suite: %d rows in %.0f s%nwrote %s, %s%n", rows.size(),
                     (System.nanoTime() - start) * 1e-9, outputDir.resolve("gpu-suite.csv"), outputDir.resolve("gpu-suite.md"));
             return 0;
@@ -144,7 +149,7 @@ final class BenchCommand implements Callable<Integer> {
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
         HeadlessGL.require();
         Files.createDirectories(outputDir);
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
                         + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
                 coherenceLengthUm, outputDir));

@@ -22,7 +22,9 @@ import diffract.precompute.Precomputation;
 import diffract.precompute.TaylorTermComputer;
 import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
+import diffract.bench.AutoCalibration;
 import diffract.util.ImageFiles;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
@@ -45,6 +47,9 @@ final class BrdfMapCommand implements Callable<Integer> {
 
     @Mixin
     PatchInput input;
+
+    @Mixin
+    QuietOption quiet;
 
     @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
     double thetaIDeg;
@@ -174,7 +179,11 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (time && !gpu) {
             throw new UserInputException("--time measures the GPU: add --engine gpu");
         }
-        Reporter reporter = Reporter.STDERR;
+        OutputPaths.requireWritableFile(output, "-o", "map.png");
+        if (pfm != null) {
+            OutputPaths.requireWritableFile(pfm, "--pfm", "map.pfm");
+        }
+        Reporter reporter = quiet.reporter();
         long start = System.nanoTime();
         HeightField field = input.load(reporter);
         boolean automaticWindow = windowRadiusText.trim().equalsIgnoreCase("auto");
@@ -183,7 +192,8 @@ final class BrdfMapCommand implements Callable<Integer> {
                 automaticWindow ? 1 : parseWindowRadius(windowRadiusText), lambdaMinNm, lambdaMaxNm, lambdaStepNm,
                 coherenceLengthUm / 4.0, refractiveIndex, pqReplicas, taylorTolerance, automaticWindow,
                 bakedSamples[0], bakedSamples[1], expansionMode);
-        if (auto) {
+        if (auto) { // the calibration computes reference maps of this patch
+            MemoryCheck.brdfMap(field, settings.withVariant(Variant.REFERENCE), AutoCalibration.SIZE_PX, 0, null);
             AutoChoice choice = AutoVariant.choose(field, phiIDeg, settings, maxDeltaE, reporter);
             // auto's calibration measured the thesis' series at each N: its choice renders on that same path
             settings = choice.chosen().config().settings().withExpansion(
@@ -192,8 +202,9 @@ final class BrdfMapCommand implements Callable<Integer> {
             precision = choice.chosen().config().precision();
             textureFormat = choice.chosen().config().textureFormat();
         }
+        MemoryCheck.brdfMap(field, settings, size, thetaIDeg, lambdaNm);
         SamplingCheck.warnAboutAliasing(field, lambdaNm != null ? lambdaNm : lambdaMinNm,
-                lambdaNm != null ? lambdaNm : lambdaMaxNm, reporter);
+                lambdaNm != null ? lambdaNm : lambdaMaxNm, thetaIDeg, reporter);
         TaylorTerms terms = null;
         if (settings.variant() != Variant.REFERENCE) {
             terms = termsDir != null
@@ -221,12 +232,9 @@ final class BrdfMapCommand implements Callable<Integer> {
         float[] rho = null;
         float[] xyz = null;
         if (gpu) {
-            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, precision)) {
+            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, settings, precision, reporter)) {
                 reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
-                if (map.bakedTable() != null) {
-                    System.out.printf(Locale.ROOT, "baked %s in %.1f s%n", map.bakedTable().describe(),
-                            map.bakedTable().bakeSeconds());
-                }
+                // the bake's own note says what it baked and how long it took
                 if (lambdaNm != null) {
                     rho = map.monochromatic(wi, lambdaNm, size);
                 } else {
@@ -247,6 +255,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         }
         if (lambdaNm != null) {
             double exposure = exposure(rho, wi, reporter);
+            warnIfDark(rho, wi, exposure, settings, field, reporter);
             float[] grey = new float[rho.length];
             for (int i = 0; i < rho.length; i++) {
                 grey[i] = (float) Srgb.encode(rho[i] * exposure);
@@ -261,6 +270,7 @@ final class BrdfMapCommand implements Callable<Integer> {
                 luminance[p] = xyz[3 * p + 1];
             }
             double exposure = exposure(luminance, wi, reporter);
+            warnIfDark(luminance, wi, exposure, settings, field, reporter);
             float[] display = new float[xyz.length];
             float[] linear = new float[xyz.length];
             for (int p = 0; p < xyz.length; p += 3) {
@@ -321,6 +331,24 @@ final class BrdfMapCommand implements Callable<Integer> {
         double e = AutoExposure.of(luminance, size, -wi.x(), -wi.y());
         reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
         return e;
+    }
+
+    /** A black (or nearly black) picture says so, and which option shows it. */
+    private void warnIfDark(float[] luminance, Direction wi, double exposure, BrdfSettings settings,
+                            HeightField field, Reporter reporter) {
+        double brightest = 0;
+        for (float value : luminance) {
+            brightest = Math.max(brightest, value);
+        }
+        DarkMapNotice.check(brightest, AutoExposure.brightestDiffracted(luminance, size, -wi.x(), -wi.y()), exposure,
+                fixedExposure() == null, settings, field.widthUm(), field.heightExtentUm(), size)
+                .ifPresent(n -> {
+                    if (n.warning()) {
+                        reporter.warn(n.text());
+                    } else {
+                        reporter.info(n.text());
+                    }
+                });
     }
 
     private static int parseWindowRadius(String text) {

@@ -7,10 +7,12 @@ import diffract.precompute.TermFolders;
 import diffract.precompute.TermSidecar;
 import diffract.precompute.TermStore;
 import diffract.precompute.ThesisFormat;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.util.Version;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -38,9 +40,13 @@ final class ConvertTermsCommand implements Callable<Integer> {
             description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
     String heightUnit;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws IOException {
-        Reporter reporter = Reporter.STDERR;
+        OutputPaths.requireWritableFolder(to, "--to");
+        Reporter reporter = quiet.reporter();
         ThesisFormat.HeightUnit unit = ThesisFormat.HeightUnit.parse(heightUnit);
         TermFolders.Format source = TermFolders.detect(from);
         TermFolders.Format target = format != null ? TermFolders.Format.parse(format)

@@ -7,6 +7,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
+import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
@@ -37,6 +38,16 @@ final class DemoCommand implements Callable<Integer> {
     @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", description = "Picture size (default ${DEFAULT-VALUE}).")
     String size;
 
+    /** The arguments of a command the demo runs, with {@code --quiet} when the demo was given it. */
+    private String[] quietly(String... args) {
+        if (!quiet.quiet) {
+            return args;
+        }
+        String[] out = java.util.Arrays.copyOf(args, args.length + 1);
+        out[args.length] = "--quiet";
+        return out;
+    }
+
     /**
      * The view: the default scene {@code assets/scenes/snake-elaphe.json}. Its numbers: 20 Taylor terms and 10 nm
      * steps keep llvmpipe near a frame a second; a 10 um coherence length (sigma_s = 2.5 um, a less coherent source
@@ -65,19 +76,23 @@ final class DemoCommand implements Callable<Integer> {
         }
     }
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws Exception {
+        OutputPaths.requireWritableFolder(outputDir, "-o");
         boolean screen = ViewCommand.noDisplayProblem(System.getenv(), System.getProperty("os.name", "")).isEmpty();
         boolean gl = HeadlessGL.problem().isEmpty();
         if (screen) {
-            return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
+            return Main.execute(quietly("view", defaultScene(outputDir).toString(), "--size", size));
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
             List<String> render = new ArrayList<>(List.of("render", defaultScene(outputDir).toString(), "--size", size,
                     "-o", png.toString()));
             render.addAll(gpu.arguments());
-            int code = Main.execute(render.toArray(new String[0]));
+            int code = Main.execute(quietly(render.toArray(new String[0])));
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }
@@ -87,8 +102,8 @@ final class DemoCommand implements Callable<Integer> {
         Path patch = outputDir.resolve("demo-blazed-grating.gsf");
         GsfWriter.write(patch, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16));
         Path png = outputDir.resolve("demo-brdfmap.png");
-        int code = Main.execute("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant", "reference",
-                "--exposure", "auto", "--size", "256", "-o", png.toString());
+        int code = Main.execute(quietly("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant",
+                "reference", "--exposure", "auto", "--size", "256", "-o", png.toString()));
         if (code == 0) {
             System.out.println(png.toAbsolutePath());
         }

@@ -3,8 +3,11 @@ package diffract.app;
 import diffract.optics.HeightField;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.io.GsfWriter;
+import diffract.util.MemoryEstimate;
+import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -47,16 +50,56 @@ final class PatchCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf")
     Path output;
 
+    @Mixin
+    QuietOption quiet;
+
+    /** A .gsf's float32 heights go through one byte buffer: at most this many samples (2 GB). */
+    static final long MAX_SAMPLES = (Integer.MAX_VALUE - 1024) / 4;
+
     @Override
     public Integer call() throws IOException {
-        HeightField field = spec().build();
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gsf")) {
             throw new UserInputException("patch writes Gwyddion .gsf files; name the output FILE.gsf");
         }
+        OutputPaths.requireWritableFile(output, "-o", "patch.gsf");
+        ProceduralPatches.Spec spec = spec();
+        if (spec.kind().equals("blazed") || spec.kind().equals("sinusoid")) {
+            checkGrating();
+        }
+        HeightField field = spec.build();
         GsfWriter.write(output, field);
         System.out.printf(Locale.ROOT, "wrote %s: %d x %d pixels of %.4f um (%.2f x %.2f um)%n", output, field.cols(),
                 field.rows(), field.pixelSizeXUm(), field.widthUm(), field.heightExtentUm());
         return 0;
+    }
+
+    /** Each grating option in its range, named; the size within what the heap and one .gsf hold. */
+    private void checkGrating() {
+        if (!(periodUm > 0) || !Double.isFinite(periodUm)) {
+            throw new UserInputException("--period must be a positive number of micrometres, got " + periodUm);
+        }
+        if (!(heightUm >= 0) || !Double.isFinite(heightUm)) {
+            throw new UserInputException("--height must be >= 0 um, got " + heightUm);
+        }
+        if (samplesPerPeriod < 2) {
+            throw new UserInputException("--samples-per-period must be at least 2, got " + samplesPerPeriod);
+        }
+        if (periods < 1) {
+            throw new UserInputException("--periods must be at least 1, got " + periods);
+        }
+        if (rows < 1) {
+            throw new UserInputException("--rows must be at least 1, got " + rows);
+        }
+        long cols = (long) samplesPerPeriod * periods;
+        long samples = cols * rows; // < 2^62: no overflow
+        // the heights, the field's own copy and the file's float32 buffer
+        MemoryEstimate.of("heights, their copy and the file's buffer", 20 * samples).require(String.format(
+                Locale.ROOT, "a %d x %d grating", cols, rows), "use fewer --periods, --rows or --samples-per-period");
+        if (samples > MAX_SAMPLES) {
+            throw new UserInputException(String.format(Locale.ROOT, "a %d x %d grating has %.3g samples, more than one"
+                    + " .gsf file holds here (%d); use fewer --periods, --rows or --samples-per-period", cols, rows,
+                    (double) samples, MAX_SAMPLES));
+        }
     }
 
     /** The CLI's kind as a procedural patch: gratings take the options, the snake patches their defaults and seed. */

@@ -4,6 +4,7 @@ import diffract.optics.HeightField;
 import diffract.optics.io.SamplingCheck;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -20,6 +21,9 @@ import java.util.concurrent.Callable;
 final class PrecomputeCommand implements Callable<Integer> {
     @Mixin
     PatchInput input;
+
+    @Mixin
+    QuietOption quiet;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
     Order order;
@@ -49,9 +53,11 @@ final class PrecomputeCommand implements Callable<Integer> {
     public Integer call() {
         long start = System.nanoTime();
         TermFolders.Format target = TermFolders.Format.parse(format); // a typo fails before any work
-        Reporter reporter = Reporter.STDERR;
+        OutputPaths.requireWritableFolder(output, "-o");
+        Reporter reporter = quiet.reporter();
         HeightField field = input.load(reporter);
-        SamplingCheck.warnAboutAliasing(field, lambdaMinNm, 780, reporter);
+        // no light here: only what aliases for every light (a render notes what its own light adds)
+        SamplingCheck.warnAboutAliasing(field, lambdaMinNm, 780, 0, reporter);
         Precomputation.Request request = new Precomputation.Request(field, input.patch.getFileName().toString(),
                 input.maxHeightUm, order.highestOrder, order.tolerance, lambdaMinNm);
         boolean reused;

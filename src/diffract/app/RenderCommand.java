@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.jrtr.OffscreenTarget;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.ViewerModel;
@@ -28,6 +29,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
+    @Mixin
+    QuietOption quiet;
+
     @Spec
     CommandSpec spec;
 
@@ -44,8 +48,9 @@ final class RenderCommand implements Callable<Integer> {
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new UserInputException("render writes PNG files; name the output OUT.png");
         }
+        OutputPaths.requireWritableFile(output, "-o", "render.png");
         long start = System.nanoTime();
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         ViewerSetup setup = options.setup(reporter);
         int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);

@@ -32,6 +32,9 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
+    @Mixin
+    QuietOption quiet;
+
     @Spec
     CommandSpec spec;
 
@@ -55,7 +58,7 @@ final class ViewCommand implements Callable<Integer> {
         if (problem.isPresent()) {
             throw new UserInputException(problem.get());
         }
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         ViewerSetup setup = options.setup(reporter);
         int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
         ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);

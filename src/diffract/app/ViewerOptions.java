@@ -224,7 +224,7 @@ final class ViewerOptions {
     ViewerSetup setup(Reporter reporter) {
         if (scene != null) {
             fabricated = Fabricator.fabricate(parsedScene != null ? parsedScene : SceneFile.load(scene), reporter);
-            return withOverrides(fabricated.setup());
+            return withOverrides(fabricated.setup(), reporter);
         }
         HeightField field;
         String name;
@@ -250,7 +250,7 @@ final class ViewerOptions {
     }
 
     /** The scene's setup with what the command line names in its place. */
-    private ViewerSetup withOverrides(ViewerSetup s) {
+    private ViewerSetup withOverrides(ViewerSetup s, Reporter reporter) {
         BrdfSettings settings = s.settings();
         if (given("--variant")) {
             settings = settings.withVariant(settings().variant());
@@ -273,7 +273,7 @@ final class ViewerOptions {
         if (given("--auto-window")) {
             settings = settings.withAutomaticWindowRadius(true);
         }
-        settings = resolveAuto(s.patch(), given("--phi-i") ? phiIDeg : s.light().phiDeg(), settings, Reporter.STDERR);
+        settings = resolveAuto(s.patch(), given("--phi-i") ? phiIDeg : s.light().phiDeg(), settings, reporter);
         OrbitCamera c = s.camera();
         OrbitCamera camera = new OrbitCamera(given("--azimuth") ? azimuthDeg : c.azimuthDeg(),
                 given("--elevation") ? elevationDeg : c.elevationDeg(), given("--distance") ? distance : c.distance(),

@@ -16,6 +16,7 @@ import diffract.optics.PhaseCentredTerms;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
 import java.util.function.Supplier;
@@ -41,7 +42,13 @@ public final class GpuBrdfMap implements AutoCloseable {
      * @throws UserInputException for the reference variant, or when no GL context can be opened
      */
     public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, () -> DiffractionTextures.of(terms, settings, precision)), settings);
+        this(terms, settings, precision, Reporter.SILENT);
+    }
+
+    /** As above; a baked table (BAKED) not cached yet is baked first, with progress on {@code reporter}. */
+    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision,
+                      Reporter reporter) {
+        this(checkVariant(settings, () -> DiffractionTextures.of(terms, settings, precision, reporter)), settings);
     }
 
     /** The phase-centred expansion (issue #6): the same maps for patches too tall for the thesis' series. */
@@ -51,8 +58,14 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /** The map of a scene on the path {@link TaylorEvaluation#choose} picked for it. */
     public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision) {
+        return of(evaluation, settings, precision, Reporter.SILENT);
+    }
+
+    /** As above, with the bake's progress (BAKED) on {@code reporter}. */
+    public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision,
+                                Reporter reporter) {
         return evaluation.isPhaseCentred() ? new GpuBrdfMap(evaluation.centredTerms(), settings, precision)
-                : new GpuBrdfMap(evaluation.plainTerms(), settings, precision);
+                : new GpuBrdfMap(evaluation.plainTerms(), settings, precision, reporter);
     }
 
     private static DiffractionTextures checkVariant(BrdfSettings settings, Supplier<DiffractionTextures> textures) {
