@@ -9,15 +9,17 @@ import diffract.bench.ReferenceMaps;
 import diffract.bench.ResultsTable;
 import diffract.bench.SweepPlan;
 import diffract.bench.Targets;
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -44,6 +46,9 @@ import java.util.concurrent.Callable;
                 + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
                 + "maps are cached there.")
 final class BenchCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
     Path outputDir;
 
@@ -94,8 +99,42 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
     double lambdaMaxNm;
 
+    @Mixin
+    QuietOption quiet;
+
+    @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/headless-gl.md): the "
+            + "default scene at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, "
+            + "ms/frame and CIEDE2000; 1/8 of the size on a software rasteriser. Writes gpu-suite.csv, gpu-suite.md "
+            + "and scene-*.png.")
+    boolean gpuSuite;
+
+    @Option(names = "--suite-size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+            description = "GPU suite: the scene's size (default 1920x1080, 240x135 on llvmpipe); the maps are HxH.")
+    OptionTypes.ImageSize suiteSize;
+
+    @Option(names = "--error-size", defaultValue = "128", paramLabel = "S",
+            description = "GPU suite: size of the maps compared with the CPU reference (default ${DEFAULT-VALUE}).")
+    int errorSizePx;
+
+    @Option(names = "--frames", defaultValue = "10", paramLabel = "N",
+            description = "GPU suite: timed frames per row, median (default ${DEFAULT-VALUE}).")
+    int frames;
+
     @Override
     public Integer call() throws IOException {
+        OutputPaths.requireWritableFolder(outputDir, "-o");
+        if (gpuSuite) {
+            HeadlessGL.require();
+            long start = System.nanoTime();
+            List<Variant> suiteVariants = variants == null ? GpuSuite.gpuVariants() : variants;
+            int[] size = suiteSize == null ? null : new int[] {suiteSize.width(), suiteSize.height()};
+            List<GpuSuite.Row> rows = new GpuSuite(outputDir, size, errorSizePx, frames, suiteVariants,
+                    quiet.reporter()).run();
+            System.out.printf(Locale.ROOT, "gpu suite: %d rows in %.0f s%nwrote %s, %s%n", rows.size(),
+                    (System.nanoTime() - start) * 1e-9, outputDir.resolve("gpu-suite.csv"),
+                    outputDir.resolve("gpu-suite.md"));
+            return 0;
+        }
         if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
@@ -111,9 +150,9 @@ final class BenchCommand implements Callable<Integer> {
             throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
         }
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
-        DisplayCheck.requireDisplay();
+        HeadlessGL.require();
         Files.createDirectories(outputDir);
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
                         + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
                 coherenceLengthUm, outputDir));
@@ -125,12 +164,12 @@ final class BenchCommand implements Callable<Integer> {
         List<BenchResult> results = runner.run(configs, patchMap, base, r -> {
             done.add(r);
             try {
-                ResultsTable.writeCsv(csv, done); // after every configuration: an interrupted run keeps its rows
+                ResultsTable.writeCsv(csv, done, runner.glInfo()); // after every configuration: an interrupted run keeps its rows
             } catch (IOException e) {
                 throw new UserInputException("cannot write " + csv + ": " + e.getMessage(), e);
             }
         });
-        ResultsTable.writeCsv(csv, results);
+        ResultsTable.writeCsv(csv, results, runner.glInfo());
         Files.writeString(outputDir.resolve("results.md"), ResultsTable.markdown(results), StandardCharsets.UTF_8);
         Files.writeString(outputDir.resolve("pareto.md"), ResultsTable.markdown(results, true), StandardCharsets.UTF_8);
         List<Targets.Outcome> outcomes = Targets.of(results, sizePx, runner::maps,
@@ -195,8 +234,9 @@ final class BenchCommand implements Callable<Integer> {
                 + (gl == null ? "no GL" : gl.renderer() + ", OpenGL " + gl.version());
     }
 
-    private static String machineShort(GLInfo gl) {
-        return gl == null ? "no GL" : gl.renderer();
+    /** For plot titles: the renderer and the OpenGL version string. */
+    static String machineShort(GLInfo gl) {
+        return gl == null ? "no GL" : gl.renderer() + ", OpenGL " + gl.version();
     }
 
     private static String cpuModel() {

@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.bench.AutoCalibration;
 import diffract.bench.AutoChoice;
 import diffract.bench.AutoVariant;
 import diffract.colour.ColourPath;
@@ -20,6 +21,7 @@ import diffract.precompute.ThesisFormat;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
 import diffract.util.ImageFiles;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.ArgGroup;
@@ -42,10 +44,16 @@ final class BrdfMapCommand implements Callable<Integer> {
     enum Engine { CPU, GPU }
 
     @Mixin
+    GpuOption gpu;
+
+    @Mixin
     PatchOptions patch;
 
     @Mixin
     BrdfOptions brdf;
+
+    @Mixin
+    QuietOption quiet;
 
     @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
     double thetaIDeg;
@@ -117,16 +125,21 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         Engine where = validate();
-        Reporter reporter = Reporter.STDERR;
+        OutputPaths.requireWritableFile(output, "-o", "map.png");
+        if (picture.pfm != null) {
+            OutputPaths.requireWritableFile(picture.pfm, "--pfm", "map.pfm");
+        }
+        Reporter reporter = quiet.reporter();
         long start = System.nanoTime();
         NamedPatch named = patch.load("", reporter);
         HeightField field = named.meanSubtracted();
         double phi = light.phiIDeg != null ? light.phiIDeg : patch.periodAzimuthDeg("");
         BrdfSettings settings = settings(field, phi, reporter);
+        MemoryCheck.brdfMap(field, settings, picture.size, thetaIDeg, light.lambdaNm);
         double shortestLambdaNm = light.lambdaNm != null ? Math.min(light.lambdaNm, settings.spectral().lambdaMinNm())
                 : settings.spectral().lambdaMinNm();
         SamplingCheck.warnAboutAliasing(field, light.lambdaNm != null ? light.lambdaNm : settings.spectral().lambdaMinNm(),
-                light.lambdaNm != null ? light.lambdaNm : settings.spectral().lambdaMaxNm(), reporter);
+                light.lambdaNm != null ? light.lambdaNm : settings.spectral().lambdaMaxNm(), thetaIDeg, reporter);
         DiffractionPipeline pipeline = engines.termsDir != null
                 ? DiffractionPipeline.withTerms(named,
                         TermFolders.read(engines.termsDir, engines.termsHeightUnit, reporter), engines.termsDir.toString())
@@ -138,7 +151,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phi);
         float[] map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
                 : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
-        write(map, wi, reporter);
+        write(map, wi, settings, field, reporter);
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, picture.size, picture.size,
                 settings.variant().label(), where == Engine.GPU ? ", gpu" : "",
                 light.lambdaNm != null ? ", " + light.lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
@@ -191,6 +204,8 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (!brdf.auto()) {
             return settings;
         }
+        // the calibration computes reference maps of this patch
+        MemoryCheck.brdfMap(field, settings.with(b -> b.variant(Variant.REFERENCE)), AutoCalibration.SIZE_PX, 0, null);
         AutoChoice choice = AutoVariant.choose(field, phiDeg, settings, brdf.maxDeltaE, reporter);
         System.out.println(choice.explanation());
         return AutoVariant.settings(choice, settings.taylor().expansion());
@@ -200,10 +215,7 @@ final class BrdfMapCommand implements Callable<Integer> {
                            Reporter reporter) {
         try (GpuBrdfMap map = pipeline.gpuMap(settings, shortestLambdaNm, reporter)) {
             reporter.info("GPU: " + map.info().renderer() + ", " + map.info().version());
-            if (map.bakedTable() != null) {
-                System.out.printf(Locale.ROOT, "baked %s in %.1f s%n", map.bakedTable().describe(),
-                        map.bakedTable().bakeSeconds());
-            }
+            // the bake's own note says what it baked and how long it took
             float[] values = light.lambdaNm != null ? map.monochromatic(wi, light.lambdaNm, picture.size)
                     : map.xyz(wi, picture.size);
             if (engines.time) {
@@ -225,7 +237,8 @@ final class BrdfMapCommand implements Callable<Integer> {
     }
 
     /** The PNG (display-encoded at the exposure) and the optional PFM (linear) of a colour or monochromatic map. */
-    private void write(float[] map, Direction wi, Reporter reporter) throws IOException {
+    private void write(float[] map, Direction wi, BrdfSettings settings, HeightField field, Reporter reporter)
+            throws IOException {
         int channels = light.lambdaNm != null ? 1 : 3;
         float[] luminance = new float[picture.size * picture.size];
         for (int p = 0; p < luminance.length; p++) {
@@ -236,6 +249,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (picture.exposure.automatic()) {
             reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
         }
+        warnIfDark(luminance, wi, e, settings, field, reporter);
         float[] display = new float[map.length];
         float[] linear = new float[map.length];
         for (int p = 0; p < map.length; p += channels) {
@@ -255,5 +269,23 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (picture.pfm != null) {
             ImageFiles.writePfm(picture.pfm, linear, picture.size, picture.size, channels);
         }
+    }
+
+    /** A black (or nearly black) picture says so, and which option shows it. */
+    private void warnIfDark(float[] luminance, Direction wi, double exposure, BrdfSettings settings,
+                            HeightField field, Reporter reporter) {
+        double brightest = 0;
+        for (float value : luminance) {
+            brightest = Math.max(brightest, value);
+        }
+        DarkMapNotice.check(brightest, AutoExposure.brightestDiffracted(luminance, picture.size, -wi.x(), -wi.y()),
+                exposure, picture.exposure.automatic(), settings, field.widthUm(), field.heightExtentUm(),
+                picture.size).ifPresent(n -> {
+                    if (n.warning()) {
+                        reporter.warn(n.text());
+                    } else {
+                        reporter.info(n.text());
+                    }
+                });
     }
 }

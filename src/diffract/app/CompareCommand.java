@@ -6,6 +6,7 @@ import diffract.optics.BrdfMapDifference;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -32,6 +33,9 @@ final class CompareCommand implements Callable<Integer> {
             description = "Multiplies both maps' XYZ before L*a*b* (use the exposure the pictures were shown with).")
     double exposure;
 
+    @Mixin
+    QuietOption quiet; // compare prints only its result; accepted like everywhere
+
     @Override
     public Integer call() throws IOException {
         if (!(exposure > 0) || !Double.isFinite(exposure)) {
@@ -57,8 +61,9 @@ final class CompareCommand implements Callable<Integer> {
         float[] rgb;
         try {
             rgb = ImageFiles.readPfm(file, whc);
-        } catch (RuntimeException e) {
-            throw new UserInputException(file + " is not a PFM image (" + e.getMessage() + ")", e);
+        } catch (IOException e) {
+            throw new UserInputException(file + ": " + e.getMessage() + "; compare reads the float maps brdfmap writes"
+                    + " with --pfm MAP.pfm", e);
         }
         if (whc[2] != 3) {
             throw new UserInputException(file + " is a grey PFM; compare needs colour maps (brdfmap without --lambda)");

@@ -7,10 +7,12 @@ import diffract.precompute.TermFolders;
 import diffract.precompute.TermSidecar;
 import diffract.precompute.TermStore;
 import diffract.precompute.ThesisFormat;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.util.Version;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -39,9 +41,13 @@ final class ConvertTermsCommand implements Callable<Integer> {
             description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
     ThesisFormat.HeightUnit unit;
 
+    @Mixin
+    QuietOption quiet;
+
     @Override
     public Integer call() throws IOException {
-        Reporter reporter = Reporter.STDERR;
+        OutputPaths.requireWritableFolder(to, "--to");
+        Reporter reporter = quiet.reporter();
         TermFolders.Format source = TermFolders.detect(from);
         TermFolders.Format target = format != null ? format
                 : source == TermFolders.Format.NATIVE ? TermFolders.Format.THESIS : TermFolders.Format.NATIVE;

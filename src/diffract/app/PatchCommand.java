@@ -2,7 +2,10 @@ package diffract.app;
 
 import diffract.optics.HeightField;
 import diffract.optics.PatchCatalogue;
+import diffract.optics.ProceduralPatches;
 import diffract.optics.io.GsfWriter;
+import diffract.util.MemoryEstimate;
+import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
@@ -30,16 +33,42 @@ final class PatchCommand implements Callable<Integer> {
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf")
     Path output;
 
+    @Mixin
+    QuietOption quiet;
+
+    /** A .gsf's float32 heights go through one byte buffer: at most this many samples (2 GB). */
+    static final long MAX_SAMPLES = (Integer.MAX_VALUE - 1024) / 4;
+
     @Override
     public Integer call() throws IOException {
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gsf")) {
             throw new UserInputException("patch writes Gwyddion .gsf files; name the output FILE.gsf");
         }
-        HeightField field = parameters.spec(PatchCatalogue.named(name)).build();
+        OutputPaths.requireWritableFile(output, "-o", "patch.gsf");
+        ProceduralPatches.Spec spec = parameters.spec(PatchCatalogue.named(name));
+        if (spec.kind().isGrating()) {
+            checkGratingSize(spec);
+        }
+        HeightField field = spec.build();
         GsfWriter.write(output, field);
         System.out.printf(Locale.ROOT, "wrote %s: %d x %d pixels of %.4f um (%.2f x %.2f um)%n", output, field.cols(),
                 field.rows(), field.pixelSizeXUm(), field.widthUm(), field.heightExtentUm());
         return 0;
+    }
+
+    /** A grating's size within what the heap and one .gsf hold (its parameters are checked by the options). */
+    private static void checkGratingSize(ProceduralPatches.Spec spec) {
+        long cols = (long) spec.samplesPerPeriod() * spec.periods();
+        long samples = cols * spec.rows(); // < 2^62: no overflow
+        // the heights, the field's own copy and the file's float32 buffer
+        MemoryEstimate.of("heights, their copy and the file's buffer", 20 * samples).require(
+                String.format(Locale.ROOT, "a %d x %d grating", cols, spec.rows()),
+                "use fewer --periods, --rows or --samples-per-period");
+        if (samples > MAX_SAMPLES) {
+            throw new UserInputException(String.format(Locale.ROOT, "a %d x %d grating has %.3g samples, more than one"
+                    + " .gsf file holds here (%d); use fewer --periods, --rows or --samples-per-period", cols,
+                    spec.rows(), (double) samples, MAX_SAMPLES));
+        }
     }
 
     /** The catalogue with each patch's description, for the help's footer. */

@@ -6,6 +6,7 @@ import diffract.optics.io.SamplingCheck;
 import diffract.pipeline.NamedPatch;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -22,6 +23,9 @@ import java.util.concurrent.Callable;
 final class PrecomputeCommand implements Callable<Integer> {
     @Mixin
     PatchOptions patch;
+
+    @Mixin
+    QuietOption quiet;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
     Order order;
@@ -51,10 +55,12 @@ final class PrecomputeCommand implements Callable<Integer> {
     public Integer call() {
         long start = System.nanoTime();
         patch.validateRequired();
-        Reporter reporter = Reporter.STDERR;
+        OutputPaths.requireWritableFolder(output, "-o");
+        Reporter reporter = quiet.reporter();
         NamedPatch named = patch.load("", reporter);
         HeightField field = named.meanSubtracted();
-        SamplingCheck.warnAboutAliasing(field, lambdaMinNm, SpectralSettings.LAMBDA_MAX_NM, reporter);
+        // no light here: only what aliases for every light (a render notes what its own light adds)
+        SamplingCheck.warnAboutAliasing(field, lambdaMinNm, SpectralSettings.LAMBDA_MAX_NM, 0, reporter);
         Precomputation.Request request = new Precomputation.Request(field, named.name(), named.maxHeightUm(),
                 order.highestOrder, order.tolerance, lambdaMinNm);
         boolean reused;

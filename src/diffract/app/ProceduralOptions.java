@@ -46,9 +46,32 @@ final class ProceduralOptions {
         if (grating && seed != null) {
             throw new UserInputException("--seed is the noise of the snake patches; a grating has none");
         }
-        return new ProceduralPatches.Spec(d.kind(), or(periodUm, d.periodUm()), or(heightUm, d.heightUm()),
-                or(periods, d.periods()), or(samplesPerPeriod, d.samplesPerPeriod()), or(rows, d.rows()), d.sizePx(),
-                d.roughnessUm(), seed != null ? seed : d.seed());
+        ProceduralPatches.Spec spec = new ProceduralPatches.Spec(d.kind(), or(periodUm, d.periodUm()),
+                or(heightUm, d.heightUm()), or(periods, d.periods()), or(samplesPerPeriod, d.samplesPerPeriod()),
+                or(rows, d.rows()), d.sizePx(), d.roughnessUm(), seed != null ? seed : d.seed());
+        if (grating) {
+            checkGrating(spec);
+        }
+        return spec;
+    }
+
+    /** Each grating parameter in its range, named by its option (the catalogue's own values all are). */
+    private static void checkGrating(ProceduralPatches.Spec s) {
+        if (!(s.periodUm() > 0) || !Double.isFinite(s.periodUm())) {
+            throw new UserInputException("--period must be a positive number of micrometres, got " + s.periodUm());
+        }
+        if (!(s.heightUm() >= 0) || !Double.isFinite(s.heightUm())) {
+            throw new UserInputException("--height must be >= 0 um, got " + s.heightUm());
+        }
+        if (s.samplesPerPeriod() < 2) {
+            throw new UserInputException("--samples-per-period must be at least 2, got " + s.samplesPerPeriod());
+        }
+        if (s.periods() < 1) {
+            throw new UserInputException("--periods must be at least 1, got " + s.periods());
+        }
+        if (s.rows() < 1) {
+            throw new UserInputException("--rows must be at least 1, got " + s.rows());
+        }
     }
 
     private static <T> T or(T given, T fallback) {

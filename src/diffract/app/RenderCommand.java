@@ -1,10 +1,10 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.OffscreenTarget;
 import diffract.scene.DisplayMode;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.ViewerModel;
@@ -21,10 +21,16 @@ import java.util.concurrent.Callable;
 /** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
 @Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
         description = "Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and "
-                + "shaders as 'diffract view', without a window (runs under xvfb-run; the launcher starts one).")
+                + "shaders as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md).")
 final class RenderCommand implements Callable<Integer> {
     @Mixin
+    GpuOption gpu;
+
+    @Mixin
     ViewerOptions options;
+
+    @Mixin
+    QuietOption quiet;
 
     @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
             description = "Image size (default: the scene's image, else 512x512).")
@@ -39,9 +45,9 @@ final class RenderCommand implements Callable<Integer> {
         if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
             throw new UserInputException("render writes PNG files; name the output OUT.png");
         }
-        DisplayCheck.requireDisplay();
+        OutputPaths.requireWritableFile(output, "-o", "render.png");
         long start = System.nanoTime();
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         Scene.ImageSize image = size != null ? new Scene.ImageSize(size.width(), size.height())
                 : options.imageSize(new Scene.ImageSize(512, 512));
         SceneSetup setup = options.setup(image, reporter);

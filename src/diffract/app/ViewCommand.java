@@ -31,6 +31,9 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
+    @Mixin
+    QuietOption quiet;
+
     @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
             description = "Window size (default: the scene's image, else 800x600).")
     OptionTypes.ImageSize size;
@@ -51,7 +54,7 @@ final class ViewCommand implements Callable<Integer> {
         if (problem.isPresent()) {
             throw new UserInputException(problem.get());
         }
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         Scene.ImageSize window = size != null ? new Scene.ImageSize(size.width(), size.height())
                 : options.imageSize(new Scene.ImageSize(800, 600));
         SceneSetup setup = options.setup(window, reporter);

@@ -1,6 +1,6 @@
 package diffract.bench;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorExpansion;
@@ -26,7 +26,7 @@ public final class AutoVariant {
      */
     public static AutoChoice choose(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, double maxDeltaE,
                                     Reporter reporter) {
-        DisplayCheck.requireDisplay();
+        HeadlessGL.require();
         List<BenchResult> calibration = AutoCalibration.of(meanSubtracted, phiIDeg, base,
                 AutoCalibration.defaultCacheRoot(), reporter);
         return AutoChoice.choose(calibration, maxDeltaE).orElseThrow(() -> {

@@ -55,7 +55,9 @@ public final class TaylorEvaluation {
         double plainError = Float32Cancellation.plainSeriesError(plainTerms, highestOrder, a);
         if (mode == TaylorExpansion.PLAIN || (mode == TaylorExpansion.AUTO && plainError <= Float32Cancellation.TOLERANCE_IN_P)) {
             if (plainError > Float32Cancellation.TOLERANCE_IN_P) {
-                reporter.warn(plainWarning(plainError, shortestLambdaNm, x, highestOrder));
+                // the plain series was asked for (or the calibrated auto variant's path): the centred one avoids it
+                reporter.warn(plainWarning(plainError, shortestLambdaNm, x, highestOrder) + "; the phase-centred"
+                        + " expansion avoids it, as do a longer shortest wavelength or a lower patch");
             }
             return plain(plainTerms);
         }
@@ -70,7 +72,9 @@ public final class TaylorEvaluation {
                 throw new InvalidSettingException(Quantity.EXPANSION, size + "; use a longer shortest wavelength or a "
                         + "smaller patch");
             }
-            reporter.warn(size + "; " + plainWarning(plainError, shortestLambdaNm, x, highestOrder));
+            // auto is in effect and chose the plain series: only a shorter reach or a lower patch helps
+            reporter.warn(size + "; " + plainWarning(plainError, shortestLambdaNm, x, highestOrder)
+                    + "; a longer shortest wavelength or a lower patch avoids it");
             return plain(plainTerms);
         }
         reporter.info(String.format(Locale.ROOT, "phase-centred Taylor expansion: x = k|w|max|h| = %.1f at %.0f nm"
@@ -82,8 +86,8 @@ public final class TaylorEvaluation {
 
     private static String plainWarning(double error, double shortestLambdaNm, double x, int highestOrder) {
         return String.format(Locale.ROOT, "the float32 Taylor sum (%d terms) may err by up to %.2g in P (|P| <= 1)"
-                + " at %.0f nm (x = k|w|max|h| = %.1f): dim orders will be rounding noise; use the automatic"
-                + " expansion, a longer shortest wavelength, or a lower patch", highestOrder + 1, error, shortestLambdaNm, x);
+                + " at %.0f nm (x = k|w|max|h| = %.1f): dim orders will be rounding noise", highestOrder + 1, error,
+                shortestLambdaNm, x);
     }
 
     public boolean isPhaseCentred() {

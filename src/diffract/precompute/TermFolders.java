@@ -45,7 +45,20 @@ public final class TermFolders {
      * @param thesisHeightUnit used only for a thesis folder without diffract.json
      */
     public static TaylorTerms read(Path dir, ThesisFormat.HeightUnit thesisHeightUnit, Reporter reporter) {
-        return detect(dir) == Format.NATIVE ? TermStore.read(dir) : ThesisFormat.read(dir, thesisHeightUnit, reporter);
+        if (detect(dir) == Format.THESIS) {
+            return ThesisFormat.read(dir, thesisHeightUnit, reporter);
+        }
+        try {
+            return TermStore.read(dir);
+        } catch (TermStore.Damaged e) {
+            TermSidecar sidecar = null;
+            try {
+                sidecar = TermStore.readSidecar(dir);
+            } catch (TermStore.Damaged unreadable) {
+                // the hint then names no patch
+            }
+            throw new UserInputException(e.getMessage() + "; " + TermStore.repairHint(dir, sidecar), e);
+        }
     }
 
     /** As {@link #read(Path, ThesisFormat.HeightUnit, Reporter)} with the unit detected. */

@@ -15,6 +15,7 @@ import diffract.optics.TaylorTerms;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
+import diffract.util.UserInputException;
 
 import java.util.Locale;
 
@@ -58,8 +59,14 @@ public final class BakedTable {
         DiffractionTextures textures = DiffractionTextures.of(terms, flss);
         Material material = DiffractionMaterials.bake(textures, flss, grid);
         int n = grid.uvSamples();
-        float[] rgb = new float[Math.multiplyExact(3, Math.toIntExact(grid.texels()))];
+        if (3 * grid.texels() > Integer.MAX_VALUE - 8) {
+            throw new UserInputException(String.format(Locale.ROOT, "a %d x %d x %d baked table holds more samples than"
+                    + " one array can (2^31 floats); use fewer samples", n, n, grid.wSamples()));
+        }
+        float[] rgb = new float[(int) (3 * grid.texels())];
         ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
+        String task = String.format(Locale.ROOT, "baking the %d x %d x %d table", n, n, grid.wSamples());
+        reporter.progress(task, 0);
         try (OffscreenTarget target = new OffscreenTarget(new Renderer(new Group("bake").add(quad), new Camera(),
                 new Frustum()))) {
             for (int k = 0; k < grid.wSamples(); k++) {
@@ -75,7 +82,7 @@ public final class BakedTable {
                         rgb[to + 2] = rgba[from + 2];
                     }
                 }
-                reporter.progress("baking", (k + 1.0) / grid.wSamples());
+                reporter.progress(task, (k + 1.0) / grid.wSamples());
             }
         }
         double seconds = (System.nanoTime() - start) * 1e-9;

@@ -1,10 +1,9 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import diffract.util.ImageFiles;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -31,7 +30,7 @@ class GpuCliTest {
     @Test
     @Tag("gl")
     void tallPatchesSwitchToThePhaseCentredExpansionOrWarnAndLowOnesDoNot() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path tall = dir.resolve("tall.gsf");
         GsfWriter.write(tall, SyntheticPatches.sinusoid(2.5, 1.2, 10, 4, 2)); // x = k |w| max|h| = 18.9 at 380 nm
         String[] tallMap = {"brdfmap", "--patch", tall.toString(), "--theta-i", "30", "--variant", "flss",
@@ -58,7 +57,7 @@ class GpuCliTest {
     @Test
     @Tag("gl")
     void gpuEngineWritesTheMapsAndTimesThem() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path cpuPfm = dir.resolve("cpu.pfm");
         Path gpuPfm = dir.resolve("gpu.pfm");
         String[] common = {"brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "pq",

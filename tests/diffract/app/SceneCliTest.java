@@ -1,8 +1,7 @@
 package diffract.app;
 
 import diffract.util.TestReport;
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -80,7 +79,7 @@ class SceneCliTest {
     @Test
     @Tag("gl")
     void anObjMeshFromASceneRendersWithItsExplicitTangents() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         squareObj("square.obj", false);
         Path scene = sceneWithObj("square.json", "square.obj");
         Path png = dir.resolve("square.png");
@@ -98,7 +97,7 @@ class SceneCliTest {
     @Test
     @Tag("gl")
     void commandLineOptionsOverrideTheScene() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("override.png");
         Object[] result = CliTest.run("render", "assets/scenes/blazed-grating-plane.json", "--variant", "pq",
                 "--terms", "6", "--lambda-step", "40", "--size", "48x32", "-o", png.toString());

@@ -1,8 +1,7 @@
 package diffract.app;
 
 import diffract.util.TestReport;
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -24,12 +23,14 @@ class ViewerCliTest {
     @Test
     @Tag("gl")
     void renderWritesAPictureOfTheShapeAtTheRequestedSize() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("sphere.png");
         Object[] result = CliTest.run("render", "--synthetic", "elaphe-like", "--terms", "8", "--lambda-step", "20",
                 "--coherence-length", "10", "--size", "96x64", "-o", png.toString());
         assertEquals(0, result[0], (String) result[2]);
         assertTrue(((String) result[1]).contains("wrote " + png), (String) result[1]);
+        assertTrue(((String) result[2]).matches("(?s).*diffract: OpenGL \\d\\.\\d.*, GLSL .*"),
+                "render names the OpenGL it draws with: " + result[2]);
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(96, image.getWidth());
         assertEquals(64, image.getHeight());
@@ -44,7 +45,7 @@ class ViewerCliTest {
     @Test
     @Tag("gl")
     void theSnakeIsIridescent() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("snake.png");
         // fewer terms: llvmpipe is slow, and the patch needs only ~12 at 380 nm
         String[] args = {"render", DemoCommand.defaultScene(dir).toString(), "--terms", "12", "--size", "160x100",

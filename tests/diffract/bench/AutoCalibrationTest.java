@@ -1,14 +1,13 @@
 package diffract.bench;
 
 import diffract.util.TestReport;
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -40,7 +39,7 @@ class AutoCalibrationTest {
 
     @BeforeAll
     static void calibrate() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         calibration = AutoCalibration.of(GRATING, 0, BASE, cache, Reporter.SILENT, PLAN);
         calibration.forEach(r -> TestReport.printf(AutoCalibrationTest.class, "calibration: %s: %.2f ms, CIEDE2000 %.3f%n",
                 AutoChoice.describe(r), r.msPerFrame(), r.deltaEMean()));

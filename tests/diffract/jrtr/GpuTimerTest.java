@@ -12,7 +12,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class GpuTimerTest {
     @Test
     void medianFrameTimeIsPositiveAndFinite() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         Group root = new Group("root").add(new ShapeNode(Shapes.cube(0.5f), GlTestSupport.unlit(1, 0, 0)));
         try (OffscreenTarget target = new OffscreenTarget(new Renderer(root, GlTestSupport.unitCamera(),
                 GlTestSupport.rightAngleFrustum()))) {

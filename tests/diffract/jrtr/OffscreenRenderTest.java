@@ -30,7 +30,7 @@ class OffscreenRenderTest {
 
     @BeforeAll
     static void createTarget() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         renderer = new Renderer(new Group("empty"), GlTestSupport.unitCamera(), GlTestSupport.rightAngleFrustum());
         renderer.setClearColor(0.1f, 0.2f, 0.3f, 1f);
         target = new OffscreenTarget(renderer);

@@ -20,7 +20,7 @@ class ShaderErrorTest {
 
     @BeforeAll
     static void createTarget() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         target = new OffscreenTarget(new Renderer(new Group("empty"), GlTestSupport.unitCamera(),
                 GlTestSupport.rightAngleFrustum()));
     }

@@ -35,7 +35,7 @@ class TextureTest {
 
     @BeforeAll
     static void createTarget() throws Exception {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         GlTestSupport.write(shaderDir, "pass.vert", GlTestSupport.PASS_THROUGH_VERTEX);
         // pixel (x, y) with y = layer * HEIGHT + row shows texel (x, row) of that layer
         GlTestSupport.write(shaderDir, "array.frag", String.join("\n",

@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -34,7 +35,7 @@ class BakedTradeMeasurement {
     @Test
     void measure() {
         Assumptions.assumeTrue("baked".equals(System.getProperty("diffract.measure")), "measurement only on request");
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField blazed = SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16).meanSubtracted();
         HeightField elaphe = SyntheticPatches.elapheLike().meanSubtracted();
         String grids = System.getProperty("diffract.bakedGrids", "128,256");

@@ -4,6 +4,7 @@ import diffract.util.TestReport;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
 import diffract.jrtr.FloatTexture3D;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
@@ -21,6 +22,7 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -46,7 +48,7 @@ class BakedVariantTest {
      */
     @Test
     void tableSamplesAreTheCpuFlssSpectralSums() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).with(b -> b.bakedSamples(17, 3));
@@ -102,7 +104,7 @@ class BakedVariantTest {
      */
     @Test
     void bakedMapsAgreeWithFlssAndTheReference() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
             TaylorTerms terms = RenderTestSupport.terms(patch);
             DiffractionBrdf flss = DiffractionBrdf.create(RenderTestSupport.settings(Variant.FLSS), patch, terms);
@@ -136,7 +138,7 @@ class BakedVariantTest {
      */
     @Test
     void memoryIsAccountedAndTheBakeIsCached() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(33, 0));
         int before = BakedTables.bakeCount();
@@ -168,7 +170,7 @@ class BakedVariantTest {
      */
     @Test
     void finiteAtGrazingLightAndExactAtTheSpecularSample() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         DiffractionBrdf flss = DiffractionBrdf.create(RenderTestSupport.settings(Variant.FLSS), patch, terms);
@@ -201,7 +203,7 @@ class BakedVariantTest {
      */
     @Test
     void surfacePathReadsTheTable() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         DiffractionTextures textures = DiffractionTextures.of(terms, baked());
@@ -228,7 +230,7 @@ class BakedVariantTest {
      */
     @Test
     void bakingFromInsideAGlContextLeavesThatContextAlone() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(9, 2)).with(b -> b.lambdaStepNm(20));
         int before = BakedTables.bakeCount();
@@ -238,12 +240,13 @@ class BakedVariantTest {
                 int[] framebuffer = new int[1];
                 gl.glGenFramebuffers(1, framebuffer, 0);
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, framebuffer[0]);
-                com.jogamp.opengl.GLContext context = com.jogamp.opengl.GLContext.getCurrent();
+                Object context = diffract.jrtr.HeadlessGL.currentContext();
+                assertNotNull(context, "a context is current inside withContext");
                 BakedTables.of(terms, settings, Reporter.SILENT);
                 int[] after = new int[3];
                 gl.glGetIntegerv(com.jogamp.opengl.GL2ES3.GL_DRAW_FRAMEBUFFER_BINDING, after, 0);
                 after[1] = framebuffer[0];
-                after[2] = com.jogamp.opengl.GLContext.getCurrent() == context ? 1 : 0;
+                after[2] = context.equals(diffract.jrtr.HeadlessGL.currentContext()) ? 1 : 0;
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, 0);
                 gl.glDeleteFramebuffers(1, framebuffer, 0);
                 return after;

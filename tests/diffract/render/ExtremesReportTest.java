@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -75,7 +76,7 @@ class ExtremesReportTest {
 
     @Test
     void everyExtremeCaseIsFiniteAndMeasuredAgainstTheReference() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         StringBuilder table = new StringBuilder();
         table.append("| case | theta_i | output | variant | expansion | CPU error | GPU error | GPU error, plain series |\n")
                 .append("|---|---|---|---|---|---|---|---|\n");
@@ -158,7 +159,7 @@ class ExtremesReportTest {
      */
     @Test
     void thePlainSeriesFailsWhereTheSwitchSaysItDoes() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         StringBuilder table = new StringBuilder("| max\\|h\\| um | x at 380 nm | estimated plain error in P | automatic"
                 + " choice | GPU plain N = 30 | GPU centred |\n|---|---|---|---|---|---|\n");
         List<String> failures = new ArrayList<>();
@@ -209,7 +210,7 @@ class ExtremesReportTest {
      */
     @Test
     void a4096By4096PatchMeetsTheReferenceInThePlaneOfIncidence() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         int size = 33;
         int middleRow = size / 2; // y = 0 exactly
         HeightField big = SyntheticPatches.blazed(0.8, 0.02, 16, 256, 4096).meanSubtracted();

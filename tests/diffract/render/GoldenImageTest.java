@@ -3,6 +3,7 @@ package diffract.render;
 import diffract.colour.ColourPath;
 import diffract.colour.Xyz;
 import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.AutoExposure;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
@@ -59,7 +60,7 @@ class GoldenImageTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void gpuBrdfMapMatchesItsGolden(String name, HeightField patch, Variant variant) throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         Direction wi = RenderTestSupport.light(patch, 30);
         float[] xyz;
         try (GpuBrdfMap gpu = new GpuBrdfMap(RenderTestSupport.terms(patch), RenderTestSupport.settings(variant))) {

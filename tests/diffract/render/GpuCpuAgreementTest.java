@@ -1,5 +1,6 @@
 package diffract.render;
 
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -74,7 +75,7 @@ class GpuCpuAgreementTest {
     @ParameterizedTest(name = "{0} {1} {2} early stop {3}")
     @MethodSource("cases")
     void gpuEqualsCpuOnTheLitPixels(Variant variant, TaylorExpansion expansion, TermFormat format, boolean earlyStop) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         BrdfSettings settings = settings(variant, format, earlyStop);
         String label = variant + " " + expansion + " " + format + (earlyStop ? " early stop" : "");
@@ -85,7 +86,7 @@ class GpuCpuAgreementTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("variants")
     void gpuEqualsCpuOnTheBlazedGrating(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         assertAgreement(RenderTestSupport.BLAZED, settings(variant, TermFormat.RG32F, false), TaylorExpansion.PLAIN,
                 variant + " blazed", UnaryOperator.identity(), true);
     }
@@ -100,7 +101,7 @@ class GpuCpuAgreementTest {
      */
     @Test
     void aWrongColourFailsTheLimits() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         BrdfSettings settings = settings(Variant.FLSS, TermFormat.RG32F, false);
         assertAgreement(RenderTestSupport.ELAPHE_LIKE, settings, TaylorExpansion.PLAIN, "FLSS against n = 1.6",
                 s -> s.with(b -> b.refractiveIndex(1.6)), false);
@@ -108,7 +109,7 @@ class GpuCpuAgreementTest {
 
     @Test
     void centredTermsAreNotStoredAsBytes() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         PhaseCentredTerms centred = centredTerms(patch);
         BrdfSettings bytes = settings(Variant.FLSS, TermFormat.RG8, false);

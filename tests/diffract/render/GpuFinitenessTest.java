@@ -5,6 +5,7 @@ import diffract.colour.Xyz;
 import diffract.jrtr.Camera;
 import diffract.jrtr.FloatTextureArray;
 import diffract.jrtr.Frustum;
+import diffract.jrtr.GlTestSupport;
 import diffract.jrtr.Group;
 import diffract.jrtr.LightNode;
 import diffract.jrtr.Material;
@@ -52,7 +53,7 @@ class GpuFinitenessTest {
     @ParameterizedTest
     @EnumSource(value = Variant.class, names = {"FLSS", "NMM", "PQ"})
     void everyPixelIsFiniteAtGrazingLightAndAtTheExactSpecularDirection(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
             TaylorTerms terms = RenderTestSupport.terms(patch);
             BrdfSettings settings = RenderTestSupport.settings(variant);
@@ -101,7 +102,7 @@ class GpuFinitenessTest {
      */
     @Test
     void meshPathShowsTheSameBrdfAsTheCpuInTheTangentFrame() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS);
@@ -136,7 +137,7 @@ class GpuFinitenessTest {
     /** Pigmentation blending and a degenerate frame (tangent parallel to the normal) stay finite and in [0, 1]. */
     @Test
     void meshPathWithPigmentationAndDegenerateTangentsStaysFinite() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.BLAZED;
         BrdfSettings settings = RenderTestSupport.settings(Variant.NMM);
         DiffractionTextures textures = DiffractionTextures.of(RenderTestSupport.terms(patch), settings);

@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
@@ -36,7 +37,7 @@ class GpuGratingEquationTest {
     @ParameterizedTest
     @EnumSource(value = Variant.class, names = {"FLSS", "PQ"})
     void ordersOfTheGpuMapAreWhereTheGratingEquationSays(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = TaylorTermComputer.compute(BLAZED, 30, Reporter.SILENT);
         BrdfSettings settings = BrdfSettings.thesis(variant);
         DiffractionBrdf cpu = DiffractionBrdf.create(settings, BLAZED, terms);

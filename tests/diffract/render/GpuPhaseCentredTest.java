@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -52,7 +53,7 @@ class GpuPhaseCentredTest {
     @ParameterizedTest
     @org.junit.jupiter.params.provider.EnumSource(value = Variant.class, names = {"FLSS", "NMM", "PQ"})
     void everyPixelIsFiniteAtGrazingLightAndAtTheSpecularDirection(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = SyntheticPatches.blazed(2.5, 4.0, 20, 4, 8).meanSubtracted();
         BrdfSettings settings = RenderTestSupport.settings(variant);
         PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
@@ -79,7 +80,7 @@ class GpuPhaseCentredTest {
     @ParameterizedTest
     @ValueSource(doubles = {1.0, 2.0, 4.0})
     void tallGratingsMatchTheReferenceOnlyWhenCentred(double gratingHeightUm) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         // period 2.5 um, 20 pixels of 0.125 um, 4 periods, 8 rows; max|h| = half the height after the mean
         HeightField patch = SyntheticPatches.blazed(2.5, gratingHeightUm, 20, 4, 8).meanSubtracted();
         BrdfSettings flss = RenderTestSupport.settings(Variant.FLSS);

@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -26,7 +27,7 @@ class NormalisedTermsGpuTest {
 
     @Test
     void gpuMapOfByteTermsEqualsTheCpuMapOfTheDeNormalisedTerms() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).with(b -> b.highestOrder(12));

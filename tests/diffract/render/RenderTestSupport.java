@@ -1,6 +1,5 @@
 package diffract.render;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
@@ -30,10 +29,6 @@ final class RenderTestSupport {
     }
 
     /** GL tests are skipped, not failed, where no X display exists. */
-    static void assumeDisplay() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
-                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
-    }
 
     /** Terms 0..30 of a patch, computed once per test run. */
     static TaylorTerms terms(HeightField patch) {

@@ -1,6 +1,5 @@
 package diffract.viewer;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
@@ -15,7 +14,6 @@ import diffract.scene.OrbitCamera;
 import diffract.scene.PrimitiveShapes;
 import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
-import org.junit.jupiter.api.Assumptions;
 
 /** Small, fast viewer models for the tests: llvmpipe runs the shaders on the CPU. */
 final class ViewerTestSupport {
@@ -26,10 +24,6 @@ final class ViewerTestSupport {
     private ViewerTestSupport() {
     }
 
-    static void assumeDisplay() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
-                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
-    }
 
     /** 8 terms, 20 nm steps, coherence length 10 um so the orders are wide enough to light many pixels. */
     static BrdfSettings settings() {

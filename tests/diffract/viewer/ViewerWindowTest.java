@@ -2,6 +2,7 @@ package diffract.viewer;
 
 import com.jogamp.newt.event.KeyEvent;
 import com.jogamp.newt.event.MouseEvent;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
 import diffract.scene.LightDirection;
@@ -32,6 +33,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * keys, the background precompute, screenshots. One 128 x 128 window for the class (opening one costs a second).
  */
 @Tag("gl")
+@Tag(GlTestSupport.WINDOW_TAG)
 class ViewerWindowTest {
     static final int SIZE_PX = 128;
     @TempDir
@@ -43,7 +45,7 @@ class ViewerWindowTest {
 
     @BeforeAll
     static void open() {
-        if (!diffract.jrtr.DisplayCheck.problem().isEmpty()) {
+        if (diffract.jrtr.DisplayCheck.problem().isPresent()) {
             return;
         }
         model = ViewerTestSupport.model(ViewerTestSupport.gatedTerms(PRECOMPUTE_MAY_FINISH));
@@ -60,7 +62,7 @@ class ViewerWindowTest {
 
     @BeforeEach
     void resetModel() throws InterruptedException {
-        ViewerTestSupport.assumeDisplay();
+        GlTestSupport.assumeWindow();
         model.reset(null);
         awaitFreshFrames(2); // so every test starts from frames of the reset state
     }
