@@ -32,10 +32,6 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
-    @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
-            description = "Image size (default: the scene's image, else 512x512).")
-    OptionTypes.ImageSize size;
-
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png", description = "PNG to write.")
     Path output;
 
@@ -48,8 +44,7 @@ final class RenderCommand implements Callable<Integer> {
         OutputPaths.requireWritableFile(output, "-o", "render.png");
         long start = System.nanoTime();
         Reporter reporter = quiet.reporter();
-        Scene.ImageSize image = size != null ? new Scene.ImageSize(size.width(), size.height())
-                : options.imageSize(new Scene.ImageSize(512, 512));
+        Scene.ImageSize image = options.imageSize(new Scene.ImageSize(512, 512));
         SceneSetup setup = options.setup(image, reporter);
         ViewerModel model = ViewerModel.load(setup, reporter);
         model.bakeIfNeeded(reporter);

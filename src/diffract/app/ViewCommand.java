@@ -34,10 +34,6 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
-    @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
-            description = "Window size (default: the scene's image, else 800x600).")
-    OptionTypes.ImageSize size;
-
     @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
     Path screenshotDir;
@@ -55,8 +51,7 @@ final class ViewCommand implements Callable<Integer> {
             throw new UserInputException(problem.get());
         }
         Reporter reporter = quiet.reporter();
-        Scene.ImageSize window = size != null ? new Scene.ImageSize(size.width(), size.height())
-                : options.imageSize(new Scene.ImageSize(800, 600));
+        Scene.ImageSize window = options.imageSize(new Scene.ImageSize(800, 600));
         SceneSetup setup = options.setup(window, reporter);
         ViewerModel model = ViewerModel.load(setup, reporter);
         System.out.print(KeyBindings.helpText());

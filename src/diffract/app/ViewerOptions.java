@@ -53,7 +53,7 @@ final class ViewerOptions {
     @ArgGroup(exclusive = false, validate = false, heading = "Shape and pigment (without a SCENE):%n")
     Surface surface = new Surface();
 
-    @ArgGroup(exclusive = false, validate = false, heading = "Light and camera:%n")
+    @ArgGroup(exclusive = false, validate = false, heading = "Light, camera and picture:%n")
     View view = new View();
 
     /** What the patch covers, and the pigment over it. */
@@ -79,7 +79,7 @@ final class ViewerOptions {
         double diffuseWeight = 0.2;
     }
 
-    /** The light, the orbit camera and what is shown. */
+    /** The light, the orbit camera, what is shown and at what size. */
     static final class View {
         @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
         double thetaIDeg = 30;
@@ -103,6 +103,11 @@ final class ViewerOptions {
 
         @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
         boolean brdfMap;
+
+        @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+                description = "The window of view, the picture of render (default: the scene's image, else 800x600 "
+                        + "for view and 512x512 for render).")
+        OptionTypes.ImageSize size;
     }
 
     /** The patch a command line without --patch or --synthetic shows. */
@@ -172,8 +177,11 @@ final class ViewerOptions {
                 && mixee.commandLine().getParseResult().hasMatchedOption(option);
     }
 
-    /** The scene file's image size, or {@code fallback} without a scene file (validate() first). */
+    /** {@code --size}, else the scene file's image size, else the command's {@code fallback} (validate() first). */
     Scene.ImageSize imageSize(Scene.ImageSize fallback) {
+        if (view.size != null) {
+            return new Scene.ImageSize(view.size.width(), view.size.height());
+        }
         return parsedScene != null ? parsedScene.image() : fallback;
     }
 
