@@ -1,18 +1,17 @@
 package diffract.app;
 
 import diffract.bench.IridescenceStatistics;
-import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.OffscreenTarget;
+import diffract.scene.Scene;
+import diffract.scene.SceneSetup;
 import diffract.util.ImageFiles;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.viewer.ViewerModel;
 import diffract.viewer.ViewerRenderer;
-import diffract.viewer.ViewerSetup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
-import picocli.CommandLine.Spec;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -23,51 +22,55 @@ import java.util.concurrent.Callable;
  * (pigmentation off), and prints {@link IridescenceStatistics}: the shape's share of the frame, the share of
  * saturated structural colour, its patches and hues.
  */
-@Command(name = "measure", mixinStandardHelpOptions = true,
-        description = {"Measure a scene's picture: the shape's share of the frame, saturated structural colour's share,",
-                "its separate patches and hue bins (from a mask and a structural-colour-only render)."})
+@Command(name = "measure", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
+        description = "Measure a scene's picture: the shape's share of the frame, saturated structural colour's "
+                + "share, its separate patches and hue bins (from a mask and a structural-colour-only render, "
+                + "offscreen like 'diffract render').")
 final class MeasureCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
-    @Spec
-    CommandSpec spec;
-
-    @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default: the scene's image, else ${DEFAULT-VALUE}).")
-    String size;
-
     @Option(names = "--save", paramLabel = "DIR", description = "Also write mask.png and structural.png into DIR.")
     Path saveDir;
+
+    @Mixin
+    GpuOption gpu;
+
+    @Mixin
+    QuietOption quiet;
 
     @Override
     public Integer call() throws Exception {
         options.validate();
-        ViewerOptions.parseSize(size);
-        DisplayCheck.requireDisplay();
-        Reporter reporter = Reporter.STDERR;
-        ViewerSetup setup = options.setup(reporter);
-        int[] wh = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
-        ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        if (saveDir != null) {
+            OutputPaths.requireWritableFolder(saveDir, "--save");
+        }
+        Reporter reporter = quiet.reporter();
+        Scene.ImageSize size = options.imageSize(new Scene.ImageSize(512, 512));
+        SceneSetup setup = options.setup(size, reporter);
+        ViewerModel model = ViewerModel.load(setup, reporter);
         model.bakeIfNeeded(reporter);
-        model.update(s -> s.withPigmentationOn(false));
+        model.update(s -> s.withView(s.view().withPigmentationOn(false)));
         ViewerRenderer renderer = new ViewerRenderer(model);
+        int width = size.width();
+        int height = size.height();
         float[] structural;
         float[] mask;
         try (OffscreenTarget target = new OffscreenTarget(renderer)) {
-            structural = target.renderRgb(wh[0], wh[1]);
+            structural = target.renderRgb(width, height);
             renderer.setMaskOnly(true);
-            mask = target.renderRgb(wh[0], wh[1]);
+            mask = target.renderRgb(width, height);
         }
-        float[] maskChannel = new float[wh[0] * wh[1]];
+        float[] maskChannel = new float[width * height];
         for (int p = 0; p < maskChannel.length; p++) {
             maskChannel[p] = mask[3 * p];
         }
         if (saveDir != null) {
             Files.createDirectories(saveDir);
-            ImageFiles.writePng(saveDir.resolve("mask.png"), mask, wh[0], wh[1], 3);
-            ImageFiles.writePng(saveDir.resolve("structural.png"), structural, wh[0], wh[1], 3);
+            ImageFiles.writePng(saveDir.resolve("mask.png"), mask, width, height, 3);
+            ImageFiles.writePng(saveDir.resolve("structural.png"), structural, width, height, 3);
         }
-        System.out.println(IridescenceStatistics.of(maskChannel, structural, wh[0], wh[1]));
+        System.out.println(IridescenceStatistics.of(maskChannel, structural, width, height));
         return 0;
     }
 }

@@ -1,9 +1,11 @@
 package diffract.app;
 
 import diffract.jrtr.OffscreenTarget;
+import diffract.scene.OrbitCamera;
+import diffract.scene.Scene;
 import diffract.util.AnimatedGif;
 import diffract.util.ImageFiles;
-import diffract.viewer.OrbitCamera;
+import diffract.util.Reporter;
 import diffract.viewer.ViewerModel;
 import diffract.viewer.ViewerRenderer;
 
@@ -23,8 +25,9 @@ final class Turntable {
     }
 
     static void render(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, int frames,
-                       boolean orbitLight, Path output, int[] size, int frameMs) throws IOException {
-        OrbitCamera start = model.state().camera();
+                       boolean orbitLight, Path output, Scene.ImageSize size, int frameMs, Reporter reporter)
+            throws IOException {
+        OrbitCamera start = model.state().view().camera();
         List<float[]> pictures = new ArrayList<>();
         boolean gif = output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gif");
         for (int k = 0; k < frames; k++) {
@@ -32,19 +35,18 @@ final class Turntable {
             if (orbitLight) {
                 renderer.setLightTurnDeg(degrees);
             } else {
-                model.update(s -> s.withCamera(start.orbitedBy(degrees, 0)));
+                model.update(s -> s.withView(s.view().withCamera(start.orbitedBy(degrees, 0))));
             }
-            float[] rgb = target.renderRgb(size[0], size[1]);
+            float[] rgb = target.renderRgb(size.width(), size.height());
             if (gif) {
                 pictures.add(rgb);
             } else {
-                ImageFiles.writePng(sequenceName(output, k), rgb, size[0], size[1], 3);
+                ImageFiles.writePng(sequenceName(output, k), rgb, size.width(), size.height(), 3);
             }
-            System.err.printf(Locale.ROOT, "\rturntable: frame %d of %d", k + 1, frames);
+            reporter.progress("turntable", (k + 1.0) / frames);
         }
-        System.err.println();
         if (gif) {
-            AnimatedGif.write(output, pictures, size[0], size[1], frameMs);
+            AnimatedGif.write(output, pictures, size.width(), size.height(), frameMs);
         }
     }
 

@@ -2,7 +2,6 @@ package diffract.optics;
 
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
-import diffract.util.UserInputException;
 
 /**
  * The relative diffraction BRDF of a patch (004): monochromatic, rho_lambda = C(omega_i, omega_r) S |P|^2
@@ -29,18 +28,19 @@ public final class DiffractionBrdf {
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
         if (settings.variant() == Variant.REFERENCE) {
             PatchSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
-            return new DiffractionBrdf(exact, WavelengthSampling.uniform(settings.lambdaMinNm(),
-                    settings.lambdaMaxNm(), BrdfSettings.REFERENCE_STEP_NM), settings.refractiveIndex());
+            return new DiffractionBrdf(exact, WavelengthSampling.uniform(settings.spectral().lambdaMinNm(),
+                    settings.spectral().lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM),
+                    settings.illumination().refractiveIndex());
         }
         if (settings.variant() == Variant.BAKED) {
-            throw new UserInputException(BAKED_IS_GPU_ONLY);
+            throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
         }
-        return withSampling(settings, taylorSpectrum(settings, terms, settings.highestOrder()));
+        return withSampling(settings, taylorSpectrum(settings, terms, settings.taylor().highestOrder()));
     }
 
     /**
-     * FLSS, NMM or PQ summed around the nearest phase centre (issue #6, {@link PhaseCentredSpectrum}) instead of
-     * around 0: the same window, lookup and wavelengths, every order of every centre ({@code settings.highestOrder()}
+     * FLSS, NMM or PQ summed around the nearest phase centre ({@link PhaseCentredSpectrum}) instead of
+     * around 0: the same window, lookup and wavelengths, every order of every centre ({@code settings.taylor().highestOrder()}
      * does not apply; the centres fix their own orders).
      */
     public static DiffractionBrdf createPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
@@ -56,7 +56,7 @@ public final class DiffractionBrdf {
         CoherenceWindow window = settings.coherenceWindow();
         WindowRadii radii = settings.windowRadii(terms.cols() * terms.pixelSizeXUm(),
                 terms.rows() * terms.pixelSizeYUm());
-        double tolerance = settings.taylorTolerance();
+        double tolerance = settings.taylor().tolerance();
         switch (settings.variant()) {
             case FLSS:
             case NMM:
@@ -64,14 +64,11 @@ public final class DiffractionBrdf {
             case PQ: {
                 double extentX = terms.cols() * terms.pixelSizeXUm();
                 double extentY = terms.rows() * terms.pixelSizeYUm();
-                int rx = settings.pqReplicas() > 0 ? settings.pqReplicas()
-                        : TaylorSincSpectrum.replicasForCoherence(window, extentX);
-                int ry = settings.pqReplicas() > 0 ? settings.pqReplicas()
-                        : TaylorSincSpectrum.replicasForCoherence(window, extentY);
-                return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance, rx, ry);
+                return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance,
+                        settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
             }
             case BAKED:
-                throw new UserInputException(BAKED_IS_GPU_ONLY);
+                throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
             default:
                 throw new IllegalStateException("unhandled variant " + settings.variant());
         }
@@ -79,15 +76,16 @@ public final class DiffractionBrdf {
 
     /** The variant's wavelengths: NMM's nodes, or the uniform grid of FLSS and PQ. */
     private static DiffractionBrdf withSampling(BrdfSettings settings, PatchSpectrum s) {
-        double min = settings.lambdaMinNm();
-        double max = settings.lambdaMaxNm();
+        SpectralSettings spectral = settings.spectral();
+        double min = spectral.lambdaMinNm();
+        double max = spectral.lambdaMaxNm();
         WavelengthSampling sampling = settings.variant() == Variant.NMM
-                ? WavelengthSampling.nmm(min, max, settings.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES)
-                : WavelengthSampling.uniform(min, max, settings.lambdaStepNm());
-        return new DiffractionBrdf(s, sampling, settings.refractiveIndex());
+                ? WavelengthSampling.nmm(min, max, spectral.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES)
+                : WavelengthSampling.uniform(min, max, spectral.lambdaStepNm());
+        return new DiffractionBrdf(s, sampling, settings.illumination().refractiveIndex());
     }
     /** One line for the CLI and the API when the baked table is asked of the CPU. */
-    public static final String BAKED_IS_GPU_ONLY = "the baked variant is a GPU table (--engine gpu); "
+    public static final String BAKED_IS_GPU_ONLY = "the baked variant is a table on the GPU; "
             + "on the CPU use flss, which it tabulates";
 
     /** NMM's node budget per fragment: beyond it, uniform steps are cheaper anyway. */

@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
 
@@ -43,7 +44,8 @@ public final class BakedTables {
 
     /** The table of these terms and settings, baked on the first request. */
     public static synchronized BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
-        Key key = new Key(terms, settings.withVariant(Variant.BAKED));
+        // the table is FLSS's on float32 terms whatever variant and term format ask
+        Key key = new Key(terms, settings.with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)));
         BakedTable table = CACHE.get(key);
         if (table == null) {
             table = bakeOffThisThread(terms, settings, reporter);

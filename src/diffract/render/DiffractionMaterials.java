@@ -7,7 +7,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.Direction;
 import diffract.optics.PhaseCentres;
-import diffract.optics.TaylorSincSpectrum;
+import diffract.optics.Variant;
 
 /**
  * {@link Material}s of the diffraction shaders: program, textures and the uniforms that mirror
@@ -82,40 +82,46 @@ public final class DiffractionMaterials {
         return brdfMap.setVec3("omegaI", (float) wi.x(), (float) wi.y(), (float) wi.z());
     }
 
+    /**
+     * The uniforms of the variant's program, each set once, by the include that declares it: the window
+     * ({@code spectrum_gaussian.glsl} or PQ's {@code spectrum_sinc.glsl}), the wavelengths
+     * ({@code wavelengths_uniform.glsl}, and NMM's {@code wavelengths_nmm.glsl} over it), the terms or the baked table, and
+     * the shared ones of {@code diffraction_common.glsl}.
+     */
     private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings) {
         double extentX = textures.extentXUm();
         double extentY = textures.extentYUm();
         CoherenceWindow window = settings.coherenceWindow();
-        // the replica counts of DiffractionBrdf.create(PQ)
-        int replicasX = settings.pqReplicas() > 0 ? settings.pqReplicas()
-                : TaylorSincSpectrum.replicasForCoherence(window, extentX);
-        int replicasY = settings.pqReplicas() > 0 ? settings.pqReplicas()
-                : TaylorSincSpectrum.replicasForCoherence(window, extentY);
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             BakedGrid grid = textures.baked().grid();
-            m.setTexture("bakedXyz", textures.bakedTexture())
-                    .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
+            m.setTexture("bakedXyz", textures.bakedTexture()).setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
         } else {
-            m.setTexture("taylorTerms", textures.terms())
-                    .setTexture("uniformNodeTable", textures.uniformNodeTable())
-                    .setTexture("spectralTable", textures.spectralTable());
-            if (textures.normalisedTerms()) {
-                m.setTexture("termExtrema", textures.termExtrema());
-            }
+            m.setTexture("taylorTerms", textures.terms());
+        }
+        m.setTexture("uniformNodeTable", textures.uniformNodeTable()); // NMM's fallback grid too
+        if (settings.variant() == Variant.NMM) {
+            m.setTexture("spectralTable", textures.spectralTable())
+                    .setFloat("spectralTableFirstNm", (float) textures.spectralTableFirstNm())
+                    .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
+                    .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
+        }
+        if (textures.baked() == null && textures.normalisedTerms()) {
+            m.setTexture("termExtrema", textures.termExtrema());
+        }
+        if (settings.variant() == Variant.PQ) {
+            // the replica counts of DiffractionBrdf.create(PQ)
+            m.setVec2("pqReplicas", settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
+        } else {
+            m.setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY));
         }
         PhaseCentres centres = textures.phaseCentres();
         if (centres != null) { // taylor_centred.glsl
             m.setFloat("centreSpacingPerUm", (float) centres.spacingPerUm()).setInt("centreCount", centres.centreCount());
         }
-        m.setFloat("taylorTolerance", (float) settings.taylorTolerance())
-                .setFloat("maxAbsHeightUm", (float) textures.maxAbsHeightUm());
-        return m.setVec2("patchExtentUm", (float) extentX, (float) extentY)
-                .setFloat("refractiveIndex", (float) settings.refractiveIndex())
-                .setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY))
-                .setVec2("pqReplicas", replicasX, replicasY)
-                .setFloat("lambdaMinNm", (float) settings.lambdaMinNm())
-                .setFloat("lambdaMaxNm", (float) settings.lambdaMaxNm())
-                .setFloat("spectralTableFirstNm", (float) textures.spectralTableFirstNm());
+        return m.setFloat("taylorTolerance", (float) settings.taylor().tolerance())
+                .setFloat("maxAbsHeightUm", (float) textures.maxAbsHeightUm())
+                .setVec2("patchExtentUm", (float) extentX, (float) extentY)
+                .setFloat("refractiveIndex", (float) settings.illumination().refractiveIndex());
     }
 }

@@ -4,10 +4,11 @@ import diffract.colour.Srgb;
 import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentres;
+import diffract.optics.Quantity;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
-import diffract.util.UserInputException;
 
 import java.util.Locale;
 import java.util.Map;
@@ -34,19 +35,19 @@ public final class DiffractionShaders {
         SURFACE
     }
 
-    /** One line for the CLI and the API when the exact reference is asked of the GPU. */
+    /** Why the exact reference cannot be asked of the GPU. */
     public static final String REFERENCE_IS_CPU_ONLY =
-            "the reference variant runs on the CPU only (--engine cpu); the GPU renders flss, nmm and pq";
+            "the reference variant runs on the CPU only; the GPU renders flss, nmm, pq and baked";
 
     private DiffractionShaders() {
     }
 
     /** The variant's fragment shader under {@code /shaders}; the reference has none. */
     public static String fragmentPath(Variant variant) {
-        if (variant == Variant.REFERENCE) {
-            throw new UserInputException(REFERENCE_IS_CPU_ONLY);
+        if (!variant.runsOnGpu()) {
+            throw new InvalidSettingException(Quantity.VARIANT, REFERENCE_IS_CPU_ONLY);
         }
-        return "diffraction/" + variant.cliName() + ".frag";
+        return "diffraction/" + variant.label() + ".frag";
     }
 
     public static String vertexPath(Target target) {
@@ -59,12 +60,13 @@ public final class DiffractionShaders {
      */
     public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
                                               boolean pigmentation) {
-        if (settings.automaticWindowRadius()) {
+        if (settings.window().automatic()) {
             throw new IllegalArgumentException("an automatic window radius needs the patch: use defines(settings, "
                     + "highestOrder, radii, ...)");
         }
-        return defines(settings, settings.highestOrder(),
-                new WindowRadii(settings.windowRadius(), settings.windowRadius()), target, monochromatic, pigmentation);
+        int r = settings.window().radius();
+        return defines(settings, settings.taylor().highestOrder(), new WindowRadii(r, r), target, monochromatic,
+                pigmentation);
     }
 
     /**
@@ -78,7 +80,7 @@ public final class DiffractionShaders {
 
     /**
      * As above; with {@code phaseCentres} (not null) the shader expands around the nearest phase centre
-     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}, issue #6) and {@code highestOrder} is the centres' order.
+     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}) and {@code highestOrder} is the centres' order.
      */
     public static Map<String, String> defines(BrdfSettings settings, int highestOrder, WindowRadii radii,
                                               PhaseCentres phaseCentres, Target target, boolean monochromatic,

@@ -8,13 +8,17 @@ import diffract.jrtr.FloatTexture1D;
 import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
+import diffract.optics.Quantity;
+import diffract.optics.SpectralSettings;
+import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
 import diffract.util.Reporter;
-import diffract.util.UserInputException;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -36,7 +40,7 @@ import java.util.List;
  *       settings ({@link BakedTables}).</li>
  * </ul>
  *
- * <p>Only what the settings need goes to the GPU (issue #5): with a Taylor tolerance only the terms up to
+ * <p>The terms are stored in the settings' {@link TermFormat}. Only what the settings need goes to the GPU: with a Taylor tolerance only the terms up to
  * {@link BrdfSettings#highestOrderNeeded} (no fragment's loop reaches further), and only the uniform-grid nodes
  * where D65 x CMF is not zero in all three channels (they would add 0 x |P|^2).
  */
@@ -73,19 +77,25 @@ public final class DiffractionTextures {
         this.phaseCentres = phaseCentres;
     }
 
-    /** Terms 0..settings.highestOrder() (which the terms must hold) and the tables for the settings' wavelengths. */
-    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        return of(terms, settings, precision, Reporter.SILENT);
+    /** The textures of the path {@link TaylorEvaluation#choose} picked: the thesis' terms or the phase-centred ones. */
+    public static DiffractionTextures of(TaylorEvaluation evaluation, BrdfSettings settings, Reporter reporter) {
+        return evaluation.isPhaseCentred() ? ofPhaseCentred(evaluation.centredTerms(), settings)
+                : of(evaluation.plainTerms(), settings, reporter);
+    }
+
+    /** Terms 0..N (which the terms must hold) and the tables for the settings' wavelengths. */
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings) {
+        return of(terms, settings, Reporter.SILENT);
     }
 
     /** As above; a BAKED table that is not cached yet is baked first, with progress on {@code reporter}. */
-    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision,
-                                         Reporter reporter) {
-        if (settings.highestOrder() > terms.highestOrder()) {
-            throw new IllegalArgumentException("Taylor order " + settings.highestOrder() + " requested, the terms hold 0.."
-                    + terms.highestOrder());
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        if (settings.taylor().highestOrder() > terms.highestOrder()) {
+            throw new IllegalArgumentException("Taylor order " + settings.taylor().highestOrder()
+                    + " requested, the terms hold 0.." + terms.highestOrder());
         }
         int highestOrder = settings.highestOrderNeeded(terms.maxAbsHeightUm());
+        FloatTextureArray.Precision precision = TermFormats.precision(settings.gpu().termFormat());
         boolean normalised = precision == FloatTextureArray.Precision.UNORM8;
         List<float[]> layers = new ArrayList<>();
         if (normalised) {
@@ -98,24 +108,24 @@ public final class DiffractionTextures {
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
         BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
         return new DiffractionTextures(termTexture, normalised ? NormalisedTerms.extremaTable(terms, highestOrder) : null,
-                buildUniformNodeTable(settings), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
+                buildUniformNodeTable(settings.spectral()), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
                 baked, null);
     }
 
     /**
-     * The phase-centred expansion (issue #6): every centre's terms E_{j,n} in layer j * (N_c + 1) + n
+     * The phase-centred expansion: every centre's terms E_{j,n} in layer j * (N_c + 1) + n
      * ({@link PhaseCentredTerms#layers()}, read by {@code taylor_centred.glsl}); the settings' Taylor order does not
      * apply, the centres fix theirs.
      */
-    public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings,
-                                                     FloatTextureArray.Precision precision) {
-        if (precision == FloatTextureArray.Precision.UNORM8) {
-            throw new UserInputException("8-bit terms (rg8) hold the thesis' series around 0 only; this patch needs "
-                    + "the phase-centred expansion: use --texture-format rg32f or rg16f");
+    public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings) {
+        if (settings.gpu().termFormat() == TermFormat.RG8) {
+            throw new InvalidSettingException(Quantity.TERM_FORMAT, "8-bit terms (rg8) hold the thesis' series around"
+                    + " 0 only; this patch needs the phase-centred expansion: store the terms as rg32f or rg16f");
         }
+        FloatTextureArray.Precision precision = TermFormats.precision(settings.gpu().termFormat());
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
-        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings), buildSpectralTable(),
+        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()), buildSpectralTable(),
                 Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null, terms.centres());
     }
 
@@ -123,8 +133,13 @@ public final class DiffractionTextures {
      * (wx, wy, wz, lambda) per node of WavelengthSampling.uniform(min, max, step), leaving out the nodes whose
      * three weights are all 0 (outside the CMF or D65 tables): the shader's loop runs over the rest only.
      */
-    static FloatTexture1D buildUniformNodeTable(BrdfSettings settings) {
-        double[] nodes = Trapezoid.uniformNodes(settings.lambdaMinNm(), settings.lambdaMaxNm(), settings.lambdaStepNm());
+    static FloatTexture1D buildUniformNodeTable(SpectralSettings spectral) {
+        return buildUniformNodeTable(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.lambdaStepNm());
+    }
+
+    /** As above for any grid (wavelengths outside the colour tables included). */
+    static FloatTexture1D buildUniformNodeTable(double lambdaMinNm, double lambdaMaxNm, double lambdaStepNm) {
+        double[] nodes = Trapezoid.uniformNodes(lambdaMinNm, lambdaMaxNm, lambdaStepNm);
         double[][] weights = SpectralIntegrator.xyzWeights(nodes, Trapezoid.weights(nodes));
         float[] rgba = new float[4 * nodes.length];
         int kept = 0;
@@ -139,8 +154,8 @@ public final class DiffractionTextures {
             kept++;
         }
         if (kept == 0) {
-            throw new diffract.util.UserInputException("no wavelength in " + settings.lambdaMinNm() + ".."
-                    + settings.lambdaMaxNm() + " nm has a non-zero CIE 1931 x D65 weight");
+            throw new InvalidSettingException(Quantity.LAMBDA_MIN, "no wavelength in " + lambdaMinNm + ".."
+                    + lambdaMaxNm + " nm has a non-zero CIE 1931 x D65 weight");
         }
         return new FloatTexture1D(java.util.Arrays.copyOf(rgba, 4 * kept));
     }

@@ -1,7 +1,6 @@
 package diffract.render;
 
 import diffract.jrtr.Camera;
-import diffract.jrtr.FloatTextureArray;
 import diffract.jrtr.Frustum;
 import diffract.jrtr.GLInfo;
 import diffract.jrtr.Group;
@@ -12,13 +11,14 @@ import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentredTerms;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.util.Reporter;
 import diffract.util.UserInputException;
-
-import java.util.function.Supplier;
 
 /**
  * BRDF maps on the GPU, with the pixel convention of {@link diffract.optics.BrdfMap}: pixel (i, j) of an S x S map
@@ -36,30 +36,33 @@ public final class GpuBrdfMap implements AutoCloseable {
     private Material monochromaticMaterial;
 
     /**
-     * @param terms     the precomputed float32 Taylor terms (at least settings.highestOrder())
-     * @param precision how the terms are stored on the GPU (FLOAT32 = bit-exact)
+     * The map of the thesis' series over these terms, stored in the settings' term format.
+     *
+     * @param terms the precomputed float32 Taylor terms (at least N)
      * @throws UserInputException for the reference variant, or when no GL context can be opened
      */
-    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, () -> DiffractionTextures.of(terms, settings, precision)), settings);
+    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings) {
+        this(TaylorEvaluation.plain(terms), settings, Reporter.SILENT);
     }
 
-    /** The phase-centred expansion (issue #6): the same maps for patches too tall for the thesis' series. */
-    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, () -> DiffractionTextures.ofPhaseCentred(terms, settings, precision)), settings);
+    /** The phase-centred expansion: the same maps for patches too tall for the thesis' series. */
+    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings) {
+        this(TaylorEvaluation.phaseCentred(terms), settings, Reporter.SILENT);
     }
 
-    /** The map of a scene on the path {@link TaylorEvaluation#choose} picked for it. */
-    public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        return evaluation.isPhaseCentred() ? new GpuBrdfMap(evaluation.centredTerms(), settings, precision)
-                : new GpuBrdfMap(evaluation.plainTerms(), settings, precision);
+    /**
+     * The map on the path {@link TaylorEvaluation#choose} picked for a patch; a baked table not cached yet is baked
+     * first, with progress on {@code reporter}.
+     */
+    public GpuBrdfMap(TaylorEvaluation evaluation, BrdfSettings settings, Reporter reporter) {
+        this(DiffractionTextures.of(evaluation, requireGpuVariant(settings), reporter), settings);
     }
 
-    private static DiffractionTextures checkVariant(BrdfSettings settings, Supplier<DiffractionTextures> textures) {
-        if (settings.variant() == Variant.REFERENCE) {
-            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+    private static BrdfSettings requireGpuVariant(BrdfSettings settings) {
+        if (!settings.variant().runsOnGpu()) {
+            throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
-        return textures.get();
+        return settings;
     }
 
     private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings) {
@@ -119,13 +122,13 @@ public final class GpuBrdfMap implements AutoCloseable {
     /** The baked table holds colour (XYZ), not the BRDF at one wavelength. */
     private void requireSpectral() {
         if (settings.variant() == Variant.BAKED) {
-            throw new UserInputException(BAKED_HAS_NO_MONOCHROMATIC);
+            throw new InvalidSettingException(Quantity.MONOCHROMATIC_LAMBDA, BAKED_HAS_NO_MONOCHROMATIC);
         }
     }
 
-    /** One line for the CLI when a monochromatic map of the baked variant is asked. */
+    /** Why a monochromatic map of the baked variant cannot be made. */
     public static final String BAKED_HAS_NO_MONOCHROMATIC =
-            "the baked variant tabulates colour (XYZ), not single wavelengths: use flss with --lambda";
+            "the baked variant tabulates colour (XYZ), not single wavelengths: use flss for a monochromatic map";
 
     /** The GL driver's version and renderer strings. */
     public GLInfo info() {
@@ -144,7 +147,8 @@ public final class GpuBrdfMap implements AutoCloseable {
         if (size < 1) {
             throw new IllegalArgumentException("map size must be >= 1, got " + size);
         }
-        DiffractionMaterials.setLight(material, wi).setFloat("mapSizePx", size);
+        // the whole viewport is the map (a window centres a smaller one)
+        DiffractionMaterials.setLight(material, wi).setFloat("mapSizePx", size).setVec2("mapOriginPx", 0, 0);
         quad.setMaterial(material);
     }
 

@@ -1,7 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -27,7 +26,7 @@ class TurntableCliTest {
 
     @Test
     void aGifHasEveryFrameAtTheAskedSize() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path gif = dir.resolve("turn.gif");
         Object[] result = CliTest.run("render", SCENE, "--turntable", "4", "--size", "48x32", "-o", gif.toString());
         assertEquals(0, result[0], (String) result[2]);
@@ -49,7 +48,7 @@ class TurntableCliTest {
 
     @Test
     void aPngNameGivesANumberedSequenceAndTheLightCanGoRound() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("light.png");
         Object[] result = CliTest.run("render", SCENE, "--turntable", "3", "--orbit-light", "--size", "40x24", "-o",
                 png.toString());

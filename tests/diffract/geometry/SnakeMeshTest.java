@@ -1,5 +1,6 @@
 package diffract.geometry;
 
+import diffract.util.TestReport;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -23,7 +24,7 @@ class SnakeMeshTest {
     @Test
     void triangleCountIsBetween20kAnd60k() {
         int triangles = mesh.triangleCount();
-        System.out.println("snake: " + triangles + " triangles, " + mesh.vertexCount() + " vertices");
+        TestReport.line(SnakeMeshTest.class, "snake: " + triangles + " triangles, " + mesh.vertexCount() + " vertices");
         assertEquals(SnakeMesh.Parameters.defaults().triangleCount(), triangles);
         assertTrue(triangles >= 20_000 && triangles <= 60_000, "triangles: " + triangles);
     }

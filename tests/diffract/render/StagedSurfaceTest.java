@@ -1,14 +1,13 @@
 package diffract.render;
 
 import diffract.colour.ToneMapping;
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.GlTestSupport;
 import diffract.jrtr.OffscreenTarget;
 import diffract.scene.Fabricator;
+import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
 import diffract.viewer.ViewerModel;
 import diffract.viewer.ViewerRenderer;
-import diffract.viewer.ViewerSetup;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -27,8 +26,8 @@ class StagedSurfaceTest {
     static final int W = 96;
     static final int H = 60;
 
-    static float[] render(ViewerSetup setup, Fabricator.Fabricated f) {
-        ViewerModel model = ViewerModel.load(setup, f.terms(), Reporter.SILENT);
+    static float[] render(SceneSetup setup) {
+        ViewerModel model = ViewerModel.load(setup, Reporter.SILENT);
         try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
             return target.renderRgb(W, H);
         }
@@ -47,13 +46,12 @@ class StagedSurfaceTest {
 
     @Test
     void flatScalesGiveThePlainSurfaceAndTiltedOnesDoNot() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
-        Fabricator.Fabricated f = Fabricator.fabricate(Path.of("assets", "scenes", "blazed-grating-plane.json"),
+        GlTestSupport.assumeOffscreenGl();
+        SceneSetup plain = Fabricator.fabricate(Path.of("assets", "scenes", "blazed-grating-plane.json"),
                 Reporter.SILENT);
-        ViewerSetup plain = f.setup();
-        float[] reference = render(plain, f);
-        float[] flat = render(plain.withStage(new Stage(frames(0), null, null, ToneMapping.clip())), f);
-        float[] tilted = render(plain.withStage(new Stage(frames(0.2f), null, null, ToneMapping.clip())), f);
+        float[] reference = render(plain);
+        float[] flat = render(plain.withStage(new Stage(frames(0), null, null, ToneMapping.clip())));
+        float[] tilted = render(plain.withStage(new Stage(frames(0.2f), null, null, ToneMapping.clip())));
         int lit = 0;
         int differing = 0;
         int moved = 0;

@@ -1,4 +1,4 @@
-package diffract.viewer;
+package diffract.scene;
 
 import diffract.optics.Direction;
 

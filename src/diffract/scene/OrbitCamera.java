@@ -1,4 +1,4 @@
-package diffract.viewer;
+package diffract.scene;
 
 /**
  * A camera on a sphere around a target point: azimuth about the world y axis (0 = on the +z side), elevation above

@@ -1,7 +1,7 @@
-package diffract.app;
+package diffract.optics;
 
 /**
- * Picks a display exposure for a BRDF map (pixel convention of {@link diffract.optics.BrdfMap}): the brightest diffracted pixel, ignoring the specular highlight (the
+ * Picks a display exposure for a BRDF map (pixel convention of {@link BrdfMap}): the brightest diffracted pixel, ignoring the specular highlight (the
  * pixels within 3 pixels of the mirror direction), is mapped to 1. Diffraction orders are typically 10-1000 times
  * dimmer than the specular peak, so exposure 1 shows mostly black; this keeps their colours visible.
  */
@@ -17,6 +17,12 @@ public final class AutoExposure {
      * @param specularY  tangent-frame y of the mirror direction
      */
     public static double of(float[] luminance, int size, double specularX, double specularY) {
+        double max = brightestDiffracted(luminance, size, specularX, specularY);
+        return max > 0 && Double.isFinite(max) ? 1.0 / max : 1.0;
+    }
+
+    /** The largest value outside the specular highlight (0 when there is none). */
+    public static double brightestDiffracted(float[] luminance, int size, double specularX, double specularY) {
         double specularColumn = (specularX + 1) * size / 2 - 0.5;
         double specularRow = (1 - specularY) * size / 2 - 0.5;
         double max = 0;
@@ -28,6 +34,6 @@ public final class AutoExposure {
                 max = Math.max(max, luminance[j * size + i]);
             }
         }
-        return max > 0 && Double.isFinite(max) ? 1.0 / max : 1.0;
+        return max;
     }
 }

@@ -1,4 +1,4 @@
-package diffract.viewer;
+package diffract.scene;
 
 /** What the window shows. */
 public enum DisplayMode {

@@ -1,7 +1,6 @@
-package diffract.app;
+package diffract.optics;
 
 import diffract.colour.DeltaEStatistics;
-import diffract.optics.BrdfMap;
 
 import java.util.List;
 import java.util.Locale;

@@ -1,57 +1,24 @@
-package diffract.viewer;
+package diffract.scene;
 
-import diffract.jrtr.Shape;
 import diffract.geometry.Mesh;
 import diffract.geometry.SnakeMesh;
+import diffract.jrtr.Shape;
 import diffract.jrtr.VertexData;
-import diffract.util.UserInputException;
 
-import java.util.Locale;
 
 /**
- * The shapes the viewer shows until scene files bring the snake mesh: a sphere, a plane and an open cylinder, all
- * about the origin within the unit cube, with positions, normals, texcoords and tangents. The tangent carries the
+ * The shapes a scene can name besides an OBJ file: a sphere, a plane, an open cylinder and the procedural snake,
+ * all about the origin within the unit cube, with positions, normals, texcoords and tangents. The tangent carries the
  * patch's x axis (its columns) over the surface: it is the world direction {@code tangentAlong} projected onto
  * each vertex's tangent plane, so e.g. (1, 0, 0) lays the patch's x axis horizontally everywhere it can. Where the
  * direction is (nearly) normal to the surface the projection vanishes and the shape's own fallback direction is
  * used (around the y axis for sphere and cylinder).
  */
-public final class ViewerShapes {
+public final class PrimitiveShapes {
     /** Below this length a projected tangent is too short to normalise reliably. */
     private static final double DEGENERATE_TANGENT = 1e-3;
 
-    /** The shapes by command-line name. */
-    public enum Kind {
-        SPHERE, PLANE, CYLINDER, SNAKE;
-
-        public String cliName() {
-            return name().toLowerCase(Locale.ROOT);
-        }
-
-        public static Kind parse(String text) {
-            for (Kind kind : values()) {
-                if (kind.cliName().equalsIgnoreCase(text.trim())) {
-                    return kind;
-                }
-            }
-            throw new UserInputException("unknown shape '" + text + "': use sphere, plane, cylinder or snake");
-        }
-
-        public Shape build(double[] tangentAlong) {
-            switch (this) {
-                case PLANE:
-                    return plane(tangentAlong);
-                case CYLINDER:
-                    return cylinder(tangentAlong);
-                case SNAKE:
-                    return snake(SnakeMesh.Parameters.defaults());
-                default:
-                    return sphere(tangentAlong);
-            }
-        }
-    }
-
-    private ViewerShapes() {
+    private PrimitiveShapes() {
     }
 
     /** The unit sphere, poles on the y axis, 48 stacks x 96 slices; texcoord u around, v from pole to pole. */
