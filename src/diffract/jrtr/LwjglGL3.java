@@ -35,8 +35,10 @@ import java.nio.LongBuffer;
 import java.nio.ShortBuffer;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 
 /**
@@ -54,8 +56,9 @@ import java.util.concurrent.ConcurrentHashMap;
  *       passed as they are, from their position, as JOGL does.</li>
  * </ul>
  * {@code glShaderSource(int, int, String[], int[], int)} is the one JOGL signature with no C twin and is written
- * out. JOGL methods without a core function (JOGL's own helpers such as {@code isExtensionAvailable}) throw
- * {@link UnsupportedOperationException} naming the method. The calls need this context current on the thread
+ * out. Of JOGL's own helpers, the version queries and {@code isExtensionAvailable} (from the context's
+ * {@code GL_EXTENSIONS} list) are answered; the others throw {@link UnsupportedOperationException} naming the
+ * method. The calls need this context current on the thread
  * (LWJGL's capabilities set), which {@link EglContext#makeCurrent} does.
  */
 final class LwjglGL3 implements InvocationHandler {
@@ -70,6 +73,8 @@ final class LwjglGL3 implements InvocationHandler {
     private final GL3 proxy;
     private final String platform;
     private final int[] version;
+    /** The context's extensions, read at the first question (the context is current then). */
+    private volatile Set<String> extensions;
 
     private LwjglGL3(String platform, int[] version) {
         this.platform = platform;
@@ -137,9 +142,26 @@ final class LwjglGL3 implements InvocationHandler {
             case "getContext" -> {
                 return null; // not a JOGL context: callers identify it by this GL object
             }
+            case "isExtensionAvailable" -> {
+                return extensions().contains((String) args[0]);
+            }
             default -> throw new UnsupportedOperationException(method.getName()
                     + " is a JOGL helper the headless EGL context does not offer");
         }
+    }
+
+    /** The core profile's extension list: GL_NUM_EXTENSIONS names, one glGetStringi each. */
+    private Set<String> extensions() {
+        Set<String> known = extensions;
+        if (known == null) {
+            known = new HashSet<>();
+            int count = GL11C.glGetInteger(GL30C.GL_NUM_EXTENSIONS);
+            for (int i = 0; i < count; i++) {
+                known.add(GL30C.glGetStringi(GL11C.GL_EXTENSIONS, i));
+            }
+            extensions = known;
+        }
+        return known;
     }
 
     private static Map<String, List<Method>> coreFunctions() {

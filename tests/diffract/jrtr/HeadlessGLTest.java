@@ -1,5 +1,6 @@
 package diffract.jrtr;
 
+import com.jogamp.opengl.GL3;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -8,6 +9,7 @@ import java.util.Map;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -53,6 +55,16 @@ class HeadlessGLTest {
                 Object inside = target.withContext(gl -> HeadlessGL.currentContext());
                 assertNotNull(inside);
             }
+            // JOGL's extension query answers on either context: a listed extension is there, a made-up one is not
+            boolean[] answers = target.withContext(gl -> {
+                int[] count = new int[1];
+                gl.glGetIntegerv(GL3.GL_NUM_EXTENSIONS, count, 0);
+                assertTrue(count[0] > 0, "no extensions listed by " + info);
+                String last = gl.glGetStringi(GL3.GL_EXTENSIONS, count[0] - 1);
+                return new boolean[] {gl.isExtensionAvailable(last), gl.isExtensionAvailable("GL_DIFFRACT_none")};
+            });
+            assertTrue(answers[0], "a listed extension is available");
+            assertFalse(answers[1], "a made-up extension is not");
         }
     }
 
