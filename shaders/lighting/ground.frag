@@ -1,7 +1,7 @@
 #version 330 core
-// The ground (diffract.render.StageMaterials.ground): a Lambertian plane facing +y, its albedo mottled by value
-// noise, lit by the key light (irradiance 1, shadowed) and the environment's diffuse irradiance, tone mapped as
-// the surface is. Radiance = albedo x irradiance, in the units of the diffraction shaders' pigment term.
+// The ground (the ground material of diffract.render.StageResources): a Lambertian plane facing +y, its albedo
+// mottled by value noise, lit by the key light (irradiance 1, shadowed) and the environment's diffuse irradiance,
+// tone mapped as the surface is. Radiance = albedo x irradiance, in the units of the diffraction shaders' pigment term.
 #include "environment.glsl"
 #include "tone_mapping.glsl"
 

@@ -19,6 +19,7 @@ import diffract.optics.BrdfSettings;
 import javax.vecmath.Vector3f;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeMap;
 
 /**
  * The GPU side of a {@link Stage} for one shape: the scale frame texture, the key light's shadow map, the ground
@@ -90,12 +91,17 @@ public final class StageResources {
             shadowMap.aim(towardsKey, centre, radius);
             shadowMap.render(context, casters);
         }
-        for (Material m : groundNode == null ? List.of(surface) : List.of(surface, groundNode.material())) {
-            setFrameUniforms(m, turnDeg);
+        setFrameUniforms(surface, turnDeg, true);
+        if (groundNode != null) {
+            setFrameUniforms(groundNode.material(), turnDeg, false);
         }
     }
 
-    private void setFrameUniforms(Material m, double turnDeg) {
+    /**
+     * Tone mapping, shadow and environment uniforms; the extended lights only with {@code extendedLights} (the
+     * diffraction surface evaluates the BRDF per light; the Lambertian ground needs only the SH irradiance).
+     */
+    private void setFrameUniforms(Material m, double turnDeg, boolean extendedLights) {
         m.setFloat("toneExposureScale", (float) stage.toneMapping().exposureScale())
                 .setFloat("toneWhiteLuminance", (float) stage.toneMapping().whiteLuminance());
         if (shadowMap != null) {
@@ -103,6 +109,9 @@ public final class StageResources {
         }
         Environment environment = environment(turnDeg);
         if (environment != null) {
+            m.set("irradianceSh", new UniformValue.Vector3ArrayValue(environment.irradiance().shaderCoefficients()));
+        }
+        if (environment != null && extendedLights) {
             List<ExtendedLight> lights = environment.lights();
             float[] directions = new float[3 * lights.size()];
             float[] rgb = new float[3 * lights.size()];
@@ -116,8 +125,7 @@ public final class StageResources {
             }
             m.set("environmentLightDirection", new UniformValue.Vector3ArrayValue(directions))
                     .set("environmentLightRgb", new UniformValue.Vector3ArrayValue(rgb))
-                    .setFloatArray("environmentLightAngularDiameterDeg", diameters)
-                    .set("irradianceSh", new UniformValue.Vector3ArrayValue(environment.irradiance().shaderCoefficients()));
+                    .setFloatArray("environmentLightAngularDiameterDeg", diameters);
         }
     }
 
@@ -147,7 +155,7 @@ public final class StageResources {
     }
 
     private Material groundMaterial() {
-        Map<String, String> defines = new java.util.TreeMap<>(stage.defines());
+        Map<String, String> defines = new TreeMap<>(stage.defines());
         ShaderProgram program = ShaderProgram.fromClasspath("lighting/ground.vert", "lighting/ground.frag", defines);
         Stage.Ground g = stage.ground();
         Material m = new Material(program)
