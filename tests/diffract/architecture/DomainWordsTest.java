@@ -26,8 +26,8 @@ class DomainWordsTest {
     @Test
     void noFlagNamesInDomainMessages() throws IOException {
         List<String> found = new ArrayList<>();
-        for (String pkg : List.of("util", "colour", "geometry", "optics", "precompute", "jrtr", "render", "pipeline",
-                "scene")) {
+        for (String pkg : List.of("util", "colour", "geometry", "lighting", "optics", "precompute", "jrtr", "render",
+                "pipeline", "scene")) {
             try (Stream<Path> files = Files.walk(Path.of("src", "diffract", pkg))) {
                 for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
                     List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);

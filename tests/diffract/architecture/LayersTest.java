@@ -14,11 +14,12 @@ import static com.tngtech.archunit.library.dependencies.SlicesRuleDefinition.sli
 
 /**
  * The layers of the code, from the bottom: {@code util} (reporting, errors, files), {@code colour}, {@code geometry}
- * (CPU meshes) and {@code optics} (the BRDF and its settings); {@code precompute} (the Taylor terms); the GL engine
- * {@code jrtr}, which knows nothing of diffraction, and the GPU materials {@code render}; the {@code pipeline} that
- * every command takes from a height field to a picture; {@code scene} (what a scene file or a command line
- * describes, and the Fabricator); {@code viewer} and {@code bench}; and the command line {@code app}. A layer uses
- * only the layers below it; the domain below the engine uses neither OpenGL nor the command line.
+ * (CPU meshes and the scale lattice), {@code lighting} (environment light on the CPU) and {@code optics} (the BRDF and
+ * its settings); {@code precompute} (the Taylor terms); the GL engine {@code jrtr}, which knows nothing of
+ * diffraction, and the GPU materials {@code render}; the {@code pipeline} that every command takes from a height field
+ * to a picture; {@code scene} (what a scene file or a command line describes, and the Fabricator); {@code viewer} and
+ * {@code bench}; and the command line {@code app}. A layer uses only the layers below it; the domain below the engine
+ * uses neither OpenGL nor the command line.
  */
 class LayersTest {
     static JavaClasses classes;
@@ -43,6 +44,7 @@ class LayersTest {
                 .layer("Engine").definedBy("diffract.jrtr..")
                 .layer("Precompute").definedBy("diffract.precompute..")
                 .layer("Optics").definedBy("diffract.optics..")
+                .layer("Lighting").definedBy("diffract.lighting..")
                 .layer("Geometry").definedBy("diffract.geometry..")
                 .layer("Colour").definedBy("diffract.colour..")
                 .layer("Util").definedBy("diffract.util..")
@@ -57,6 +59,8 @@ class LayersTest {
                         "App")
                 .whereLayer("Optics").mayOnlyBeAccessedByLayers("Precompute", "Materials", "Pipeline", "Scene", "Viewer",
                         "Bench", "App")
+                .whereLayer("Lighting").mayOnlyBeAccessedByLayers("Materials", "Pipeline", "Scene", "Viewer", "Bench",
+                        "App")
                 .whereLayer("Geometry").mayOnlyBeAccessedByLayers("Scene", "Viewer", "Bench", "App")
                 .whereLayer("Colour").mayOnlyBeAccessedByLayers("Optics", "Precompute", "Materials", "Pipeline", "Scene",
                         "Viewer", "Bench", "App");
@@ -71,7 +75,7 @@ class LayersTest {
     @Test
     void theDomainUsesNeitherOpenGlNorTheCommandLine() {
         noClasses().that().resideInAnyPackage("diffract.util..", "diffract.colour..", "diffract.geometry..",
-                        "diffract.optics..", "diffract.precompute..")
+                        "diffract.lighting..", "diffract.optics..", "diffract.precompute..")
                 .should().dependOnClassesThat().resideInAnyPackage("com.jogamp..", "picocli..")
                 .check(classes);
     }
@@ -86,7 +90,7 @@ class LayersTest {
     void theEngineKnowsNothingOfDiffraction() {
         noClasses().that().resideInAPackage("diffract.jrtr..")
                 .should().dependOnClassesThat().resideInAnyPackage("diffract.colour..", "diffract.optics..",
-                        "diffract.geometry..", "diffract.precompute..", "diffract.render..")
+                        "diffract.geometry..", "diffract.lighting..", "diffract.precompute..", "diffract.render..")
                 .check(classes);
     }
 }
