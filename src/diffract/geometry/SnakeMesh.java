@@ -79,17 +79,11 @@ public final class SnakeMesh {
      * @param rings              rings of vertices between the two poles
      * @param segments           vertices around each ring (+1 for the seam)
      * @param ridges             patch orientation on the skin
+     * @param pose               stretched out in S-bends, or coiled (the centre curve; the cross-section is the same)
      */
     public record Parameters(double lengthM, double radiusM, double heightToWidth, double tailFraction,
                              double bends, double bendAmplitudeM, double headLiftM, int rings, int segments,
                              RidgeDirection ridges, Pose pose) {
-        /** Stretched out in S-bends ({@link Pose#S_CURVE}). */
-        public Parameters(double lengthM, double radiusM, double heightToWidth, double tailFraction, double bends,
-                          double bendAmplitudeM, double headLiftM, int rings, int segments, RidgeDirection ridges) {
-            this(lengthM, radiusM, heightToWidth, tailFraction, bends, bendAmplitudeM, headLiftM, rings, segments,
-                    ridges, Pose.S_CURVE);
-        }
-
         public Parameters {
             if (pose == null) {
                 throw new UserInputException("snake pose missing");
@@ -126,10 +120,11 @@ public final class SnakeMesh {
 
         /**
          * A corn-snake-sized animal: 1.2 m, 2 cm half-width, two and a half bends of 12 cm, 320 rings x 64
-         * segments = 40,960 triangles, ridges along the body.
+         * segments = 40,960 triangles, ridges along the body, stretched out in S-bends.
          */
         public static Parameters defaults() {
-            return new Parameters(1.2, 0.02, 0.85, 0.25, 2.5, 0.12, 0.03, 320, 64, RidgeDirection.ALONG_BODY);
+            return new Parameters(1.2, 0.02, 0.85, 0.25, 2.5, 0.12, 0.03, 320, 64, RidgeDirection.ALONG_BODY,
+                    Pose.S_CURVE);
         }
 
         public Parameters withRidges(RidgeDirection direction) {

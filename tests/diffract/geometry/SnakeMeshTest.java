@@ -140,7 +140,7 @@ class SnakeMeshTest {
                 () -> SnakeMesh.Parameters.defaults().withResolution(4, 64));
         assertTrue(e.getMessage().contains("rings"), e.getMessage());
         e = assertThrows(UserInputException.class, () -> new SnakeMesh.Parameters(1, 0.5, 0.85, 0.25, 2, 0.1, 0.02,
-                100, 32, SnakeMesh.RidgeDirection.ALONG_BODY));
+                100, 32, SnakeMesh.RidgeDirection.ALONG_BODY, SnakeMesh.Pose.S_CURVE));
         assertTrue(e.getMessage().contains("radiusM"), e.getMessage());
     }
 
