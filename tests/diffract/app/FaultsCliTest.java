@@ -484,7 +484,7 @@ class FaultsCliTest {
         Object[] none = run();
         assertEquals(2, none[0]);
         assertEquals(List.of("diffract: missing command: one of demo, precompute, brdfmap, compare, convert-terms,"
-                + " patch, view, render, bench; try 'diffract --help'"), err(none).lines().toList());
+                + " patch, view, render, measure, bench; try 'diffract --help'"), err(none).lines().toList());
     }
 
     /**
