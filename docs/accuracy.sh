@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's accuracy table: each CPU variant's colour BRDF map against the exact reference (CIEDE2000 over the
+# The accuracy table of docs/accuracy.md: each CPU variant's colour BRDF map against the exact reference (CIEDE2000 over the
 # unit disk, after the display exposure). Run from anywhere: bash docs/accuracy.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates every picture in README.md from the repository root: bash docs/figures.sh
+# Regenerates the BRDF-map pictures of README.md and docs/accuracy.md from the repository root: bash docs/figures.sh
 # The Elaphe pictures need the measured patch in ../shared/data (skipped without it).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates the pictures and the numbers of docs/gpu.md from the repository root: bash docs/gpu-figures.sh
-# Needs OpenGL 3.3 (under Linux without a display the launcher runs the GPU commands under xvfb-run).
+# Needs OpenGL 3.3 (without a display the GPU commands run on headless EGL, docs/headless-gl.md).
 # Prints the table of docs/gpu.md (ms/frame on this machine's GL, CIEDE2000 against the CPU reference) to stdout.
 set -euo pipefail
 cd "$(dirname "$0")/.."

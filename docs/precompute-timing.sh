@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The README's precompute figures: a 512 x 512 patch, 40 Taylor orders (41 FFTs), first run and cached rerun,
+# The precompute figures of docs/bench.md: a 512 x 512 patch, 40 Taylor orders (41 FFTs), first run and cached rerun,
 # wall-clock time of the whole ./diffract command (JVM start included). Run: bash docs/precompute-timing.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Renders one picture of each default scene (assets/scenes/*.json) into docs/images/scene-NAME.png, at the
-# scene's own size, with the same `render` the tests use. Needs a display or xvfb-run (the launcher starts one).
+# scene's own size, with the same `render` the tests use. Needs OpenGL 3.3; no display (headless EGL).
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"

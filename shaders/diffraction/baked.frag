@@ -1,5 +1,5 @@
 #version 330 core
-// BAKED (issue #5; lookup tables as in Dhillon and Ghosh 2016, Toisoul and Ghosh 2017): the spectral integral of
+// BAKED (lookup tables as in Dhillon and Ghosh 2016, Toisoul and Ghosh 2017): the spectral integral of
 // 004 eq. finalexpression, sum_j |P(lambda_j)|^2 weights_j, depends on the directions only through
 // (u, v, w) = -omega_i - omega_r. It is baked once per patch and settings into a 3-D table over |u|, |v| <= 2,
 // w in [-2, 0] (BakedGrid) by this very file compiled with BAKE, which runs FLSS (flss.frag's spectrum and

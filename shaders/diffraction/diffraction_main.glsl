@@ -85,7 +85,16 @@ uniform sampler2D pigmentation;   // display-encoded sRGB bytes
 uniform float diffuseWeight;      // w_d of Algorithm 4
 #endif
 
+#ifdef STAGE
+#include "surface_stage.glsl"
+#endif
+
 void main() {
+#ifdef STAGE
+    vec3 staged = toneMap(stagedSurfaceLinear());
+    fragColor = vec4(srgbEncode(staged), 1.0);
+    return;
+#endif
     vec3 wi = safeNormalize(omegaITangent);
     vec3 wr = safeNormalize(toViewerTangent);
 #ifdef FILTERED

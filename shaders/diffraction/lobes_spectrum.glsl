@@ -18,10 +18,6 @@ uniform float lobeMaxStepNm;
 uniform float lobeReachSigmas;
 uniform float lobeWeightStepNm;
 
-#ifdef TERMS_UNORM8
-uniform sampler1D termExtrema;
-#endif
-
 const int MAX_NODES = 512;   // nodes per lobe below 1 nm spacing (LobeSpectrum.MAX_NODES is a looser guard)
 const int MAX_MARCH = 4096;  // texels along the major axis (a guard: 2 x 2048 texels)
 

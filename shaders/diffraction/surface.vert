@@ -17,6 +17,10 @@ uniform vec3 lightDirection[8];   // world space, towards the light; [0] is used
 out vec3 omegaITangent;
 out vec3 toViewerTangent;
 out vec2 surfaceTexcoord;
+// world-space position and frame, for fragment shaders that rebuild the frame per fragment (surface_stage.glsl)
+out vec3 surfaceWorldPosition;
+out vec3 surfaceWorldNormal;
+out vec3 surfaceWorldTangent;
 
 // normalize() of a zero vector is undefined; degenerate frames give (0, 0, 0), which the fragment shader
 // treats as below the horizon (black).
@@ -40,5 +44,8 @@ void main() {
     omegaITangent = toTangentSpace(safeNormalizeVertex(lightDirection[0]), t, b, n);
     toViewerTangent = toTangentSpace(cameraPosition - worldPosition.xyz, t, b, n);
     surfaceTexcoord = texcoord;
+    surfaceWorldPosition = worldPosition.xyz;
+    surfaceWorldNormal = n;
+    surfaceWorldTangent = t;
     gl_Position = projection * view * worldPosition;
 }

@@ -1,4 +1,4 @@
-// Which Taylor expansion of exp(i k w h) the windowed sum uses (issue #6; PhaseCentres, PhaseCentredSpectrum).
+// Which Taylor expansion of exp(i k w h) the windowed sum uses (PhaseCentres, PhaseCentredSpectrum).
 // Included by diffraction_common.glsl after taylorCoefficients().
 //
 // Plain (the thesis, 004 eq. finalexpression): c_n = (k w)^n / n! around 0, the terms DFT_n in layers 0..N.
@@ -31,7 +31,7 @@ float expansionPhase(float kw) {
     return kw + float(nearestPhaseCentre(kw)) * centreSpacingPerUm;
 }
 #else
-// The thesis' series around 0: layers 0..N, exactly as before (bit-identical output).
+// The thesis' series around 0: layers 0..N.
 int taylorExpansion(float kw, out float c[TERM_COUNT]) {
     taylorCoefficients(kw, c);
     return 0;

@@ -9,15 +9,17 @@ import diffract.bench.ReferenceMaps;
 import diffract.bench.ResultsTable;
 import diffract.bench.SweepPlan;
 import diffract.bench.Targets;
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
-import diffract.render.TermFormats;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -44,18 +46,23 @@ import java.util.concurrent.Callable;
                 + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
                 + "maps are cached there.")
 final class BenchCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
     Path outputDir;
 
     @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
     boolean quick;
 
-    @Option(names = "--patches", defaultValue = "blazed,elaphe-like,xenopeltis-like,tall", paramLabel = "LIST",
-            description = "Patches (default ${DEFAULT-VALUE}).")
-    String patches;
+    @Option(names = "--patches", defaultValue = BenchPatch.DEFAULT_NAMES, paramLabel = "LIST",
+            split = ",", completionCandidates = OptionTypes.PatchNames.class,
+            description = "Named patches, of ${COMPLETION-CANDIDATES} (default ${DEFAULT-VALUE}).")
+    List<String> patches;
 
-    @Option(names = "--variants", paramLabel = "LIST", description = "Variants (default: every GPU variant).")
-    String variants;
+    @Option(names = "--variants", paramLabel = "LIST", split = ",", converter = VariantConverter.class,
+            description = "Variants: flss, nmm, pq, baked (default: every GPU variant).")
+    List<Variant> variants;
 
     @Option(names = "--size", defaultValue = "64", paramLabel = "S", description = "Map size of the sweep (default ${DEFAULT-VALUE}).")
     int sizePx;
@@ -64,20 +71,21 @@ final class BenchCommand implements Callable<Integer> {
             description = "The full sweep also measures the thesis' configuration at this size (default ${DEFAULT-VALUE}).")
     int largeSizePx;
 
-    @Option(names = "--terms", paramLabel = "LIST", description = "Own grid: highest Taylor orders N (default 30 when another grid option is given).")
-    String termsList;
+    @Option(names = "--terms", paramLabel = "LIST", split = ",",
+            description = "Own grid: highest Taylor orders N (default 30 when another grid option is given).")
+    List<Integer> termsList;
 
-    @Option(names = "--lambda-steps", paramLabel = "LIST", description = "Own grid: wavelength steps in nm (default 5).")
-    String stepsList;
+    @Option(names = "--lambda-steps", paramLabel = "LIST", split = ",", description = "Own grid: wavelength steps in nm (default 5).")
+    List<Double> stepsList;
 
-    @Option(names = "--window-radii", paramLabel = "LIST", description = "Own grid: window radii R (default 1).")
-    String radiiList;
+    @Option(names = "--window-radii", paramLabel = "LIST", split = ",", description = "Own grid: window radii R (default 1).")
+    List<Integer> radiiList;
 
-    @Option(names = "--texture-formats", paramLabel = "LIST", description = "Own grid: rg32f, rg16f, rg8 (default rg32f).")
-    String formatsList;
+    @Option(names = "--texture-formats", paramLabel = "LIST", split = ",", description = "Own grid: rg32f, rg16f, rg8 (default rg32f).")
+    List<TermFormat> formatsList;
 
-    @Option(names = "--sizes", paramLabel = "LIST", description = "Own grid: map sizes (default --size).")
-    String sizesList;
+    @Option(names = "--sizes", paramLabel = "LIST", split = ",", description = "Own grid: map sizes (default --size).")
+    List<Integer> sizesList;
 
     @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
             description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the "
@@ -91,28 +99,60 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
     double lambdaMaxNm;
 
+    @Mixin
+    QuietOption quiet;
+
+    @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/headless-gl.md): the "
+            + "default scene at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, "
+            + "ms/frame and CIEDE2000; 1/8 of the size on a software rasteriser. Writes gpu-suite.csv, gpu-suite.md "
+            + "and scene-*.png.")
+    boolean gpuSuite;
+
+    @Option(names = "--suite-size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+            description = "GPU suite: the scene's size (default 1920x1080, 240x135 on llvmpipe); the maps are HxH.")
+    OptionTypes.ImageSize suiteSize;
+
+    @Option(names = "--error-size", defaultValue = "128", paramLabel = "S",
+            description = "GPU suite: size of the maps compared with the CPU reference (default ${DEFAULT-VALUE}).")
+    int errorSizePx;
+
+    @Option(names = "--frames", defaultValue = "10", paramLabel = "N",
+            description = "GPU suite: timed frames per row, median (default ${DEFAULT-VALUE}).")
+    int frames;
+
     @Override
     public Integer call() throws IOException {
+        OutputPaths.requireWritableFolder(outputDir, "-o");
+        if (gpuSuite) {
+            HeadlessGL.require();
+            long start = System.nanoTime();
+            List<Variant> suiteVariants = variants == null ? GpuSuite.gpuVariants() : variants;
+            int[] size = suiteSize == null ? null : new int[] {suiteSize.width(), suiteSize.height()};
+            List<GpuSuite.Row> rows = new GpuSuite(outputDir, size, errorSizePx, frames, suiteVariants,
+                    quiet.reporter()).run();
+            System.out.printf(Locale.ROOT, "gpu suite: %d rows in %.0f s%nwrote %s, %s%n", rows.size(),
+                    (System.nanoTime() - start) * 1e-9, outputDir.resolve("gpu-suite.csv"),
+                    outputDir.resolve("gpu-suite.md"));
+            return 0;
+        }
         if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
-        BrdfSettings thesis = BrdfSettings.thesis(Variant.FLSS);
         // the thesis' settings except the wavelength range and the coherence length asked for
-        BrdfSettings base = new BrdfSettings(thesis.variant(), thesis.highestOrder(), thesis.windowRadius(), lambdaMinNm,
-                lambdaMaxNm, thesis.lambdaStepNm(), coherenceLengthUm / 4.0, thesis.refractiveIndex(), 0);
+        BrdfSettings base = BrdfSettings.thesis(Variant.FLSS).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
+                .coherenceLengthUm(coherenceLengthUm));
         Map<String, BenchPatch> patchMap = new LinkedHashMap<>();
-        for (BenchPatch p : BenchPatch.named(SweepPlan.list(patches))) {
+        for (BenchPatch p : BenchPatch.named(patches)) {
             patchMap.put(p.name(), p);
         }
-        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants(quick)
-                : SweepPlan.list(variants).stream().map(Variant::parse).toList();
+        List<Variant> variantList = variants == null ? SweepPlan.sweptVariants(quick) : variants;
         if (variantList.contains(Variant.REFERENCE)) {
             throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
         }
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
-        DisplayCheck.requireDisplay();
+        HeadlessGL.require();
         Files.createDirectories(outputDir);
-        Reporter reporter = Reporter.STDERR;
+        Reporter reporter = quiet.reporter();
         reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
                         + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
                 coherenceLengthUm, outputDir));
@@ -124,12 +164,12 @@ final class BenchCommand implements Callable<Integer> {
         List<BenchResult> results = runner.run(configs, patchMap, base, r -> {
             done.add(r);
             try {
-                ResultsTable.writeCsv(csv, done); // after every configuration: an interrupted run keeps its rows
+                ResultsTable.writeCsv(csv, done, runner.glInfo()); // after every configuration: an interrupted run keeps its rows
             } catch (IOException e) {
                 throw new UserInputException("cannot write " + csv + ": " + e.getMessage(), e);
             }
         });
-        ResultsTable.writeCsv(csv, results);
+        ResultsTable.writeCsv(csv, results, runner.glInfo());
         Files.writeString(outputDir.resolve("results.md"), ResultsTable.markdown(results), StandardCharsets.UTF_8);
         Files.writeString(outputDir.resolve("pareto.md"), ResultsTable.markdown(results, true), StandardCharsets.UTF_8);
         List<Targets.Outcome> outcomes = Targets.of(results, sizePx, runner::maps,
@@ -157,27 +197,25 @@ final class BenchCommand implements Callable<Integer> {
                         + "--window-radii, --texture-formats and --sizes, or --quick");
             }
             SweepPlan.Point t = SweepPlan.thesis(sizePx);
-            List<String> formats = formatsList == null ? List.of(t.textureFormat()) : SweepPlan.list(formatsList);
-            formats.forEach(TermFormats::parse); // fails early on an unknown name
-            return SweepPlan.grid(ints(termsList, t.terms()), doubles(stepsList, t.lambdaStepNm()),
-                    ints(radiiList, t.windowRadius()), formats, ints(sizesList, sizePx));
+            return SweepPlan.grid(or(termsList, t.terms()), or(stepsList, t.lambdaStepNm()),
+                    or(radiiList, t.windowRadius()), or(formatsList, t.textureFormat()), or(sizesList, sizePx));
         }
         return quick ? SweepPlan.quick(sizePx) : SweepPlan.full(sizePx, largeSizePx);
     }
 
-    private static List<Integer> ints(String list, int fallback) {
-        try {
-            return list == null ? List.of(fallback) : SweepPlan.list(list).stream().map(Integer::parseInt).toList();
-        } catch (NumberFormatException e) {
-            throw new UserInputException("not a list of integers: '" + list + "'");
-        }
+    private static <T> List<T> or(List<T> given, T fallback) {
+        return given == null ? List.of(fallback) : given;
     }
 
-    private static List<Double> doubles(String list, double fallback) {
-        try {
-            return list == null ? List.of(fallback) : SweepPlan.list(list).stream().map(Double::parseDouble).toList();
-        } catch (NumberFormatException e) {
-            throw new UserInputException("not a list of numbers: '" + list + "'");
+    /** A variant by name (the reference is refused later, with the reason). */
+    static final class VariantConverter implements picocli.CommandLine.ITypeConverter<Variant> {
+        @Override
+        public Variant convert(String text) {
+            try {
+                return Variant.parse(text);
+            } catch (UserInputException e) {
+                throw new picocli.CommandLine.TypeConversionException(e.getMessage());
+            }
         }
     }
 
@@ -196,8 +234,9 @@ final class BenchCommand implements Callable<Integer> {
                 + (gl == null ? "no GL" : gl.renderer() + ", OpenGL " + gl.version());
     }
 
-    private static String machineShort(GLInfo gl) {
-        return gl == null ? "no GL" : gl.renderer();
+    /** For plot titles: the renderer and the OpenGL version string. */
+    static String machineShort(GLInfo gl) {
+        return gl == null ? "no GL" : gl.renderer() + ", OpenGL " + gl.version();
     }
 
     private static String cpuModel() {

@@ -2,9 +2,11 @@ package diffract.app;
 
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
+import diffract.optics.BrdfMapDifference;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -16,10 +18,10 @@ import java.util.concurrent.Callable;
 
 /** {@code diffract compare}: CIEDE2000 between two colour BRDF maps written by {@code brdfmap --pfm}. */
 @Command(name = "compare", mixinStandardHelpOptions = true,
-        description = {"CIEDE2000 between two colour BRDF maps (the linear sRGB PFMs of brdfmap --pfm), pixel by pixel",
-                "inside the unit disk: both are turned back into XYZ, multiplied by the same exposure and converted",
-                "to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over the whole disk",
-                "and over the lit pixels (exposed Y above 1 % of white in either map)."})
+        description = "CIEDE2000 between two colour BRDF maps (the linear sRGB PFMs of brdfmap --pfm), pixel by pixel "
+                + "inside the unit disk: both are turned back into XYZ, multiplied by the same exposure and "
+                + "converted to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over "
+                + "the whole disk and over the lit pixels (exposed Y above 1 %% of white in either map).")
 final class CompareCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "A.pfm")
     Path first;
@@ -30,6 +32,9 @@ final class CompareCommand implements Callable<Integer> {
     @Option(names = "--exposure", defaultValue = "1", paramLabel = "E",
             description = "Multiplies both maps' XYZ before L*a*b* (use the exposure the pictures were shown with).")
     double exposure;
+
+    @Mixin
+    QuietOption quiet; // compare prints only its result; accepted like everywhere
 
     @Override
     public Integer call() throws IOException {
@@ -56,8 +61,9 @@ final class CompareCommand implements Callable<Integer> {
         float[] rgb;
         try {
             rgb = ImageFiles.readPfm(file, whc);
-        } catch (RuntimeException e) {
-            throw new UserInputException(file + " is not a PFM image (" + e.getMessage() + ")", e);
+        } catch (IOException e) {
+            throw new UserInputException(file + ": " + e.getMessage() + "; compare reads the float maps brdfmap writes"
+                    + " with --pfm MAP.pfm", e);
         }
         if (whc[2] != 3) {
             throw new UserInputException(file + " is a grey PFM; compare needs colour maps (brdfmap without --lambda)");

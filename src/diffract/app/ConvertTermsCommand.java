@@ -1,16 +1,18 @@
 package diffract.app;
 
-import diffract.optics.BrdfSettings;
+import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorBound;
 import diffract.optics.TaylorTerms;
 import diffract.precompute.TermFolders;
 import diffract.precompute.TermSidecar;
 import diffract.precompute.TermStore;
 import diffract.precompute.ThesisFormat;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.util.Version;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -21,8 +23,8 @@ import java.util.concurrent.Callable;
 
 /** {@code diffract convert-terms}: precomputed terms from one on-disk format into the other, without any FFT. */
 @Command(name = "convert-terms", mixinStandardHelpOptions = true,
-        description = {"Convert a folder of precomputed Taylor terms between diffract's format (terms.f32 + terms.json)",
-                "and the thesis' Octave format (AmpReIm<n>.txt + extrema.txt); see docs/formats.md."})
+        description = "Convert a folder of precomputed Taylor terms between diffract's format (terms.f32 + terms.json) "
+                + "and the thesis' Octave format (AmpReIm<n>.txt + extrema.txt); see docs/formats.md.")
 final class ConvertTermsCommand implements Callable<Integer> {
     @Option(names = "--from", required = true, paramLabel = "DIR", description = "Folder in either format (detected).")
     Path from;
@@ -32,18 +34,22 @@ final class ConvertTermsCommand implements Callable<Integer> {
 
     @Option(names = "--format", paramLabel = "F",
             description = "native or thesis; default: the other format than --from's.")
-    String format;
+    TermFolders.Format format;
 
-    @Option(names = "--height-unit", defaultValue = "auto", paramLabel = "UNIT",
+    @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
+            converter = OptionTypes.HeightUnitConverter.class,
             description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
-    String heightUnit;
+    ThesisFormat.HeightUnit unit;
+
+    @Mixin
+    QuietOption quiet;
 
     @Override
     public Integer call() throws IOException {
-        Reporter reporter = Reporter.STDERR;
-        ThesisFormat.HeightUnit unit = ThesisFormat.HeightUnit.parse(heightUnit);
+        OutputPaths.requireWritableFolder(to, "--to");
+        Reporter reporter = quiet.reporter();
         TermFolders.Format source = TermFolders.detect(from);
-        TermFolders.Format target = format != null ? TermFolders.Format.parse(format)
+        TermFolders.Format target = format != null ? format
                 : source == TermFolders.Format.NATIVE ? TermFolders.Format.THESIS : TermFolders.Format.NATIVE;
         if (Files.exists(to) && Files.isSameFile(from, to)) {
             throw new UserInputException("--to must differ from --from (" + to + ")");
@@ -72,7 +78,7 @@ final class ConvertTermsCommand implements Callable<Integer> {
 
     /** A thesis folder does not say how N was chosen: record "converted" and the bound N gives at 380 nm. */
     private static TermSidecar.Selection convertedSelection(TaylorTerms terms) {
-        double lambdaMinNm = BrdfSettings.LAMBDA_MIN_NM;
+        double lambdaMinNm = SpectralSettings.LAMBDA_MIN_NM;
         double x = TaylorBound.maxPhase(lambdaMinNm, terms.maxAbsHeightUm());
         return new TermSidecar.Selection("converted", null, lambdaMinNm, x,
                 TaylorBound.lagrangeRemainder(x, terms.highestOrder()));

@@ -1,41 +1,60 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
-import diffract.optics.SyntheticPatches;
-import diffract.optics.io.GsfWriter;
+import diffract.jrtr.HeadlessGL;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
+import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 
 /**
- * {@code diffract demo}, the main job: with a screen, the interactive viewer on the procedural snake covered with the
- * Elaphe-like snake-skin patch; without one (the launcher then runs it under a private Xvfb), the same view rendered
- * offscreen to {@code out/demo.png}; without any OpenGL, the CPU reference BRDF map of a blazed grating. It prints
- * the path of every picture it writes.
+ * {@code diffract demo}, the main job: with a screen, the interactive viewer on the default scene, a coiled corn snake
+ * whose scales carry the Elaphe-like snake-skin patch; without one, the same view rendered offscreen (headless EGL,
+ * no X server needed) to {@code out/demo.png}; without any OpenGL, the CPU reference BRDF map of a blazed grating.
+ * It prints the path of every picture it writes.
  */
 @Command(name = "demo", mixinStandardHelpOptions = true,
-        description = {"The demo: the viewer on the iridescent procedural snake (Elaphe-like skin patch) when there is a",
-                "screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map of",
-                "a blazed grating to out/demo-brdfmap.png)."})
+        description = "The demo: the viewer on the iridescent corn snake (scales with the Elaphe-like skin patch, "
+                + "pigment, sky, ground) when there is a screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map "
+                + "of a blazed grating to out/demo-brdfmap.png).")
 final class DemoCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
+    @Mixin
+    QuietOption quiet;
+
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
     Path outputDir;
 
-    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", description = "Picture size (default ${DEFAULT-VALUE}).")
-    String size;
+    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+            description = "Picture size (default ${DEFAULT-VALUE}).")
+    OptionTypes.ImageSize size;
+
+    /** The arguments of a command the demo runs, with {@code --quiet} when the demo was given it. */
+    private String[] quietly(String... args) {
+        if (!quiet.quiet) {
+            return args;
+        }
+        String[] out = java.util.Arrays.copyOf(args, args.length + 1);
+        out[args.length] = "--quiet";
+        return out;
+    }
 
     /**
-     * The view: the default scene {@code assets/scenes/snake-elaphe.json}. Its numbers: 20 Taylor terms and 10 nm
-     * steps keep llvmpipe near a frame a second; a 10 um coherence length (sigma_s = 2.5 um, a less coherent source
-     * than sunlight's 65 um) widens the orders of the 9 um periodic patch into bands that a 640 x 400 picture
-     * resolves (with 65 um they are a fraction of a pixel wide).
+     * The view: the default scene {@code assets/scenes/snake-elaphe.json}, a coiled corn snake with scales, its
+     * pigment, a clear sky as 8 extended lights, a ground with the key light's shadow (docs/staging.md). A 10 um
+     * coherence length (sigma_s = 2.5 um, a less coherent source than sunlight's 65 um) widens the orders of the 9 um
+     * periodic patch into bands that a 640 x 400 picture resolves (with 65 um they are a fraction of a pixel wide).
      */
     static final String DEFAULT_SCENE = "snake-elaphe.json";
 
@@ -59,27 +78,33 @@ final class DemoCommand implements Callable<Integer> {
         }
     }
 
+    private String sizeText() {
+        return size.width() + "x" + size.height();
+    }
+
     @Override
     public Integer call() throws Exception {
-        boolean gl = DisplayCheck.problem().isEmpty();
-        boolean screen = gl && !"1".equals(System.getenv(ViewCommand.PRIVATE_XVFB_VARIABLE));
+        OutputPaths.requireWritableFolder(outputDir, "-o");
+        boolean screen = ViewCommand.noDisplayProblem(System.getenv(), System.getProperty("os.name", "")).isEmpty();
+        boolean gl = HeadlessGL.problem().isEmpty();
         if (screen) {
-            return Main.execute("view", defaultScene(outputDir).toString(), "--size", size);
+            return Main.execute(quietly("view", defaultScene(outputDir).toString(), "--size", sizeText()));
         }
         if (gl) {
             Path png = outputDir.resolve("demo.png");
-            int code = Main.execute("render", defaultScene(outputDir).toString(), "--size", size, "-o", png.toString());
+            List<String> render = new ArrayList<>(List.of("render", defaultScene(outputDir).toString(), "--size",
+                    sizeText(), "-o", png.toString()));
+            render.addAll(gpu.arguments());
+            int code = Main.execute(quietly(render.toArray(new String[0])));
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }
             return code;
         }
-        System.err.println("no OpenGL display (install xvfb for the rendered view): CPU BRDF map instead");
-        Path patch = outputDir.resolve("demo-blazed-grating.gsf");
-        GsfWriter.write(patch, SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16));
+        System.err.println(HeadlessGL.problem().orElse("no OpenGL") + ": CPU BRDF map instead");
         Path png = outputDir.resolve("demo-brdfmap.png");
-        int code = Main.execute("brdfmap", "--patch", patch.toString(), "--theta-i", "30", "--variant", "reference",
-                "--exposure", "auto", "--size", "256", "-o", png.toString());
+        int code = Main.execute(quietly("brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--variant",
+                "reference", "--exposure", "auto", "--size", "256", "-o", png.toString()));
         if (code == 0) {
             System.out.println(png.toAbsolutePath());
         }

@@ -1,11 +1,14 @@
 package diffract.app;
 
+import diffract.jrtr.GLInfo;
+import diffract.jrtr.HeadlessGL;
+import diffract.optics.InvalidSettingException;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.UserInputException;
 import diffract.util.Version;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import picocli.CommandLine;
 
 /**
  * {@code ./diffract}: the command line. Every command answers {@code --help}; bad usage or input ends with a
@@ -14,7 +17,8 @@ import picocli.CommandLine.Option;
 @Command(name = "diffract", mixinStandardHelpOptions = true, version = "diffract " + Version.VERSION,
         description = "Structural colour from natural diffraction gratings (Single 2014, after Stam 1999).",
         subcommands = {DemoCommand.class, PrecomputeCommand.class, BrdfMapCommand.class, CompareCommand.class,
-                ConvertTermsCommand.class, PatchCommand.class, ViewCommand.class, RenderCommand.class, WarmUpCommand.class, BenchCommand.class,
+                ConvertTermsCommand.class, PatchCommand.class, ViewCommand.class, RenderCommand.class,
+                MeasureCommand.class, WarmUpCommand.class, BenchCommand.class,
                 CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
     /** Exit code for bad usage or bad input. */
@@ -29,7 +33,11 @@ public final class Main implements Runnable {
 
     @Override
     public void run() {
-        throw new CommandLine.ParameterException(spec.commandLine(), "missing command: try 'diffract --help'");
+        java.util.List<String> commands = spec.subcommands().entrySet().stream()
+                .filter(e -> !e.getValue().getCommandSpec().usageMessage().hidden() && !e.getKey().equals("help"))
+                .map(java.util.Map.Entry::getKey).toList();
+        throw new CommandLine.ParameterException(spec.commandLine(), "missing command: one of "
+                + String.join(", ", commands));
     }
 
     public static void main(String[] args) {
@@ -40,24 +48,96 @@ public final class Main implements Runnable {
 
     /** Runs the command line and returns the exit code (tests call this). */
     public static int execute(String... args) {
-        CommandLine cli = new CommandLine(new Main());
+        CommandLine cli = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true);
+        cli.getSubcommands().get("patch").getCommandSpec().usageMessage().footer(PatchCommand.catalogueText());
+        reportGlOncePerRenderer(System.err);
+        HeadlessGL.useGpu(null); // --gpu, where given, applies to this command only
         boolean debug = java.util.Arrays.asList(args).contains("--debug");
-        cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> {
-            if (debug) {
-                ex.printStackTrace();
-            }
-            if (ex instanceof UserInputException) {
-                System.err.println("diffract: " + ex.getMessage());
-                return EXIT_USAGE;
-            }
-            System.err.println("diffract: internal error: " + ex + (debug ? "" : " (run with --debug for details)"));
-            return 1;
-        });
+        cli.setExecutionExceptionHandler((ex, commandLine, parseResult) -> failure(ex, debug));
         cli.setParameterExceptionHandler((ex, args1) -> {
-            System.err.println("diffract: " + ex.getMessage());
-            System.err.println("try '" + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help'");
+            System.err.println("diffract: " + ex.getMessage() + "; try '"
+                    + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help'");
             return EXIT_USAGE;
         });
-        return cli.execute(args);
+        try {
+            return cli.execute(args);
+        } catch (OutOfMemoryError | StackOverflowError e) { // picocli passes errors through: the last line of defence
+            return failure(e, debug);
+        }
+    }
+
+    /**
+     * One line for what ended a command, and its exit code: the user's input (or the machine's limits) 2, a bug 1.
+     * Causes are searched, so a failure inside a worker thread reads the same as one in the command's own.
+     */
+    static int failure(Throwable ex, boolean debug) {
+        if (debug) {
+            ex.printStackTrace();
+        }
+        InvalidSettingException setting = cause(ex, InvalidSettingException.class);
+        if (setting != null) { // the settings name the quantity; the command line names the option that gives it
+            System.err.println("diffract: " + OptionNames.of(setting.quantity()) + ": " + setting.getMessage());
+            return EXIT_USAGE;
+        }
+        UserInputException input = cause(ex, UserInputException.class);
+        if (input != null) {
+            System.err.println("diffract: " + input.getMessage());
+            return EXIT_USAGE;
+        }
+        if (cause(ex, OutOfMemoryError.class) != null) {
+            long maxGiB = Math.max(1, Runtime.getRuntime().maxMemory() >> 30);
+            System.err.printf(java.util.Locale.ROOT, "diffract: out of memory: the work needs more than the Java heap's"
+                    + " %d GB; make it smaller (a smaller --size, fewer --terms, a cropped patch) or give Java a larger"
+                    + " heap: DIFFRACT_JAVA_OPTS=-Xmx%dg ./diffract ...%n", maxGiB, 2 * maxGiB);
+            return EXIT_USAGE;
+        }
+        if (cause(ex, StackOverflowError.class) != null) {
+            System.err.println("diffract: the input nests too deeply to process (stack overflow)"
+                    + (debug ? "" : "; run with --debug for details"));
+            return EXIT_USAGE;
+        }
+        java.io.IOException io = cause(ex, java.io.IOException.class);
+        if (io != null) {
+            System.err.println("diffract: " + describe(io));
+            return EXIT_USAGE;
+        }
+        System.err.println("diffract: internal error: " + ex + (debug ? "" : " (run with --debug for details)"));
+        return 1;
+    }
+
+    /** An I/O failure in words: NIO's own messages are often only the path. */
+    static String describe(java.io.IOException e) {
+        if (e instanceof java.nio.file.AccessDeniedException a) {
+            return "permission denied: " + a.getFile();
+        }
+        if (e instanceof java.nio.file.NoSuchFileException n) {
+            return "no such file or folder: " + n.getFile();
+        }
+        if (e instanceof java.nio.file.FileAlreadyExistsException f) {
+            return "already exists: " + f.getFile();
+        }
+        if (e instanceof java.nio.file.FileSystemException f) {
+            return "cannot use " + f.getFile() + (f.getReason() != null ? ": " + f.getReason() : "");
+        }
+        return "input/output error: " + e.getMessage();
+    }
+
+    private static <T extends Throwable> T cause(Throwable ex, Class<T> type) {
+        for (Throwable t = ex; t != null; t = t.getCause() == t ? null : t.getCause()) {
+            if (type.isInstance(t)) {
+                return type.cast(t);
+            }
+        }
+        return null;
+    }
+
+    /** Every GPU command says once which OpenGL it draws with (vendor, renderer, version, platform). */
+    private static void reportGlOncePerRenderer(java.io.PrintStream err) {
+        java.util.Set<String> seen = java.util.concurrent.ConcurrentHashMap.newKeySet();
+        GLInfo.reportTo(info -> {
+            if (seen.add(info.toString())) {
+                err.println("diffract: " + info);
+            }
+        });
     }
 }

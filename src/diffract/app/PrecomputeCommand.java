@@ -1,9 +1,12 @@
 package diffract.app;
 
 import diffract.optics.HeightField;
+import diffract.optics.SpectralSettings;
 import diffract.optics.io.SamplingCheck;
+import diffract.pipeline.NamedPatch;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
@@ -15,11 +18,14 @@ import java.util.concurrent.Callable;
 
 /** {@code diffract precompute}: thesis Algorithm 1, the Taylor-term DFTs of a patch, into a folder. */
 @Command(name = "precompute", mixinStandardHelpOptions = true,
-        description = {"Precompute the Taylor-term DFTs DFT_n = fftshift(ifft2((i h)^n)), n = 0..N, of a height field.",
-                "A rerun with the same patch and N reuses the folder without any FFT."})
+        description = "Precompute the Taylor-term DFTs DFT_n = fftshift(ifft2((i h)^n)), n = 0..N, of a height field. A "
+                + "rerun with the same patch and N reuses the folder without any FFT.")
 final class PrecomputeCommand implements Callable<Integer> {
     @Mixin
-    PatchInput input;
+    PatchOptions patch;
+
+    @Mixin
+    QuietOption quiet;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
     Order order;
@@ -43,20 +49,23 @@ final class PrecomputeCommand implements Callable<Integer> {
     @Option(names = "--format", defaultValue = "native", paramLabel = "F",
             description = "native (terms.f32 + terms.json) or thesis (the Octave script's AmpReIm<n>.txt + extrema.txt,"
                     + " extrema in micrometres); see docs/formats.md. Default ${DEFAULT-VALUE}.")
-    String format;
+    TermFolders.Format format;
 
     @Override
     public Integer call() {
         long start = System.nanoTime();
-        TermFolders.Format target = TermFolders.Format.parse(format); // a typo fails before any work
-        Reporter reporter = Reporter.STDERR;
-        HeightField field = input.load(reporter);
-        SamplingCheck.warnAboutAliasing(field, lambdaMinNm, 780, reporter);
-        Precomputation.Request request = new Precomputation.Request(field, input.patch.getFileName().toString(),
-                input.maxHeightUm, order.highestOrder, order.tolerance, lambdaMinNm);
+        patch.validateRequired();
+        OutputPaths.requireWritableFolder(output, "-o");
+        Reporter reporter = quiet.reporter();
+        NamedPatch named = patch.load("", reporter);
+        HeightField field = named.meanSubtracted();
+        // no light here: only what aliases for every light (a render notes what its own light adds)
+        SamplingCheck.warnAboutAliasing(field, lambdaMinNm, SpectralSettings.LAMBDA_MAX_NM, 0, reporter);
+        Precomputation.Request request = new Precomputation.Request(field, named.name(), named.maxHeightUm(),
+                order.highestOrder, order.tolerance, lambdaMinNm);
         boolean reused;
         int termCount;
-        if (target == TermFolders.Format.THESIS) {
+        if (format == TermFolders.Format.THESIS) {
             Precomputation.ThesisResult result = Precomputation.intoThesisFolder(request, output, reporter);
             reused = result.reused();
             termCount = result.termCount();
@@ -67,7 +76,7 @@ final class PrecomputeCommand implements Callable<Integer> {
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
         System.out.printf("%s %d terms of %dx%d (%s format) into %s in %.2f s%n", reused ? "reused" : "computed",
-                termCount, field.rows(), field.cols(), format.toLowerCase(java.util.Locale.ROOT), output, seconds);
+                termCount, field.rows(), field.cols(), format.name().toLowerCase(java.util.Locale.ROOT), output, seconds);
         return 0;
     }
 }

@@ -1,16 +1,17 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.jrtr.OffscreenTarget;
+import diffract.scene.DisplayMode;
+import diffract.scene.Scene;
+import diffract.scene.SceneSetup;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.ViewerModel;
 import diffract.viewer.ViewerRenderer;
-import diffract.viewer.ViewerSetup;
+import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 import java.io.IOException;
@@ -19,43 +20,82 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
-@Command(name = "render", mixinStandardHelpOptions = true,
-        description = {"Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and",
-                "shaders as 'diffract view', without a window (runs under xvfb-run; the launcher starts one)."})
+@Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
+        description = "Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and "
+                + "shaders as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md).")
 final class RenderCommand implements Callable<Integer> {
+    @Mixin
+    GpuOption gpu;
+
     @Mixin
     ViewerOptions options;
 
-    @Spec
-    CommandSpec spec;
+    @Mixin
+    QuietOption quiet;
 
-    @Option(names = "--size", defaultValue = "512x512", paramLabel = "WxH", description = "Image size (default: the scene's image, else ${DEFAULT-VALUE}).")
-    String size;
-
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png", description = "PNG to write.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png",
+            description = "PNG to write; with --turntable a .gif (animated, looping) or a .png name for a numbered "
+                    + "sequence.")
     Path output;
+
+    @ArgGroup(exclusive = false, validate = false, heading = "Turntable:%n")
+    TurntableOptions turntable = new TurntableOptions();
+
+    /** Many frames instead of one: the camera or the light goes once round the scene. */
+    static final class TurntableOptions {
+        @Option(names = "--turntable", paramLabel = "FRAMES",
+                description = "Render FRAMES frames with the camera going once round the scene (2..720).")
+        Integer frames;
+
+        @Option(names = "--orbit-light",
+                description = "With --turntable: the key light (and the environment) goes round instead of the camera.")
+        boolean orbitLight;
+
+        @Option(names = "--frame-ms", defaultValue = "80", paramLabel = "MS",
+                description = "With --turntable and a .gif: milliseconds per frame, 10..10000 (default "
+                        + "${DEFAULT-VALUE}).")
+        int frameMs = 80;
+    }
 
     @Override
     public Integer call() throws IOException {
         options.validate();
-        ViewerOptions.parseSize(size); // bad usage fails before any work
-        if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
-            throw new UserInputException("render writes PNG files; name the output OUT.png");
+        Integer frames = turntable.frames;
+        String name = output.getFileName().toString().toLowerCase(Locale.ROOT);
+        if (frames == null && turntable.orbitLight) {
+            throw new UserInputException("--orbit-light goes with --turntable FRAMES");
         }
-        DisplayCheck.requireDisplay();
+        if (frames != null && !(frames >= 2 && frames <= 720)) {
+            throw new UserInputException("--turntable takes 2..720 frames, got " + frames);
+        }
+        if (!(turntable.frameMs >= 10 && turntable.frameMs <= 10_000)) {
+            throw new UserInputException("--frame-ms must be in 10..10000 milliseconds, got " + turntable.frameMs);
+        }
+        if (!name.endsWith(".png") && !(frames != null && name.endsWith(".gif"))) {
+            throw new UserInputException(frames == null ? "render writes PNG files; name the output OUT.png"
+                    : "a turntable is written as OUT.gif or as a PNG sequence OUT-000.png, ...: name the output so");
+        }
+        OutputPaths.requireWritableFile(output, "-o", frames == null ? "render.png" : "turntable.gif");
         long start = System.nanoTime();
-        Reporter reporter = Reporter.STDERR;
-        ViewerSetup setup = options.setup(reporter);
-        int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
-        ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        Reporter reporter = quiet.reporter();
+        Scene.ImageSize image = options.imageSize(new Scene.ImageSize(512, 512));
+        SceneSetup setup = options.setup(image, reporter);
+        ViewerModel model = ViewerModel.load(setup, reporter);
         model.bakeIfNeeded(reporter);
-        try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
-            target.writePng(output, widthHeight[0], widthHeight[1]);
+        ViewerRenderer renderer = new ViewerRenderer(model);
+        try (OffscreenTarget target = new OffscreenTarget(renderer)) {
+            if (frames != null) {
+                Turntable.render(target, renderer, model, frames, turntable.orbitLight, output, image,
+                        turntable.frameMs, reporter);
+            } else {
+                target.writePng(output, image.width(), image.height());
+            }
         }
-        System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
-                widthHeight[0], widthHeight[1], setup.mode() == diffract.viewer.DisplayMode.BRDF_MAP ? "BRDF map"
-                        : setup.shape().name(), setup.settings().variant().cliName(), setup.settings().highestOrder(),
-                setup.settings().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
+        System.out.printf(Locale.ROOT, "wrote %s (%s%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
+                frames == null ? "" : frames + " frames of ", image.width(), image.height(),
+                setup.mode() == DisplayMode.BRDF_MAP ? "BRDF map" : setup.shape().name(),
+                setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
+                setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
     }
 }

@@ -1,16 +1,15 @@
 package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
+import diffract.scene.Scene;
+import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.KeyBindings;
 import diffract.viewer.ViewerModel;
-import diffract.viewer.ViewerSetup;
 import diffract.viewer.ViewerWindow;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
-import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Spec;
 import picocli.CommandLine.Option;
 
 import java.nio.file.Path;
@@ -18,11 +17,11 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 
-/** {@code diffract view}: the interactive viewer (issue #4). */
-@Command(name = "view", mixinStandardHelpOptions = true,
-        description = {"Open the interactive viewer: a shape covered with the patch's structural colour, lit by a",
-                "distant light, seen from a camera you orbit with the mouse. Press H in the window for the keys.",
-                "Without a display, use 'diffract render' with the same options."})
+/** {@code diffract view}: the interactive viewer. */
+@Command(name = "view", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
+        description = "Open the interactive viewer: a shape covered with the patch's structural colour, lit by a "
+                + "distant light, seen from a camera you orbit with the mouse. Press H in the window for the keys. "
+                + "Without a display, use 'diffract render' with the same options.")
 final class ViewCommand implements Callable<Integer> {
     /** Set by the launcher when it runs a command under its own private Xvfb, which nobody can see. */
     static final String PRIVATE_XVFB_VARIABLE = "DIFFRACT_PRIVATE_XVFB";
@@ -32,11 +31,8 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     ViewerOptions options;
 
-    @Spec
-    CommandSpec spec;
-
-    @Option(names = "--size", defaultValue = "800x600", paramLabel = "WxH", description = "Window size (default: the scene's image, else ${DEFAULT-VALUE}).")
-    String size;
+    @Mixin
+    QuietOption quiet;
 
     @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
@@ -50,27 +46,26 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         options.validate();
-        ViewerOptions.parseSize(size); // bad usage fails before any work
         Optional<String> problem = noDisplayProblem(System.getenv(), System.getProperty("os.name", ""));
         if (problem.isPresent()) {
             throw new UserInputException(problem.get());
         }
-        Reporter reporter = Reporter.STDERR;
-        ViewerSetup setup = options.setup(reporter);
-        int[] widthHeight = options.size(size, spec.commandLine().getParseResult().hasMatchedOption("--size"));
-        ViewerModel model = ViewerModel.load(setup, options.termSource(setup), reporter);
+        Reporter reporter = quiet.reporter();
+        Scene.ImageSize window = options.imageSize(new Scene.ImageSize(800, 600));
+        SceneSetup setup = options.setup(window, reporter);
+        ViewerModel model = ViewerModel.load(setup, reporter);
         System.out.print(KeyBindings.helpText());
         model.bakeIfNeeded(reporter);
-        try (ViewerWindow window = new ViewerWindow(model, widthHeight[0], widthHeight[1], screenshotDir)) {
-            window.start();
+        try (ViewerWindow viewer = new ViewerWindow(model, window.width(), window.height(), screenshotDir)) {
+            viewer.start();
             if (screenshotAfterFrames != null) {
-                while (window.renderer().stats().frameCount() < screenshotAfterFrames) {
+                while (viewer.renderer().stats().frameCount() < screenshotAfterFrames) {
                     Thread.sleep(50);
                 }
-                window.controller().screenshot().get();
+                viewer.controller().screenshot().get();
                 return 0;
             }
-            window.awaitCloseRequest();
+            viewer.awaitCloseRequest();
         }
         return 0;
     }

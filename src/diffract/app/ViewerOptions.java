@@ -1,49 +1,44 @@
 package diffract.app;
 
-import diffract.geometry.PigmentationTexture;
-import diffract.jrtr.Shape;
+import diffract.bench.AutoChoice;
+import diffract.bench.AutoVariant;
+import diffract.geometry.SnakeMesh;
+import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
-import diffract.optics.GainFactor;
-import diffract.optics.HeightField;
-import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorEvaluation;
+import diffract.optics.LightSource;
+import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
-import diffract.optics.io.HeightFieldReader;
-import diffract.optics.io.SamplingCheck;
-import diffract.precompute.Precomputation;
+import diffract.render.DiffractionShaders;
+import diffract.scene.DisplayMode;
 import diffract.scene.Fabricator;
+import diffract.scene.LightDirection;
+import diffract.scene.OrbitCamera;
 import diffract.scene.Scene;
 import diffract.scene.SceneFile;
+import diffract.scene.SceneSetup;
+import diffract.scene.StageSpec;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
-import diffract.viewer.DisplayMode;
-import diffract.viewer.LightDirection;
-import diffract.viewer.OrbitCamera;
-import diffract.viewer.PigmentationImage;
-import diffract.viewer.TermSource;
-import diffract.viewer.ViewerSetup;
-import diffract.viewer.ViewerShapes;
-import picocli.CommandLine.Option;
+import picocli.CommandLine.ArgGroup;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
+import picocli.CommandLine.TypeConversionException;
 
-import java.awt.image.BufferedImage;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
-import java.util.Locale;
 
 /**
- * What {@code view} and {@code render} show, as options: they fill a {@link ViewerSetup}. With a SCENE file the
- * {@link Fabricator} fills it from the file instead, and the options given on the command line override what they
- * name (variant, terms, lambda step, window, coherence, light, camera angles, exposure, mode, pigmentation switch,
- * diffuse weight); options that name what only the scene may say (the patch, the shape) are refused.
+ * What {@code view} and {@code render} show, as options. Without a SCENE file the options describe a scene (the
+ * same {@link Scene} a file describes), which the {@link Fabricator} builds as it builds a file's; with one, the
+ * options given override what they name (BRDF settings, light, camera angles, exposure, mode, pigmentation switch,
+ * diffuse weight), and the options that name what only the scene may say (the patch, the shape) are refused.
  */
 final class ViewerOptions {
-    /** What a scene file describes by itself: these options cannot be combined with one. */
-    static final List<String> SCENE_ONLY = List.of("--patch", "--max-height", "--pixel-size", "--synthetic", "--shape",
-            "--tangent", "--pigmentation");
-
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE",
             description = "A scene file (JSON, docs/scene-format.md), e.g. assets/scenes/snake-elaphe.json; options "
                     + "given as well override what they name.")
@@ -52,94 +47,102 @@ final class ViewerOptions {
     @Spec(Spec.Target.MIXEE)
     CommandSpec mixee;
 
-    /** The scene read by validate() and built by setup(), when a SCENE was given. */
+    @Mixin
+    PatchOptions patch;
+
+    @Mixin
+    BrdfOptions brdf;
+
+    @ArgGroup(exclusive = false, validate = false, heading = "Shape and pigment (without a SCENE):%n")
+    Surface surface = new Surface();
+
+    @ArgGroup(exclusive = false, validate = false, heading = "Light, camera and picture:%n")
+    View view = new View();
+
+    /** What the patch covers, and the pigment over it. */
+    static final class Surface {
+        @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S", converter = ShapeConverter.class,
+                completionCandidates = OptionTypes.ShapeNames.class,
+                description = "${COMPLETION-CANDIDATES} (procedural, with corn-snake pigmentation; default ${DEFAULT-VALUE}).")
+        Scene.ShapeKind shape = Scene.ShapeKind.SPHERE;
+
+        @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
+                description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
+        OptionTypes.Vector3 tangent = new OptionTypes.Vector3(1, 0, 0);
+
+        @Option(names = "--pigmentation", paramLabel = "IMAGE",
+                description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
+        Path pigmentation;
+
+        @Option(names = "--no-pigmentation", description = "Start with the pigmentation off (structural colour only; P toggles it).")
+        boolean noPigmentation;
+
+        @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
+                description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
+        double diffuseWeight = 0.2;
+    }
+
+    /** The light, the orbit camera, what is shown and at what size. */
+    static final class View {
+        @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
+        double thetaIDeg = 30;
+
+        @Option(names = "--phi-i", paramLabel = "DEG",
+                description = "Light azimuth from the world x axis (default: in the plane of a named patch's period, 90 "
+                        + "for the snake patches; else 0).")
+        Double phiIDeg;
+
+        @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
+        double azimuthDeg;
+
+        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}).")
+        double elevationDeg = 20;
+
+        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
+        double distance = 3.5;
+
+        @Option(names = "--exposure", defaultValue = "10", paramLabel = "E", description = "Multiplies linear XYZ before display (default ${DEFAULT-VALUE}).")
+        double exposure = 10;
+
+        @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
+        boolean brdfMap;
+
+        @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
+                description = "The window of view, the picture of render (default: the scene's image, else 800x600 "
+                        + "for view and 512x512 for render).")
+        OptionTypes.ImageSize size;
+    }
+
+    /** The patch a command line without --patch or --synthetic shows. */
+    static final String DEFAULT_PATCH = "elaphe-like";
+
+    /** What a scene file describes by itself: these options cannot be combined with one. */
+    static final List<String> SCENE_ONLY = sceneOnly();
+
+    /** The scene read by validate(). */
     private Scene parsedScene;
-    private Fabricator.Fabricated fabricated;
 
-    @Option(names = "--patch", paramLabel = "FILE",
-            description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix or Gwyddion .gsf.")
-    Path patch;
+    private static List<String> sceneOnly() {
+        List<String> names = new ArrayList<>(List.of(PatchOptions.NAMES));
+        names.addAll(List.of("--shape", "--tangent", "--pigmentation"));
+        return List.copyOf(names);
+    }
 
-    @Option(names = "--max-height", paramLabel = "UM", description = "Height of the brightest grey value (images).")
-    Double maxHeightUm;
+    /** Accepts the shapes a command line can build (an OBJ file needs a scene). */
+    static final class ShapeConverter implements ITypeConverter<Scene.ShapeKind> {
+        @Override
+        public Scene.ShapeKind convert(String text) {
+            for (Scene.ShapeKind kind : Scene.ShapeKind.values()) {
+                if (kind != Scene.ShapeKind.OBJ && kind.sceneName().equalsIgnoreCase(text.trim())) {
+                    return kind;
+                }
+            }
+            throw new TypeConversionException("unknown shape '" + text + "': use sphere, plane, cylinder or snake "
+                    + "(an OBJ file needs a scene file)");
+        }
+    }
 
-    @Option(names = "--pixel-size", paramLabel = "UM", description = "Pixel size dH in micrometres (images and text).")
-    Double pixelSizeUm;
-
-    @Option(names = "--synthetic", paramLabel = "KIND",
-            description = "A patch made by code instead of --patch: elaphe-like (default) or blazed (d = 2.5 um, 65 um wide).")
-    String synthetic;
-
-    @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S",
-            description = "sphere, plane, cylinder or snake (procedural, with corn-snake pigmentation; default ${DEFAULT-VALUE}).")
-    String shape;
-
-    @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z",
-            description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
-    String tangent;
-
-    @Option(names = "--pigmentation", paramLabel = "IMAGE",
-            description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
-    Path pigmentation;
-
-    @Option(names = "--no-pigmentation", description = "Start with the pigmentation off (structural colour only; P toggles it).")
-    boolean noPigmentation;
-
-    @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
-            description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
-    double diffuseWeight;
-
-    @Option(names = "--variant", defaultValue = "flss", paramLabel = "V",
-            description = "flss, nmm, pq, baked, or auto: the cheapest configuration (float32 terms) whose measured "
-                    + "error on the patch meets --max-delta-e (default ${DEFAULT-VALUE}).")
-    String variant;
-
-    @Option(names = "--max-delta-e", paramLabel = "DE",
-            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the lit pixels.")
-    Double maxDeltaE;
-
-    @Option(names = "--terms", defaultValue = "30", paramLabel = "N", description = "Highest Taylor order N (default ${DEFAULT-VALUE}).")
-    int highestOrder;
-
-    @Option(names = "--lambda-step", defaultValue = "5", paramLabel = "NM", description = "Wavelength step (default ${DEFAULT-VALUE}).")
-    double lambdaStepNm;
-
-    @Option(names = "--window-radius", defaultValue = "1", paramLabel = "R", description = "Window of (2R+1)^2 texels (default ${DEFAULT-VALUE}).")
-    int windowRadius;
-
-    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM", description = "4 sigma_s (default ${DEFAULT-VALUE}).")
-    double coherenceLengthUm;
-
-    @Option(names = "--taylor-tolerance", defaultValue = "0", paramLabel = "EPS",
-            description = "Stop each lookup's Taylor loop once the Lagrange bound is <= EPS; 0 = always --terms (default ${DEFAULT-VALUE}).")
-    double taylorTolerance;
-
-    @Option(names = "--auto-window", description = "Window radius per axis from sigma_f (99.73 % of the window's weight) instead of --window-radius.")
-    boolean automaticWindow;
-
-    @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
-    double thetaIDeg;
-
-    @Option(names = "--phi-i", paramLabel = "DEG",
-            description = "Light azimuth from the world x axis (default: 90 for elaphe-like, whose period runs along y; else 0).")
-    Double phiIDeg;
-
-    @Option(names = "--exposure", defaultValue = "10", paramLabel = "E", description = "Multiplies linear XYZ before display (default ${DEFAULT-VALUE}).")
-    double exposure;
-
-    @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
-    boolean brdfMap;
-
-    @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
-    double azimuthDeg;
-
-    @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}).")
-    double elevationDeg;
-
-    @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
-    double distance;
-
-    /** Everything checked that needs no file and no GL: bad usage fails before any work. */
+    /** Everything checked that needs no OpenGL: bad usage fails before any work, a bad scene file too. */
     void validate() {
         if (scene != null) {
             for (String option : SCENE_ONLY) {
@@ -148,71 +151,28 @@ final class ViewerOptions {
                             + "that (edit " + scene + ", or leave the SCENE out)");
                 }
             }
-            parsedScene = SceneFile.load(scene); // a bad scene fails here, before any OpenGL
+            parsedScene = SceneFile.load(scene);
         }
-        if (patch != null && synthetic != null) {
-            throw new UserInputException("give --patch FILE or --synthetic KIND, not both");
+        patch.validate();
+        brdf.validate();
+        if (brdf.variantOr(Variant.LOBES) == Variant.REFERENCE) {
+            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY
+                    + " (the reference is drawn by ./diffract brdfmap)");
         }
-        if (synthetic != null) {
-            syntheticPatch(synthetic); // names a known kind
-        }
-        ViewerShapes.Kind.parse(shape);
-        parseTangent(tangent);
-        settings();
-        if (!(distance >= OrbitCamera.MIN_DISTANCE && distance <= OrbitCamera.MAX_DISTANCE)) {
+        brdf.apply(defaults()); // a refused value fails now too
+        if (!(view.distance >= OrbitCamera.MIN_DISTANCE && view.distance <= OrbitCamera.MAX_DISTANCE)) {
             throw new UserInputException("--distance must be in [" + OrbitCamera.MIN_DISTANCE + ", "
-                    + OrbitCamera.MAX_DISTANCE + "], got " + distance);
+                    + OrbitCamera.MAX_DISTANCE + "], got " + view.distance);
         }
-        if (!(thetaIDeg >= 0 && thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
+        if (!(view.thetaIDeg >= 0 && view.thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
             throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG + "] degrees, got "
-                    + thetaIDeg);
+                    + view.thetaIDeg);
         }
-        if (!Double.isFinite(azimuthDeg) || !Double.isFinite(elevationDeg) || (phiIDeg != null && !Double.isFinite(phiIDeg))) {
+        if (!Double.isFinite(view.azimuthDeg) || !Double.isFinite(view.elevationDeg)
+                || (view.phiIDeg != null && !Double.isFinite(view.phiIDeg))) {
             throw new UserInputException("angles must be finite numbers");
         }
     }
-
-    BrdfSettings settings() {
-        if (highestOrder < 0 || highestOrder > diffract.viewer.ViewerController.MAX_HIGHEST_ORDER) {
-            throw new UserInputException("--terms must be between 0 and "
-                    + diffract.viewer.ViewerController.MAX_HIGHEST_ORDER + ", got " + highestOrder);
-        }
-        if (!(coherenceLengthUm > 0)) {
-            throw new UserInputException("--coherence-length must be > 0 um, got " + coherenceLengthUm);
-        }
-        boolean auto = auto();
-        AutoVariant.checkOptions(auto, maxDeltaE, null);
-        // auto resolves to a concrete variant once the patch is read (resolveAuto); FLSS stands in until then
-        Variant v = auto ? Variant.FLSS : Variant.parse(variant);
-        if (v == Variant.REFERENCE) {
-            throw new UserInputException("the viewer draws on the GPU: use --variant flss, nmm or pq (or baked) "
-                    + "(the reference runs on the CPU: ./diffract brdfmap)");
-        }
-        return new BrdfSettings(v, highestOrder, windowRadius, BrdfSettings.LAMBDA_MIN_NM, BrdfSettings.LAMBDA_MAX_NM,
-                lambdaStepNm, coherenceLengthUm / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX, 0)
-                .withTaylorTolerance(taylorTolerance).withAutomaticWindowRadius(automaticWindow);
-    }
-
-    private boolean auto() {
-        return variant.trim().equalsIgnoreCase(AutoVariant.NAME);
-    }
-
-    /**
-     * With {@code --variant auto}: the cheapest measured configuration on this patch that meets --max-delta-e,
-     * among those with float32 terms (the viewer's storage); otherwise the settings unchanged.
-     */
-    private BrdfSettings resolveAuto(HeightField meanSubtracted, double phiIDeg, BrdfSettings settings, Reporter reporter) {
-        if (!auto()) {
-            return settings;
-        }
-        // rendered on the thesis' series, the path the calibration measured (not the automatic expansion)
-        return AutoVariant.choose(meanSubtracted, phiIDeg, settings, maxDeltaE, reporter,
-                r -> r.config().textureFormat().equals(diffract.bench.SweepPlan.EXACT_FORMAT)).chosen().config()
-                .settings().withExpansion(TaylorEvaluation.Mode.PLAIN);
-    }
-
-    /** The snake's procedural corn-snake pigmentation is the same every run. */
-    static final long PIGMENT_SEED = 2014;
 
     /** Whether the user gave {@code option} on the command line (not just its default). */
     boolean given(String option) {
@@ -220,131 +180,92 @@ final class ViewerOptions {
                 && mixee.commandLine().getParseResult().hasMatchedOption(option);
     }
 
-    /** Reads the patch and the pigmentation image (or the scene) and builds the setup (validate() first). */
-    ViewerSetup setup(Reporter reporter) {
-        if (scene != null) {
-            fabricated = Fabricator.fabricate(parsedScene != null ? parsedScene : SceneFile.load(scene), reporter);
-            return withOverrides(fabricated.setup());
+    /** {@code --size}, else the scene file's image size, else the command's {@code fallback} (validate() first). */
+    Scene.ImageSize imageSize(Scene.ImageSize fallback) {
+        if (view.size != null) {
+            return new Scene.ImageSize(view.size.width(), view.size.height());
         }
-        HeightField field;
-        String name;
-        if (patch != null) {
-            field = HeightFieldReader.load(patch, maxHeightUm, pixelSizeUm, reporter);
-            name = patch.getFileName().toString();
-        } else {
-            name = synthetic == null ? "elaphe-like" : synthetic.toLowerCase(Locale.ROOT);
-            field = syntheticPatch(name);
-        }
-        field = field.meanSubtracted();
-        BrdfSettings settings = settings();
-        SamplingCheck.warnAboutAliasing(field, settings.lambdaMinNm(), settings.lambdaMaxNm(), reporter);
-        Shape mesh = ViewerShapes.Kind.parse(shape).build(parseTangent(tangent));
-        BufferedImage pigment = pigmentation != null ? PigmentationImage.read(pigmentation)
-                : ViewerShapes.Kind.parse(shape) == ViewerShapes.Kind.SNAKE
-                ? new PigmentationTexture(PigmentationTexture.Parameters.defaults(PIGMENT_SEED)).image(256, 2048) : null;
-        double phi = phiIDeg != null ? phiIDeg : name.equals("elaphe-like") ? 90 : 0;
-        settings = resolveAuto(field, phi, settings, reporter);
-        return new ViewerSetup(field, name, mesh, pigment, diffuseWeight, settings,
-                new OrbitCamera(azimuthDeg, elevationDeg, distance, 0, 0, 0), new LightDirection(thetaIDeg, phi),
-                exposure, brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, pigment != null && !noPigmentation);
-    }
-
-    /** The scene's setup with what the command line names in its place. */
-    private ViewerSetup withOverrides(ViewerSetup s) {
-        BrdfSettings settings = s.settings();
-        if (given("--variant")) {
-            settings = settings.withVariant(settings().variant());
-        }
-        if (given("--terms")) {
-            settings = settings.withHighestOrder(highestOrder);
-        }
-        if (given("--lambda-step")) {
-            settings = settings.withLambdaStepNm(lambdaStepNm);
-        }
-        if (given("--window-radius")) {
-            settings = settings.withWindowRadius(windowRadius);
-        }
-        if (given("--coherence-length")) {
-            settings = settings.withSigmaSpatialUm(coherenceLengthUm / 4.0);
-        }
-        if (given("--taylor-tolerance")) {
-            settings = settings.withTaylorTolerance(taylorTolerance);
-        }
-        if (given("--auto-window")) {
-            settings = settings.withAutomaticWindowRadius(true);
-        }
-        settings = resolveAuto(s.patch(), given("--phi-i") ? phiIDeg : s.light().phiDeg(), settings, Reporter.STDERR);
-        OrbitCamera c = s.camera();
-        OrbitCamera camera = new OrbitCamera(given("--azimuth") ? azimuthDeg : c.azimuthDeg(),
-                given("--elevation") ? elevationDeg : c.elevationDeg(), given("--distance") ? distance : c.distance(),
-                c.targetX(), c.targetY(), c.targetZ());
-        LightDirection light = new LightDirection(given("--theta-i") ? thetaIDeg : s.light().thetaDeg(),
-                given("--phi-i") ? phiIDeg : s.light().phiDeg());
-        return new ViewerSetup(s.patch(), s.patchName(), s.shape(), s.pigmentation(),
-                given("--diffuse-weight") ? diffuseWeight : s.diffuseWeight(), settings, camera, light,
-                given("--exposure") ? exposure : s.exposure(), brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
-                s.pigmentationOn() && !noPigmentation, s.verticalFovDeg());
+        return parsedScene != null ? parsedScene.image() : fallback;
     }
 
     /**
-     * The picture's (or window's) size: {@code --size} when given, else the scene's image size, else the command's
-     * default {@code sizeOption}.
+     * The scene to draw (validate() first): the file's, or the one the options describe, with the BRDF options
+     * given applied to its material.
      */
-    int[] size(String sizeOption, boolean sizeGiven) {
-        if (fabricated != null && !sizeGiven) {
-            return new int[] {fabricated.image().width(), fabricated.image().height()};
-        }
-        return parseSize(sizeOption);
+    Scene scene(Scene.ImageSize defaultSize) {
+        Scene s = parsedScene != null ? parsedScene : optionsScene(defaultSize);
+        Scene.MaterialSpec m = s.material();
+        // --terms replaces a scene's tolerance-chosen N
+        Scene.MaterialSpec material = new Scene.MaterialSpec(m.patch(), brdf.apply(m.settings()),
+                brdf.highestOrderGiven() ? null : m.orderTolerance(), m.pigmentation(), m.pigmentationOn(),
+                m.diffuseWeight(), m.exposure());
+        return s.withMaterial(material);
     }
 
-    /** Terms from the user cache (computed and stored on first use), keyed by patch content and N. */
-    TermSource termSource(ViewerSetup setup) {
-        if (fabricated != null) {
-            return fabricated.terms();
-        }
-        return (n, reporter) -> Precomputation.cached(new Precomputation.Request(setup.patch(), setup.patchName(),
-                maxHeightUm, n, null, setup.settings().lambdaMinNm()), reporter);
+    /** The scene the options describe: the patch on a shape, the thesis' settings, an orbit camera, one light. */
+    private Scene optionsScene(Scene.ImageSize size) {
+        double phi = view.phiIDeg != null ? view.phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
+        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, view.distance, 0, 0, 0).eye();
+        Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
+                SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
+        Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(view.thetaIDeg, phi)), "D65");
+        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null,
+                TangentSource.projected(surface.tangent.x(), surface.tangent.y(), surface.tangent.z()),
+                SnakeMesh.RidgeDirection.ALONG_BODY,
+                Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
+        Scene.PigmentationSpec pigment = surface.pigmentation != null
+                ? Scene.PigmentationSpec.imageFile(surface.pigmentation)
+                : surface.shape == Scene.ShapeKind.SNAKE ? Scene.PigmentationSpec.proceduralPattern()
+                : Scene.PigmentationSpec.none();
+        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null, pigment, pigment.present() && !surface.noPigmentation, surface.diffuseWeight, view.exposure);
+        return new Scene(null, size, camera, light, shapeSpec, material,
+                view.brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, StageSpec.none());
     }
 
-    static HeightField syntheticPatch(String kind) {
-        switch (kind.toLowerCase(Locale.ROOT)) {
-            case "elaphe-like":
-                return SyntheticPatches.elapheLike();
-            case "blazed":
-                return SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16);
-            default:
-                throw new UserInputException("unknown --synthetic '" + kind + "': use elaphe-like or blazed");
-        }
+    /**
+     * The settings of a scene the options describe, as a scene file's defaults: the lobes method at the thesis'
+     * 65 um coherence under the sun (0.53 degrees), each pixel its footprint's average, the Fresnel term counted once.
+     */
+    static BrdfSettings defaults() {
+        return BrdfSettings.thesis(Variant.LOBES).with(b -> b.lightSizeDeg(LightSource.SUN_DEG)
+                .pixelFilter(PixelFilter.BOX));
     }
 
-    static double[] parseTangent(String text) {
-        String[] parts = text.split(",");
-        if (parts.length == 3) {
-            try {
-                double[] v = {Double.parseDouble(parts[0].trim()), Double.parseDouble(parts[1].trim()),
-                    Double.parseDouble(parts[2].trim())};
-                if (Double.isFinite(v[0] + v[1] + v[2]) && v[0] * v[0] + v[1] * v[1] + v[2] * v[2] > 1e-12) {
-                    return v;
-                }
-            } catch (NumberFormatException ignored) {
-                // falls through to the message below
-            }
-        }
-        throw new UserInputException("--tangent must be a non-zero vector X,Y,Z, got '" + text + "'");
+    private static double[] vector(LightDirection light) {
+        var d = light.direction();
+        return new double[] {d.x(), d.y(), d.z()};
     }
 
-    /** WxH or S (square); 16..4096 pixels per side. */
-    static int[] parseSize(String text) {
-        String[] parts = text.toLowerCase(Locale.ROOT).split("x");
-        try {
-            int w = Integer.parseInt(parts[0].trim());
-            int h = parts.length == 1 ? w : Integer.parseInt(parts[1].trim());
-            if (parts.length <= 2 && w >= 16 && h >= 16 && w <= 4096 && h <= 4096) {
-                return new int[] {w, h};
-            }
-        } catch (NumberFormatException ignored) {
-            // falls through to the message below
+    /**
+     * Reads the patch and the pigmentation image and builds the setup (validate() first); with a scene file, the
+     * light, camera and display options given override the scene's; with --variant auto, the configuration its
+     * calibration chose on this patch.
+     */
+    SceneSetup setup(Scene.ImageSize defaultSize, Reporter reporter) {
+        SceneSetup s = Fabricator.fabricate(scene(defaultSize), reporter);
+        if (parsedScene != null) {
+            s = withOverrides(s);
         }
-        throw new UserInputException("--size must be WxH (or S) with 16..4096 pixels per side, got '" + text + "'");
+        if (!brdf.auto()) {
+            return s;
+        }
+        AutoChoice choice = AutoVariant.choose(s.patch(), s.light().phiDeg(), s.settings(), brdf.maxDeltaE, reporter);
+        System.out.println(choice.explanation());
+        return s.withSettings(AutoVariant.settings(choice, s.settings().taylor().expansion()));
+    }
+
+    /** The scene's setup with the view options the command line gives in its place. */
+    private SceneSetup withOverrides(SceneSetup s) {
+        OrbitCamera c = s.camera();
+        OrbitCamera camera = new OrbitCamera(given("--azimuth") ? view.azimuthDeg : c.azimuthDeg(),
+                given("--elevation") ? view.elevationDeg : c.elevationDeg(),
+                given("--distance") ? view.distance : c.distance(),
+                c.targetX(), c.targetY(), c.targetZ());
+        LightDirection light = new LightDirection(given("--theta-i") ? view.thetaIDeg : s.light().thetaDeg(),
+                given("--phi-i") ? view.phiIDeg : s.light().phiDeg());
+        return new SceneSetup(s.pipeline(), s.shape(), s.pigmentation(),
+                given("--diffuse-weight") ? surface.diffuseWeight : s.diffuseWeight(), s.settings(), camera, light,
+                given("--exposure") ? view.exposure : s.exposure(), view.brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
+                s.pigmentationOn() && !surface.noPigmentation, s.verticalFovDeg(), s.stage());
     }
 }

@@ -4,7 +4,6 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.precompute.Precomputation;
 import diffract.util.Reporter;
-import diffract.util.UserInputException;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -46,23 +45,34 @@ public final class AutoCalibration {
                                 Reporter reporter, List<SweepPlan.Point> plan) {
         BenchPatch patch = new BenchPatch("patch", meanSubtracted, phiIDeg);
         Path file = cacheRoot.resolve("calibration").resolve(key(patch, base, plan) + ".csv");
-        try {
-            if (Files.isRegularFile(file)) {
+        if (Files.isRegularFile(file)) {
+            try {
+                List<BenchResult> cached = ResultsTable.readCsv(file, base);
                 reporter.info("auto: calibration of this patch and settings reused from " + file);
-                return ResultsTable.readCsv(file, base);
+                return cached;
+            } catch (IOException | RuntimeException e) { // a bad number, a short row, another version's header
+                reporter.warn(file + " is damaged (" + firstLine(e) + "): calibrating again");
             }
-            List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(true), plan, base);
-            reporter.info("auto: calibrating on this patch (" + configs.size() + " configurations, once; cached in "
-                    + file + ")");
-            BenchRunner runner = new BenchRunner(new ReferenceMaps(cacheRoot.resolve("reference-maps"), reporter),
-                    reporter);
-            List<BenchResult> results = runner.run(configs, Map.of(patch.name(), patch), base, r -> { });
-            Files.createDirectories(file.getParent());
-            ResultsTable.writeCsv(file, results);
-            return results;
-        } catch (IOException e) {
-            throw new UserInputException("cannot read or write the calibration " + file + ": " + e.getMessage(), e);
         }
+        List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(true), plan, base);
+        reporter.info("auto: calibrating on this patch (" + configs.size() + " configurations, once; cached in "
+                + file + ")");
+        BenchRunner runner = new BenchRunner(new ReferenceMaps(cacheRoot.resolve("reference-maps"), reporter),
+                reporter).progressOnly("auto: calibrating");
+        List<BenchResult> results = runner.run(configs, Map.of(patch.name(), patch), base, r -> { });
+        try {
+            Files.createDirectories(file.getParent());
+            ResultsTable.writeCsv(file, results, runner.glInfo());
+        } catch (IOException e) {
+            reporter.info("auto: cannot write the calibration to " + file + " (" + firstLine(e)
+                    + "): it is used now, not kept");
+        }
+        return results;
+    }
+
+    private static String firstLine(Exception e) {
+        String message = e.getMessage();
+        return message == null ? e.getClass().getSimpleName() : message.lines().findFirst().orElse("");
     }
 
     /** The user cache's calibration folder root (the precompute cache). */
@@ -72,8 +82,9 @@ public final class AutoCalibration {
 
     static String key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
         String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
-                Csv.number(base.lambdaMinNm()), Csv.number(base.lambdaMaxNm()), Csv.number(base.sigmaSpatialUm()),
-                Csv.number(base.refractiveIndex()), Integer.toString(base.pqReplicas()), plan.toString());
+                Csv.number(base.spectral().lambdaMinNm()), Csv.number(base.spectral().lambdaMaxNm()),
+                Csv.number(base.illumination().sigmaSpatialUm()), Csv.number(base.illumination().refractiveIndex()),
+                Integer.toString(base.window().pqReplicas()), plan.toString());
         try {
             byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));
             return HexFormat.of().formatHex(hash).substring(0, 32);

@@ -54,9 +54,10 @@ public record AutoChoice(BenchResult chosen, Optional<BenchResult> cheaperReject
     /** "flss, N = 16, 10 nm, R = 0, rg8", or with the early stop "flss, N = 30, 5 nm, R = auto, stop at 0.0001, rg32f". */
     public static String describe(BenchResult r) {
         BenchConfig c = r.config();
-        double tolerance = c.settings().taylorTolerance();
-        return String.format(Locale.ROOT, "%s, N = %d, %s nm, R = %s, %s%s", c.settings().variant().cliName(),
-                c.settings().highestOrder(), Csv.number(c.settings().lambdaStepNm()), c.windowRadiusLabel(),
+        double tolerance = c.settings().taylor().tolerance();
+        return String.format(Locale.ROOT, "%s, N = %d, %s nm, R = %s, %s%s", c.settings().variant().label(),
+                c.settings().taylor().highestOrder(), Csv.number(c.settings().spectral().lambdaStepNm()),
+                c.windowRadiusLabel(),
                 tolerance > 0 ? "stop at " + Csv.number(tolerance) + ", " : "", c.textureFormat());
     }
 }

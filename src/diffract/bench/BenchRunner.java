@@ -1,9 +1,10 @@
 package diffract.bench;
 
-import diffract.app.AutoExposure;
 import diffract.jrtr.GLInfo;
+import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.TaylorTerms;
 import diffract.precompute.Precomputation;
 import diffract.render.GpuBrdfMap;
@@ -35,6 +36,7 @@ public final class BenchRunner {
     private final Map<String, TaylorTerms> terms = new HashMap<>();
     private final Map<String, List<float[]>> keptMaps = new HashMap<>();
     private Predicate<BenchConfig> keepMaps = c -> false;
+    private String progressTask;
     private GLInfo glInfo;
 
     private final List<Double> lightsDeg;
@@ -54,6 +56,9 @@ public final class BenchRunner {
     public List<BenchResult> run(List<BenchConfig> configs, Map<String, BenchPatch> patches, BrdfSettings base,
                                  Consumer<BenchResult> sink) {
         prepare(configs, patches, base);
+        if (progressTask != null) {
+            reporter.progress(progressTask + " " + configs.size() + " configurations", 0);
+        }
         List<BenchResult> results = new ArrayList<>();
         double totalWork = 0;
         for (BenchConfig c : configs) {
@@ -64,16 +69,33 @@ public final class BenchRunner {
         double frameMsSum = 0;
         for (int i = 0; i < configs.size(); i++) {
             BenchConfig c = configs.get(i);
-            BenchResult r = measure(c, patches.get(c.patch()), base);
+            BenchResult r;
+            try {
+                r = measure(c, patches.get(c.patch()), base);
+            } catch (InvalidSettingException e) {
+                // a configuration the variant refuses for this patch (the lobes shader where texel pairs matter)
+                reporter.info(String.format(Locale.ROOT, "[%d/%d] %-16s %-5s: not measured: %s", i + 1, configs.size(),
+                        c.patch(), c.settings().variant().label(), e.getMessage()));
+                doneWork += c.workUnits();
+                continue;
+            }
             results.add(r);
             sink.accept(r);
             doneWork += c.workUnits();
             frameMsSum += r.msPerFrame();
             double elapsedS = (System.nanoTime() - start) * 1e-9;
+            if (progressTask != null) {
+                // the share of the time, from the same model as the lines' ETA: the time left it implies is that ETA
+                double left = eta(elapsedS, i + 1, doneWork, frameMsSum, configs.size(), totalWork);
+                reporter.progress(progressTask + " " + configs.size() + " configurations",
+                        i + 1 == configs.size() ? 1.0 : elapsedS / (elapsedS + left));
+                continue;
+            }
             reporter.info(String.format(Locale.ROOT, "[%d/%d] %-16s %-5s N=%-2d step %-2s nm R=%-4s tol %-6s %-5s %dpx: "
                             + "%8.2f ms/frame, CIEDE2000 mean %.3f p95 %.3f (%d lit px)  elapsed %s, ETA %s",
-                    i + 1, configs.size(), c.patch(), c.settings().variant().cliName(), c.settings().highestOrder(),
-                    Csv.number(c.settings().lambdaStepNm()), c.windowRadiusLabel(), Csv.number(c.settings().taylorTolerance()),
+                    i + 1, configs.size(), c.patch(), c.settings().variant().label(), c.settings().taylor().highestOrder(),
+                    Csv.number(c.settings().spectral().lambdaStepNm()), c.windowRadiusLabel(),
+                    Csv.number(c.settings().taylor().tolerance()),
                     c.textureFormat(),
                     c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(), r.error().litPixels(),
                     duration(elapsedS), duration(eta(elapsedS, i + 1, doneWork, frameMsSum, configs.size(),
@@ -99,6 +121,15 @@ public final class BenchRunner {
         return s >= 60 ? String.format(Locale.ROOT, "%dm%02ds", s / 60, s % 60) : s + "s";
     }
 
+    /**
+     * Report progress (with the time left) under {@code task} instead of a line per configuration: for a
+     * measurement that serves another command (auto's calibration), whose rows nobody reads.
+     */
+    public BenchRunner progressOnly(String task) {
+        this.progressTask = task;
+        return this;
+    }
+
     /** Keep the GPU maps of the configurations that match (for comparisons between variants). */
     public BenchRunner keepMapsOf(Predicate<BenchConfig> which) {
         this.keepMaps = which;
@@ -119,7 +150,7 @@ public final class BenchRunner {
     private void prepare(List<BenchConfig> configs, Map<String, BenchPatch> patches, BrdfSettings base) {
         Map<String, Integer> highest = new HashMap<>();
         for (BenchConfig c : configs) {
-            highest.merge(c.patch(), c.settings().highestOrder(), Math::max);
+            highest.merge(c.patch(), c.settings().taylor().highestOrder(), Math::max);
             for (double theta : lightsDeg) {
                 references.xyz(patches.get(c.patch()), theta, c.sizePx(), base);
             }
@@ -127,7 +158,7 @@ public final class BenchRunner {
         for (Map.Entry<String, Integer> e : highest.entrySet()) {
             BenchPatch p = patches.get(e.getKey());
             terms.put(e.getKey(), Precomputation.cached(new Precomputation.Request(p.field(), "bench:" + p.name(),
-                    null, e.getValue(), null, base.lambdaMinNm()), reporter));
+                    null, e.getValue(), null, base.spectral().lambdaMinNm()), reporter));
         }
     }
 
@@ -136,7 +167,7 @@ public final class BenchRunner {
         List<float[]> variant = new ArrayList<>();
         List<Double> exposures = new ArrayList<>();
         double ms;
-        try (GpuBrdfMap map = new GpuBrdfMap(terms.get(c.patch()), c.settings(), c.precision())) {
+        try (GpuBrdfMap map = new GpuBrdfMap(terms.get(c.patch()), c.settings())) {
             for (double theta : lightsDeg) {
                 Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
                 float[] ref = references.xyz(patch, theta, c.sizePx(), base);

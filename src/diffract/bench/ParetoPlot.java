@@ -44,14 +44,14 @@ public final class ParetoPlot {
                 .setLegendPosition(Styler.LegendPosition.OutsideE)
                 .setChartBackgroundColor(Color.WHITE);
         List<String> patches = results.stream().map(r -> r.config().patch()).distinct().toList();
-        List<String> variants = results.stream().map(r -> r.config().settings().variant().cliName()).distinct().toList();
+        List<String> variants = results.stream().map(r -> r.config().settings().variant().label()).distinct().toList();
         for (int p = 0; p < patches.size(); p++) {
             String patch = patches.get(p);
             Color colour = PATCH_COLOURS[p % PATCH_COLOURS.length];
             for (int v = 0; v < variants.size(); v++) {
                 String variant = variants.get(v);
                 List<BenchResult> points = results.stream().filter(r -> r.config().patch().equals(patch)
-                        && r.config().settings().variant().cliName().equals(variant)
+                        && r.config().settings().variant().label().equals(variant)
                         && !Double.isNaN(r.deltaEMean())).toList();
                 if (!points.isEmpty()) {
                     XYSeries s = chart.addSeries(patch + " " + variant, xs(points), ys(points));

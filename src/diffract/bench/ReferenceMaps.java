@@ -7,7 +7,6 @@ import diffract.optics.Direction;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
-import diffract.util.UserInputException;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -30,30 +29,37 @@ public final class ReferenceMaps {
 
     /** XYZ of the reference map (3 floats per pixel, rows from the top), from the cache or computed and cached. */
     public float[] xyz(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
-        BrdfSettings reference = base.withVariant(Variant.REFERENCE);
+        BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
         Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-c%s-n%s.pfm",
                 patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
-                sizePx, Csv.number(reference.lambdaMinNm()), Csv.number(reference.lambdaMaxNm()),
-                Csv.number(reference.sigmaSpatialUm()), Csv.number(reference.refractiveIndex())));
-        try {
-            if (Files.isRegularFile(file)) {
+                sizePx, Csv.number(reference.spectral().lambdaMinNm()), Csv.number(reference.spectral().lambdaMaxNm()),
+                Csv.number(reference.illumination().sigmaSpatialUm()),
+                Csv.number(reference.illumination().refractiveIndex())));
+        if (Files.isRegularFile(file)) {
+            try {
                 int[] whc = new int[3];
                 float[] xyz = ImageFiles.readPfm(file, whc);
                 if (whc[0] == sizePx && whc[1] == sizePx && whc[2] == 3) {
                     return xyz;
                 }
+                reporter.warn(file + " holds a map of another size: recomputing it");
+            } catch (IOException e) {
+                reporter.warn(file + " is damaged (" + e.getMessage() + "): recomputing it");
             }
-            long start = System.nanoTime();
-            DiffractionBrdf brdf = DiffractionBrdf.create(reference, patch.field(), null);
-            float[] xyz = BrdfMap.xyz(brdf, Direction.fromSphericalDeg(thetaIDeg, patch.phiIDeg()), sizePx,
-                    Reporter.SILENT);
+        }
+        long start = System.nanoTime();
+        DiffractionBrdf brdf = DiffractionBrdf.create(reference, patch.field(), null);
+        float[] xyz = BrdfMap.xyz(brdf, Direction.fromSphericalDeg(thetaIDeg, patch.phiIDeg()), sizePx, reporter);
+        String where;
+        try {
             Files.createDirectories(dir);
             ImageFiles.writePfm(file, xyz, sizePx, sizePx, 3);
-            reporter.info(String.format(Locale.ROOT, "reference map %s, theta_i %s, %dx%d: %.1f s (cached in %s)",
-                    patch.name(), Csv.number(thetaIDeg), sizePx, sizePx, (System.nanoTime() - start) * 1e-9, file));
-            return xyz;
+            where = "cached in " + file;
         } catch (IOException e) {
-            throw new UserInputException("cannot cache reference maps in " + dir + ": " + e.getMessage(), e);
+            where = "not cached: cannot write " + dir + " (" + e.getMessage() + ")";
         }
+        reporter.info(String.format(Locale.ROOT, "reference map %s, theta_i %s, %dx%d: %.1f s (%s)",
+                patch.name(), Csv.number(thetaIDeg), sizePx, sizePx, (System.nanoTime() - start) * 1e-9, where));
+        return xyz;
     }
 }

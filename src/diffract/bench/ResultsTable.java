@@ -1,6 +1,8 @@
 package diffract.bench;
 
+import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
@@ -24,9 +26,16 @@ import java.util.stream.Collectors;
  * front of (ms_per_frame, deltaE_mean) of its patch and map size (errors of different sizes are not comparable).
  */
 public final class ResultsTable {
-    public static final List<String> COLUMNS = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
-            "texture_format", "width", "height", "ms_per_frame", "deltaE_mean", "deltaE_p95", "deltaE_disk_mean",
-            "lit_pixels", "coherence_length_um", "pareto", "taylor_tolerance");
+    /** The measured columns; a results.csv with only these (no GL columns) still reads back. */
+    static final List<String> MEASURED_COLUMNS = List.of("variant", "patch", "terms", "lambda_step_nm",
+            "window_radius", "texture_format", "width", "height", "ms_per_frame", "deltaE_mean", "deltaE_p95",
+            "deltaE_disk_mean", "lit_pixels", "coherence_length_um", "pareto", "taylor_tolerance");
+    /**
+     * Every column: the measured ones, then the OpenGL the row ran on (driver strings with their commas written as
+     * semicolons, so that every row splits on commas).
+     */
+    public static final List<String> COLUMNS = java.util.stream.Stream.concat(MEASURED_COLUMNS.stream(),
+            java.util.stream.Stream.of("gl_vendor", "gl_renderer", "gl_version", "gl_platform")).toList();
 
     private ResultsTable() {
     }
@@ -35,15 +44,30 @@ public final class ResultsTable {
         return String.join(",", COLUMNS);
     }
 
-    public static String csvRow(BenchResult r, boolean onFront) {
+    /** One row; {@code gl} is the OpenGL it was measured on (null: empty GL columns). */
+    public static String csvRow(BenchResult r, boolean onFront, GLInfo gl) {
+        return csvRow(r, onFront) + "," + glFields(gl);
+    }
+
+    /** The GL columns' values. */
+    static String glFields(GLInfo gl) {
+        return gl == null ? ",,," : String.join(",", field(gl.vendor()), field(gl.renderer()), field(gl.version()),
+                field(gl.platform()));
+    }
+
+    private static String field(String driverText) {
+        return driverText == null ? "" : driverText.replace(',', ';').replace('\n', ' ').replace('\r', ' ');
+    }
+
+    private static String csvRow(BenchResult r, boolean onFront) {
         BenchConfig c = r.config();
         BrdfSettings s = c.settings();
-        return String.join(",", s.variant().cliName(), c.patch(), Integer.toString(s.highestOrder()),
-                Csv.number(s.lambdaStepNm()), c.windowRadiusLabel(), c.textureFormat(),
+        return String.join(",", s.variant().label(), c.patch(), Integer.toString(s.taylor().highestOrder()),
+                Csv.number(s.spectral().lambdaStepNm()), c.windowRadiusLabel(), c.textureFormat(),
                 Integer.toString(c.sizePx()), Integer.toString(c.sizePx()), Csv.number(r.msPerFrame()),
                 Csv.number(r.error().mean()), Csv.number(r.error().p95()), Csv.number(r.error().diskMean()),
-                Integer.toString(r.error().litPixels()), Csv.number(4 * s.sigmaSpatialUm()), Boolean.toString(onFront),
-                Csv.number(s.taylorTolerance()));
+                Integer.toString(r.error().litPixels()), Csv.number(s.illumination().coherenceLengthUm()),
+                Boolean.toString(onFront), Csv.number(s.taylor().tolerance()));
     }
 
     /** The rows on the Pareto front of one patch at one map size. */
@@ -68,12 +92,17 @@ public final class ResultsTable {
     }
 
     public static void writeCsv(Path file, List<BenchResult> results) throws IOException {
+        writeCsv(file, results, null);
+    }
+
+    /** Writes every row, measured on {@code gl}. */
+    public static void writeCsv(Path file, List<BenchResult> results, GLInfo gl) throws IOException {
         List<BenchResult> onFront = onAnyFront(results);
         ImageFiles.writeAtomically(file, raw -> {
             PrintWriter out = new PrintWriter(new OutputStreamWriter(raw, StandardCharsets.UTF_8));
             out.println(csvHeader());
             for (BenchResult r : results) {
-                out.println(csvRow(r, onFront.contains(r)));
+                out.println(csvRow(r, onFront.contains(r), gl));
             }
             out.flush();
         });
@@ -82,18 +111,20 @@ public final class ResultsTable {
     /** Reads a results.csv written by {@link #writeCsv}; the settings not in the file come from {@code base}. */
     public static List<BenchResult> readCsv(Path file, BrdfSettings base) throws IOException {
         List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
-        if (lines.isEmpty() || !lines.get(0).equals(csvHeader())) {
+        if (lines.isEmpty() || !(lines.get(0).equals(csvHeader())
+                || lines.get(0).equals(String.join(",", MEASURED_COLUMNS)))) {
             throw new UserInputException(file + " is not a results.csv of this version (header differs)");
         }
         List<BenchResult> results = new ArrayList<>();
         for (String line : lines.subList(1, lines.size())) {
             String[] f = line.split(",", -1);
             boolean automaticWindow = f[4].equals("auto");
-            BrdfSettings s = base.withVariant(Variant.parse(f[0])).withHighestOrder(Integer.parseInt(f[2]))
-                    .withLambdaStepNm(Double.parseDouble(f[3]))
-                    .withWindowRadius(automaticWindow ? base.windowRadius() : Integer.parseInt(f[4]))
-                    .withAutomaticWindowRadius(automaticWindow).withTaylorTolerance(Double.parseDouble(f[15]));
-            BenchConfig c = new BenchConfig(f[1], s, f[5], Integer.parseInt(f[6]));
+            BrdfSettings s = base.toBuilder().variant(Variant.parse(f[0])).highestOrder(Integer.parseInt(f[2]))
+                    .lambdaStepNm(Double.parseDouble(f[3]))
+                    .windowRadius(automaticWindow ? base.window().radius() : Integer.parseInt(f[4]))
+                    .automaticWindowRadius(automaticWindow).taylorTolerance(Double.parseDouble(f[15]))
+                    .termFormat(TermFormat.valueOf(f[5].toUpperCase(Locale.ROOT))).build();
+            BenchConfig c = new BenchConfig(f[1], s, Integer.parseInt(f[6]));
             results.add(new BenchResult(c, Double.parseDouble(f[8]), new MapError(parse(f[9]), parse(f[10]),
                     parse(f[11]), Integer.parseInt(f[12]))));
         }
@@ -125,8 +156,8 @@ public final class ResultsTable {
                 BenchConfig c = r.config();
                 BrdfSettings s = c.settings();
                 b.append(String.format(Locale.ROOT, "| %s | %s | %d | %s | %s | %s | %s | %d | %.2f | %.3f | %.3f | %.3f | %s |%n",
-                        patch, s.variant().cliName(), s.highestOrder(), Csv.number(s.lambdaStepNm()), c.windowRadiusLabel(),
-                        Csv.number(s.taylorTolerance()), c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
+                        patch, s.variant().label(), s.taylor().highestOrder(), Csv.number(s.spectral().lambdaStepNm()),
+                        c.windowRadiusLabel(), Csv.number(s.taylor().tolerance()), c.textureFormat(), c.sizePx(), r.msPerFrame(), r.error().mean(), r.error().p95(),
                         r.error().diskMean(), onFront.contains(r) ? "**yes**" : ""));
             }
         }

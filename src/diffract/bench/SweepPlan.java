@@ -1,10 +1,10 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.EnumSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -12,8 +12,8 @@ import java.util.Map;
 import java.util.Set;
 
 /**
- * Which configurations the bench measures, table-driven: every {@link Variant} except the CPU-only reference and
- * the app-level {@code AUTO} is swept over the same points, and {@link #IGNORED_AXES} says which axes a variant
+ * Which configurations the bench measures, table-driven: every GPU {@link Variant} (all but the CPU-only
+ * reference) is swept over the same points, and {@link #IGNORED_AXES} says which axes a variant
  * ignores (their value stays the thesis' and duplicates are dropped). A new variant needs no line at all, or one
  * in that table.
  */
@@ -21,8 +21,6 @@ public final class SweepPlan {
     /** The axes of a configuration. */
     public enum Axis { TERMS, LAMBDA_STEP, WINDOW_RADIUS, TEXTURE_FORMAT, SIZE, LEAN }
 
-    /** Variants that are not GPU shaders of their own: the CPU yardstick and the app-level automatic choice. */
-    static final Set<String> NOT_SWEPT = Set.of("REFERENCE", "AUTO", "LOBES");
 
     /**
      * Variants left out of {@code --quick} and of auto's calibration: the baked table first bakes, 30 to 70 s per
@@ -31,8 +29,8 @@ public final class SweepPlan {
     static final Set<Variant> NOT_IN_QUICK = EnumSet.of(Variant.BAKED);
 
     /**
-     * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (issue #5, part
-     * 2; docs/baked.md measures 1e-4 as invisible in CIEDE2000 at 17-40 % less work), with the automatic window.
+     * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (docs/baked.md
+     * measures 1e-4 as invisible in CIEDE2000 at 17-40 % less work), with the automatic window.
      */
     public static final double LEAN_TAYLOR_TOLERANCE = 1e-4;
 
@@ -45,7 +43,7 @@ public final class SweepPlan {
             Variant.BAKED, EnumSet.of(Axis.TERMS, Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN));
 
     /** The thesis' storage: float32 terms. */
-    public static final String EXACT_FORMAT = "rg32f";
+    public static final TermFormat EXACT_FORMAT = TermFormat.RG32F;
 
     /**
      * One point of the sweep.
@@ -54,9 +52,9 @@ public final class SweepPlan {
      * @param lean  each lookup's Taylor loop stops at {@link #LEAN_TAYLOR_TOLERANCE} and the window radius follows
      *              sigma_f ({@code windowRadius} then does not apply)
      */
-    public record Point(int terms, double lambdaStepNm, int windowRadius, String textureFormat, int sizePx,
+    public record Point(int terms, double lambdaStepNm, int windowRadius, TermFormat textureFormat, int sizePx,
                         boolean lean) {
-        public Point(int terms, double lambdaStepNm, int windowRadius, String textureFormat, int sizePx) {
+        public Point(int terms, double lambdaStepNm, int windowRadius, TermFormat textureFormat, int sizePx) {
             this(terms, lambdaStepNm, windowRadius, textureFormat, sizePx, false);
         }
 
@@ -64,7 +62,7 @@ public final class SweepPlan {
             return new Point(n, step, r, textureFormat, sizePx, lean);
         }
 
-        Point format(String f) {
+        Point format(TermFormat f) {
             return new Point(terms, lambdaStepNm, windowRadius, f, sizePx, lean);
         }
 
@@ -90,7 +88,7 @@ public final class SweepPlan {
     public static List<Variant> sweptVariants(boolean quick) {
         List<Variant> variants = new ArrayList<>();
         for (Variant v : Variant.values()) {
-            if (!NOT_SWEPT.contains(v.name()) && !(quick && NOT_IN_QUICK.contains(v))) {
+            if (v.runsOnGpu() && !(quick && NOT_IN_QUICK.contains(v))) {
                 variants.add(v);
             }
         }
@@ -111,8 +109,8 @@ public final class SweepPlan {
         Point t = thesis(sizePx);
         return List.of(t,
                 t.with(16, 5, 1), t.with(8, 5, 1), t.with(4, 5, 1), t.with(30, 10, 1), t.with(30, 25, 1),
-                t.with(30, 5, 0), t.format("rg16f"), t.format("rg8"),
-                t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 25, 1), t.with(8, 10, 0), t.with(8, 10, 1).format("rg8"),
+                t.with(30, 5, 0), t.format(TermFormat.RG16F), t.format(TermFormat.RG8),
+                t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 25, 1), t.with(8, 10, 0), t.with(8, 10, 1).format(TermFormat.RG8),
                 t.asLean(), t.with(8, 10, 1).asLean(), t.with(4, 10, 1).asLean());
     }
 
@@ -129,8 +127,8 @@ public final class SweepPlan {
         points.add(t.with(30, 5, 2));
         points.add(t.with(40, 5, 1));
         for (Point p : List.of(t, t.with(8, 10, 1), t.with(8, 10, 0))) {
-            points.add(p.format("rg16f"));
-            points.add(p.format("rg8"));
+            points.add(p.format(TermFormat.RG16F));
+            points.add(p.format(TermFormat.RG8));
         }
         points.add(t.size(largeSizePx));
         for (Point p : List.of(t, t.with(16, 5, 1), t.with(8, 10, 1), t.with(4, 10, 1), t.with(8, 15, 1))) {
@@ -140,11 +138,11 @@ public final class SweepPlan {
     }
 
     /** Every combination of the given values. */
-    public static List<Point> grid(List<Integer> terms, List<Double> stepsNm, List<Integer> radii, List<String> formats,
-                                   List<Integer> sizes) {
+    public static List<Point> grid(List<Integer> terms, List<Double> stepsNm, List<Integer> radii,
+                                   List<TermFormat> formats, List<Integer> sizes) {
         List<Point> points = new ArrayList<>();
         for (int size : sizes) {
-            for (String f : formats) {
+            for (TermFormat f : formats) {
                 for (int n : terms) {
                     for (double step : stepsNm) {
                         for (int r : radii) {
@@ -171,23 +169,19 @@ public final class SweepPlan {
                 Set<Axis> ignored = IGNORED_AXES.getOrDefault(v, EnumSet.noneOf(Axis.class));
                 Point thesis = thesis(0);
                 for (Point p : points) {
-                    BrdfSettings s = base.withVariant(v)
-                            .withHighestOrder(ignored.contains(Axis.TERMS) ? thesis.terms() : p.terms())
-                            .withLambdaStepNm(ignored.contains(Axis.LAMBDA_STEP) ? thesis.lambdaStepNm() : p.lambdaStepNm())
-                            .withWindowRadius(ignored.contains(Axis.WINDOW_RADIUS) ? thesis.windowRadius() : p.windowRadius());
                     boolean lean = p.lean() && !ignored.contains(Axis.LEAN);
-                    s = s.withTaylorTolerance(lean ? LEAN_TAYLOR_TOLERANCE : 0).withAutomaticWindowRadius(lean);
-                    String format = ignored.contains(Axis.TEXTURE_FORMAT) ? EXACT_FORMAT : p.textureFormat();
-                    BenchConfig c = new BenchConfig(patch, s, format, p.sizePx());
+                    BrdfSettings s = base.toBuilder().variant(v)
+                            .highestOrder(ignored.contains(Axis.TERMS) ? thesis.terms() : p.terms())
+                            .lambdaStepNm(ignored.contains(Axis.LAMBDA_STEP) ? thesis.lambdaStepNm() : p.lambdaStepNm())
+                            .windowRadius(ignored.contains(Axis.WINDOW_RADIUS) ? thesis.windowRadius() : p.windowRadius())
+                            .taylorTolerance(lean ? LEAN_TAYLOR_TOLERANCE : 0).automaticWindowRadius(lean)
+                            .termFormat(ignored.contains(Axis.TEXTURE_FORMAT) ? EXACT_FORMAT : p.textureFormat())
+                            .build();
+                    BenchConfig c = new BenchConfig(patch, s, p.sizePx());
                     unique.putIfAbsent(c.key(), c);
                 }
             }
         }
         return new ArrayList<>(unique.values());
-    }
-
-    /** Parses "a,b,c" into a list, for the command's axis options. */
-    public static List<String> list(String commaSeparated) {
-        return Arrays.stream(commaSeparated.split(",")).map(String::trim).filter(s -> !s.isEmpty()).toList();
     }
 }

@@ -1,5 +1,6 @@
 package diffract.bench;
 
+import diffract.optics.BrdfSettings;
 import diffract.optics.Variant;
 
 import java.util.ArrayList;
@@ -10,7 +11,7 @@ import java.util.function.BiFunction;
 import java.util.function.Function;
 
 /**
- * Issue #5's targets, per patch, from one run: (1) at mean CIEDE2000 <= {@link #MAX_DELTA_E} the {@code auto}
+ * The bench's targets, per patch, from one run: (1) at mean CIEDE2000 <= {@link #MAX_DELTA_E} the {@code auto}
  * choice is at least {@link #MIN_SPEED_UP} times faster than FLSS in the thesis' configuration (5 nm, N = 30,
  * 3 x 3 window, float32 terms); (2) NMM with the Jacobian (thesis' configuration) is within mean CIEDE2000
  * {@link #MAX_DELTA_E} of FLSS at 1 nm, measured directly between their maps (same lights, the reference's
@@ -75,19 +76,19 @@ public final class Targets {
     /** Whether a configuration's maps are needed for the NMM target: NMM and FLSS at 1 nm, thesis otherwise. */
     public static boolean needsMaps(BenchConfig c) {
         Variant v = c.settings().variant();
-        double step = c.settings().lambdaStepNm();
+        double step = c.settings().spectral().lambdaStepNm();
         return (v == Variant.NMM && step == 5 || v == Variant.FLSS && step == 1) && isThesis(c);
     }
 
     private static boolean isThesis(BenchConfig c) {
-        return c.settings().highestOrder() == 30 && c.settings().windowRadius() == 1
-                && !c.settings().automaticWindowRadius() && c.settings().taylorTolerance() == 0
-                && c.textureFormat().equals(SweepPlan.EXACT_FORMAT);
+        BrdfSettings s = c.settings();
+        return s.taylor().highestOrder() == 30 && s.window().radius() == 1 && !s.window().automatic()
+                && s.taylor().tolerance() == 0 && s.gpu().termFormat() == SweepPlan.EXACT_FORMAT;
     }
 
     private static Optional<BenchResult> find(List<BenchResult> results, Variant v, double stepNm) {
         return results.stream().filter(r -> r.config().settings().variant() == v
-                && r.config().settings().lambdaStepNm() == stepNm && isThesis(r.config())).findFirst();
+                && r.config().settings().spectral().lambdaStepNm() == stepNm && isThesis(r.config())).findFirst();
     }
 
     /** The markdown table of the outcomes. */

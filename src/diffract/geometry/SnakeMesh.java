@@ -33,6 +33,36 @@ public final class SnakeMesh {
         AROUND_BODY
     }
 
+    /** How the body lies on the ground. */
+    public enum Pose {
+        /** Stretched out along x in lateral S-bends (the default). */
+        S_CURVE,
+        /**
+         * Resting in a flat coil: the centre curve is an Archimedean spiral on the ground, tail in the middle, head
+         * at the outer end, coils one body width plus a tenth apart, so neighbouring coils never touch.
+         */
+        COILED
+    }
+
+    /**
+     * The body along its length, at each ring: what a scale lattice needs to size its scales.
+     *
+     * @param v             texture coordinate v of each ring (0 at the snout tip, 1 at the tail tip)
+     * @param halfWidthM    half-width of the cross-section at each ring, metres
+     * @param heightToWidth cross-section height over width
+     * @param lengthAlongM  distance along the body's side from snout tip to tail tip, metres (v is proportional to it)
+     * @param ventV         v at which the tail begins (the vent)
+     */
+    public record Profile(double[] v, double[] halfWidthM, double heightToWidth, double lengthAlongM, double ventV) {
+        /** Perimeter of the elliptic cross-section at ring i (Ramanujan's approximation), metres. */
+        public double circumferenceM(int i) {
+            double a = halfWidthM[i];
+            double b = a * heightToWidth;
+            double h = (a - b) * (a - b) / ((a + b) * (a + b));
+            return Math.PI * (a + b) * (1 + 3 * h / (10 + Math.sqrt(4 - 3 * h)));
+        }
+    }
+
     /** Fine samples of the centre curve used to place rings evenly along the surface. */
     private static final int PROFILE_SAMPLES = 8192;
 
@@ -49,11 +79,15 @@ public final class SnakeMesh {
      * @param rings              rings of vertices between the two poles
      * @param segments           vertices around each ring (+1 for the seam)
      * @param ridges             patch orientation on the skin
+     * @param pose               stretched out in S-bends, or coiled (the centre curve; the cross-section is the same)
      */
     public record Parameters(double lengthM, double radiusM, double heightToWidth, double tailFraction,
                              double bends, double bendAmplitudeM, double headLiftM, int rings, int segments,
-                             RidgeDirection ridges) {
+                             RidgeDirection ridges, Pose pose) {
         public Parameters {
+            if (pose == null) {
+                throw new UserInputException("snake pose missing");
+            }
             requirePositive("lengthM", lengthM);
             requirePositive("radiusM", radiusM);
             if (!(radiusM < lengthM / 8)) {
@@ -86,20 +120,26 @@ public final class SnakeMesh {
 
         /**
          * A corn-snake-sized animal: 1.2 m, 2 cm half-width, two and a half bends of 12 cm, 320 rings x 64
-         * segments = 40,960 triangles, ridges along the body.
+         * segments = 40,960 triangles, ridges along the body, stretched out in S-bends.
          */
         public static Parameters defaults() {
-            return new Parameters(1.2, 0.02, 0.85, 0.25, 2.5, 0.12, 0.03, 320, 64, RidgeDirection.ALONG_BODY);
+            return new Parameters(1.2, 0.02, 0.85, 0.25, 2.5, 0.12, 0.03, 320, 64, RidgeDirection.ALONG_BODY,
+                    Pose.S_CURVE);
         }
 
         public Parameters withRidges(RidgeDirection direction) {
             return new Parameters(lengthM, radiusM, heightToWidth, tailFraction, bends, bendAmplitudeM, headLiftM,
-                    rings, segments, direction);
+                    rings, segments, direction, pose);
         }
 
         public Parameters withResolution(int newRings, int newSegments) {
             return new Parameters(lengthM, radiusM, heightToWidth, tailFraction, bends, bendAmplitudeM, headLiftM,
-                    newRings, newSegments, ridges);
+                    newRings, newSegments, ridges, pose);
+        }
+
+        public Parameters withPose(Pose newPose) {
+            return new Parameters(lengthM, radiusM, heightToWidth, tailFraction, bends, bendAmplitudeM, headLiftM,
+                    rings, segments, ridges, newPose);
         }
 
         /** Triangles the mesh will have: 2 per quad of the tube, and one fan per cap. */
@@ -117,11 +157,19 @@ public final class SnakeMesh {
     private final Parameters parameters;
     private final Mesh mesh;
     private final float[] centreCurvePoints;
+    private final Profile profile;
 
-    private SnakeMesh(Parameters parameters, Mesh mesh, float[] centreCurvePoints) {
+    private SnakeMesh(Parameters parameters, Mesh mesh, float[] centreCurvePoints, Profile profile) {
         this.parameters = parameters;
         this.mesh = mesh;
         this.centreCurvePoints = centreCurvePoints;
+        this.profile = profile;
+    }
+
+    /** The body's width along its length, ring by ring. */
+    public Profile profile() {
+        return new Profile(profile.v().clone(), profile.halfWidthM().clone(), profile.heightToWidth(),
+                profile.lengthAlongM(), profile.ventV());
     }
 
     public Parameters parameters() {
@@ -219,7 +267,18 @@ public final class SnakeMesh {
             directions[v] = p.ridges() == RidgeDirection.ALONG_BODY ? along : n.cross(along);
         }
         float[] tangents = SurfaceFrames.tangentsFrom(normals, directions);
-        return new SnakeMesh(p, Mesh.of(positions, normals, tangents, uvs, triangles), centres);
+        double[] ringV = new double[rings];
+        double[] ringHalfWidth = new double[rings];
+        double ventV = 1;
+        for (int i = rings - 1; i >= 0; i--) {
+            ringV[i] = (i + 1.0) / (rings + 1);
+            ringHalfWidth[i] = body.radius(ringT[i]);
+            if (ringT[i] >= 1 - p.tailFraction()) {
+                ventV = ringV[i];
+            }
+        }
+        Profile profile = new Profile(ringV, ringHalfWidth, p.heightToWidth(), body.surfaceLengthM(), ventV);
+        return new SnakeMesh(p, Mesh.of(positions, normals, tangents, uvs, triangles), centres, profile);
     }
 
     private static void placePole(int v, Vec3 pole, Vec3 nearestRingCentre, double u, double vCoordinate,
@@ -250,10 +309,45 @@ public final class SnakeMesh {
         private final Parameters p;
         /** t at which the snout's rounding ends: about one head radius behind the tip. */
         private final double snoutT;
+        /** COILED: spiral angle (radians, 0 at the inner end) at fine samples of t, so t follows arc length. */
+        private final double[] coilAngle;
+        private final double coilInnerRadiusM;
+        private final double coilSpacingM;
 
         Body(Parameters p) {
             this.p = p;
             this.snoutT = 0.8 * p.radiusM() / p.lengthM();
+            this.coilSpacingM = 2.2 * p.radiusM() * 1.3; // the head bulge is 1.3 radii wide, plus a gap
+            this.coilInnerRadiusM = 2.0 * p.radiusM();
+            this.coilAngle = p.pose() == Pose.COILED ? coilAngles() : null;
+        }
+
+        /**
+         * The spiral r(phi) = r0 + b phi / (2 pi) sampled so that equal steps of t are equal steps of arc length
+         * (ds = sqrt(r^2 + (b / 2 pi)^2) dphi), t = 1 (the tail tip) at phi = 0.
+         */
+        private double[] coilAngles() {
+            int n = PROFILE_SAMPLES;
+            double dPhi = 1e-3;
+            double[] angleAt = new double[n + 1];
+            double phi = 0;
+            double s = 0;
+            double bOver2Pi = coilSpacingM / (2 * Math.PI);
+            for (int k = 0; k <= n; k++) {
+                double target = p.lengthM() * k / n;
+                while (s < target) {
+                    double r = coilInnerRadiusM + bOver2Pi * phi;
+                    s += Math.sqrt(r * r + bOver2Pi * bOver2Pi) * dPhi;
+                    phi += dPhi;
+                }
+                angleAt[k] = phi;
+            }
+            return angleAt;
+        }
+
+        /** The distance along the side from snout tip to tail tip, metres. */
+        double surfaceLengthM() {
+            return cumulativeSurfaceDistance()[PROFILE_SAMPLES];
         }
 
         /** Half-width along the body before the two tips are rounded: neck, head bulge, body, tail taper. */
@@ -276,6 +370,13 @@ public final class SnakeMesh {
             // the belly rests on y = 0; the tail's centre sinks less than its radius so the tip stays above ground
             double bodyHeight = p.heightToWidth() * girth(t) * (1 - 0.6 * smoothstep(1 - p.tailFraction(), 1, t));
             double lift = p.headLiftM() * sq(1 - smoothstep(0, 0.12, t));
+            if (p.pose() == Pose.COILED) {
+                double f = (1 - t) * PROFILE_SAMPLES;
+                int k = Math.min(PROFILE_SAMPLES - 1, (int) Math.floor(f));
+                double phi = coilAngle[k] + (f - k) * (coilAngle[k + 1] - coilAngle[k]);
+                double r = coilInnerRadiusM + coilSpacingM * phi / (2 * Math.PI);
+                return new Vec3(r * Math.cos(phi), bodyHeight + lift, r * Math.sin(phi));
+            }
             double calmHead = 0.3 + 0.7 * smoothstep(0, 0.15, t);
             double z = p.bendAmplitudeM() * Math.sin(2 * Math.PI * p.bends() * t) * calmHead;
             return new Vec3(x, bodyHeight + lift, z);

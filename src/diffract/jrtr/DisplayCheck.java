@@ -7,9 +7,9 @@ import java.util.Map;
 import java.util.Optional;
 
 /**
- * Tells, before any OpenGL call, whether this process can open a GL context at all. On Linux JOGL needs an X
- * server (a real one or Xvfb); without one it falls back to EGL, which fails with an opaque EGL_NOT_INITIALIZED.
- * This class turns that into one line a user can act on.
+ * Tells, before any OpenGL call, whether this process can open a window (or a JOGL context at all). On Linux JOGL
+ * needs an X server (a real one or Xvfb); without one its EGL path fails with an opaque EGL_NOT_INITIALIZED. This
+ * class turns that into one line a user can act on. Offscreen rendering does not need it ({@link HeadlessGL}).
  *
  * <p>The launcher can call {@code java -cp target/diffract.jar diffract.jrtr.DisplayCheck}: exit code 0 when a
  * display is available, otherwise it prints {@link #NO_DISPLAY_MESSAGE} to standard error and exits with 3.

@@ -25,21 +25,29 @@ public final class GLRenderContext implements RenderContext {
     private boolean disposed;
 
     /**
-     * Wraps the current context's GL; throws {@link GLVersionException} naming the version found when it is
+     * Wraps the current context's GL and reports its {@link GLInfo} ({@link GLInfo#reportTo}); throws {@link GLVersionException} naming the version found when it is
      * older than 3.3 or not a GL3-capable (core or compatible) context.
      */
     public GLRenderContext(GL gl) {
         requireVersion(gl);
         this.gl = gl.getGL3();
         this.info = GLInfo.of(gl);
+        GLInfo.report(info);
         this.gl.glEnable(GL.GL_DEPTH_TEST);
         this.gl.glDepthFunc(GL.GL_LESS);
     }
 
     /** Throws {@link GLVersionException} unless {@code gl} is an OpenGL 3.3+ context usable as GL3. */
     public static void requireVersion(GL gl) {
-        requireVersion(gl.getContext().getGLVersionNumber(), gl.isGL3(),
-                gl.glGetString(GL.GL_VERSION) + ", " + gl.glGetString(GL.GL_RENDERER));
+        String version = gl.glGetString(GL.GL_VERSION);
+        VersionNumber found;
+        if (gl.getContext() != null) {
+            found = gl.getContext().getGLVersionNumber();
+        } else {
+            int[] v = GLInfo.parseVersion(version);
+            found = new VersionNumber(v[0], v[1], 0);
+        }
+        requireVersion(found, gl.isGL3(), version + ", " + gl.glGetString(GL.GL_RENDERER));
     }
 
     /**
@@ -131,6 +139,24 @@ public final class GLRenderContext implements RenderContext {
             meshes.computeIfAbsent(item.shape(), shape -> GLMesh.upload(gl, shape.vertexData())).draw(gl);
             GLErrors.check(gl, "drawing " + item.node() + " with " + program);
         }
+    }
+
+    /**
+     * Draws every shape of {@code list} with {@code program} alone (no material uniforms or textures), through the
+     * given view and projection, with depth testing: for depth-only passes such as {@link ShadowMap}'s.
+     */
+    public void drawDepthOnly(RenderList list, ShaderProgram program, Matrix4f view, Matrix4f projection) {
+        requireAlive();
+        gl.glEnable(GL.GL_DEPTH_TEST);
+        program.use(gl);
+        resources.add(program);
+        for (RenderItem item : list.items()) {
+            setMatrix(program, "model", item.modelMatrix());
+            setMatrix(program, "view", view);
+            setMatrix(program, "projection", projection);
+            meshes.computeIfAbsent(item.shape(), shape -> GLMesh.upload(gl, shape.vertexData())).draw(gl);
+        }
+        GLErrors.check(gl, "drawing depth with " + program);
     }
 
     private static void putVector(float[] array, int index, javax.vecmath.Tuple3f value) {

@@ -1,7 +1,7 @@
 package diffract.jrtr;
 
+import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
-import com.jogamp.opengl.GLContext;
 
 /**
  * Something with a CPU description that is copied to the GPU once, on first use, and lives there until
@@ -9,7 +9,7 @@ import com.jogamp.opengl.GLContext;
  * contexts do not share objects), reported instead of silently drawing garbage.
  */
 public abstract class GpuResource {
-    private GLContext owner;
+    private Object owner;
 
     /** Whether the GPU copy exists. */
     public final boolean isUploaded() {
@@ -18,7 +18,7 @@ public abstract class GpuResource {
 
     /** Uploads on the first call; later calls from the same context do nothing. */
     public final void upload(GL3 gl) {
-        GLContext current = gl.getContext();
+        Object current = owner(gl);
         if (owner == null) {
             createOnGpu(gl);
             owner = current;
@@ -32,11 +32,20 @@ public abstract class GpuResource {
         if (owner == null) {
             return;
         }
-        if (owner != gl.getContext()) {
+        if (owner != owner(gl)) {
             throw new IllegalStateException(this + " belongs to another GL context and must be disposed there");
         }
         deleteOnGpu(gl);
         owner = null;
+    }
+
+    /**
+     * What identifies the context behind {@code gl}: JOGL's context object, or, for GLs without one (the headless
+     * EGL context's), the GL object itself, which is one per context.
+     */
+    static Object owner(GL gl) {
+        Object context = gl.getContext();
+        return context != null ? context : gl;
     }
 
     /** Creates the GL objects; called with the owning context current. */

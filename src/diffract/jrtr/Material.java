@@ -6,18 +6,25 @@ import com.jogamp.opengl.GL3;
 import javax.vecmath.Matrix4f;
 import java.util.Collections;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * How a shape looks: a shader program, named textures and named uniform values. Texture units are assigned
  * automatically in the order textures were added (first texture on unit 0) and the sampler uniform of that
- * name is pointed at the unit. Textures are uploaded the first time the material is used. Uniform names the
- * program does not use are skipped, because drivers remove unused uniforms.
+ * name is pointed at the unit. Textures are uploaded the first time the material is used.
+ *
+ * <p>The first draw checks the names both ways: a name the program's sources do not declare is a mistake (an
+ * {@link IllegalArgumentException}), and so is a uniform the linked program uses that neither the material nor the
+ * engine ({@link RenderContext#ENGINE_UNIFORMS}) sets, which would silently read 0 (an {@link IllegalStateException}).
+ * A declared uniform the driver removed as unused may be set; the value is skipped.
  */
 public final class Material {
     private final ShaderProgram program;
     private final Map<String, UniformValue> uniforms = new LinkedHashMap<>();
     private final Map<String, Texture> textures = new LinkedHashMap<>();
+    private boolean namesChecked;
 
     public Material(ShaderProgram program) {
         this.program = program;
@@ -87,6 +94,10 @@ public final class Material {
      */
     public void apply(GL3 gl) {
         program.use(gl);
+        if (!namesChecked) {
+            checkNames();
+            namesChecked = true;
+        }
         int[] maxUnits = new int[1];
         if (textures.size() > 16) {
             gl.glGetIntegerv(GL2ES2.GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS, maxUnits, 0);
@@ -95,8 +106,8 @@ public final class Material {
                         + " texture units of this GPU");
             }
         }
-        // upload everything before binding anything: an upload binds its texture to unit 0 and unbinds it again,
-        // which would drop a texture of the same target already bound to unit 0 for this draw
+        // all uploads first: an upload binds its texture on unit 0 and unbinds it there afterwards, which would
+        // undo the binding of a texture of the same target already bound to unit 0 for this draw
         for (Texture texture : textures.values()) {
             texture.upload(gl);
         }
@@ -113,6 +124,24 @@ public final class Material {
             int location = program.uniformLocation(gl, entry.getKey());
             if (location >= 0) {
                 entry.getValue().apply(gl, location);
+            }
+        }
+    }
+
+    /** Every name set is declared, and every uniform the program uses is set (by this material or the engine). */
+    private void checkNames() {
+        Set<String> set = new LinkedHashSet<>(uniforms.keySet());
+        set.addAll(textures.keySet());
+        for (String name : set) {
+            if (!program.declaredUniforms().contains(name)) {
+                throw new IllegalArgumentException("the material sets '" + name + "', which " + program.name()
+                        + " does not declare");
+            }
+        }
+        for (String active : program.activeUniforms()) {
+            if (!set.contains(active) && !RenderContext.ENGINE_UNIFORMS.contains(active)) {
+                throw new IllegalStateException("uniform '" + active + "' of " + program.name()
+                        + " is used but never set (it would read 0)");
             }
         }
     }

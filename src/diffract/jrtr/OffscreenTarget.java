@@ -1,21 +1,19 @@
 package diffract.jrtr;
 
 import com.jogamp.opengl.GL3;
-import com.jogamp.opengl.GLCapabilities;
-import com.jogamp.opengl.GLContext;
-import com.jogamp.opengl.GLDrawableFactory;
+import com.jogamp.opengl.GLAutoDrawable;
 import com.jogamp.opengl.GLEventListener;
-import com.jogamp.opengl.GLOffscreenAutoDrawable;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.function.Function;
 
 /**
- * Renders a {@link GLEventListener} (usually a {@link Renderer}) without a window: a hidden GL context from
- * {@link GLDrawableFactory#createOffscreenAutoDrawable} plus our own RGBA32F framebuffer, so results are read
- * back as floats. The listener gets the same init/reshape/display/dispose calls as in a window. The context is
- * made current on the calling thread for each call; use one target from one thread at a time.
+ * Renders a {@link GLEventListener} (usually a {@link Renderer}) without a window: a GL context of its own
+ * ({@link HeadlessGL} chooses: headless EGL, needing no X server, or a hidden JOGL context on the X display) plus
+ * our own RGBA32F framebuffer, so results are read back as floats. The listener gets the same
+ * init/reshape/display/dispose calls as in a window. The context is made current on the calling thread for each
+ * call; use one target from one thread at a time.
  *
  * <pre>{@code
  * try (OffscreenTarget target = new OffscreenTarget(new Renderer(scene, camera, frustum))) {
@@ -26,33 +24,33 @@ import java.util.function.Function;
  */
 public final class OffscreenTarget implements AutoCloseable {
     private final GLEventListener listener;
-    private final GLOffscreenAutoDrawable drawable;
+    private final OffscreenContext context;
+    private final GLAutoDrawable drawable;
     private FloatFramebuffer framebuffer;
     private boolean listenerInitialized;
     private boolean closed;
 
-    /** Creates the hidden GL context; throws {@link diffract.util.UserInputException} when there is no display. */
+    /**
+     * Creates the GL context; throws {@link diffract.util.UserInputException} with the reason when none can be
+     * made (no EGL and no X display), {@link GLVersionException} when it is older than OpenGL 3.3.
+     */
     public OffscreenTarget(GLEventListener listener) {
-        this.listener = listener;
-        GLContext previous = GLContext.getCurrent();
-        GLCapabilities caps = GLProfiles.capabilities();
-        caps.setOnscreen(false);
-        caps.setDoubleBuffered(false);
-        // the drawable's own (tiny) framebuffer is never drawn into; we render into FloatFramebuffer
-        drawable = GLDrawableFactory.getFactory(caps.getGLProfile())
-                .createOffscreenAutoDrawable(null, caps, null, 16, 16);
-        drawable.display(); // realises the context; no listener is attached, so nothing is drawn
-        withContext(gl -> {
-            GLRenderContext.requireVersion(gl);
-            return null;
-        });
-        restore(previous);
+        this(listener, HeadlessGL.newContext());
     }
 
-    /** Makes {@code previous} (a context current on this thread before we took it over, or null) current again. */
-    private void restore(GLContext previous) {
-        if (previous != null && previous != drawable.getContext() && GLContext.getCurrent() != previous) {
-            previous.makeCurrent();
+    /** On a given context (tests compare the EGL and JOGL contexts this way). */
+    OffscreenTarget(GLEventListener listener, OffscreenContext context) {
+        this.listener = listener;
+        this.context = context;
+        this.drawable = context.drawable();
+        try {
+            withContext(gl -> {
+                GLRenderContext.requireVersion(gl);
+                return null;
+            });
+        } catch (RuntimeException e) {
+            context.destroy();
+            throw e;
         }
     }
 
@@ -65,16 +63,11 @@ public final class OffscreenTarget implements AutoCloseable {
         if (closed) {
             throw new IllegalStateException("offscreen target already closed");
         }
-        GLContext context = drawable.getContext();
-        GLContext previous = GLContext.getCurrent();
-        if (context.makeCurrent() == GLContext.CONTEXT_NOT_CURRENT) {
-            throw new IllegalStateException("cannot make the offscreen GL context current");
-        }
+        GL3 gl = context.makeCurrent();
         try {
-            return work.apply(context.getGL().getGL3());
+            return work.apply(gl);
         } finally {
             context.release();
-            restore(previous);
         }
     }
 
@@ -150,13 +143,12 @@ public final class OffscreenTarget implements AutoCloseable {
         return rgb;
     }
 
-    /** Disposes the listener's GPU objects and the framebuffer, then destroys the hidden context. */
+    /** Disposes the listener's GPU objects and the framebuffer, then destroys the context. */
     @Override
     public void close() {
         if (closed) {
             return;
         }
-        GLContext previous = GLContext.getCurrent();
         try {
             withContext(gl -> {
                 if (listenerInitialized) {
@@ -170,8 +162,7 @@ public final class OffscreenTarget implements AutoCloseable {
             });
         } finally {
             closed = true;
-            drawable.destroy();
-            restore(previous);
+            context.destroy();
         }
     }
 }

@@ -16,6 +16,10 @@ public interface RenderContext {
     /** Most lights passed to shaders; shaders declare their arrays with at least this size. */
     int MAX_LIGHTS = 8;
 
+    /** The uniforms the engine sets per draw (above); a material sets every other uniform its program uses. */
+    java.util.Set<String> ENGINE_UNIFORMS = java.util.Set.of("model", "view", "projection", "normalMatrix",
+            "cameraPosition", "lightCount", "lightDirection", "lightRadiance");
+
     /** The driver's version and renderer strings. */
     GLInfo info();
 

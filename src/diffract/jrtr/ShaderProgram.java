@@ -5,21 +5,32 @@ import com.jogamp.opengl.GL3;
 
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Collections;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
  * A vertex + fragment program. Sources are read and preprocessed when the object is made (so missing files and
  * bad includes fail early, without GL); the GL program is compiled and linked on first use in a context. The
  * engine's vertex attributes ({@link VertexAttribute}) are bound to fixed locations by name before linking.
- * Uniform locations are looked up once per name and cached.
+ * Uniform locations are looked up once per name and cached. The program knows the uniforms its sources declare
+ * (whatever {@code #ifdef}s say) and, once linked, those the driver kept active: {@link Material} checks both.
  */
 public final class ShaderProgram extends GpuResource {
+    /** {@code uniform TYPE NAME} (arrays with their size), as GLSL 3.30 declares uniforms outside blocks. */
+    private static final Pattern UNIFORM = Pattern.compile("\\buniform\\s+\\w+\\s+(\\w+)");
+
     private final String name;
     private final Shader vertex;
     private final Shader fragment;
+    private final Set<String> declaredUniforms;
     private final Map<String, Integer> uniformLocations = new HashMap<>();
+    private Set<String> activeUniforms = Set.of();
     private int program;
 
     public ShaderProgram(Shader vertex, Shader fragment) {
@@ -29,6 +40,14 @@ public final class ShaderProgram extends GpuResource {
         this.vertex = vertex;
         this.fragment = fragment;
         this.name = vertex.source().path() + " + " + fragment.source().path();
+        Set<String> declared = new LinkedHashSet<>();
+        for (Shader shader : List.of(vertex, fragment)) {
+            Matcher m = UNIFORM.matcher(shader.source().text());
+            while (m.find()) {
+                declared.add(m.group(1));
+            }
+        }
+        this.declaredUniforms = Collections.unmodifiableSet(declared);
     }
 
     /** Loads both stages from {@code root} with the same {@code defines}. */
@@ -61,6 +80,16 @@ public final class ShaderProgram extends GpuResource {
 
     public Shader fragmentShader() {
         return fragment;
+    }
+
+    /** The uniforms the sources declare, in any branch of their {@code #ifdef}s. */
+    public Set<String> declaredUniforms() {
+        return declaredUniforms;
+    }
+
+    /** The uniforms the linked program uses (array uniforms by their name, without "[0]"); empty before linking. */
+    public Set<String> activeUniforms() {
+        return activeUniforms;
     }
 
     /** The GL program name; the program must have been uploaded. */
@@ -116,6 +145,7 @@ public final class ShaderProgram extends GpuResource {
         }
         program = id;
         uniformLocations.clear();
+        activeUniforms = activeUniforms(gl, id);
         GLErrors.check(gl, "after linking " + name);
     }
 
@@ -124,6 +154,24 @@ public final class ShaderProgram extends GpuResource {
         gl.glDeleteProgram(program);
         program = 0;
         uniformLocations.clear();
+    }
+
+    private static Set<String> activeUniforms(GL3 gl, int id) {
+        int[] count = new int[1];
+        gl.glGetProgramiv(id, GL2ES2.GL_ACTIVE_UNIFORMS, count, 0);
+        int[] maxLength = new int[1];
+        gl.glGetProgramiv(id, GL2ES2.GL_ACTIVE_UNIFORM_MAX_LENGTH, maxLength, 0);
+        Set<String> names = new LinkedHashSet<>();
+        byte[] buffer = new byte[Math.max(1, maxLength[0])];
+        int[] length = new int[1];
+        int[] size = new int[1];
+        int[] type = new int[1];
+        for (int i = 0; i < count[0]; i++) {
+            gl.glGetActiveUniform(id, i, buffer.length, length, 0, size, 0, type, 0, buffer, 0);
+            String uniform = new String(buffer, 0, length[0], StandardCharsets.UTF_8);
+            names.add(uniform.endsWith("[0]") ? uniform.substring(0, uniform.length() - 3) : uniform);
+        }
+        return Collections.unmodifiableSet(names);
     }
 
     private void requireUploaded() {

@@ -59,6 +59,21 @@ public sealed interface UniformValue {
         }
     }
 
+    /** A {@code vec3[]} uniform array, three floats per element; the shader's array may be longer. */
+    record Vector3ArrayValue(float[] xyz) implements UniformValue {
+        public Vector3ArrayValue {
+            if (xyz.length == 0 || xyz.length % 3 != 0) {
+                throw new IllegalArgumentException("a vec3 array needs a positive multiple of 3 floats, got " + xyz.length);
+            }
+            xyz = xyz.clone();
+        }
+
+        @Override
+        public void apply(GL3 gl, int location) {
+            gl.glUniform3fv(location, xyz.length / 3, xyz, 0);
+        }
+    }
+
     /** A {@code mat4} uniform. */
     record MatrixValue(Matrix4f matrix) implements UniformValue {
         public MatrixValue {

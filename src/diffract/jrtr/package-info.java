@@ -27,6 +27,8 @@
  * }
  * }</pre>
  *
- * <p>On Linux a GL context needs an X display; {@link diffract.jrtr.DisplayCheck} says so in one line.
+ * <p>Offscreen targets need no X server: {@link diffract.jrtr.HeadlessGL} gives them headless EGL (any GPU, or
+ * Mesa's llvmpipe) and falls back to JOGL on the X display; windows need a display, which
+ * {@link diffract.jrtr.DisplayCheck} checks in one line. See docs/headless-gl.md.
  */
 package diffract.jrtr;

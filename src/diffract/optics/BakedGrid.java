@@ -36,14 +36,15 @@ public record BakedGrid(int uvSamples, int wSamples) {
 
     /** The grid the settings ask for, the automatic resolution where they say 0. */
     public static BakedGrid of(BrdfSettings settings, double maxAbsHeightUm) {
-        int uv = settings.bakedUvSamples() > 0 ? settings.bakedUvSamples() : automaticUvSamples(settings);
-        int w = settings.bakedWSamples() > 0 ? settings.bakedWSamples() : automaticWSamples(settings, maxAbsHeightUm);
+        GpuTableSettings gpu = settings.gpu();
+        int uv = gpu.bakedUvSamples() > 0 ? gpu.bakedUvSamples() : automaticUvSamples(settings);
+        int w = gpu.bakedWSamples() > 0 ? gpu.bakedWSamples() : automaticWSamples(settings, maxAbsHeightUm);
         return new BakedGrid(uv, w);
     }
 
     /** The (u, v) sigma of the narrowest order, lambda_min / (2 pi sigma_s) (both in micrometres). */
     public static double narrowestOrderSigma(BrdfSettings settings) {
-        return settings.lambdaMinNm() * 1e-3 * settings.coherenceWindow().sigmaFrequencyPerUm();
+        return settings.spectral().lambdaMinNm() * 1e-3 * settings.coherenceWindow().sigmaFrequencyPerUm();
     }
 
     /** The (u, v) samples that resolve the narrowest order with {@link #UV_SAMPLES_PER_SIGMA}, uncapped. */
@@ -59,7 +60,7 @@ public record BakedGrid(int uvSamples, int wSamples) {
 
     /** {@link #W_SAMPLES_PER_RADIAN} per radian of the largest phase (2 pi / lambda_min) 2 max|h|, at least 2. */
     public static int automaticWSamples(BrdfSettings settings, double maxAbsHeightUm) {
-        double phase = TaylorBound.maxPhase(settings.lambdaMinNm(), maxAbsHeightUm);
+        double phase = TaylorBound.maxPhase(settings.spectral().lambdaMinNm(), maxAbsHeightUm);
         return Math.max(2, Math.min(MAX_SAMPLES, (int) Math.ceil(W_SAMPLES_PER_RADIAN * phase) + 1));
     }
 

@@ -7,7 +7,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.IntStream;
 
 /**
- * A BRDF map, the thesis' way of looking at a BRDF (issue #2): pixel (i, j) of an S x S image (i column, j row,
+ * A BRDF map, the thesis' way of looking at a BRDF: pixel (i, j) of an S x S image (i column, j row,
  * from the top left) shows the viewing direction omega_r = (x, y, sqrt(1 - x^2 - y^2)) with
  * x = 2 (i + 0.5) / S - 1 and y = 1 - 2 (j + 0.5) / S, for a fixed light direction omega_i. Pixels whose centre
  * lies outside the unit disk are black (0). A pixel shows the BRDF at that direction, or, for the reference and the

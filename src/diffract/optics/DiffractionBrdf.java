@@ -2,7 +2,6 @@ package diffract.optics;
 
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
-import diffract.util.UserInputException;
 
 /**
  * The relative diffraction BRDF of a patch (004): monochromatic, rho_lambda = C(omega_i, omega_r) S |P|^2
@@ -14,96 +13,85 @@ import diffract.util.UserInputException;
 public final class DiffractionBrdf {
     private final PatchSpectrum spectrum;
     private final WavelengthSampling sampling;
-    private final double refractiveIndex;
-    private final FresnelModel fresnel;
-    private final OpticsOptions options;
-    /** The filtered reference (REFERENCE whose options filter), else null. */
+    private final IlluminationSettings illumination;
+    /** The filtered reference (REFERENCE whose illumination filters), else null. */
     private final FilteredReference filteredReference;
     /** The lobes method (LOBES), else null. */
     private final LobeSpectrum lobes;
 
-    /** With the {@link FresnelModel#PHYSICAL} gain factor. */
+    /**
+     * A spectrum integrated over {@code sampling} under a point light, each direction point-sampled, with the
+     * physical Fresnel factor (tests and measurements that build their own spectrum).
+     */
     public DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex) {
-        this(spectrum, sampling, refractiveIndex, FresnelModel.PHYSICAL);
+        this(spectrum, sampling, IlluminationSettings.ofCoherenceLength(CoherenceWindow.COHERENCE_LENGTH_UM,
+                refractiveIndex), null, null);
     }
 
+    /** As above with the gain factor's Fresnel model. */
     public DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex,
                            FresnelModel fresnel) {
-        this(spectrum, sampling, refractiveIndex, OpticsOptions.POINT_SAMPLED.withFresnel(fresnel), null, null);
+        this(spectrum, sampling, IlluminationSettings.ofCoherenceLength(CoherenceWindow.COHERENCE_LENGTH_UM,
+                refractiveIndex).withFresnel(fresnel), null, null);
     }
 
-    private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex,
-                            OpticsOptions options, FilteredReference filteredReference, LobeSpectrum lobes) {
+    private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, IlluminationSettings illumination,
+                            FilteredReference filteredReference, LobeSpectrum lobes) {
         this.spectrum = spectrum;
         this.sampling = sampling;
-        this.refractiveIndex = refractiveIndex;
-        this.fresnel = options.fresnel();
-        this.options = options;
+        this.illumination = illumination;
         this.filteredReference = filteredReference;
         this.lobes = lobes;
     }
 
     /**
-     * Builds the variant the settings name, point-sampled ({@link OpticsOptions#POINT_SAMPLED}). {@code terms} (the
-     * precomputed float32 Taylor terms) are needed for FLSS, NMM, PQ and LOBES; {@code meanSubtracted} for the
-     * reference.
+     * Builds the variant the settings name. {@code terms} (the precomputed float32 Taylor terms) are needed for
+     * FLSS, NMM, PQ and LOBES; {@code meanSubtracted} for the reference. The illumination's light and pixel filter
+     * are honoured by the reference (which then integrates the defined pixel values, {@link FilteredReference})
+     * and the lobes method; flss, nmm and pq point-sample pixels and refuse an extended light.
      */
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
-        return create(settings, meanSubtracted, terms, OpticsOptions.POINT_SAMPLED);
-    }
-
-    /**
-     * As above with the optics options: Fresnel model, light size, pixel filter. The reference then integrates the
-     * defined pixel values ({@link FilteredReference}) whenever the options filter (a box or a light); flss, nmm and
-     * pq refuse a light (they point-sample it) and point-sample pixels.
-     */
-    public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms,
-                                         OpticsOptions options) {
+        IlluminationSettings illumination = settings.illumination();
         if (settings.variant() == Variant.REFERENCE) {
             ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
-            FilteredReference filtered = options.filters() ? new FilteredReference(exact, settings.coherenceWindow(),
-                    settings.lambdaMinNm(), settings.lambdaMaxNm(), settings.refractiveIndex(), options.fresnel())
-                    : null;
-            return new DiffractionBrdf(exact, WavelengthSampling.uniform(settings.lambdaMinNm(),
-                    settings.lambdaMaxNm(), BrdfSettings.REFERENCE_STEP_NM), settings.refractiveIndex(), options,
-                    filtered, null);
+            SpectralSettings spectral = settings.spectral();
+            FilteredReference filtered = illumination.filters() ? new FilteredReference(exact,
+                    settings.coherenceWindow(), spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
+                    illumination.refractiveIndex(), illumination.fresnel()) : null;
+            return new DiffractionBrdf(exact, WavelengthSampling.uniform(spectral.lambdaMinNm(),
+                    spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM), illumination, filtered, null);
         }
         if (settings.variant() == Variant.BAKED) {
-            throw new UserInputException(BAKED_IS_GPU_ONLY);
+            throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
         }
         if (settings.variant() == Variant.LOBES) {
-            return withLobes(settings, options, LobeSpectrum.ofTerms(terms, settings.highestOrder(),
-                    settings.coherenceWindow(), settings.lambdaMinNm(), settings.lambdaMaxNm(), options.lobes()));
+            return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.taylor().highestOrder(),
+                    settings.coherenceWindow(), settings.spectral().lambdaMinNm(), settings.spectral().lambdaMaxNm(),
+                    settings.lobes()));
         }
-        requirePointLight(settings, options);
-        return withSampling(settings, options, taylorSpectrum(settings, terms, settings.highestOrder()));
+        requirePointLight(settings);
+        return withSampling(settings, taylorSpectrum(settings, terms, settings.taylor().highestOrder()));
     }
 
     /**
-     * FLSS, NMM, PQ or LOBES summed around the nearest phase centre (issue #6, {@link PhaseCentredSpectrum}) instead
-     * of around 0: the same window, lookup and wavelengths, every order of every centre ({@code
-     * settings.highestOrder()} does not apply; the centres fix their own orders).
+     * FLSS, NMM, PQ or LOBES summed around the nearest phase centre ({@link PhaseCentredSpectrum}) instead of
+     * around 0: the same window, lookup and wavelengths, every order of every centre
+     * ({@code settings.taylor().highestOrder()} does not apply; the centres fix their own orders).
      */
     public static DiffractionBrdf createPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
-        return createPhaseCentred(settings, terms, OpticsOptions.POINT_SAMPLED);
-    }
-
-    /** As above with the optics options. */
-    public static DiffractionBrdf createPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms,
-                                                     OpticsOptions options) {
         if (settings.variant() == Variant.REFERENCE) {
             throw new IllegalArgumentException("the reference needs no Taylor expansion");
         }
         if (settings.variant() == Variant.LOBES) {
-            return withLobes(settings, options, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(),
-                    settings.lambdaMinNm(), settings.lambdaMaxNm(), options.lobes()));
+            return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(),
+                    settings.spectral().lambdaMinNm(), settings.spectral().lambdaMaxNm(), settings.lobes()));
         }
-        requirePointLight(settings, options);
+        requirePointLight(settings);
         int orders = terms.centres().highestOrder();
-        return withSampling(settings, options, new PhaseCentredSpectrum(terms, t -> taylorSpectrum(settings, t, orders)));
+        return withSampling(settings, new PhaseCentredSpectrum(terms, t -> taylorSpectrum(settings, t, orders)));
     }
 
-    private static DiffractionBrdf withLobes(BrdfSettings settings, OpticsOptions options, LobeSpectrum lobes) {
+    private static DiffractionBrdf withLobes(BrdfSettings settings, LobeSpectrum lobes) {
         PatchSpectrum point = new PatchSpectrum() {
             @Override
             public double power(double u, double v, double w, double lambdaUm) {
@@ -120,16 +108,22 @@ public final class DiffractionBrdf {
                 return lobes.extentYUm();
             }
         };
-        return new DiffractionBrdf(point, null, settings.refractiveIndex(), options, null, lobes);
+        return new DiffractionBrdf(point, null, settings.illumination(), null, lobes);
     }
 
-    /** One line for a light of finite size asked of a point-sampling variant. */
-    static void requirePointLight(BrdfSettings settings, OpticsOptions options) {
-        if (!options.light().isPoint()) {
-            throw new UserInputException(settings.variant().cliName() + " samples the light at its centre only: "
-                    + "for a light of " + options.light().angularDiameterDeg() + " degrees use --variant lobes or "
-                    + "reference (or --light-size-deg 0)");
+    /** Refuses a light of finite size for a variant that samples the light at its centre. */
+    static void requirePointLight(BrdfSettings settings) {
+        if (!settings.illumination().light().isPoint()) {
+            throw new InvalidSettingException(Quantity.LIGHT_SIZE, lightNeedsFiltering(settings.variant(),
+                    settings.illumination().light()));
         }
+    }
+
+    /** Why {@code variant} cannot render a light of finite size, and what can. */
+    public static String lightNeedsFiltering(Variant variant, LightSource light) {
+        return variant.label() + " samples the light at its centre only: a light of "
+                + InvalidSettingException.number(light.angularDiameterDeg()) + " degrees needs the lobes variant, the "
+                + "reference or the baked table (or a point light, 0 degrees)";
     }
 
     /** The variant's Taylor-series spectrum over float32 terms: Gaussian window (FLSS, NMM) or sinc (PQ). */
@@ -137,7 +131,7 @@ public final class DiffractionBrdf {
         CoherenceWindow window = settings.coherenceWindow();
         WindowRadii radii = settings.windowRadii(terms.cols() * terms.pixelSizeXUm(),
                 terms.rows() * terms.pixelSizeYUm());
-        double tolerance = settings.taylorTolerance();
+        double tolerance = settings.taylor().tolerance();
         switch (settings.variant()) {
             case FLSS:
             case NMM:
@@ -145,30 +139,29 @@ public final class DiffractionBrdf {
             case PQ: {
                 double extentX = terms.cols() * terms.pixelSizeXUm();
                 double extentY = terms.rows() * terms.pixelSizeYUm();
-                int rx = settings.pqReplicas() > 0 ? settings.pqReplicas()
-                        : TaylorSincSpectrum.replicasForCoherence(window, extentX);
-                int ry = settings.pqReplicas() > 0 ? settings.pqReplicas()
-                        : TaylorSincSpectrum.replicasForCoherence(window, extentY);
-                return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance, rx, ry);
+                return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance,
+                        settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
             }
             case BAKED:
-                throw new UserInputException(BAKED_IS_GPU_ONLY);
+                throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
             default:
                 throw new IllegalStateException("unhandled variant " + settings.variant());
         }
     }
 
     /** The variant's wavelengths: NMM's nodes, or the uniform grid of FLSS and PQ. */
-    private static DiffractionBrdf withSampling(BrdfSettings settings, OpticsOptions options, PatchSpectrum s) {
-        double min = settings.lambdaMinNm();
-        double max = settings.lambdaMaxNm();
+    private static DiffractionBrdf withSampling(BrdfSettings settings, PatchSpectrum s) {
+        SpectralSettings spectral = settings.spectral();
+        double min = spectral.lambdaMinNm();
+        double max = spectral.lambdaMaxNm();
         WavelengthSampling sampling = settings.variant() == Variant.NMM
-                ? WavelengthSampling.nmm(min, max, settings.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES)
-                : WavelengthSampling.uniform(min, max, settings.lambdaStepNm());
-        return new DiffractionBrdf(s, sampling, settings.refractiveIndex(), options, null, null);
+                ? WavelengthSampling.nmm(min, max, spectral.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES)
+                : WavelengthSampling.uniform(min, max, spectral.lambdaStepNm());
+        return new DiffractionBrdf(s, sampling, settings.illumination(), null, null);
     }
+
     /** One line for the CLI and the API when the baked table is asked of the CPU. */
-    public static final String BAKED_IS_GPU_ONLY = "the baked variant is a GPU table (--engine gpu); "
+    public static final String BAKED_IS_GPU_ONLY = "the baked variant is a table on the GPU; "
             + "on the CPU use flss, which it tabulates";
 
     /** NMM's node budget per fragment: beyond it, uniform steps are cheaper anyway. */
@@ -176,7 +169,7 @@ public final class DiffractionBrdf {
 
     /** The relative BRDF at one wavelength (grey BRDF maps, grating-equation tests). */
     public double relative(Direction wi, Direction wr, double lambdaNm) {
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
         if (gain == 0) {
             return 0;
         }
@@ -188,20 +181,20 @@ public final class DiffractionBrdf {
 
     /**
      * CIE XYZ of the light reflected towards omega_r, relative to D65 white (Y = 1 for a flat mirror at normal
-     * incidence): at the direction itself (no pixel), averaged over the options' light for the reference and lobes.
+     * incidence): at the direction itself (no pixel), averaged over the illumination's light for the reference and lobes.
      */
     public Xyz xyz(Direction wi, Direction wr) {
         if (filteredReference != null) {
-            double[] v = filteredReference.at(wi, wr, Footprint.POINT.plus(options.light().uvCovariance(wi)));
+            double[] v = filteredReference.at(wi, wr, Footprint.POINT.plus(illumination.light().uvCovariance(wi)));
             return new Xyz(v[0], v[1], v[2]);
         }
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }
         if (lobes != null) {
             double[] v = lobes.xyz(-wi.x() - wr.x(), -wi.y() - wr.y(), -wi.z() - wr.z(),
-                    Footprint.POINT.plus(options.light().uvCovariance(wi)));
+                    Footprint.POINT.plus(illumination.light().uvCovariance(wi)));
             return new Xyz(gain * v[0], gain * v[1], gain * v[2]);
         }
         double u = -wi.x() - wr.x();
@@ -229,14 +222,14 @@ public final class DiffractionBrdf {
             return new Xyz(0, 0, 0);
         }
         Direction wr = Direction.fromProjected(x, y);
-        if (options.pixelFilter() != PixelFilter.BOX || (filteredReference == null && lobes == null)) {
+        if (illumination.pixelFilter() != PixelFilter.BOX || (filteredReference == null && lobes == null)) {
             return xyz(wi, wr);
         }
-        Covariance2 light = options.light().uvCovariance(wi);
+        Covariance2 light = illumination.light().uvCovariance(wi);
         if (filteredReference != null) {
             return filteredReference.mapPixel(wi, light, column, row, size);
         }
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }
@@ -244,8 +237,9 @@ public final class DiffractionBrdf {
         return new Xyz(gain * v[0], gain * v[1], gain * v[2]);
     }
 
-    public OpticsOptions options() {
-        return options;
+    /** The light, pixel filter and Fresnel model this BRDF evaluates with. */
+    public IlluminationSettings illumination() {
+        return illumination;
     }
 
     /** The lobes method of a LOBES BRDF, else null. */

@@ -1,5 +1,8 @@
 package diffract.optics;
 
+import diffract.util.MemoryEstimate;
+
+import java.util.Locale;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ConcurrentMap;
 
@@ -20,7 +23,7 @@ import java.util.concurrent.ConcurrentMap;
 public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
     /** Terms per centre: (1/2)^16 / 16! < 1e-18. */
     static final int ORDERS_PER_CENTRE = 15;
-    /** The window is summed until its weights fall below this (issue #2: "until its weights fall below 1e-12"). */
+    /** The window is summed until its weights fall below this (1e-12: beyond it they change no double sum). */
     public static final double WINDOW_CUTOFF = 1e-12;
 
     private final HeightField field;
@@ -31,6 +34,33 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
     private final int radiusX;
     private final int radiusY;
     private final ConcurrentMap<Integer, double[][]> expansions = new ConcurrentHashMap<>();
+
+    /**
+     * The heap the spectrum holds after looking up every direction of a BRDF map lit from theta_i, over the
+     * wavelengths [lambdaMinNm, lambdaMaxNm]: the expansions of every centre a_j between the map's extreme phases
+     * a = k w (w = -(cos theta_i + cos theta_r) from -(1 + cos theta_i) to -cos theta_i), each
+     * ORDERS_PER_CENTRE + 1 double complex transforms of the patch (256 bytes per sample), kept for the whole map;
+     * and the work arrays of the expansions computed at once (one per thread: the centre field, the transform and
+     * its shifted copy, 48 bytes per sample).
+     */
+    public static MemoryEstimate memory(HeightField meanSubtracted, double thetaIDeg, double lambdaMinNm,
+                                        double lambdaMaxNm) {
+        double maxAbs = meanSubtracted.maxAbsHeightUm();
+        double cosI = Math.cos(Math.toRadians(thetaIDeg));
+        long centres = 1;
+        if (maxAbs > 0) {
+            double aLowest = -(1 + cosI) * 2 * Math.PI / (lambdaMinNm * 1e-3); // 1/um
+            double aHighest = -cosI * 2 * Math.PI / (lambdaMaxNm * 1e-3);
+            centres = Math.round(Math.rint(aHighest * maxAbs) - Math.rint(aLowest * maxAbs)) + 1;
+        }
+        long samples = (long) meanSubtracted.rows() * meanSubtracted.cols();
+        long threads = Math.min(centres, Runtime.getRuntime().availableProcessors());
+        long perCentre = 16L * (ORDERS_PER_CENTRE + 1) * samples;
+        return MemoryEstimate.of(String.format(Locale.ROOT, "exact spectrum: %d phase centres x %d transforms of %dx%d",
+                        centres, ORDERS_PER_CENTRE + 1, meanSubtracted.cols(), meanSubtracted.rows()),
+                        perCentre > Long.MAX_VALUE / centres ? Long.MAX_VALUE : centres * perCentre)
+                .plus("its work arrays", 48L * samples * threads);
+    }
 
     /** @param meanSubtracted the patch, mean removed */
     public ExactSpectrum(HeightField meanSubtracted, CoherenceWindow window) {

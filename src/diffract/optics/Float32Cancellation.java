@@ -1,7 +1,7 @@
 package diffract.optics;
 
 /**
- * When the thesis' Taylor sum stops being trustworthy in float32 (issue #6). The series
+ * When the thesis' Taylor sum stops being trustworthy in float32. The series
  * sum_n (k w)^n / n! DFT_n converges for every phase, but with x = k |w| max|h| its terms grow to about
  * e^x / sqrt(2 pi x) before they cancel down to |P| <= 1; float32 keeps 24 bits, so each term carries an absolute
  * rounding error of about 2^-24 of its size and the sum an error of order 2^-24 e^x. A float32 evaluation (the GPU)

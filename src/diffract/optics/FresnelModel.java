@@ -1,7 +1,5 @@
 package diffract.optics;
 
-import diffract.util.UserInputException;
-
 import java.util.Locale;
 
 /**
@@ -27,17 +25,19 @@ public enum FresnelModel {
         return this == PHYSICAL ? ratio : ratio * ratio;
     }
 
-    public String cliName() {
+    /** physical, thesis: the name on the command line and in scene files. */
+    public String label() {
         return name().toLowerCase(Locale.ROOT);
     }
 
-    /** {@code physical} or {@code thesis}. */
+    /** The model of a {@link #label()} (any case). */
     public static FresnelModel parse(String text) {
         for (FresnelModel m : values()) {
-            if (m.cliName().equalsIgnoreCase(text.trim())) {
+            if (m.label().equalsIgnoreCase(text.trim())) {
                 return m;
             }
         }
-        throw new UserInputException("unknown --fresnel '" + text + "': use physical (R counted once) or thesis (R^2)");
+        throw new InvalidSettingException(Quantity.FRESNEL, "unknown Fresnel model '" + text
+                + "': use physical (the reflectance counted once) or thesis (squared)");
     }
 }

@@ -12,7 +12,7 @@ import java.util.HexFormat;
  * A measured or synthetic nanostructure: heights in micrometres on a regular grid.
  *
  * <p>Layout: {@code rows x cols} samples, row-major. Column index grows along the tangent frame's x axis,
- * row index along its y axis (issue #2's BRDF-map convention), so sample (row r, col c) sits at
+ * row index along its y axis (the BRDF-map convention), so sample (row r, col c) sits at
  * (x, y) = (c * pixelSizeXUm, r * pixelSizeYUm). Immutable.
  */
 public final class HeightField {

@@ -24,8 +24,8 @@ public record LightSource(double angularDiameterDeg) {
 
     public LightSource {
         if (!(angularDiameterDeg >= 0) || !(angularDiameterDeg <= MAX_DIAMETER_DEG)) {
-            throw new diffract.util.UserInputException("the light's angular diameter must be in [0, " + MAX_DIAMETER_DEG
-                    + "] degrees, got " + angularDiameterDeg);
+            throw new InvalidSettingException(Quantity.LIGHT_SIZE, Quantity.LIGHT_SIZE.words() + " must be in [0, "
+                    + InvalidSettingException.number(MAX_DIAMETER_DEG) + "] degrees, got " + angularDiameterDeg);
         }
     }
 

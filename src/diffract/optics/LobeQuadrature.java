@@ -1,11 +1,10 @@
 package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
-import diffract.util.UserInputException;
 
 /**
- * The accuracy knobs of the lobes method ({@link LobeSpectrum}, {@code lobes.frag}); docs/filtering.md measures
- * each.
+ * The accuracy knobs of the lobes method ({@link LobeSpectrum}, {@code lobes.frag}), a group of {@link BrdfSettings};
+ * docs/filtering.md measures each. Every knob has one range, checked here ({@link Quantity#LOBE_QUADRATURE}).
  *
  * @param pairThreshold  texel pairs m != m' are summed while their window weight exp(-|m - m'|^2_sigma / 4) is at
  *                       least this (relative to the product of their coefficients); in (0, 1]. The GPU sums whole
@@ -28,24 +27,31 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
 
     public LobeQuadrature {
         if (!(pairThreshold > 0 && pairThreshold <= 1)) {
-            throw new UserInputException("the lobes' pair threshold must be in (0, 1], got " + pairThreshold);
+            throw invalid("the pair threshold must be in (0, 1], got " + pairThreshold);
         }
-        if (!(nodesPerSigma > 0) || !Double.isFinite(nodesPerSigma)) {
-            throw new UserInputException("the lobes' nodes per sigma must be > 0, got " + nodesPerSigma);
+        if (!(nodesPerSigma > 0) || !(nodesPerSigma <= 100)) {
+            throw invalid("the nodes per sigma must be in (0, 100], got " + nodesPerSigma);
         }
         if (!(maxStepNm > 0 && maxStepNm < 1)) {
-            HatFilteredSpectrum.levelOf(maxStepNm);
+            try {
+                HatFilteredSpectrum.levelOf(maxStepNm);
+            } catch (IllegalArgumentException e) {
+                throw invalid("the widest node spacing must be 1, 2, 4, 8 or 16 nm, or below 1 nm, got " + maxStepNm);
+            }
         }
         if (!(reachSigmas >= 2 && reachSigmas <= 10)) {
-            throw new UserInputException("the lobes' reach must be 2..10 standard deviations, got " + reachSigmas);
+            throw invalid("the reach must be 2..10 standard deviations, got " + reachSigmas);
         }
-        if (!(weightStepNm >= 0) || !Double.isFinite(weightStepNm)) {
-            throw new UserInputException("the lobes' weight step must be >= 0 nm (0 = every node), got " + weightStepNm);
+        if (!(weightStepNm >= 0 && weightStepNm <= 400)) {
+            throw invalid("the weight step must be in [0, 400] nm (0 = every node), got " + weightStepNm);
         }
         if (lightNodes < 1 || lightNodes > GaussHermite.MAX_NODES) {
-            throw new UserInputException("the lobes' light nodes must be 1.." + GaussHermite.MAX_NODES + ", got "
-                    + lightNodes);
+            throw invalid("the light nodes must be 1.." + GaussHermite.MAX_NODES + ", got " + lightNodes);
         }
+    }
+
+    private static InvalidSettingException invalid(String what) {
+        return new InvalidSettingException(Quantity.LOBE_QUADRATURE, Quantity.LOBE_QUADRATURE.words() + ": " + what);
     }
 
     /**

@@ -4,7 +4,7 @@ import java.util.function.Function;
 
 /**
  * A Taylor-series spectrum (FLSS's and NMM's Gaussian window or PQ's sinc, unchanged) evaluated around the
- * nearest phase centre instead of around a = 0 (issue #6, {@link PhaseCentres}): for a = k w it picks centre
+ * nearest phase centre instead of around a = 0 ({@link PhaseCentres}): for a = k w it picks centre
  * a_j and sums sum_n (a - a_j)^n / n! E_{j,n}, the CPU mirror (in double over the float32 terms) of
  * {@code taylor_centred.glsl}. Each centre's spectrum sees the phase factor a - a_j, i.e. w - a_j / k: the window,
  * the lookup s = (u, v) L / lambda and PQ's replication factor do not depend on w and stay as they were.

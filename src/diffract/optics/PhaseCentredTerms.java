@@ -3,7 +3,7 @@ package diffract.optics;
 import java.util.List;
 
 /**
- * The float32 terms of the phase-centred expansion (issue #6, {@link PhaseCentres}): for every centre a_j the
+ * The float32 terms of the phase-centred expansion ({@link PhaseCentres}): for every centre a_j the
  * terms E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..centres.highestOrder(), each stored exactly like
  * the thesis' {@link TaylorTerms} (which are the centre a_0 = 0). Immutable.
  */

@@ -1,7 +1,7 @@
 package diffract.optics;
 
 /**
- * Where a phase-centred Taylor expansion of exp(i a h), a = k w, puts its centres (issue #6), and the arithmetic
+ * Where a phase-centred Taylor expansion of exp(i a h), a = k w, puts its centres, and the arithmetic
  * every expansion around a centre shares (the CPU reference {@link ExactSpectrum}, the float32 terms of
  * {@code TaylorTermComputer.computeCentred} and the GPU's {@code taylor_centred.glsl}).
  *

@@ -2,18 +2,14 @@ package diffract.optics;
 
 import diffract.util.UserInputException;
 
-import java.util.List;
 import java.util.Random;
 
 /**
  * Snake-skin and grating patches made by code from documented parameters (no measured data is copied): the
- * kinds a scene file's {@code "procedural"} patch names. The Elaphe-like patch and the gratings are
- * {@link SyntheticPatches}; the Xenopeltis-like patch is here.
+ * profiles the {@link PatchCatalogue}'s named patches and a scene file's {@code "procedural"} patches are made of.
+ * The Elaphe-like patch and the gratings are {@link SyntheticPatches}; the Xenopeltis-like patch is here.
  */
 public final class ProceduralPatches {
-    /** The kinds, by their scene-file spelling. */
-    public static final List<String> KINDS = List.of("elapheLike", "xenopeltisLike", "blazed", "sinusoid");
-
     /** Xenopeltis unicolor's ridge period: reported between 0.6 and 0.7 um; 0.65 chosen to resemble it. */
     public static final double XENOPELTIS_RIDGE_PERIOD_UM = 0.65;
     /** Ridge height: about 0.1 um, shallow compared with Elaphe's 0.3 um. */
@@ -22,11 +18,20 @@ public final class ProceduralPatches {
     private ProceduralPatches() {
     }
 
+    /** The profiles. Gratings have grooves along the rows; the snake patches have ridges along the columns. */
+    public enum Kind {
+        BLAZED, SINUSOID, ELAPHE_LIKE, XENOPELTIS_LIKE;
+
+        /** 1-D gratings: sized by samples per period and rows; the snake patches by a square size in pixels. */
+        public boolean isGrating() {
+            return this == BLAZED || this == SINUSOID;
+        }
+    }
+
     /**
-     * A procedural patch: a kind and its parameters (the scene-file keys of the same names, without units in the
-     * record's names where the unit is in the key).
+     * A procedural patch: a profile and its parameters (the scene-file keys of the same names).
      *
-     * @param kind             one of {@link #KINDS}
+     * @param kind             the profile
      * @param periodUm         ridge or groove period
      * @param heightUm         peak-to-valley height of the profile
      * @param periods          whole periods across the patch
@@ -36,47 +41,28 @@ public final class ProceduralPatches {
      * @param roughnessUm      standard deviation of the per-pixel noise before smoothing (Xenopeltis-like)
      * @param seed             random seed of the snake patches' noise and phases
      */
-    public record Spec(String kind, double periodUm, double heightUm, int periods, int samplesPerPeriod, int rows,
+    public record Spec(Kind kind, double periodUm, double heightUm, int periods, int samplesPerPeriod, int rows,
                        int sizePx, double roughnessUm, long seed) {
         public Spec {
-            if (!KINDS.contains(kind)) {
-                throw new UserInputException("unknown procedural patch '" + kind + "': use " + String.join(", ", KINDS));
-            }
-        }
-
-        /** The defaults of a kind: the patches the default scenes use. */
-        public static Spec defaults(String kind) {
-            switch (kind) {
-                case "xenopeltisLike":
-                    return new Spec(kind, XENOPELTIS_RIDGE_PERIOD_UM, XENOPELTIS_RIDGE_HEIGHT_UM, 16, 8, 128, 128,
-                            0.002, 1L);
-                case "blazed":
-                    return new Spec(kind, 2.5, 0.2, 26, 25, 16, 128, 0, 1L);
-                case "sinusoid":
-                    return new Spec(kind, 2.5, 0.2, 26, 25, 16, 128, 0, 1L);
-                default:
-                    return new Spec("elapheLike", SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 8, 16, 128, 128,
-                            0.01, 1L);
-            }
+            java.util.Objects.requireNonNull(kind, "kind");
         }
 
         /** The height field; the same spec gives the same field. */
         public HeightField build() {
             switch (kind) {
-                case "xenopeltisLike":
+                case XENOPELTIS_LIKE:
                     return xenopeltisLike(sizePx, periods, periodUm, heightUm, roughnessUm, seed);
-                case "blazed":
+                case BLAZED:
                     return SyntheticPatches.blazed(periodUm, heightUm, samplesPerPeriod, periods, rows);
-                case "sinusoid":
+                case SINUSOID:
                     return SyntheticPatches.sinusoid(periodUm, heightUm, samplesPerPeriod, periods, rows);
                 default:
                     return SyntheticPatches.elapheLike(sizePx, periods, periodUm, heightUm, seed);
             }
         }
 
-        /** A name for titles and the term cache's sidecar, e.g. "xenopeltisLike(0.65 um)". */
-        public String displayName() {
-            return kind + "(" + periodUm + " um)";
+        public Spec withSeed(long s) {
+            return new Spec(kind, periodUm, heightUm, periods, samplesPerPeriod, rows, sizePx, roughnessUm, s);
         }
     }
 

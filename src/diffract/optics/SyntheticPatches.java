@@ -133,9 +133,22 @@ public final class SyntheticPatches {
     }
 
     private static void check(double periodUm, double heightUm, int samplesPerPeriod, int periods, int rows) {
-        if (!(periodUm > 0) || !(heightUm >= 0) || samplesPerPeriod < 2 || periods < 1 || rows < 1) {
-            throw new UserInputException("a grating needs period > 0, height >= 0, >= 2 samples per period, "
-                    + ">= 1 period and >= 1 row");
+        if (!(periodUm > 0) || !Double.isFinite(periodUm)) {
+            throw new UserInputException("a grating's period must be > 0 um, got " + periodUm);
+        }
+        if (!(heightUm >= 0) || !Double.isFinite(heightUm)) {
+            throw new UserInputException("a grating's height must be >= 0 um, got " + heightUm);
+        }
+        if (samplesPerPeriod < 2) {
+            throw new UserInputException("a grating needs at least 2 samples per period, got " + samplesPerPeriod);
+        }
+        if (periods < 1 || rows < 1) {
+            throw new UserInputException("a grating needs at least 1 period and 1 row, got " + periods + " periods and "
+                    + rows + " rows");
+        }
+        if ((long) samplesPerPeriod * periods * rows > Integer.MAX_VALUE - 8) {
+            throw new UserInputException("a grating of " + samplesPerPeriod + " x " + periods + " x " + rows
+                    + " samples exceeds what one array holds (2^31)");
         }
     }
 }

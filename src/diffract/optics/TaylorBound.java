@@ -50,7 +50,7 @@ public final class TaylorBound {
     }
 
     /**
-     * The order at which a fragment's Taylor loop may stop (issue #5): the first n in 0..N whose Lagrange bound
+     * The order at which a fragment's Taylor loop may stop: the first n in 0..N whose Lagrange bound
      * x^(n+1) e^x / (n+1)! is at most {@code tolerance}, else N; N itself when the tolerance is 0 (the thesis'
      * fixed N). The bound is evaluated by the recurrence b_0 = x e^x, b_n = b_{n-1} x / (n + 1), exactly as the
      * shader does ({@code taylorStopOrder} in diffraction_common.glsl), so CPU and GPU stop at the same order

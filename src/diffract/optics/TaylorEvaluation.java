@@ -1,37 +1,18 @@
 package diffract.optics;
 
 import diffract.util.Reporter;
-import diffract.util.UserInputException;
 
 import java.util.Locale;
 import java.util.function.BiFunction;
 
 /**
- * Which Taylor expansion a scene is evaluated with (issue #6): the thesis' series around 0 over the precomputed
+ * Which Taylor expansion a scene is evaluated with: the thesis' series around 0 over the precomputed
  * terms, or, when {@link Float32Cancellation} says that series cannot reach {@link Float32Cancellation#TOLERANCE_IN_P}
  * for this patch (tall structures, short wavelengths), the phase-centred expansion ({@link PhaseCentres}), which is
  * accurate at every height. A scene whose phase-centred terms would not fit {@link #MAX_CENTRED_BYTES} or
  * {@link #MAX_CENTRED_LAYERS} keeps the plain series and says so.
  */
 public final class TaylorEvaluation {
-    /** What the user asks for: {@code --expansion auto|plain|centred}. */
-    public enum Mode {
-        /** The plain series where it is accurate enough, the centred expansion where not. */
-        AUTO,
-        /** Always the thesis' series (its output is unchanged, noise included). */
-        PLAIN,
-        /** Always the phase-centred expansion. */
-        CENTRED;
-
-        public static Mode parse(String text) {
-            try {
-                return valueOf(text.toUpperCase(Locale.ROOT));
-            } catch (IllegalArgumentException e) {
-                throw new UserInputException("unknown --expansion '" + text + "': use auto, plain or centred");
-            }
-        }
-    }
-
     /**
      * GL 4.5 guarantees 2048 texture-array layers (GL 3.3 only 256, but every current driver, llvmpipe included,
      * offers 2048); the centres of a 2 um patch at 380 nm need 270.
@@ -53,6 +34,11 @@ public final class TaylorEvaluation {
         return new TaylorEvaluation(terms, null);
     }
 
+    /** The phase-centred expansion over these terms, without the thesis' terms ({@link #plainTerms()} is null). */
+    public static TaylorEvaluation phaseCentred(PhaseCentredTerms terms) {
+        return new TaylorEvaluation(null, terms);
+    }
+
     /**
      * Decides for a scene and computes the centred terms when they are needed (with progress).
      *
@@ -60,16 +46,18 @@ public final class TaylorEvaluation {
      *                     optics package does no FFTs of its own)
      * @param shortestLambdaNm the shortest wavelength the scene renders
      */
-    public static TaylorEvaluation choose(Mode mode, HeightField meanSubtracted, TaylorTerms plainTerms,
+    public static TaylorEvaluation choose(TaylorExpansion mode, HeightField meanSubtracted, TaylorTerms plainTerms,
                                           int highestOrder, double shortestLambdaNm,
                                           BiFunction<HeightField, PhaseCentres, PhaseCentredTerms> centredTerms,
                                           Reporter reporter) {
         double a = 2 * 2 * Math.PI / (shortestLambdaNm * 1e-3); // k |w| with |w| = 2, the largest phase factor
         double x = a * meanSubtracted.maxAbsHeightUm();
         double plainError = Float32Cancellation.plainSeriesError(plainTerms, highestOrder, a);
-        if (mode == Mode.PLAIN || (mode == Mode.AUTO && plainError <= Float32Cancellation.TOLERANCE_IN_P)) {
+        if (mode == TaylorExpansion.PLAIN || (mode == TaylorExpansion.AUTO && plainError <= Float32Cancellation.TOLERANCE_IN_P)) {
             if (plainError > Float32Cancellation.TOLERANCE_IN_P) {
-                reporter.warn(plainWarning(plainError, shortestLambdaNm, x, highestOrder));
+                // the plain series was asked for (or the calibrated auto variant's path): the centred one avoids it
+                reporter.warn(plainWarning(plainError, shortestLambdaNm, x, highestOrder) + "; the phase-centred"
+                        + " expansion avoids it, as do a longer shortest wavelength or a lower patch");
             }
             return plain(plainTerms);
         }
@@ -80,10 +68,13 @@ public final class TaylorEvaluation {
                     + " = %d layers of %dx%d (%.0f MiB, limits %d layers, %d MiB)", centres.centreCount(),
                     centres.ordersPerCentre(), centres.layerCount(), meanSubtracted.cols(), meanSubtracted.rows(),
                     bytes / 1048576.0, MAX_CENTRED_LAYERS, MAX_CENTRED_BYTES >> 20);
-            if (mode == Mode.CENTRED) {
-                throw new UserInputException(size + "; use a longer --lambda-min or a smaller patch");
+            if (mode == TaylorExpansion.CENTRED) {
+                throw new InvalidSettingException(Quantity.EXPANSION, size + "; use a longer shortest wavelength or a "
+                        + "smaller patch");
             }
-            reporter.warn(size + "; " + plainWarning(plainError, shortestLambdaNm, x, highestOrder));
+            // auto is in effect and chose the plain series: only a shorter reach or a lower patch helps
+            reporter.warn(size + "; " + plainWarning(plainError, shortestLambdaNm, x, highestOrder)
+                    + "; a longer shortest wavelength or a lower patch avoids it");
             return plain(plainTerms);
         }
         reporter.info(String.format(Locale.ROOT, "phase-centred Taylor expansion: x = k|w|max|h| = %.1f at %.0f nm"
@@ -95,15 +86,15 @@ public final class TaylorEvaluation {
 
     private static String plainWarning(double error, double shortestLambdaNm, double x, int highestOrder) {
         return String.format(Locale.ROOT, "the float32 Taylor sum (%d terms) may err by up to %.2g in P (|P| <= 1)"
-                + " at %.0f nm (x = k|w|max|h| = %.1f): dim orders will be rounding noise; use --expansion auto,"
-                + " a longer --lambda-min, or a lower patch", highestOrder + 1, error, shortestLambdaNm, x);
+                + " at %.0f nm (x = k|w|max|h| = %.1f): dim orders will be rounding noise", highestOrder + 1, error,
+                shortestLambdaNm, x);
     }
 
     public boolean isPhaseCentred() {
         return centred != null;
     }
 
-    /** The thesis' terms (always present). */
+    /** The thesis' terms (present unless made by {@link #phaseCentred}). */
     public TaylorTerms plainTerms() {
         return plain;
     }
@@ -113,15 +104,10 @@ public final class TaylorEvaluation {
         return centred;
     }
 
-    /** The CPU BRDF of a Taylor variant on this path, point-sampled. */
+    /** The CPU BRDF of a Taylor variant on this path. */
     public DiffractionBrdf brdf(BrdfSettings settings, HeightField meanSubtracted) {
-        return brdf(settings, meanSubtracted, OpticsOptions.POINT_SAMPLED);
-    }
-
-    /** The CPU BRDF of a Taylor variant on this path with the optics options. */
-    public DiffractionBrdf brdf(BrdfSettings settings, HeightField meanSubtracted, OpticsOptions options) {
-        return centred != null ? DiffractionBrdf.createPhaseCentred(settings, centred, options)
-                : DiffractionBrdf.create(settings, meanSubtracted, plain, options);
+        return centred != null ? DiffractionBrdf.createPhaseCentred(settings, centred)
+                : DiffractionBrdf.create(settings, meanSubtracted, plain);
     }
 
     /** "plain" or "centred (J x N)", for tables and logs. */

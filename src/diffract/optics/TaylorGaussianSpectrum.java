@@ -10,8 +10,7 @@ package diffract.optics;
  * contribute nothing: the band-limited patch has no energy beyond Nyquist (the thesis clamped, which repeats
  * edge texels). Reads the float32 terms, sums in double: the GPU does the same in float32.
  */
-public final class TaylorGaussianSpectrum implements PatchSpectrum {
-    private final WindowedTaylorSum sum;
+public final class TaylorGaussianSpectrum extends WindowedTaylorSpectrum {
 
     /**
      * @param highestOrder  N, the last Taylor order used (at most terms.highestOrder())
@@ -27,9 +26,14 @@ public final class TaylorGaussianSpectrum implements PatchSpectrum {
      */
     public TaylorGaussianSpectrum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
                                   CoherenceWindow window) {
+        super(gaussianSum(terms, highestOrder, radii, taylorTolerance, window));
+    }
+
+    private static WindowedTaylorSum gaussianSum(TaylorTerms terms, int highestOrder, WindowRadii radii,
+                                                 double taylorTolerance, CoherenceWindow window) {
         double sigmaX = window.sigmaTexels(terms.cols() * terms.pixelSizeXUm());
         double sigmaY = window.sigmaTexels(terms.rows() * terms.pixelSizeYUm());
-        this.sum = new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance,
+        return new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance,
                 d -> CoherenceWindow.weight(d, sigmaX), d -> CoherenceWindow.weight(d, sigmaY));
     }
 
@@ -41,21 +45,5 @@ public final class TaylorGaussianSpectrum implements PatchSpectrum {
     /** The Taylor order the lookup at this (w, lambda) stops at. */
     int stopOrder(double w, double lambdaUm) {
         return sum.stopOrder(2.0 * Math.PI / lambdaUm * w);
-    }
-
-    @Override
-    public double extentXUm() {
-        return sum.extentXUm();
-    }
-
-    @Override
-    public double extentYUm() {
-        return sum.extentYUm();
-    }
-
-    @Override
-    public double power(double u, double v, double w, double lambdaUm) {
-        // eq. 1.8: s = u L / lambda; Taylor factor a = k w
-        return sum.power(u * extentXUm() / lambdaUm, v * extentYUm() / lambdaUm, 2.0 * Math.PI / lambdaUm * w);
     }
 }

@@ -13,8 +13,7 @@ package diffract.optics;
  * BRDF); the default R spans the coherence length 65 um, the same physics the Gaussian window models.
  * At integer s the kernel's 0/0 is replaced by its limit cos(R pi s) / cos(pi s), never divided.
  */
-public final class TaylorSincSpectrum implements PatchSpectrum {
-    private final WindowedTaylorSum sum;
+public final class TaylorSincSpectrum extends WindowedTaylorSpectrum {
     private final int replicasX;
     private final int replicasY;
 
@@ -25,11 +24,11 @@ public final class TaylorSincSpectrum implements PatchSpectrum {
     /** With per-axis window radii and the early-stop tolerance of {@link TaylorBound#stopOrder} (0 = fixed N). */
     public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
                               int replicasX, int replicasY) {
+        super(new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance, TaylorSincSpectrum::sinc,
+                TaylorSincSpectrum::sinc));
         if (replicasX < 1 || replicasY < 1) {
             throw new IllegalArgumentException("need replicas >= 1");
         }
-        this.sum = new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance, TaylorSincSpectrum::sinc,
-                TaylorSincSpectrum::sinc);
         this.replicasX = replicasX;
         this.replicasY = replicasY;
     }
@@ -40,22 +39,10 @@ public final class TaylorSincSpectrum implements PatchSpectrum {
     }
 
     @Override
-    public double extentXUm() {
-        return sum.extentXUm();
-    }
-
-    @Override
-    public double extentYUm() {
-        return sum.extentYUm();
-    }
-
-    @Override
-    public double power(double u, double v, double w, double lambdaUm) {
-        double sx = u * extentXUm() / lambdaUm; // eq. 1.8
-        double sy = v * extentYUm() / lambdaUm;
+    double replicationFactor(double sx, double sy) {
         double px = normalisedDirichlet(sx, replicasX);
         double py = normalisedDirichlet(sy, replicasY);
-        return sum.power(sx, sy, 2.0 * Math.PI / lambdaUm * w) * px * px * py * py;
+        return px * px * py * py;
     }
 
     /** sin(pi x) / (pi x), 1 at 0. */

@@ -4,7 +4,10 @@ import java.util.Locale;
 
 /**
  * How the BRDF is evaluated: the exact reference, one of the thesis' three shader approximations, a baked table of
- * FLSS, or the filtered lobes method.
+ * FLSS, or the filtered lobes method. A new variant is a constant here, its CPU spectrum in
+ * {@link DiffractionBrdf#create} (or {@link #runsOnCpu} false), its fragment shader
+ * {@code shaders/diffraction/<name>.frag}, and, where it ignores a swept axis, a line in the bench's
+ * {@code SweepPlan.IGNORED_AXES}.
  */
 public enum Variant {
     /** exp(i k w h) exactly, window until weights < 1e-12, lambda at 1 nm: the yardstick. */
@@ -17,7 +20,7 @@ public enum Variant {
     PQ,
     /**
      * FLSS baked into a 3-D table XYZ(u, v, w) once per patch and settings, looked up trilinearly per fragment
-     * (issue #5; after Dhillon and Ghosh 2016, Toisoul and Ghosh 2017). GPU only.
+     * (after Dhillon and Ghosh 2016, Toisoul and Ghosh 2017). GPU only.
      */
     BAKED,
     /**
@@ -31,16 +34,24 @@ public enum Variant {
         return this != BAKED;
     }
 
-    public String cliName() {
+    /** Whether it runs as a GPU shader (all but the reference). */
+    public boolean runsOnGpu() {
+        return this != REFERENCE;
+    }
+
+    /** reference, flss, nmm, pq, baked, lobes: the name on the command line, in scene files and in tables. */
+    public String label() {
         return name().toLowerCase(Locale.ROOT);
     }
 
+    /** The variant of a {@link #label()} (any case). */
     public static Variant parse(String text) {
         for (Variant v : values()) {
-            if (v.cliName().equalsIgnoreCase(text.trim())) {
+            if (v.label().equalsIgnoreCase(text.trim())) {
                 return v;
             }
         }
-        throw new diffract.util.UserInputException("unknown variant '" + text + "': use reference, flss, nmm, pq, baked or lobes");
+        throw new InvalidSettingException(Quantity.VARIANT, "unknown variant '" + text
+                + "': use reference, flss, nmm, pq, baked or lobes");
     }
 }

@@ -8,7 +8,7 @@ import java.util.function.DoubleUnaryOperator;
  * sum_{n=0}^{N} c_n DFT_n(m), with c_n = (k w)^n / n!, over the float32 terms. Texels outside the stored band
  * contribute nothing. The variants differ only in the window's weight (Gaussian for FLSS/NMM, sinc for PQ).
  *
- * <p>Issue #5 adds two ways to do less work: the window's half-widths per axis ({@link WindowRadii}, e.g. from
+ * <p>Two settings do less work: the window's half-widths per axis ({@link WindowRadii}, e.g. from
  * sigma_f), and a tolerance at which the Taylor loop stops early ({@link TaylorBound#stopOrder} with this lookup's
  * x = |k w| max|h|); tolerance 0 keeps the fixed N and the very same arithmetic.
  */

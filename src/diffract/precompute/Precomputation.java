@@ -1,19 +1,27 @@
 package diffract.precompute;
 
 import diffract.optics.HeightField;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorBound;
+import diffract.optics.TaylorExpansion;
+import diffract.optics.TaylorSettings;
 import diffract.optics.TaylorTerms;
+import diffract.util.FolderLock;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.util.Version;
 
 import java.io.IOException;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Locale;
 
 /**
  * Precomputes Taylor terms once per (patch content, N): into a folder the user names, or into the user cache
- * ({@code $DIFFRACT_CACHE}, else {@code $XDG_CACHE_HOME/diffract}, else {@code ~/.cache/diffract}). A folder whose
- * sidecar has the same patch hash and N is reused without any FFT.
+ * (the system property {@value #CACHE_PROPERTY}, else {@code $DIFFRACT_CACHE}, else {@code $XDG_CACHE_HOME/diffract},
+ * else {@code ~/.cache/diffract}). A folder whose sidecar has the same patch hash and N, and whose data pass their
+ * checksum, is reused without any FFT; a damaged one is recomputed.
  */
 public final class Precomputation {
     private Precomputation() {
@@ -33,16 +41,18 @@ public final class Precomputation {
                           Double tolerance, double lambdaMinNm) {
         public Request {
             if ((highestOrder == null) == (tolerance == null)) {
-                throw new UserInputException("give either --terms N or --tolerance EPS (not both, not neither)");
+                throw new IllegalArgumentException("give either N or a tolerance (not both, not neither)");
             }
-            if (highestOrder != null && (highestOrder < 0 || highestOrder > 200)) {
-                throw new UserInputException("--terms must be between 0 and 200, got " + highestOrder);
+            if (highestOrder != null) {
+                new TaylorSettings(highestOrder, 0, TaylorExpansion.AUTO); // N's one range
             }
             if (tolerance != null && !(tolerance > 0 && tolerance < 1)) {
-                throw new UserInputException("--tolerance must be in (0, 1), got " + tolerance);
+                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, Quantity.ORDER_TOLERANCE.words()
+                        + " must be in (0, 1), got " + tolerance);
             }
             if (!(lambdaMinNm > 0)) {
-                throw new UserInputException("--lambda-min must be > 0 nm, got " + lambdaMinNm);
+                throw new InvalidSettingException(Quantity.LAMBDA_MIN, Quantity.LAMBDA_MIN.words()
+                        + " must be > 0 nm, got " + lambdaMinNm);
             }
         }
     }
@@ -59,6 +69,12 @@ public final class Precomputation {
         if (request.tolerance() != null) {
             n = TaylorBound.termsForTolerance(x, request.tolerance());
             mode = "tolerance";
+            if (n > TaylorSettings.MAX_HIGHEST_ORDER) {
+                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, String.format(Locale.ROOT,
+                        "the tolerance %s needs N = %d for this patch (x = %.1f), above the limit %d: use a larger "
+                                + "tolerance; the phase-centred expansion needs no large N", request.tolerance(), n,
+                        x, TaylorSettings.MAX_HIGHEST_ORDER));
+            }
         } else {
             n = request.highestOrder();
             mode = "terms";
@@ -71,33 +87,131 @@ public final class Precomputation {
         return new TermSidecar.Selection(mode, request.tolerance(), request.lambdaMinNm(), x, bound);
     }
 
-    /** Precomputes into {@code dir} unless it already holds the same terms. */
+    /**
+     * Precomputes into {@code dir} unless it already holds the same terms, verified. A folder whose sidecar is
+     * unreadable or whose data fail their checksum is recomputed with a one-line warning; temporary files a killed
+     * writer left are removed. Writers hold the folder's {@link FolderLock}, so concurrent precomputes into one
+     * folder end in one consistent result (the later one reuses what the first wrote).
+     */
     public static Result intoFolder(Request request, Path dir, boolean loadTerms, Reporter reporter) {
+        return intoFolder(request, dir, loadTerms, false, reporter);
+    }
+
+    private static Result intoFolder(Request request, Path dir, boolean loadTerms, boolean inMemoryIfUnwritable,
+                                     Reporter reporter) {
         TermSidecar.Selection selection = select(request, reporter);
         int n = highestOrderOf(request, selection);
-        HeightField field = request.meanSubtracted();
-        String sha = field.contentSha256();
-        TermSidecar existing = TermStore.readSidecar(dir);
-        if (existing != null && sha.equals(existing.patch().sha256()) && existing.highestOrder() == n
-                && TermStore.dataLooksComplete(dir, existing)) {
-            if (!loadTerms) {
-                return new Result(null, existing, dir, true);
-            }
-            try {
-                return new Result(TermStore.read(dir), existing, dir, true);
-            } catch (UserInputException e) {
-                reporter.warn(e.getMessage() + " - recomputing");
-            }
+        String sha = request.meanSubtracted().contentSha256();
+        Result reused = reuse(dir, sha, n, loadTerms, null); // without the lock: a writer may be busy, say nothing
+        if (reused != null) {
+            return reused;
         }
-        TaylorTerms terms = TaylorTermComputer.compute(field, n, reporter);
-        TermSidecar.Patch patch = new TermSidecar.Patch(request.source(), sha, field.rows(), field.cols(),
-                field.pixelSizeXUm(), field.pixelSizeYUm(), request.maxHeightUm(), field.maxAbsHeightUm());
+        FolderLock lock;
         try {
-            TermSidecar sidecar = TermStore.write(dir, terms, patch, selection, Version.VERSION);
-            return new Result(terms, sidecar, dir, false);
+            lock = FolderLock.acquire(dir, reporter);
         } catch (IOException e) {
-            throw new UserInputException("cannot write precomputed terms to " + dir + ": " + e.getMessage(), e);
+            if (!inMemoryIfUnwritable) {
+                throw new UserInputException("cannot write precomputed terms to " + dir + ": " + reason(e)
+                        + "; choose another folder", e);
+            }
+            reporter.info("the term cache " + dir + " is not writable (" + reason(e)
+                    + "): computing the terms in memory, not caching them");
+            return new Result(compute(request, n, reporter), null, dir, false);
         }
+        try (lock) {
+            reused = reuse(dir, sha, n, loadTerms, reporter);
+            if (reused != null) {
+                return reused;
+            }
+            int stale = lock.removeStaleTemporaries();
+            if (stale > 0) {
+                reporter.info("removed " + stale + " temporary file" + (stale == 1 ? "" : "s")
+                        + " an interrupted write left in " + dir);
+            }
+            TaylorTerms terms = compute(request, n, reporter);
+            HeightField field = request.meanSubtracted();
+            TermSidecar.Patch patch = new TermSidecar.Patch(request.source(), sha, field.rows(), field.cols(),
+                    field.pixelSizeXUm(), field.pixelSizeYUm(), request.maxHeightUm(), field.maxAbsHeightUm());
+            try {
+                TermSidecar sidecar = TermStore.write(dir, terms, patch, selection, Version.VERSION);
+                return new Result(terms, sidecar, dir, false);
+            } catch (IOException e) {
+                if (!inMemoryIfUnwritable) {
+                    throw new UserInputException("cannot write precomputed terms to " + dir + ": " + reason(e), e);
+                }
+                reporter.warn("cannot write the term cache " + dir + " (" + reason(e)
+                        + "): the terms are used from memory, not cached");
+                return new Result(terms, null, dir, false);
+            }
+        } catch (IOException e) { // closing the lock or listing the folder
+            throw new UserInputException("cannot use " + dir + ": " + reason(e), e);
+        }
+    }
+
+    /**
+     * The terms of {@code dir} when it holds this patch's, verified; null when it holds none, another patch's or
+     * N's, or damaged ones.
+     *
+     * @param notices where to say what is damaged (null: say nothing, the caller will look again under the lock)
+     */
+    private static Result reuse(Path dir, String sha, int n, boolean loadTerms, Reporter notices) {
+        TermSidecar existing;
+        try {
+            existing = TermStore.readSidecar(dir);
+        } catch (TermStore.Damaged e) {
+            notify(notices, e.getMessage());
+            return null;
+        }
+        if (existing == null) {
+            if (Files.isRegularFile(dir.resolve(TermStore.DATA_FILE))) {
+                notify(notices, dir.resolve(TermStore.DATA_FILE) + " has no " + TermStore.SIDECAR_FILE
+                        + " beside it (an interrupted write)");
+            }
+            return null;
+        }
+        if (!sha.equals(existing.patch().sha256()) || existing.highestOrder() != n) {
+            return null; // another patch or N: replaced
+        }
+        try {
+            if (loadTerms) {
+                return new Result(TermStore.read(dir, existing), existing, dir, true);
+            }
+            TermStore.verify(dir, existing);
+            return new Result(null, existing, dir, true);
+        } catch (TermStore.Damaged e) {
+            notify(notices, e.getMessage());
+            return null;
+        }
+    }
+
+    private static void notify(Reporter notices, String damage) {
+        if (notices != null) {
+            notices.warn(damage + ": recomputing");
+        }
+    }
+
+    /** The terms, once the heap is known to hold them. */
+    private static TaylorTerms compute(Request request, int n, Reporter reporter) {
+        HeightField field = request.meanSubtracted();
+        TaylorTermComputer.memory(field.rows(), field.cols(), n).require(String.format(Locale.ROOT,
+                "precomputing %d Taylor terms of a %dx%d patch", n + 1, field.cols(), field.rows()),
+                "ask for fewer terms or crop the patch");
+        return TaylorTermComputer.compute(field, n, reporter);
+    }
+
+    /** The reason of an I/O failure in words (NIO's messages are often just the path). */
+    static String reason(IOException e) {
+        if (e instanceof java.nio.file.AccessDeniedException) {
+            return "permission denied";
+        }
+        if (e instanceof java.nio.file.FileSystemException f && f.getReason() != null) {
+            return f.getReason();
+        }
+        if (e instanceof java.nio.file.FileSystemException) {
+            return e.getClass().getSimpleName().replace("Exception", "").replaceAll("([a-z])([A-Z])", "$1 $2")
+                    .toLowerCase(Locale.ROOT) + ": " + e.getMessage();
+        }
+        return String.valueOf(e.getMessage());
     }
 
     /** What {@link #intoThesisFolder} did. */
@@ -107,41 +221,59 @@ public final class Precomputation {
     /**
      * Precomputes into {@code dir} in the thesis' Octave layout ({@link ThesisFormat}) unless it already holds
      * the same terms: a diffract.json with the same patch hash and N, and all term files of the right size.
+     * Writers hold the folder's lock, as for the native format.
      */
     public static ThesisResult intoThesisFolder(Request request, Path dir, Reporter reporter) {
         TermSidecar.Selection selection = select(request, reporter);
         int n = highestOrderOf(request, selection);
         HeightField field = request.meanSubtracted();
         String sha = field.contentSha256();
-        ThesisExtras existing = java.nio.file.Files.isDirectory(dir) ? ThesisReader.readExtras(dir) : null;
-        if (existing != null && sha.equals(existing.patchSha256()) && existing.highestOrder() == n
-                && ThesisReader.filesLookComplete(dir, existing)) {
-            return new ThesisResult(n + 1, dir, true);
-        }
-        TaylorTerms terms = TaylorTermComputer.compute(field, n, reporter);
-        try {
+        try (FolderLock lock = FolderLock.acquire(dir, reporter)) {
+            ThesisExtras existing;
+            try {
+                existing = ThesisReader.readExtras(dir);
+            } catch (UserInputException e) {
+                reporter.warn(e.getMessage() + ": recomputing");
+                existing = null;
+            }
+            if (existing != null && sha.equals(existing.patchSha256()) && existing.highestOrder() == n
+                    && ThesisReader.filesLookComplete(dir, existing)) {
+                return new ThesisResult(n + 1, dir, true);
+            }
+            lock.removeStaleTemporaries();
+            TaylorTerms terms = compute(request, n, reporter);
             ThesisFormat.write(dir, terms, new ThesisFormat.Provenance(request.source(), sha, request.maxHeightUm()),
                     reporter);
         } catch (IOException e) {
-            throw new UserInputException("cannot write thesis-format terms to " + dir + ": " + e.getMessage(), e);
+            throw new UserInputException("cannot write thesis-format terms to " + dir + ": " + reason(e), e);
         }
         return new ThesisResult(n + 1, dir, false);
     }
 
-    /** Terms from the user cache, computed on first use. */
+    /**
+     * Terms from the user cache, computed on first use. A damaged entry is recomputed (with a warning); a cache
+     * that cannot be written means the terms are computed in memory (with a note), not a refusal.
+     */
     public static TaylorTerms cached(Request request, Reporter reporter) {
         TermSidecar.Selection selection = select(request, Reporter.SILENT);
         int n = highestOrderOf(request, selection);
         String sha = request.meanSubtracted().contentSha256();
         Path dir = cacheRoot().resolve("terms").resolve(sha.substring(0, 24) + "-n" + n);
-        Result result = intoFolder(request, dir, true, reporter);
-        if (!result.reused()) {
+        Result result = intoFolder(request, dir, true, true, reporter);
+        if (!result.reused() && result.sidecar() != null) {
             reporter.info("cached Taylor terms in " + dir);
         }
         return result.terms();
     }
 
+    /** The system property that overrides the cache folder (as $DIFFRACT_CACHE does), for programs that embed diffract. */
+    public static final String CACHE_PROPERTY = "diffract.cache";
+
     public static Path cacheRoot() {
+        String property = System.getProperty(CACHE_PROPERTY);
+        if (property != null && !property.isBlank()) {
+            return Path.of(property);
+        }
         String explicit = System.getenv("DIFFRACT_CACHE");
         if (explicit != null && !explicit.isBlank()) {
             return Path.of(explicit);

@@ -5,6 +5,7 @@ import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
 import diffract.optics.ShiftedDft;
 import diffract.optics.TaylorTerms;
+import diffract.util.MemoryEstimate;
 import diffract.util.Reporter;
 import pl.edu.icm.jlargearrays.ConcurrencyUtils;
 
@@ -18,13 +19,25 @@ public final class TaylorTermComputer {
     private TaylorTermComputer() {
     }
 
+    /**
+     * The heap {@link #compute} holds at its peak: the float32 terms, (N + 1) x rows x cols x 8 bytes, and three
+     * double complex arrays of the patch (the power (i h)^n, its transform, the fftshifted copy), 48 bytes per
+     * sample.
+     */
+    public static MemoryEstimate memory(int rows, int cols, int highestOrder) {
+        long samples = (long) rows * cols;
+        return MemoryEstimate.of((highestOrder + 1) + " Taylor terms of " + cols + "x" + rows,
+                        8L * samples * (highestOrder + 1))
+                .plus("FFT work arrays", 48L * samples);
+    }
+
     /** All terms 0..highestOrder as float32, with progress per term. */
     public static TaylorTerms compute(HeightField meanSubtracted, int highestOrder, Reporter reporter) {
         return computeAroundPhase(meanSubtracted, 0.0, highestOrder, reporter);
     }
 
     /**
-     * The terms of the expansion around every centre of {@code centres} (issue #6):
+     * The terms of the expansion around every centre of {@code centres}:
      * E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..centres.highestOrder(), as float32 like the thesis'
      * terms (which are the centre a_0 = 0). Progress per centre.
      */
@@ -57,6 +70,7 @@ public final class TaylorTermComputer {
         double[] work = new double[power.length];
         float[][] terms = new float[highestOrder + 1][];
         String task = "precompute " + rows + "x" + cols + ", terms 0.." + highestOrder;
+        reporter.progress(task, 0);
         for (int n = 0; n <= highestOrder; n++) {
             if (n > 0) {
                 PhaseCentres.multiplyByIH(power, h);

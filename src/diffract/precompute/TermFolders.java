@@ -19,19 +19,7 @@ public final class TermFolders {
     /** The two on-disk formats. */
     public enum Format {
         NATIVE,
-        THESIS;
-
-        /** "native" or "thesis". */
-        public static Format parse(String text) {
-            switch (text.toLowerCase(java.util.Locale.ROOT)) {
-                case "native":
-                    return NATIVE;
-                case "thesis":
-                    return THESIS;
-                default:
-                    throw new UserInputException("unknown term format '" + text + "': use native or thesis");
-            }
-        }
+        THESIS
     }
 
     /** The format of {@code dir}; a folder with neither format's files is a one-line error. */
@@ -57,7 +45,20 @@ public final class TermFolders {
      * @param thesisHeightUnit used only for a thesis folder without diffract.json
      */
     public static TaylorTerms read(Path dir, ThesisFormat.HeightUnit thesisHeightUnit, Reporter reporter) {
-        return detect(dir) == Format.NATIVE ? TermStore.read(dir) : ThesisFormat.read(dir, thesisHeightUnit, reporter);
+        if (detect(dir) == Format.THESIS) {
+            return ThesisFormat.read(dir, thesisHeightUnit, reporter);
+        }
+        try {
+            return TermStore.read(dir);
+        } catch (TermStore.Damaged e) {
+            TermSidecar sidecar = null;
+            try {
+                sidecar = TermStore.readSidecar(dir);
+            } catch (TermStore.Damaged unreadable) {
+                // the hint then names no patch
+            }
+            throw new UserInputException(e.getMessage() + "; " + TermStore.repairHint(dir, sidecar), e);
+        }
     }
 
     /** As {@link #read(Path, ThesisFormat.HeightUnit, Reporter)} with the unit detected. */

@@ -32,8 +32,11 @@ import java.util.List;
  *   eq. 1.1 are stored for information, the values are the raw DFTs.</li>
  *   <li>{@code terms.json}: the {@link TermSidecar} (patch hash, sizes, N, extrema, data checksum).</li>
  * </ul>
- * Writes go to temporary names and are renamed into place, data first and sidecar last, so a folder with a
- * sidecar always has complete data; readers verify size and SHA-256 before trusting it.
+ * Writes go to temporary names and are renamed into place: the old sidecar is removed first and the new one
+ * renamed last, so a sidecar always describes the data beside it (a writer killed in between leaves a folder
+ * without sidecar, which reads as incomplete). Readers verify size and SHA-256 before trusting the data; whatever
+ * fails (an unreadable or incomplete sidecar, missing, truncated or modified data) is a {@link Damaged} folder,
+ * which {@link Precomputation} recomputes. Writers hold the folder's {@link diffract.util.FolderLock}.
  */
 public final class TermStore {
     public static final String DATA_FILE = "terms.f32";
@@ -44,10 +47,24 @@ public final class TermStore {
     private TermStore() {
     }
 
+    /** A folder whose sidecar or data cannot be trusted: recompute it (the message says what is wrong). */
+    public static final class Damaged extends UserInputException {
+        private static final long serialVersionUID = 1L;
+
+        Damaged(String message) {
+            super(message);
+        }
+
+        Damaged(String message, Throwable cause) {
+            super(message, cause);
+        }
+    }
+
     /** Writes terms and sidecar into {@code dir} (created if needed) and returns the sidecar written. */
     public static TermSidecar write(Path dir, TaylorTerms terms, TermSidecar.Patch patch, TermSidecar.Selection selection,
                                     String toolVersion) throws IOException {
         Files.createDirectories(dir);
+        Files.deleteIfExists(dir.resolve(SIDECAR_FILE)); // no moment with the old sidecar beside new data
         Path tmpData = tempSibling(dir.resolve(DATA_FILE));
         String sha;
         long bytes = 0;
@@ -93,80 +110,143 @@ public final class TermStore {
         return sidecar;
     }
 
-    /** The sidecar of {@code dir}, or null when there is none; a sidecar we cannot parse is an error. */
+    /**
+     * The sidecar of {@code dir}, or null when there is none.
+     *
+     * @throws Damaged when it cannot be parsed or lacks what a reader needs
+     */
     public static TermSidecar readSidecar(Path dir) {
         Path file = dir.resolve(SIDECAR_FILE);
         if (!Files.isRegularFile(file)) {
             return null;
         }
+        TermSidecar sidecar;
         try {
-            TermSidecar sidecar = JSON.readValue(file.toFile(), TermSidecar.class);
-            if (!TermSidecar.FORMAT.equals(sidecar.format())) {
-                throw new UserInputException(file + " is not a diffract term sidecar (format '" + sidecar.format() + "')");
-            }
-            if (sidecar.formatVersion() > TermSidecar.FORMAT_VERSION) {
-                throw new UserInputException(file + " has format version " + sidecar.formatVersion()
-                        + "; this build reads up to " + TermSidecar.FORMAT_VERSION + ": update diffract or precompute again");
-            }
-            return sidecar;
+            sidecar = JSON.readValue(file.toFile(), TermSidecar.class);
         } catch (IOException e) {
-            throw new UserInputException("cannot read " + file + " (" + e.getMessage().lines().findFirst().orElse("")
-                    + "); delete the folder and precompute again", e);
+            throw new Damaged(file + " is not readable JSON (" + firstLine(e.getMessage()) + ")", e);
         }
+        if (sidecar == null || !TermSidecar.FORMAT.equals(sidecar.format())) {
+            throw new Damaged(file + " is not a diffract term sidecar (format '"
+                    + (sidecar == null ? null : sidecar.format()) + "')");
+        }
+        if (sidecar.formatVersion() > TermSidecar.FORMAT_VERSION) {
+            throw new Damaged(file + " has format version " + sidecar.formatVersion() + "; this build reads up to "
+                    + TermSidecar.FORMAT_VERSION);
+        }
+        String missing = missingField(sidecar);
+        if (missing != null) {
+            throw new Damaged(file + " is incomplete: " + missing);
+        }
+        return sidecar;
     }
 
-    /** True when the data file exists with the size the sidecar promises (a cheap check, no hashing). */
-    public static boolean dataLooksComplete(Path dir, TermSidecar sidecar) {
-        try {
-            return Files.size(dir.resolve(sidecar.data().file())) == sidecar.data().bytes();
-        } catch (IOException e) {
-            return false;
+    /** What a reader needs and the sidecar lacks, or null. */
+    private static String missingField(TermSidecar s) {
+        TermSidecar.Patch patch = s.patch();
+        TermSidecar.Data data = s.data();
+        if (patch == null) {
+            return "no 'patch'";
         }
+        if (data == null) {
+            return "no 'data'";
+        }
+        if (patch.rows() < 1 || patch.cols() < 1 || !(patch.pixelSizeXUm() > 0) || !(patch.pixelSizeYUm() > 0)) {
+            return "no valid patch size in 'patch'";
+        }
+        if (s.termCount() < 1 || s.highestOrder() != s.termCount() - 1) {
+            return "'termCount' " + s.termCount() + " does not match 'highestOrder' " + s.highestOrder();
+        }
+        if (!DATA_FILE.equals(data.file())) {
+            return "'data.file' must be " + DATA_FILE + ", got " + data.file();
+        }
+        if (data.sha256() == null || data.sha256().length() != 64) {
+            return "no SHA-256 in 'data'";
+        }
+        return null;
     }
 
-    /** Reads and verifies (size and SHA-256) the terms of {@code dir}. */
+    /**
+     * Verifies the data of {@code dir} against its sidecar (size and SHA-256) without keeping them.
+     *
+     * @throws Damaged when they do not match
+     */
+    public static void verify(Path dir, TermSidecar sidecar) {
+        readData(dir, sidecar, false);
+    }
+
+    /**
+     * Reads and verifies (size and SHA-256) the terms of {@code dir}.
+     *
+     * @throws Damaged when the sidecar or the data cannot be trusted
+     * @throws UserInputException when the folder has no sidecar
+     */
     public static TaylorTerms read(Path dir) {
         TermSidecar sidecar = readSidecar(dir);
         if (sidecar == null) {
-            throw new UserInputException("no " + SIDECAR_FILE + " in " + dir + ": not a precomputed term folder "
-                    + "(make one with ./diffract precompute ... -o " + dir + ")");
+            boolean dataOnly = Files.isRegularFile(dir.resolve(DATA_FILE));
+            throw new UserInputException("no " + SIDECAR_FILE + " in " + dir + (dataOnly
+                    ? " beside its " + DATA_FILE + " (an interrupted precompute?); run the precompute into it again"
+                    : ": not a precomputed term folder (make one with ./diffract precompute ... -o " + dir + ")"));
         }
+        return read(dir, sidecar);
+    }
+
+    /** The terms of {@code dir} as {@code sidecar} (read before) describes them, verified against it. */
+    public static TaylorTerms read(Path dir, TermSidecar sidecar) {
         TermSidecar.Patch patch = sidecar.patch();
-        int texels = patch.rows() * patch.cols();
+        return new TaylorTerms(patch.rows(), patch.cols(), patch.pixelSizeXUm(), patch.pixelSizeYUm(),
+                patch.maxAbsHeightUm(), readData(dir, sidecar, true));
+    }
+
+    /** A line that says how to repair a damaged folder: run the precompute that made it again. */
+    public static String repairHint(Path dir, TermSidecar sidecar) {
+        String what = sidecar != null && sidecar.patch() != null && sidecar.patch().source() != null
+                ? " (patch " + sidecar.patch().source() + ", N = " + sidecar.highestOrder() + ")" : "";
+        return "run the precompute that made it again" + what + " with -o " + dir + ": it repairs the folder";
+    }
+
+    private static float[][] readData(Path dir, TermSidecar sidecar, boolean keep) {
+        TermSidecar.Patch patch = sidecar.patch();
+        long texels = (long) patch.rows() * patch.cols();
         long expected = 8L * texels * sidecar.termCount();
-        if (sidecar.data().bytes() != expected) {
-            throw new UserInputException(dir.resolve(SIDECAR_FILE) + " is inconsistent: " + sidecar.data().bytes()
+        if (sidecar.data().bytes() != expected || 2 * texels > Integer.MAX_VALUE - 8) {
+            throw new Damaged(dir.resolve(SIDECAR_FILE) + " is inconsistent: " + sidecar.data().bytes()
                     + " bytes for " + sidecar.termCount() + " terms of " + patch.rows() + "x" + patch.cols()
-                    + " (expected " + expected + "); precompute again");
+                    + " (expected " + expected + ")");
         }
-        Path dataFile = dir.resolve(sidecar.data().file());
-        float[][] terms = new float[sidecar.termCount()][2 * texels];
+        Path dataFile = dir.resolve(DATA_FILE);
+        float[][] terms = keep ? new float[sidecar.termCount()][(int) (2 * texels)] : null;
         MessageDigest digest = sha256();
         try (InputStream in = new DigestInputStream(new java.io.BufferedInputStream(Files.newInputStream(dataFile), 1 << 20), digest)) {
-            byte[] bytes = new byte[8 * texels];
-            for (float[] term : terms) {
+            byte[] bytes = new byte[(int) (8 * texels)];
+            for (int n = 0; n < sidecar.termCount(); n++) {
                 int read = in.readNBytes(bytes, 0, bytes.length);
                 if (read != bytes.length) {
-                    throw new UserInputException(dataFile + " is truncated (" + Files.size(dataFile) + " of "
-                            + expected + " bytes); precompute again");
+                    throw new Damaged(dataFile + " is truncated (" + Files.size(dataFile) + " of " + expected
+                            + " bytes)");
                 }
-                ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).asFloatBuffer().get(term);
+                if (keep) {
+                    ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).asFloatBuffer().get(terms[n]);
+                }
             }
             if (in.read() != -1) {
-                throw new UserInputException(dataFile + " is longer than its sidecar says; precompute again");
+                throw new Damaged(dataFile + " is longer than its sidecar says");
             }
         } catch (NoSuchFileException e) {
-            throw new UserInputException("missing " + dataFile + " next to its sidecar; precompute again", e);
+            throw new Damaged("missing " + dataFile + " next to its sidecar", e);
         } catch (IOException e) {
-            throw new UserInputException("cannot read " + dataFile + ": " + e.getMessage(), e);
+            throw new Damaged("cannot read " + dataFile + ": " + e.getMessage(), e);
         }
         String sha = HexFormat.of().formatHex(digest.digest());
         if (!sha.equals(sidecar.data().sha256())) {
-            throw new UserInputException(dataFile + " fails its checksum (corrupt or modified); delete "
-                    + dir + " and precompute again");
+            throw new Damaged(dataFile + " fails its checksum (corrupt or modified)");
         }
-        return new TaylorTerms(patch.rows(), patch.cols(), patch.pixelSizeXUm(), patch.pixelSizeYUm(),
-                patch.maxAbsHeightUm(), terms);
+        return terms;
+    }
+
+    private static String firstLine(String text) {
+        return text == null ? "" : text.lines().findFirst().orElse("");
     }
 
     private static Path tempSibling(Path file) {

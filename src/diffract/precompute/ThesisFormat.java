@@ -10,7 +10,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 /**
- * The thesis' Octave precompute format (issue #7), so that data precomputed by the original script renders
+ * The thesis' Octave precompute format, so that data precomputed by the original script renders
  * unchanged and our terms can feed the original shader. A folder holds
  * <ul>
  *   <li>{@code AmpReIm<n>.txt}, n = 0..N (binary despite the name): big-endian int32 width W (columns), int32

@@ -5,7 +5,7 @@ package diffract.precompute;
  * ({@link diffract.optics.TaylorTerms}: texel (r, c) holds frequency index (m_x, m_y) = (c - floor(C/2),
  * r - floor(R/2)) of {@code ifft2((i h)^n)}, for an R x C field h).
  *
- * <p>The script (issue #7) rotates the R x C height field by -90 degrees before the transform and each output
+ * <p>The script rotates the R x C height field by -90 degrees before the transform and each output
  * channel by +90 degrees after it, in Octave's sense: {@code rot90(A, -1)} (clockwise) and {@code rot90(A, 1)}
  * (counter-clockwise). With 0-based indices:
  * <pre>

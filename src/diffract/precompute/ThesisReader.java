@@ -1,6 +1,8 @@
 package diffract.precompute;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorTerms;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -227,9 +229,9 @@ final class ThesisReader {
                     + "from term 1 is %.4g um, %.4g mm in metres)", dir, rms, rms, rms * 1e3));
             return ThesisFormat.HeightUnit.MICROMETRES;
         }
-        throw new UserInputException(String.format(Locale.ROOT, "%s: cannot tell the heights' unit (RMS height "
-                + "%.4g from term 1: %.4g um in metres, %.4g nm in micrometres); pass --height-unit m or um",
-                dir, rms, rms * 1e6, rms * 1e3));
+        throw new InvalidSettingException(Quantity.TERMS_HEIGHT_UNIT, String.format(Locale.ROOT, "%s: cannot tell "
+                + "the heights' unit (RMS height %.4g from term 1: %.4g um in metres, %.4g nm in micrometres); "
+                + "give the height unit, m or um", dir, rms, rms * 1e6, rms * 1e3));
     }
 
     /** Scales term n from (file unit)^n to um^n in place; true when every value is zero. */
@@ -241,8 +243,8 @@ final class ThesisReader {
                 allZero = false;
                 image[i] *= factor;
                 if (!Double.isFinite(image[i])) {
-                    throw new UserInputException("term " + n + " overflows in micrometres^" + n
-                            + "; read fewer terms or pass --height-unit um");
+                    throw new InvalidSettingException(Quantity.TERMS_HEIGHT_UNIT, "term " + n
+                            + " overflows in micrometres^" + n + "; read fewer terms or give the height unit um");
                 }
             }
         }

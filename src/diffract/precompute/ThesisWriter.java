@@ -2,7 +2,7 @@ package diffract.precompute;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
-import diffract.optics.BrdfSettings;
+import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorTerms;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
@@ -111,7 +111,7 @@ final class ThesisWriter {
      * </ol>
      */
     static String parameters(TaylorTerms terms, String source) {
-        long[] numbers = {Math.round(BrdfSettings.LAMBDA_MIN_NM), Math.round(BrdfSettings.LAMBDA_MAX_NM),
+        long[] numbers = {Math.round(SpectralSettings.LAMBDA_MIN_NM), Math.round(SpectralSettings.LAMBDA_MAX_NM),
                 terms.highestOrder(), terms.cols(), terms.rows(), LAMBDA_STEP_NM,
                 Math.round(terms.pixelSizeXUm() * 1e3)};
         StringBuilder out = new StringBuilder();

@@ -2,7 +2,6 @@ package diffract.render;
 
 import diffract.jrtr.Camera;
 import diffract.jrtr.FloatTexture3D;
-import diffract.jrtr.FloatTextureArray;
 import diffract.jrtr.Frustum;
 import diffract.jrtr.Group;
 import diffract.jrtr.Material;
@@ -12,15 +11,16 @@ import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.OpticsOptions;
 import diffract.optics.TaylorTerms;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
+import diffract.util.UserInputException;
 
 import java.util.Locale;
 
 /**
- * The BAKED variant's table (issue #5): the spectral integral of FLSS, XYZ(u, v, w) before the gain factor and
+ * The BAKED variant's table: the spectral integral of FLSS, XYZ(u, v, w) before the gain factor and
  * shadowing, at the samples of a {@link BakedGrid}, baked on the GPU by {@code baked.frag} compiled with
  * {@code BAKE} (the FLSS shader code, per table sample, one w slice per frame, read back as float32) and looked
  * up trilinearly per fragment. The host keeps the float32 values (to upload into any GL context); the GPU holds
@@ -59,32 +59,36 @@ public final class BakedTable {
      */
     public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, FloatTexture3D.Precision precision,
                                   Reporter reporter) {
-        return bake(terms, settings, null, precision, reporter);
+        return bake(terms, settings, false, precision, reporter);
     }
 
     /**
-     * As above; with {@code filtering} (not null) the lobes method is baked instead: each sample is the average of
-     * the spectral XYZ over its cell of the table (a box of 4 / (n - 1) in u and v) and over the light (isotropic,
-     * sigma_a; the table does not know omega_i), and the table is mip-mapped for lookups that average over a pixel's
+     * As above; with {@code lobes} the lobes method is baked instead: each sample is the average of the spectral XYZ
+     * over its cell of the table (a box of 4 / (n - 1) in u and v) and over the settings' light (isotropic, sigma_a;
+     * the table does not know omega_i), and the table is mip-mapped for lookups that average over a pixel's
      * footprint (docs/filtering.md, section 8).
      */
-    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, OpticsOptions filtering,
+    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, boolean lobes,
                                   FloatTexture3D.Precision precision, Reporter reporter) {
         long start = System.nanoTime();
         BakedGrid grid = BakedGrid.of(settings, terms.maxAbsHeightUm());
         Material material;
-        if (filtering == null) {
-            BrdfSettings flss = settings.withVariant(Variant.FLSS);
-            DiffractionTextures textures = DiffractionTextures.of(terms, flss, FloatTextureArray.Precision.FLOAT32);
-            material = DiffractionMaterials.bake(textures, flss, grid);
+        if (!lobes) {
+            BrdfSettings flss = settings.with(b -> b.variant(Variant.FLSS).termFormat(TermFormat.RG32F));
+            material = DiffractionMaterials.bake(DiffractionTextures.of(terms, flss), flss, grid);
         } else {
-            BrdfSettings lobes = settings.withVariant(Variant.LOBES);
-            DiffractionTextures textures = DiffractionTextures.of(terms, lobes, FloatTextureArray.Precision.FLOAT32);
-            material = DiffractionMaterials.bakeLobes(textures, lobes, grid, filtering);
+            BrdfSettings lobesSettings = settings.with(b -> b.variant(Variant.LOBES).termFormat(TermFormat.RG32F));
+            material = DiffractionMaterials.bakeLobes(DiffractionTextures.of(terms, lobesSettings), lobesSettings, grid);
         }
         int n = grid.uvSamples();
-        float[] rgb = new float[Math.multiplyExact(3, Math.toIntExact(grid.texels()))];
+        if (3 * grid.texels() > Integer.MAX_VALUE - 8) {
+            throw new UserInputException(String.format(Locale.ROOT, "a %d x %d x %d baked table holds more samples than"
+                    + " one array can (2^31 floats); use fewer samples", n, n, grid.wSamples()));
+        }
+        float[] rgb = new float[(int) (3 * grid.texels())];
         ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
+        String task = String.format(Locale.ROOT, "baking the %d x %d x %d table", n, n, grid.wSamples());
+        reporter.progress(task, 0);
         try (OffscreenTarget target = new OffscreenTarget(new Renderer(new Group("bake").add(quad), new Camera(),
                 new Frustum()))) {
             for (int k = 0; k < grid.wSamples(); k++) {
@@ -100,11 +104,11 @@ public final class BakedTable {
                         rgb[to + 2] = rgba[from + 2];
                     }
                 }
-                reporter.progress("baking", (k + 1.0) / grid.wSamples());
+                reporter.progress(task, (k + 1.0) / grid.wSamples());
             }
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
-        BakedTable table = new BakedTable(grid, rgb, precision, seconds, filtering != null);
+        BakedTable table = new BakedTable(grid, rgb, precision, seconds, lobes);
         reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
         return table;
     }

@@ -5,11 +5,11 @@ import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.FresnelModel;
-import diffract.optics.OpticsOptions;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentres;
+import diffract.optics.Quantity;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
-import diffract.util.UserInputException;
 
 import java.util.Locale;
 import java.util.Map;
@@ -37,19 +37,19 @@ public final class DiffractionShaders {
         SURFACE
     }
 
-    /** One line for the CLI and the API when the exact reference is asked of the GPU. */
+    /** Why the exact reference cannot be asked of the GPU. */
     public static final String REFERENCE_IS_CPU_ONLY =
-            "the reference variant runs on the CPU only (--engine cpu); the GPU renders flss, nmm, pq, baked and lobes";
+            "the reference variant runs on the CPU only; the GPU renders flss, nmm, pq, baked and lobes";
 
     private DiffractionShaders() {
     }
 
     /** The variant's fragment shader under {@code /shaders}; the reference has none. */
     public static String fragmentPath(Variant variant) {
-        if (variant == Variant.REFERENCE) {
-            throw new UserInputException(REFERENCE_IS_CPU_ONLY);
+        if (!variant.runsOnGpu()) {
+            throw new InvalidSettingException(Quantity.VARIANT, REFERENCE_IS_CPU_ONLY);
         }
-        return "diffraction/" + variant.cliName() + ".frag";
+        return "diffraction/" + variant.label() + ".frag";
     }
 
     public static String vertexPath(Target target) {
@@ -58,16 +58,18 @@ public final class DiffractionShaders {
 
     /**
      * The compile-time constants: Taylor order, window radius, NMM node budget, the XYZ to linear sRGB matrix,
-     * the target and the optional switches.
+     * the target, the Fresnel model ({@code FRESNEL_THESIS} for the thesis' squared factor) and the optional
+     * switches.
      */
     public static Map<String, String> defines(BrdfSettings settings, Target target, boolean monochromatic,
                                               boolean pigmentation) {
-        if (settings.automaticWindowRadius()) {
+        if (settings.window().automatic()) {
             throw new IllegalArgumentException("an automatic window radius needs the patch: use defines(settings, "
                     + "highestOrder, radii, ...)");
         }
-        return defines(settings, settings.highestOrder(),
-                new WindowRadii(settings.windowRadius(), settings.windowRadius()), target, monochromatic, pigmentation);
+        int r = settings.window().radius();
+        return defines(settings, settings.taylor().highestOrder(), new WindowRadii(r, r), target, monochromatic,
+                pigmentation);
     }
 
     /**
@@ -81,7 +83,7 @@ public final class DiffractionShaders {
 
     /**
      * As above; with {@code phaseCentres} (not null) the shader expands around the nearest phase centre
-     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}, issue #6) and {@code highestOrder} is the centres' order.
+     * ({@code PHASE_CENTRED}, {@code taylor_centred.glsl}) and {@code highestOrder} is the centres' order.
      */
     public static Map<String, String> defines(BrdfSettings settings, int highestOrder, WindowRadii radii,
                                               PhaseCentres phaseCentres, Target target, boolean monochromatic,
@@ -97,6 +99,9 @@ public final class DiffractionShaders {
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
+        if (settings.illumination().fresnel() == FresnelModel.THESIS) {
+            defines.put("FRESNEL_THESIS", "1");
+        }
         if (monochromatic) {
             if (target != Target.BRDF_MAP) {
                 throw new IllegalArgumentException("monochromatic output exists for BRDF maps only");
@@ -121,35 +126,36 @@ public final class DiffractionShaders {
 
     /**
      * The program for the order, radii and expansion of these textures (what DiffractionMaterials uses): plain, or
-     * phase-centred when the textures hold phase-centred terms; the physical Fresnel factor.
+     * phase-centred when the textures hold phase-centred terms.
      */
     public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, Target target,
                                         boolean monochromatic, boolean pigmentation) {
-        return program(settings, textures, OpticsOptions.POINT_SAMPLED, target, monochromatic, pigmentation);
-    }
-
-    /** As above with the optics options (the Fresnel model is a define). */
-    public static ShaderProgram program(BrdfSettings settings, DiffractionTextures textures, OpticsOptions options,
-                                        Target target, boolean monochromatic, boolean pigmentation) {
         return ShaderProgram.fromClasspath(vertexPath(target), fragmentPath(settings.variant()),
-                definesFor(settings, textures, options, target, monochromatic, pigmentation));
+                definesFor(settings, textures, target, monochromatic, pigmentation));
     }
 
     /**
-     * Defines for these textures: their order, radii, expansion, for 8-bit terms {@code TERMS_UNORM8}, and
-     * {@code FRESNEL_THESIS} for the thesis' squared Fresnel factor.
+     * The surface program on a {@link Stage}: the same BRDF, evaluated per fragment in each scale's frame for the key
+     * and environment lights, tone mapped ({@code surface_stage.glsl}, switched on by the stage's defines).
      */
-    private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures,
-                                                  OpticsOptions options, Target target, boolean monochromatic,
-                                                  boolean pigmentation) {
+    public static ShaderProgram stagedSurfaceProgram(BrdfSettings settings, DiffractionTextures textures,
+                                                     boolean pigmentation, Stage stage) {
+        Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);
+        defines.putAll(stage.defines());
+        return ShaderProgram.fromClasspath(vertexPath(Target.SURFACE), fragmentPath(settings.variant()), defines);
+    }
+
+    /**
+     * Defines for these textures: their order, radii, expansion, for 8-bit terms {@code TERMS_UNORM8}, and for a
+     * baked table of the lobes method {@code BAKED_FILTERED}.
+     */
+    private static Map<String, String> definesFor(BrdfSettings settings, DiffractionTextures textures, Target target,
+                                                  boolean monochromatic, boolean pigmentation) {
         Map<String, String> defines = defines(settings, textures.highestOrder(), textures.windowRadii(),
                 textures.phaseCentres(), target, monochromatic, pigmentation);
         if (textures.normalisedTerms()) {
             // the term lookup de-normalises 8-bit [0, 1] terms with the per-term extrema (NormalisedTerms)
             defines.put("TERMS_UNORM8", "1");
-        }
-        if (options.fresnel() == FresnelModel.THESIS) {
-            defines.put("FRESNEL_THESIS", "1");
         }
         if (textures.baked() != null && textures.baked().filtered()) {
             // the table holds cell- and light-averaged samples with mip levels: look up over the pixel's footprint
@@ -163,8 +169,7 @@ public final class DiffractionShaders {
      * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
      */
     public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(flssSettings, textures, OpticsOptions.POINT_SAMPLED, Target.BRDF_MAP, false,
-                false);
+        Map<String, String> defines = definesFor(flssSettings, textures, Target.BRDF_MAP, false, false);
         defines.put("BAKE", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
     }
@@ -174,8 +179,7 @@ public final class DiffractionShaders {
      * sample's cell and the light.
      */
     public static ShaderProgram bakeLobesProgram(BrdfSettings lobesSettings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(lobesSettings, textures, OpticsOptions.POINT_SAMPLED, Target.BRDF_MAP, false,
-                false);
+        Map<String, String> defines = definesFor(lobesSettings, textures, Target.BRDF_MAP, false, false);
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
     }
 
@@ -184,13 +188,7 @@ public final class DiffractionShaders {
      * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
      */
     public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures) {
-        return displayBrdfMapProgram(settings, textures, OpticsOptions.POINT_SAMPLED);
-    }
-
-    /** As above with the optics options. */
-    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures,
-                                                      OpticsOptions options) {
-        Map<String, String> defines = definesFor(settings, textures, options, Target.BRDF_MAP, false, false);
+        Map<String, String> defines = definesFor(settings, textures, Target.BRDF_MAP, false, false);
         defines.put("DISPLAY_SRGB", "1");
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }

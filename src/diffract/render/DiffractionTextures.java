@@ -9,14 +9,17 @@ import diffract.jrtr.FloatTexture1D;
 import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
-import diffract.optics.OpticsOptions;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
+import diffract.optics.Quantity;
+import diffract.optics.SpectralSettings;
+import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
 import diffract.util.Reporter;
-import diffract.util.UserInputException;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -35,10 +38,14 @@ import java.util.List;
  *       for NMM's arbitrary wavelengths (interpolated linearly in the shader; the CPU interpolates S and the CMF
  *       separately and multiplies, which differs by less than 1e-4 relative at 1 nm spacing);</li>
  *   <li>{@code bakedXyz} (BAKED only): the FLSS table XYZ(u, v, w) of {@link BakedTable}, baked once per patch and
- *       settings ({@link BakedTables}).</li>
+ *       settings ({@link BakedTables}), or {@code bakedLayers}, the mip-mapped table of the lobes method when the
+ *       illumination filters;</li>
+ *   <li>{@code lobeSpectralTable} (LOBES only, made on first use): the hat-filtered spectral weights of
+ *       {@link HatFilteredSpectrum}.</li>
  * </ul>
  *
- * <p>Only what the settings need goes to the GPU (issue #5): with a Taylor tolerance only the terms up to
+ * <p>The terms are stored in the settings' {@link TermFormat}. Only what the settings need goes to the GPU: with a
+ * Taylor tolerance only the terms up to
  * {@link BrdfSettings#highestOrderNeeded} (no fragment's loop reaches further), and only the uniform-grid nodes
  * where D65 x CMF is not zero in all three channels (they would add 0 x |P|^2).
  */
@@ -77,31 +84,25 @@ public final class DiffractionTextures {
         this.phaseCentres = phaseCentres;
     }
 
-    /**
-     * Terms 0..settings.highestOrder() (which the terms must hold) and the tables for the settings' wavelengths.
-     * The lobes method reads the terms too, and {@link #lobeSpectralTable}.
-     */
-    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        return of(terms, settings, precision, Reporter.SILENT);
+    /** The textures of the path {@link TaylorEvaluation#choose} picked: the thesis' terms or the phase-centred ones. */
+    public static DiffractionTextures of(TaylorEvaluation evaluation, BrdfSettings settings, Reporter reporter) {
+        return evaluation.isPhaseCentred() ? ofPhaseCentred(evaluation.centredTerms(), settings)
+                : of(evaluation.plainTerms(), settings, reporter);
+    }
+
+    /** Terms 0..N (which the terms must hold) and the tables for the settings' wavelengths. */
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings) {
+        return of(terms, settings, Reporter.SILENT);
     }
 
     /** As above; a BAKED table that is not cached yet is baked first, with progress on {@code reporter}. */
-    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision,
-                                         Reporter reporter) {
-        return of(terms, settings, null, precision, reporter);
-    }
-
-    /**
-     * As above; a BAKED table bakes the lobes method, cell- and light-averaged, when the options filter
-     * ({@link BakedTables#of(TaylorTerms, BrdfSettings, OpticsOptions, Reporter)}).
-     */
-    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, OpticsOptions options,
-                                         FloatTextureArray.Precision precision, Reporter reporter) {
-        if (settings.highestOrder() > terms.highestOrder()) {
-            throw new IllegalArgumentException("Taylor order " + settings.highestOrder() + " requested, the terms hold 0.."
-                    + terms.highestOrder());
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        if (settings.taylor().highestOrder() > terms.highestOrder()) {
+            throw new IllegalArgumentException("Taylor order " + settings.taylor().highestOrder()
+                    + " requested, the terms hold 0.." + terms.highestOrder());
         }
         int highestOrder = settings.highestOrderNeeded(terms.maxAbsHeightUm());
+        FloatTextureArray.Precision precision = TermFormats.precision(settings.gpu().termFormat());
         boolean normalised = precision == FloatTextureArray.Precision.UNORM8;
         List<float[]> layers = new ArrayList<>();
         if (normalised) {
@@ -112,27 +113,26 @@ public final class DiffractionTextures {
             }
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
-        BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, options, reporter)
-                : null;
+        BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
         return new DiffractionTextures(termTexture, normalised ? NormalisedTerms.extremaTable(terms, highestOrder) : null,
-                buildUniformNodeTable(settings), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
+                buildUniformNodeTable(settings.spectral()), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
                 baked, null);
     }
 
     /**
-     * The phase-centred expansion (issue #6): every centre's terms E_{j,n} in layer j * (N_c + 1) + n
+     * The phase-centred expansion: every centre's terms E_{j,n} in layer j * (N_c + 1) + n
      * ({@link PhaseCentredTerms#layers()}, read by {@code taylor_centred.glsl}); the settings' Taylor order does not
      * apply, the centres fix theirs.
      */
-    public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings,
-                                                     FloatTextureArray.Precision precision) {
-        if (precision == FloatTextureArray.Precision.UNORM8) {
-            throw new UserInputException("8-bit terms (rg8) hold the thesis' series around 0 only; this patch needs "
-                    + "the phase-centred expansion: use --texture-format rg32f or rg16f");
+    public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings) {
+        if (settings.gpu().termFormat() == TermFormat.RG8) {
+            throw new InvalidSettingException(Quantity.TERM_FORMAT, "8-bit terms (rg8) hold the thesis' series around"
+                    + " 0 only; this patch needs the phase-centred expansion: store the terms as rg32f or rg16f");
         }
+        FloatTextureArray.Precision precision = TermFormats.precision(settings.gpu().termFormat());
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
-        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings), buildSpectralTable(),
+        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()), buildSpectralTable(),
                 Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null, terms.centres());
     }
 
@@ -140,8 +140,13 @@ public final class DiffractionTextures {
      * (wx, wy, wz, lambda) per node of WavelengthSampling.uniform(min, max, step), leaving out the nodes whose
      * three weights are all 0 (outside the CMF or D65 tables): the shader's loop runs over the rest only.
      */
-    static FloatTexture1D buildUniformNodeTable(BrdfSettings settings) {
-        double[] nodes = Trapezoid.uniformNodes(settings.lambdaMinNm(), settings.lambdaMaxNm(), settings.lambdaStepNm());
+    static FloatTexture1D buildUniformNodeTable(SpectralSettings spectral) {
+        return buildUniformNodeTable(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.lambdaStepNm());
+    }
+
+    /** As above for any grid (wavelengths outside the colour tables included). */
+    static FloatTexture1D buildUniformNodeTable(double lambdaMinNm, double lambdaMaxNm, double lambdaStepNm) {
+        double[] nodes = Trapezoid.uniformNodes(lambdaMinNm, lambdaMaxNm, lambdaStepNm);
         double[][] weights = SpectralIntegrator.xyzWeights(nodes, Trapezoid.weights(nodes));
         float[] rgba = new float[4 * nodes.length];
         int kept = 0;
@@ -156,8 +161,8 @@ public final class DiffractionTextures {
             kept++;
         }
         if (kept == 0) {
-            throw new diffract.util.UserInputException("no wavelength in " + settings.lambdaMinNm() + ".."
-                    + settings.lambdaMaxNm() + " nm has a non-zero CIE 1931 x D65 weight");
+            throw new InvalidSettingException(Quantity.LAMBDA_MIN, "no wavelength in " + lambdaMinNm + ".."
+                    + lambdaMaxNm + " nm has a non-zero CIE 1931 x D65 weight");
         }
         return new FloatTexture1D(java.util.Arrays.copyOf(rgba, 4 * kept));
     }
@@ -207,17 +212,17 @@ public final class DiffractionTextures {
      * The lobes method's spectral weights ({@link HatFilteredSpectrum}) for the settings' band, made on first use:
      * one 1-D RGBA32F texture, level-major.
      */
-    public synchronized FloatTexture1D lobeSpectralTable(BrdfSettings settings) {
+    public synchronized FloatTexture1D lobeSpectralTable(SpectralSettings spectral) {
         if (lobeSpectralTable == null) {
-            lobeSpectrum = new HatFilteredSpectrum(settings.lambdaMinNm(), settings.lambdaMaxNm());
+            lobeSpectrum = new HatFilteredSpectrum(spectral.lambdaMinNm(), spectral.lambdaMaxNm());
             lobeSpectralTable = new FloatTexture1D(lobeSpectrum.rgba());
         }
         return lobeSpectralTable;
     }
 
     /** Entries per level of {@link #lobeSpectralTable}. */
-    public synchronized int lobeSpectralTablePositions(BrdfSettings settings) {
-        lobeSpectralTable(settings);
+    public synchronized int lobeSpectralTablePositions(SpectralSettings spectral) {
+        lobeSpectralTable(spectral);
         return lobeSpectrum.positions();
     }
 

@@ -1,7 +1,6 @@
 package diffract.render;
 
 import diffract.jrtr.Camera;
-import diffract.jrtr.FloatTextureArray;
 import diffract.jrtr.Frustum;
 import diffract.jrtr.GLInfo;
 import diffract.jrtr.Group;
@@ -11,16 +10,16 @@ import diffract.jrtr.Renderer;
 import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
-import diffract.optics.OpticsOptions;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentredTerms;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
-
-import java.util.function.Supplier;
 
 /**
  * BRDF maps on the GPU, with the pixel convention of {@link diffract.optics.BrdfMap}: pixel (i, j) of an S x S map
@@ -31,7 +30,6 @@ import java.util.function.Supplier;
  */
 public final class GpuBrdfMap implements AutoCloseable {
     private final BrdfSettings settings;
-    private final OpticsOptions options;
     private final DiffractionTextures textures;
     private final ShapeNode quad;
     private final OffscreenTarget target;
@@ -39,66 +37,44 @@ public final class GpuBrdfMap implements AutoCloseable {
     private Material monochromaticMaterial;
 
     /**
-     * @param terms     the precomputed float32 Taylor terms (at least settings.highestOrder())
-     * @param precision how the terms are stored on the GPU (FLOAT32 = bit-exact)
+     * The map of the thesis' series over these terms, stored in the settings' term format.
+     *
+     * @param terms the precomputed float32 Taylor terms (at least N)
      * @throws UserInputException for the reference variant, or when no GL context can be opened
      */
-    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(terms, settings, OpticsOptions.POINT_SAMPLED, precision);
+    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings) {
+        this(TaylorEvaluation.plain(terms), settings, Reporter.SILENT);
+    }
+
+    /** The phase-centred expansion: the same maps for patches too tall for the thesis' series. */
+    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings) {
+        this(TaylorEvaluation.phaseCentred(terms), settings, Reporter.SILENT);
     }
 
     /**
-     * As above with the optics options (Fresnel model; the lobes method's pixel filter and light; a BAKED table of
-     * the lobes method when they filter). The constructors without options point-sample.
+     * The map on the path {@link TaylorEvaluation#choose} picked for a patch; a baked table not cached yet is baked
+     * first, with progress on {@code reporter}.
      */
-    public GpuBrdfMap(TaylorTerms terms, BrdfSettings settings, OpticsOptions options,
-                      FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, options, () -> DiffractionTextures.of(terms, settings, options, precision,
-                Reporter.SILENT)), settings, options);
+    public GpuBrdfMap(TaylorEvaluation evaluation, BrdfSettings settings, Reporter reporter) {
+        this(DiffractionTextures.of(evaluation, requireGpuVariant(settings), reporter), settings);
     }
 
-    /** The phase-centred expansion (issue #6): the same maps for patches too tall for the thesis' series. */
-    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        this(terms, settings, OpticsOptions.POINT_SAMPLED, precision);
-    }
-
-    /** As above with the optics options. */
-    public GpuBrdfMap(PhaseCentredTerms terms, BrdfSettings settings, OpticsOptions options,
-                      FloatTextureArray.Precision precision) {
-        this(checkVariant(settings, options, () -> DiffractionTextures.ofPhaseCentred(terms, settings, precision)),
-                settings, options);
-    }
-
-    /** The map of a scene on the path {@link TaylorEvaluation#choose} picked for it. */
-    public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, FloatTextureArray.Precision precision) {
-        return of(evaluation, settings, OpticsOptions.POINT_SAMPLED, precision);
-    }
-
-    /** As above with the optics options. */
-    public static GpuBrdfMap of(TaylorEvaluation evaluation, BrdfSettings settings, OpticsOptions options,
-                                FloatTextureArray.Precision precision) {
-        return evaluation.isPhaseCentred() ? new GpuBrdfMap(evaluation.centredTerms(), settings, options, precision)
-                : new GpuBrdfMap(evaluation.plainTerms(), settings, options, precision);
-    }
-
-    private static DiffractionTextures checkVariant(BrdfSettings settings, OpticsOptions options,
-                                                   Supplier<DiffractionTextures> textures) {
-        if (settings.variant() == Variant.REFERENCE) {
-            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+    private static BrdfSettings requireGpuVariant(BrdfSettings settings) {
+        if (!settings.variant().runsOnGpu()) {
+            throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
-        if (settings.variant() != Variant.LOBES && settings.variant() != Variant.BAKED && !options.light().isPoint()) {
-            throw new UserInputException(settings.variant().cliName() + " samples the light at its centre only: for a "
-                    + "light of " + options.light().angularDiameterDeg() + " degrees use --variant lobes (or "
-                    + "--light-size-deg 0)");
+        Variant v = settings.variant();
+        if (v != Variant.LOBES && v != Variant.BAKED && !settings.illumination().light().isPoint()) {
+            throw new InvalidSettingException(Quantity.LIGHT_SIZE,
+                    DiffractionBrdf.lightNeedsFiltering(v, settings.illumination().light()));
         }
-        return textures.get();
+        return settings;
     }
 
-    private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings, OpticsOptions options) {
+    private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings) {
         this.settings = settings;
-        this.options = options;
         this.textures = textures;
-        this.xyzMaterial = DiffractionMaterials.brdfMap(textures, settings, options, false);
+        this.xyzMaterial = DiffractionMaterials.brdfMap(textures, settings, false);
         this.quad = new ShapeNode(Shapes.fullScreenQuad(), xyzMaterial);
         this.target = new OffscreenTarget(new Renderer(new Group("brdf map").add(quad), new Camera(), new Frustum()));
     }
@@ -152,13 +128,13 @@ public final class GpuBrdfMap implements AutoCloseable {
     /** The baked table holds colour (XYZ), not the BRDF at one wavelength. */
     private void requireSpectral() {
         if (settings.variant() == Variant.BAKED) {
-            throw new UserInputException(BAKED_HAS_NO_MONOCHROMATIC);
+            throw new InvalidSettingException(Quantity.MONOCHROMATIC_LAMBDA, BAKED_HAS_NO_MONOCHROMATIC);
         }
     }
 
-    /** One line for the CLI when a monochromatic map of the baked variant is asked. */
+    /** Why a monochromatic map of the baked variant cannot be made. */
     public static final String BAKED_HAS_NO_MONOCHROMATIC =
-            "the baked variant tabulates colour (XYZ), not single wavelengths: use flss with --lambda";
+            "the baked variant tabulates colour (XYZ), not single wavelengths: use flss for a monochromatic map";
 
     /** The GL driver's version and renderer strings. */
     public GLInfo info() {
@@ -167,7 +143,7 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     private void useMonochromatic(Direction wi, double lambdaNm, int size) {
         if (monochromaticMaterial == null) {
-            monochromaticMaterial = DiffractionMaterials.brdfMap(textures, settings, options, true);
+            monochromaticMaterial = DiffractionMaterials.brdfMap(textures, settings, true);
         }
         use(monochromaticMaterial, wi, size);
         monochromaticMaterial.setFloat("lambdaNm", (float) lambdaNm);
@@ -177,7 +153,8 @@ public final class GpuBrdfMap implements AutoCloseable {
         if (size < 1) {
             throw new IllegalArgumentException("map size must be >= 1, got " + size);
         }
-        DiffractionMaterials.setLight(material, wi, options).setFloat("mapSizePx", size);
+        // the whole viewport is the map (a window centres a smaller one)
+        DiffractionMaterials.setLight(material, wi, settings).setFloat("mapSizePx", size).setVec2("mapOriginPx", 0, 0);
         quad.setMaterial(material);
     }
 

@@ -1,6 +1,5 @@
 package diffract.scene;
 
-import diffract.viewer.OrbitCamera;
 
 import java.util.Locale;
 

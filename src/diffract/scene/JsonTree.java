@@ -56,14 +56,17 @@ final class JsonTree {
     }
 
     static Located parse(String text) throws SyntaxError {
+        // Jackson's own limit one level above ours: our check names the line and the limit in the scene's words
         JsonFactory factory = JsonFactory.builder()
-                .streamReadConstraints(StreamReadConstraints.builder().maxNestingDepth(MAX_DEPTH).build()).build();
-        try (JsonParser parser = factory.createParser(text)) {
+                .streamReadConstraints(StreamReadConstraints.builder().maxNestingDepth(MAX_DEPTH + 1).build()).build();
+        JsonParser parser = null;
+        try {
+            parser = factory.createParser(text);
             JsonToken first = parser.nextToken();
             if (first == null) {
                 throw new SyntaxError("the file is empty; a scene is a JSON object { ... }", 1);
             }
-            Located root = value(parser, first);
+            Located root = value(parser, first, 1);
             JsonToken after = parser.nextToken();
             if (after != null) {
                 throw new SyntaxError("more text after the end of the scene object", line(parser.currentLocation()));
@@ -74,12 +77,25 @@ final class JsonTree {
             throw new SyntaxError("malformed JSON: " + e.getOriginalMessage().split("\n")[0],
                     where == null ? 1 : line(where));
         } catch (IOException e) {
-            throw new SyntaxError("malformed JSON: " + e.getMessage().split("\n")[0], 1);
+            int line = parser == null ? 1 : line(parser.currentLocation());
+            throw new SyntaxError("malformed JSON: " + e.getMessage().split("\n")[0], line);
+        } finally {
+            if (parser != null) {
+                try {
+                    parser.close();
+                } catch (IOException ignored) {
+                    // a string parser holds nothing to release
+                }
+            }
         }
     }
 
-    private static Located value(JsonParser parser, JsonToken token) throws IOException, SyntaxError {
+    private static Located value(JsonParser parser, JsonToken token, int depth) throws IOException, SyntaxError {
         int line = line(parser.currentTokenLocation());
+        if (depth > MAX_DEPTH && (token == JsonToken.START_OBJECT || token == JsonToken.START_ARRAY)) {
+            throw new SyntaxError("objects and arrays nest more than " + MAX_DEPTH + " levels deep here (a scene"
+                    + " needs four at most); the file is not a scene", line);
+        }
         switch (token) {
             case START_OBJECT: {
                 Map<String, Located> members = new LinkedHashMap<>();
@@ -92,7 +108,7 @@ final class JsonTree {
                         throw new SyntaxError("key '" + key + "' appears twice in one object (first on line "
                                 + keyLines.get(key) + "); keep one", keyLine);
                     }
-                    Located member = value(parser, parser.nextToken());
+                    Located member = value(parser, parser.nextToken(), depth + 1);
                     // the key's line, not the value's: that is where a reader looks for the key
                     members.put(key, new Located(member.value(), keyLine));
                     keyLines.put(key, keyLine);
@@ -109,7 +125,7 @@ final class JsonTree {
                     if (next == null) {
                         throw new SyntaxError("malformed JSON: unexpected end of the array", line);
                     }
-                    items.add(value(parser, next));
+                    items.add(value(parser, next, depth + 1));
                 }
                 return new Located(items, line);
             }

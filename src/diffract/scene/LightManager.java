@@ -1,6 +1,5 @@
 package diffract.scene;
 
-import diffract.viewer.LightDirection;
 
 /**
  * The light's constants manager: the scene's direction towards the light becomes the viewer's

@@ -3,62 +3,64 @@ package diffract.scene;
 import diffract.geometry.PigmentationTexture;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.PatchCatalogue;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorBound;
+import diffract.optics.TaylorSettings;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.SamplingCheck;
-import diffract.precompute.Precomputation;
+import diffract.pipeline.DiffractionPipeline;
+import diffract.pipeline.NamedPatch;
 import diffract.util.Reporter;
-import diffract.util.UserInputException;
-import diffract.viewer.PigmentationImage;
-import diffract.viewer.TermSource;
 
 import java.awt.image.BufferedImage;
-import java.nio.file.Path;
 
 /**
  * The material's constants manager (the thesis' patch and shader constants): the height field (read or made by
- * code, mean-subtracted), the BRDF settings with N fixed (a tolerance is turned into N by the Lagrange bound, 001
- * sec. 3.3.3), the pigmentation image, and where Taylor terms come from: the user cache, computed with progress
- * on first use.
+ * code, mean-subtracted) and its {@link DiffractionPipeline} (terms from the user cache, computed with progress on
+ * first use), the BRDF settings with N fixed (a tolerance is turned into N by the Lagrange bound, 001 sec. 3.3.3),
+ * and the pigmentation image.
  */
 final class MaterialManager {
-    /** The procedural corn-snake pigmentation is the same every run (and the same as {@code --shape snake}). */
+    /** The procedural corn-snake pigmentation is the same every run. */
     static final long PIGMENT_SEED = 2014;
 
     private final Scene.MaterialSpec spec;
-    private final HeightField patch;
-    private final String patchName;
+    private final DiffractionPipeline pipeline;
     private final BrdfSettings settings;
 
     MaterialManager(Scene.MaterialSpec spec, Reporter reporter) {
         this.spec = spec;
+        NamedPatch patch;
         if (spec.patch() instanceof Scene.FilePatch file) {
-            patch = HeightFieldReader.load(file.file(), file.maxHeightUm(), file.pixelSizeUm(), reporter).meanSubtracted();
-            patchName = file.file().getFileName().toString();
+            HeightField field = HeightFieldReader.load(file.file(), file.maxHeightUm(), file.pixelSizeUm(), reporter);
+            patch = new NamedPatch(file.file().getFileName().toString(), field.meanSubtracted(), file.maxHeightUm());
         } else {
             Scene.ProceduralPatch procedural = (Scene.ProceduralPatch) spec.patch();
-            patch = procedural.spec().build().meanSubtracted();
-            patchName = procedural.spec().displayName();
+            boolean asCatalogued = procedural.spec().equals(PatchCatalogue.named(procedural.name()).spec());
+            patch = NamedPatch.of(asCatalogued ? procedural.name()
+                    : procedural.name() + "(" + procedural.spec().periodUm() + " um)", procedural.spec().build());
         }
-        int highestOrder = spec.taylorTerms() != null ? spec.taylorTerms()
-                : TaylorBound.termsForTolerance(TaylorBound.maxPhase(spec.lambdaMinNm(), patch.maxAbsHeightUm()),
-                spec.tolerance());
-        if (highestOrder > diffract.viewer.ViewerController.MAX_HIGHEST_ORDER) {
-            throw new UserInputException("material.tolerance " + spec.tolerance() + " needs N = " + highestOrder
-                    + " Taylor terms for this patch; the viewer draws at most "
-                    + diffract.viewer.ViewerController.MAX_HIGHEST_ORDER + ": use a larger tolerance");
+        BrdfSettings s = spec.settings();
+        if (spec.orderTolerance() != null) {
+            int n = TaylorBound.termsForTolerance(TaylorBound.maxPhase(s.spectral().lambdaMinNm(),
+                    patch.meanSubtracted().maxAbsHeightUm()), spec.orderTolerance());
+            if (n > TaylorSettings.MAX_HIGHEST_ORDER) {
+                throw new InvalidSettingException(Quantity.ORDER_TOLERANCE, "the tolerance " + spec.orderTolerance()
+                        + " needs N = " + n + " Taylor terms for this patch, above the limit "
+                        + TaylorSettings.MAX_HIGHEST_ORDER + ": use a larger tolerance");
+            }
+            s = s.with(b -> b.highestOrder(n));
         }
-        settings = new BrdfSettings(spec.variant(), highestOrder, spec.windowRadius(), spec.lambdaMinNm(),
-                spec.lambdaMaxNm(), spec.lambdaStepNm(), spec.sigmaSpatialUm(), spec.refractiveIndex(), 0);
-        SamplingCheck.warnAboutAliasing(patch, settings.lambdaMinNm(), settings.lambdaMaxNm(), reporter);
+        settings = s;
+        pipeline = DiffractionPipeline.cached(patch, settings.spectral().lambdaMinNm());
+        SamplingCheck.warnAboutAliasing(patch.meanSubtracted(), settings.spectral().lambdaMinNm(),
+                settings.spectral().lambdaMaxNm(), reporter);
     }
 
-    HeightField patch() {
-        return patch;
-    }
-
-    String patchName() {
-        return patchName;
+    DiffractionPipeline pipeline() {
+        return pipeline;
     }
 
     BrdfSettings settings() {
@@ -72,12 +74,5 @@ final class MaterialManager {
             return new PigmentationTexture(PigmentationTexture.Parameters.defaults(PIGMENT_SEED)).image(256, 2048);
         }
         return pigmentation.file() == null ? null : PigmentationImage.read(pigmentation.file());
-    }
-
-    /** Terms 0..n of the patch from the user cache, keyed by patch content and n; computed with progress if new. */
-    TermSource termSource() {
-        Double maxHeightUm = spec.patch() instanceof Scene.FilePatch file ? file.maxHeightUm() : null;
-        return (n, reporter) -> Precomputation.cached(new Precomputation.Request(patch, patchName, maxHeightUm, n, null,
-                settings.lambdaMinNm()), reporter);
     }
 }

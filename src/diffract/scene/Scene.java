@@ -1,10 +1,10 @@
 package diffract.scene;
 
 import diffract.geometry.SnakeMesh;
+import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
+import diffract.optics.BrdfSettings;
 import diffract.optics.ProceduralPatches;
-import diffract.optics.Variant;
-import diffract.viewer.DisplayMode;
 
 import java.nio.file.Path;
 
@@ -15,7 +15,11 @@ import java.nio.file.Path;
  * @param source the file it was read from (messages name it)
  */
 public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec light, ShapeSpec shape,
-                    MaterialSpec material, DisplayMode mode) {
+                    MaterialSpec material, DisplayMode mode, StageSpec stage) {
+    /** The same scene with another material. */
+    public Scene withMaterial(MaterialSpec m) {
+        return new Scene(source, image, camera, light, shape, m, mode, stage);
+    }
 
     /** Pixels of the rendered picture (the window's size for {@code view}). */
     public record ImageSize(int width, int height) {
@@ -48,10 +52,14 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     /**
      * @param file     the OBJ file (kind obj), else null
      * @param tangents where the patch's x axis on the surface comes from (obj, plane, sphere, cylinder)
-     * @param ridges   how the patch lies on the snake (kind snake)
+     * @param ridges    how the patch lies on the snake (kind snake)
+     * @param pose      the snake's pose (kind snake)
+     * @param scales    the scale lattice laid on the snake, or null for a smooth skin
+     * @param normalMap an OBJ shape's tangent-space normal map, or null
      */
     public record ShapeSpec(ShapeKind kind, Path file, TangentSource tangents, SnakeMesh.RidgeDirection ridges,
-                            Transform transform) {
+                            Transform transform, SnakeMesh.Pose pose, StageSpec.ScalesSpec scales,
+                            StageSpec.NormalMapSpec normalMap) {
     }
 
     /** A height field: a file, or a procedural patch. */
@@ -62,28 +70,52 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     public record FilePatch(Path file, Double maxHeightUm, Double pixelSizeUm) implements PatchSpec {
     }
 
-    /** A patch made by code. */
-    public record ProceduralPatch(ProceduralPatches.Spec spec) implements PatchSpec {
+    /**
+     * A patch made by code.
+     *
+     * @param name the catalogue name it starts from ({@link diffract.optics.PatchCatalogue})
+     */
+    public record ProceduralPatch(String name, ProceduralPatches.Spec spec) implements PatchSpec {
     }
 
-    /** The pigmentation image: none, the procedural corn-snake pattern, or an sRGB image file. */
-    public record PigmentationSpec(boolean procedural, Path file) {
+    /**
+     * The pigmentation image: none, the procedural corn-snake pattern, an sRGB image file, or a species' pattern
+     * painted on the snake's scales.
+     */
+    public record PigmentationSpec(boolean procedural, Path file, SnakeSpecies species) {
         public static PigmentationSpec none() {
-            return new PigmentationSpec(false, null);
+            return new PigmentationSpec(false, null, null);
+        }
+
+        public static PigmentationSpec proceduralPattern() {
+            return new PigmentationSpec(true, null, null);
+        }
+
+        public static PigmentationSpec imageFile(Path image) {
+            return new PigmentationSpec(false, image, null);
+        }
+
+        public static PigmentationSpec ofSpecies(SnakeSpecies s) {
+            return new PigmentationSpec(false, null, s);
         }
 
         public boolean present() {
-            return procedural || file != null;
+            return procedural || file != null || species != null;
         }
     }
 
     /**
-     * Everything about the surface's reflectance and its display. Exactly one of {@code taylorTerms} and
-     * {@code tolerance} is set.
+     * Everything about the surface's reflectance and its display.
+     *
+     * @param settings       the BRDF settings
+     * @param orderTolerance when not null, N is the smallest order whose Lagrange bound meets it for the patch at
+     *                       the shortest wavelength (001 sec. 3.3.3), instead of the settings' N
      */
-    public record MaterialSpec(PatchSpec patch, Variant variant, Integer taylorTerms, Double tolerance,
-                               double lambdaMinNm, double lambdaMaxNm, double lambdaStepNm, int windowRadius,
-                               double sigmaSpatialUm, double refractiveIndex, PigmentationSpec pigmentation,
-                               boolean pigmentationOn, double diffuseWeight, double exposure) {
+    public record MaterialSpec(PatchSpec patch, BrdfSettings settings, Double orderTolerance,
+                               PigmentationSpec pigmentation, boolean pigmentationOn, double diffuseWeight,
+                               double exposure) {
+        public MaterialSpec withSettings(BrdfSettings s) {
+            return new MaterialSpec(patch, s, orderTolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);
+        }
     }
 }

@@ -1,22 +1,36 @@
 package diffract.scene;
 
 import diffract.geometry.SnakeMesh;
+import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
+import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
+import diffract.optics.FresnelModel;
 import diffract.optics.GainFactor;
+import diffract.optics.IlluminationSettings;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.LightSource;
+import diffract.optics.PatchCatalogue;
+import diffract.optics.PixelFilter;
 import diffract.optics.ProceduralPatches;
+import diffract.optics.Quantity;
+import diffract.optics.SpectralSettings;
+import diffract.optics.TaylorExpansion;
+import diffract.optics.TaylorSettings;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.optics.WindowSettings;
 import diffract.util.UserInputException;
-import diffract.viewer.DisplayMode;
-import diffract.viewer.ViewerController;
 
 import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 
 /**
@@ -26,13 +40,45 @@ import java.util.Map;
  * exist (paths are relative to the scene file's folder). Nothing else escapes, whatever the text.
  */
 public final class SceneFile {
-    /** The viewer's wavelength range may lie anywhere within the CIE tables' 360..830 nm. */
-    static final double LAMBDA_LOWEST_NM = 360;
-    static final double LAMBDA_HIGHEST_NM = 830;
-    static final List<String> VARIANTS = List.of("flss", "nmm", "pq", "baked");
+    /** The variants a scene can draw: those with a GPU shader. */
+    static final List<String> VARIANTS = Arrays.stream(Variant.values()).filter(Variant::runsOnGpu)
+            .map(Variant::label).toList();
+    static final List<String> EXPANSIONS = List.of("auto", "plain", "centred");
+    static final List<String> TERM_FORMATS = List.of("rg32f", "rg16f", "rg8");
     static final List<String> MODES = List.of("surface", "brdfMap");
+    static final List<String> FRESNEL_MODELS = List.of("physical", "thesis");
+    static final List<String> PIXEL_FILTERS = List.of("box", "point");
+    /** The catalogue's names and their camelCase spellings. */
+    static final List<String> PROCEDURAL_NAMES = proceduralNames();
 
     private SceneFile() {
+    }
+
+    private static List<String> proceduralNames() {
+        List<String> names = new java.util.ArrayList<>();
+        for (String name : PatchCatalogue.names()) {
+            names.add(name);
+            String camel = camelCase(name);
+            if (!camel.equals(name)) {
+                names.add(camel);
+            }
+        }
+        return List.copyOf(names);
+    }
+
+    /** "elaphe-like" as "elapheLike". */
+    static String camelCase(String name) {
+        StringBuilder b = new StringBuilder();
+        boolean upper = false;
+        for (char c : name.toCharArray()) {
+            if (c == '-') {
+                upper = true;
+            } else {
+                b.append(upper ? Character.toUpperCase(c) : c);
+                upper = false;
+            }
+        }
+        return b.toString();
     }
 
     public static Scene load(Path file) {
@@ -64,9 +110,15 @@ public final class SceneFile {
             throw SceneObject.problem(where, e.line, "(json)", e.getMessage());
         }
         SceneObject root = SceneObject.root(where, tree);
-        Scene scene = new Scene(source, image(root), camera(root.object("camera")), light(root.object("light")),
-                shape(root.object("shape")), material(root.object("material")),
-                root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE);
+        Scene.ImageSize image = image(root);
+        Scene.CameraSpec camera = camera(root.object("camera"));
+        double[] lightSizeDeg = new double[1];
+        Scene.LightSpec light = light(root.object("light"), lightSizeDeg);
+        Scene.ShapeSpec shape = shape(root.object("shape"));
+        Scene.MaterialSpec material = material(root.object("material"), lightSizeDeg[0]);
+        Scene scene = new Scene(source, image, camera, light, shape, material,
+                root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE,
+                StageKeys.stage(root));
         root.finish();
         return scene;
     }
@@ -100,7 +152,11 @@ public final class SceneFile {
         return spec;
     }
 
-    private static Scene.LightSpec light(SceneObject light) {
+    /**
+     * The key light's direction and spectrum; its angular diameter ({@code angularDiameterDeg}, the sun's 0.53
+     * degrees by default) goes to {@code sizeDeg[0]}, for the material's settings, where every renderer reads it.
+     */
+    private static Scene.LightSpec light(SceneObject light, double[] sizeDeg) {
         double[] towards;
         if (light.has("direction")) {
             towards = light.direction("direction");
@@ -117,12 +173,14 @@ public final class SceneFile {
                     "missing; add \"direction\": [x, y, z] (towards the light) or \"thetaDeg\" and \"phiDeg\"");
         }
         double thetaDeg = LightManager.thetaDeg(towards);
-        if (thetaDeg > diffract.viewer.LightDirection.MAX_THETA_DEG + 1e-9) {
+        if (thetaDeg > LightDirection.MAX_THETA_DEG + 1e-9) {
             throw light.problem(light.has("direction") ? "direction" : "thetaDeg", String.format(java.util.Locale.ROOT,
                     "the light is %.1f degrees from the +z axis; the viewer takes at most %.0f (light from the +z side)",
-                    thetaDeg, diffract.viewer.LightDirection.MAX_THETA_DEG));
+                    thetaDeg, LightDirection.MAX_THETA_DEG));
         }
         String spectrum = light.choice("spectrum", List.of("D65"), "D65");
+        sizeDeg[0] = light.number("angularDiameterDeg", SceneObject.Range.closed(0, LightSource.MAX_DIAMETER_DEG),
+                LightSource.SUN_DEG);
         light.finish();
         return new Scene.LightSpec(towards, spectrum);
     }
@@ -137,6 +195,16 @@ public final class SceneFile {
         Path file = null;
         TangentSource tangents = null;
         SnakeMesh.RidgeDirection ridges = null;
+        SnakeMesh.Pose pose = SnakeMesh.Pose.S_CURVE;
+        StageSpec.ScalesSpec scales = null;
+        StageSpec.NormalMapSpec normalMap = null;
+        if (kind == Scene.ShapeKind.OBJ && shape.has("normalMap")) {
+            normalMap = new StageSpec.NormalMapSpec(shape.existingFile("normalMap"));
+        }
+        if (kind == Scene.ShapeKind.SNAKE) {
+            pose = StageKeys.pose(shape);
+            scales = StageKeys.scales(shape);
+        }
         if (kind == Scene.ShapeKind.OBJ) {
             file = shape.existingFile("file");
             tangents = tangents(shape, TangentSource.fromUvs(), true);
@@ -149,7 +217,7 @@ public final class SceneFile {
         Scene.Transform transform = shape.has("transform") ? transform(shape.object("transform"))
                 : Scene.Transform.identity();
         shape.finish();
-        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform);
+        return new Scene.ShapeSpec(kind, file, tangents, ridges, transform, pose, scales, normalMap);
     }
 
     private static TangentSource tangents(SceneObject shape, TangentSource defaultSource, boolean obj) {
@@ -186,33 +254,56 @@ public final class SceneFile {
         return t;
     }
 
-    private static Scene.MaterialSpec material(SceneObject material) {
+    /** The scene key of each BRDF setting, for messages about a value the settings refuse. */
+    static final Map<Quantity, String> MATERIAL_KEYS = Map.ofEntries(Map.entry(Quantity.VARIANT, "variant"),
+            Map.entry(Quantity.HIGHEST_ORDER, "taylorTerms"), Map.entry(Quantity.ORDER_TOLERANCE, "tolerance"),
+            Map.entry(Quantity.TAYLOR_TOLERANCE, "taylorTolerance"), Map.entry(Quantity.EXPANSION, "expansion"),
+            Map.entry(Quantity.WINDOW_RADIUS, "windowRadius"), Map.entry(Quantity.PQ_REPLICAS, "pqReplicas"),
+            Map.entry(Quantity.LAMBDA_MIN, "lambdaMinNm"), Map.entry(Quantity.LAMBDA_MAX, "lambdaMaxNm"),
+            Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
+            Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
+            Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.FRESNEL, "fresnel"),
+            Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"));
+
+    private static Scene.MaterialSpec material(SceneObject material, double lightSizeDeg) {
         Scene.PatchSpec patch = patch(material.object("patch"));
-        Variant variant = Variant.parse(material.choice("variant", VARIANTS, "flss"));
-        Integer terms = null;
+        BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", VARIANTS, "lobes")));
         Double tolerance = null;
-        if (material.has("tolerance")) {
-            if (material.has("taylorTerms")) {
-                throw material.problem("taylorTerms", "give either \"taylorTerms\" or \"tolerance\", not both");
+        try {
+            if (material.has("tolerance")) {
+                if (material.has("taylorTerms")) {
+                    throw material.problem("taylorTerms", "give either \"taylorTerms\" or \"tolerance\", not both");
+                }
+                tolerance = material.number("tolerance", SceneObject.Range.open(0, 1));
+            } else {
+                b.highestOrder(material.integer("taylorTerms",
+                        SceneObject.Range.closed(0, TaylorSettings.MAX_HIGHEST_ORDER), 30));
             }
-            tolerance = material.number("tolerance", SceneObject.Range.open(0, 1));
-        } else {
-            terms = material.integer("taylorTerms", SceneObject.Range.closed(0, ViewerController.MAX_HIGHEST_ORDER), 30);
+            b.taylorTolerance(material.number("taylorTolerance", SceneObject.Range.closed(0, 1), 0));
+            b.expansion(TaylorExpansion.valueOf(material.choice("expansion", EXPANSIONS, "auto")
+                    .toUpperCase(Locale.ROOT)));
+            SceneObject.Range visible = SceneObject.Range.closed(SpectralSettings.LOWEST_NM, SpectralSettings.HIGHEST_NM);
+            double lambdaMin = material.number("lambdaMinNm", visible, SpectralSettings.LAMBDA_MIN_NM);
+            double lambdaMax = material.number("lambdaMaxNm", visible, SpectralSettings.LAMBDA_MAX_NM);
+            if (!(lambdaMax > lambdaMin)) {
+                throw material.problem(material.has("lambdaMaxNm") ? "lambdaMaxNm" : "lambdaMinNm",
+                        "lambdaMaxNm must be greater than lambdaMinNm, got " + SceneObject.format(lambdaMin) + " and "
+                                + SceneObject.format(lambdaMax));
+            }
+            b.spectral(new SpectralSettings(lambdaMin, lambdaMax, material.number("lambdaStepNm",
+                    SceneObject.Range.above(0, SpectralSettings.MAX_STEP_NM), 5)));
+            windowRadius(material, b);
+            b.pqReplicas(material.integer("pqReplicas", SceneObject.Range.closed(0, WindowSettings.MAX_PQ_REPLICAS), 0));
+            b.illumination(illumination(material).withLight(new LightSource(lightSizeDeg))
+                    .withFresnel(FresnelModel.parse(material.choice("fresnel", FRESNEL_MODELS, "physical")))
+                    .withPixelFilter(PixelFilter.parse(material.choice("pixelFilter", PIXEL_FILTERS, "box"))));
+            b.termFormat(TermFormat.valueOf(material.choice("termFormat", TERM_FORMATS, "rg32f")
+                    .toUpperCase(Locale.ROOT)));
+            SceneObject.Range samples = SceneObject.Range.closed(0, BakedGrid.MAX_SAMPLES);
+            b.bakedSamples(material.integer("bakedUvSamples", samples, 0), material.integer("bakedWSamples", samples, 0));
+        } catch (InvalidSettingException e) {
+            throw material.problem(MATERIAL_KEYS.getOrDefault(e.quantity(), "variant"), e.getMessage());
         }
-        SceneObject.Range visible = SceneObject.Range.closed(LAMBDA_LOWEST_NM, LAMBDA_HIGHEST_NM);
-        double lambdaMin = material.number("lambdaMinNm", visible, BrdfSettings.LAMBDA_MIN_NM);
-        double lambdaMax = material.number("lambdaMaxNm", visible, BrdfSettings.LAMBDA_MAX_NM);
-        if (!(lambdaMax > lambdaMin)) {
-            throw material.problem(material.has("lambdaMaxNm") ? "lambdaMaxNm" : "lambdaMinNm",
-                    "lambdaMaxNm must be greater than lambdaMinNm, got " + SceneObject.format(lambdaMin) + " and "
-                            + SceneObject.format(lambdaMax));
-        }
-        double step = material.number("lambdaStepNm", SceneObject.Range.above(0, 100), 5);
-        int windowRadius = material.integer("windowRadius", SceneObject.Range.closed(0, 8), 1);
-        double sigma = material.number("sigmaSpatialUm", SceneObject.Range.above(0, 10000),
-                CoherenceWindow.COHERENCE_LENGTH_UM / 4.0);
-        double n = material.number("refractiveIndex", SceneObject.Range.closed(1, 4),
-                GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX);
         Scene.PigmentationSpec pigmentation = pigmentation(material);
         boolean pigmentationOn = material.bool("pigmentationOn", pigmentation.present());
         if (pigmentationOn && !pigmentation.present()) {
@@ -222,8 +313,39 @@ public final class SceneFile {
         double diffuseWeight = material.number("diffuseWeight", SceneObject.Range.closed(0, 1), 0.2);
         double exposure = material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
         material.finish();
-        return new Scene.MaterialSpec(patch, variant, terms, tolerance, lambdaMin, lambdaMax, step, windowRadius,
-                sigma, n, pigmentation, pigmentationOn, diffuseWeight, exposure);
+        return new Scene.MaterialSpec(patch, b.build(), tolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);
+    }
+
+    /** A whole number of texels, or "auto" (the radius per axis from sigma_f). */
+    private static void windowRadius(SceneObject material, BrdfSettings.Builder b) {
+        if (material.has("windowRadius") && material.raw("windowRadius").value() instanceof String text) {
+            if (!text.equals("auto")) {
+                throw material.problem("windowRadius", "must be a whole number in [0, " + WindowSettings.MAX_RADIUS
+                        + "] or \"auto\", got \"" + text + "\"");
+            }
+            b.automaticWindowRadius(true);
+            return;
+        }
+        b.windowRadius(material.integer("windowRadius", SceneObject.Range.closed(0, WindowSettings.MAX_RADIUS), 1));
+    }
+
+    /** The coherence length (or the thesis' sigma_s, a quarter of it) and the refractive index. */
+    private static IlluminationSettings illumination(SceneObject material) {
+        SceneObject.Range coherence = SceneObject.Range.above(0, IlluminationSettings.MAX_COHERENCE_LENGTH_UM);
+        double coherenceLengthUm;
+        if (material.has("sigmaSpatialUm")) {
+            if (material.has("coherenceLengthUm")) {
+                throw material.problem("sigmaSpatialUm", "give either \"coherenceLengthUm\" or \"sigmaSpatialUm\" "
+                        + "(a quarter of it), not both");
+            }
+            coherenceLengthUm = 4 * material.number("sigmaSpatialUm",
+                    SceneObject.Range.above(0, IlluminationSettings.MAX_COHERENCE_LENGTH_UM / 4));
+        } else {
+            coherenceLengthUm = material.number("coherenceLengthUm", coherence, CoherenceWindow.COHERENCE_LENGTH_UM);
+        }
+        double n = material.number("refractiveIndex", SceneObject.Range.closed(1, IlluminationSettings.MAX_REFRACTIVE_INDEX),
+                GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX);
+        return IlluminationSettings.ofCoherenceLength(coherenceLengthUm, n);
     }
 
     private static Scene.PigmentationSpec pigmentation(SceneObject material) {
@@ -235,17 +357,22 @@ public final class SceneFile {
             if (text.equals("none")) {
                 return Scene.PigmentationSpec.none();
             } else if (text.equals("procedural")) {
-                return new Scene.PigmentationSpec(true, null);
+                return Scene.PigmentationSpec.proceduralPattern();
+            } else if (StageKeys.speciesNames().contains(text)) {
+                return Scene.PigmentationSpec.ofSpecies(SnakeSpecies.fromSceneName(text));
             }
+            List<String> known = new java.util.ArrayList<>(List.of("none", "procedural"));
+            known.addAll(StageKeys.speciesNames());
             throw material.problem("pigmentation", "unknown value \"" + text + "\""
-                    + SceneObject.suggestion(text, List.of("none", "procedural"))
-                    + "; use \"none\", \"procedural\" or {\"file\": \"IMAGE\"}");
+                    + SceneObject.suggestion(text, known)
+                    + "; use \"none\", \"procedural\", a species (\"" + String.join("\", \"", StageKeys.speciesNames())
+                    + "\") or {\"file\": \"IMAGE\"}");
         }
         if (node.value() instanceof Map) {
             SceneObject object = material.child("pigmentation", node);
             Path file = object.existingFile("file");
             object.finish();
-            return new Scene.PigmentationSpec(false, file);
+            return Scene.PigmentationSpec.imageFile(file);
         }
         throw material.problem("pigmentation", "must be \"none\", \"procedural\" or {\"file\": \"IMAGE\"}, got "
                 + node.typeName());
@@ -265,11 +392,12 @@ public final class SceneFile {
         if (!patch.has("procedural")) {
             throw SceneObject.problem(patch.source(), patch.line(), patch.keyPath("procedural"), "missing; add "
                     + "\"file\": \"HEIGHTFIELD\" or \"procedural\": one of \"" + String.join("\", \"",
-                    ProceduralPatches.KINDS) + "\"");
+                    PatchCatalogue.names()) + "\"");
         }
-        String kind = patch.choice("procedural", ProceduralPatches.KINDS);
-        ProceduralPatches.Spec d = ProceduralPatches.Spec.defaults(kind);
-        boolean grating = kind.equals("blazed") || kind.equals("sinusoid");
+        String name = patch.choice("procedural", PROCEDURAL_NAMES);
+        PatchCatalogue.Entry entry = PatchCatalogue.named(name);
+        ProceduralPatches.Spec d = entry.spec();
+        ProceduralPatches.Kind kind = d.kind();
         double period = patch.number("periodUm", SceneObject.Range.above(0, 100), d.periodUm());
         double height = patch.number("heightUm", SceneObject.Range.closed(0, 10), d.heightUm());
         int periods = patch.integer("periods", SceneObject.Range.closed(1, 256), d.periods());
@@ -278,7 +406,7 @@ public final class SceneFile {
         int size = d.sizePx();
         double roughness = d.roughnessUm();
         long seed = d.seed();
-        if (grating) {
+        if (kind.isGrating()) {
             samplesPerPeriod = patch.integer("samplesPerPeriod", SceneObject.Range.closed(2, 256), samplesPerPeriod);
             rows = patch.integer("rows", SceneObject.Range.closed(1, 1024), rows);
             if ((long) samplesPerPeriod * periods > 4096) {
@@ -291,12 +419,12 @@ public final class SceneFile {
                 throw patch.problem("sizePx", "must be a multiple of 16, got " + size);
             }
             seed = patch.wholeNumber("seed", seed);
-            if (kind.equals("xenopeltisLike")) {
+            if (kind == ProceduralPatches.Kind.XENOPELTIS_LIKE) {
                 roughness = patch.number("roughnessUm", SceneObject.Range.closed(0, 1), roughness);
             }
         }
         patch.finish();
-        return new Scene.ProceduralPatch(new ProceduralPatches.Spec(kind, period, height, periods, samplesPerPeriod,
-                rows, size, roughness, seed));
+        return new Scene.ProceduralPatch(entry.name(), new ProceduralPatches.Spec(kind, period, height, periods,
+                samplesPerPeriod, rows, size, roughness, seed));
     }
 }

@@ -7,11 +7,10 @@ import diffract.geometry.TangentSource;
 import diffract.jrtr.Shape;
 import diffract.jrtr.VertexAttribute;
 import diffract.jrtr.VertexData;
-import diffract.viewer.ViewerShapes;
 
 /**
  * The shape's constants manager: builds the mesh a scene names (the procedural snake, an OBJ file or a primitive
- * of {@link ViewerShapes}) with positions, normals, tangents and texcoords, then applies the scene's transform:
+ * of {@link PrimitiveShapes}) with positions, normals, tangents and texcoords, then applies the scene's transform:
  * p' = R (s p) + t with R = Rz Ry Rx (degrees about x first), normals and tangents turned by R (a uniform scale
  * leaves directions alone).
  */
@@ -27,16 +26,21 @@ final class ShapeManager {
     private static Shape untransformed(Scene.ShapeSpec spec) {
         switch (spec.kind()) {
             case SNAKE:
-                return ViewerShapes.snake(SnakeMesh.Parameters.defaults().withRidges(spec.ridges()));
+                return PrimitiveShapes.snake(snakeParameters(spec));
             case OBJ:
                 return fromMesh(spec.file().getFileName().toString(), ObjReader.read(spec.file(), spec.tangents()));
             case PLANE:
-                return ViewerShapes.plane(direction(spec.tangents()));
+                return PrimitiveShapes.plane(direction(spec.tangents()));
             case CYLINDER:
-                return ViewerShapes.cylinder(direction(spec.tangents()));
+                return PrimitiveShapes.cylinder(direction(spec.tangents()));
             default:
-                return ViewerShapes.sphere(direction(spec.tangents()));
+                return PrimitiveShapes.sphere(direction(spec.tangents()));
         }
+    }
+
+    /** The procedural snake of a shape of kind snake: default size, the scene's ridges and pose. */
+    static SnakeMesh.Parameters snakeParameters(Scene.ShapeSpec spec) {
+        return SnakeMesh.Parameters.defaults().withRidges(spec.ridges()).withPose(spec.pose());
     }
 
     private static double[] direction(TangentSource tangents) {

@@ -65,27 +65,42 @@ public final class ImageFiles {
         });
     }
 
-    /** Reads a PFM written by {@link #writePfm}; returns top-down row-major floats. */
+    /**
+     * Reads a PFM written by {@link #writePfm}; returns top-down row-major floats.
+     *
+     * @throws IOException naming what is wrong when the file is no PFM (another image, truncated, a bad header)
+     */
     public static float[] readPfm(Path file, int[] widthHeightChannels) throws IOException {
         byte[] bytes = Files.readAllBytes(file);
-        int pos = 0;
-        String[] tokens = new String[4];
-        for (int t = 0; t < 4; t++) {
-            while (Character.isWhitespace(bytes[pos])) {
-                pos++;
-            }
-            int start = pos;
-            while (!Character.isWhitespace(bytes[pos])) {
-                pos++;
-            }
-            tokens[t] = new String(bytes, start, pos - start, java.nio.charset.StandardCharsets.US_ASCII);
+        int[] pos = {0};
+        String magic = token(bytes, pos);
+        if (!magic.equals("PF") && !magic.equals("Pf")) {
+            String kind = bytes.length >= 4 && bytes[1] == 'P' && bytes[2] == 'N' && bytes[3] == 'G' ? " (it is a PNG)"
+                    : "";
+            throw new IOException("not a PFM file: it does not start with PF or Pf" + kind);
         }
-        pos++; // the single whitespace after the scale
-        int channels = tokens[0].equals("PF") ? 3 : 1;
-        int width = Integer.parseInt(tokens[1]);
-        int height = Integer.parseInt(tokens[2]);
-        ByteOrder order = Double.parseDouble(tokens[3]) < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
-        ByteBuffer data = ByteBuffer.wrap(bytes, pos, bytes.length - pos).order(order);
+        int channels = magic.equals("PF") ? 3 : 1;
+        int width = positiveInt(token(bytes, pos), "width");
+        int height = positiveInt(token(bytes, pos), "height");
+        String scaleText = token(bytes, pos);
+        double scale;
+        try {
+            scale = Double.parseDouble(scaleText);
+        } catch (NumberFormatException e) {
+            throw new IOException("bad PFM header: the scale '" + scaleText + "' is not a number");
+        }
+        if (scale == 0 || !Double.isFinite(scale)) {
+            throw new IOException("bad PFM header: the scale must be a non-zero number, got " + scaleText);
+        }
+        int start = pos[0] + 1; // the single whitespace after the scale
+        long needed = 4L * width * height * channels;
+        if (needed > Integer.MAX_VALUE - 8 || bytes.length - (long) start < needed) {
+            throw new IOException(String.format(java.util.Locale.ROOT, "truncated PFM: %d x %d x %d floats need %d"
+                    + " bytes after the header, the file has %d", width, height, channels, needed,
+                    Math.max(0, bytes.length - start)));
+        }
+        ByteOrder order = scale < 0 ? ByteOrder.LITTLE_ENDIAN : ByteOrder.BIG_ENDIAN;
+        ByteBuffer data = ByteBuffer.wrap(bytes, start, bytes.length - start).order(order);
         float[] pixels = new float[width * height * channels];
         for (int y = height - 1; y >= 0; y--) {
             for (int i = 0; i < width * channels; i++) {
@@ -96,6 +111,35 @@ public final class ImageFiles {
         widthHeightChannels[1] = height;
         widthHeightChannels[2] = channels;
         return pixels;
+    }
+
+    /** The next whitespace-separated ASCII token of a PFM header (at most 32 characters). */
+    private static String token(byte[] bytes, int[] pos) throws IOException {
+        int p = pos[0];
+        while (p < bytes.length && Character.isWhitespace(bytes[p])) {
+            p++;
+        }
+        int start = p;
+        while (p < bytes.length && !Character.isWhitespace(bytes[p]) && p - start < 32) {
+            p++;
+        }
+        if (p == start) {
+            throw new IOException("not a PFM file: its header ends early");
+        }
+        pos[0] = p;
+        return new String(bytes, start, p - start, java.nio.charset.StandardCharsets.ISO_8859_1);
+    }
+
+    private static int positiveInt(String text, String what) throws IOException {
+        try {
+            int value = Integer.parseInt(text);
+            if (value > 0) {
+                return value;
+            }
+        } catch (NumberFormatException e) {
+            // falls through to the message below
+        }
+        throw new IOException("bad PFM header: the " + what + " must be a positive whole number, got '" + text + "'");
     }
 
     private static int toByte(float v) {

@@ -13,37 +13,17 @@ public interface Reporter {
 
     void info(String message);
 
-    /** Progress of a named task, {@code fraction} in [0, 1]. Implementations throttle their output. */
+    /**
+     * Progress of a named task, {@code fraction} in [0, 1]; a task reports 1 once, when it is done. Implementations
+     * throttle their output.
+     */
     void progress(String task, double fraction);
 
-    /** Prints to standard error; progress at most every 10 %. */
-    Reporter STDERR = new Reporter() {
-        private String lastTask = "";
-        private int lastDecile = -1;
-
-        @Override
-        public void warn(String message) {
-            System.err.println("warning: " + message);
-        }
-
-        @Override
-        public void info(String message) {
-            System.err.println(message);
-        }
-
-        @Override
-        public synchronized void progress(String task, double fraction) {
-            int decile = (int) Math.floor(Math.min(1.0, Math.max(0.0, fraction)) * 10.0);
-            if (!task.equals(lastTask)) {
-                lastTask = task;
-                lastDecile = -1;
-            }
-            if (decile > lastDecile) {
-                lastDecile = decile;
-                System.err.printf("%s: %d%%%n", task, decile * 10);
-            }
-        }
-    };
+    /**
+     * Prints to standard error; progress only for work that lasts more than a couple of seconds, with the time
+     * left ({@link ConsoleReporter}).
+     */
+    Reporter STDERR = new ConsoleReporter(false);
 
     /** Says nothing. */
     Reporter SILENT = new Reporter() {

@@ -28,7 +28,7 @@ public final class TermPrecomputer implements AutoCloseable {
 
     /** Starts (or schedules) a precompute when the state asks for more terms than it holds; returns at once. */
     public synchronized void ensureTermsFor(ViewerState state) {
-        int wanted = state.settings().highestOrder();
+        int wanted = state.settings().taylor().highestOrder();
         if (wanted <= state.terms().highestOrder() || runningOrder >= 0) {
             return; // enough terms, or a run under way: finished() looks at the state again
         }
@@ -48,14 +48,14 @@ public final class TermPrecomputer implements AutoCloseable {
 
     private void run(int order) {
         try {
-            TaylorTerms terms = model.termSource().terms(order, new ProgressToModel(order));
+            TaylorTerms terms = model.pipeline().terms(order, new ProgressToModel(order));
             model.update(s -> (terms.highestOrder() > s.terms().highestOrder() ? s.withTerms(terms) : s)
                     .withPrecompute(null));
         } catch (RuntimeException e) {
             // back to the N at hand, so finished() does not start the same failing run again
             model.update(s -> s.withPrecompute(null)
-                    .withSettings(s.settings().withHighestOrder(Math.min(s.settings().highestOrder(),
-                            s.terms().highestOrder())))
+                    .withSettings(s.settings().with(b -> b.highestOrder(Math.min(s.settings().taylor().highestOrder(),
+                            s.terms().highestOrder()))))
                     .withNotice(Notice.forSeconds("precompute of N = " + order + " failed: " + e.getMessage(), 10)));
         } finally {
             finished();

@@ -5,13 +5,16 @@ import com.jogamp.newt.event.KeyEvent;
 import com.jogamp.newt.event.MouseAdapter;
 import com.jogamp.newt.event.MouseEvent;
 import diffract.optics.BrdfSettings;
+import diffract.optics.TaylorSettings;
 import diffract.optics.Variant;
+import diffract.scene.DisplayMode;
 
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.function.UnaryOperator;
 
 /**
  * Maps input to the model. Every handler only replaces the model's snapshot or hands work to a background thread
@@ -20,8 +23,6 @@ import java.util.concurrent.Future;
  * actions, which tests may also call directly.
  */
 public final class ViewerController implements AutoCloseable {
-    /** Highest Taylor order the keys go to; float32 terms of tall patches overflow long before 200 (README). */
-    public static final int MAX_HIGHEST_ORDER = 100;
     /** The lambda steps [ and ] walk through, in nm. */
     static final double[] LAMBDA_STEPS_NM = {1, 2, 5, 10, 20, 40};
     static final double ORBIT_DEG_PER_PX = 0.4;
@@ -55,42 +56,46 @@ public final class ViewerController implements AutoCloseable {
 
     // ---- actions
 
+    private void updateView(UnaryOperator<ViewerState.View> change) {
+        model.update(s -> s.withView(change.apply(s.view())));
+    }
+
     public void orbitByPixels(int dxPx, int dyPx) {
         // dragging right turns the object to the right: the camera moves left around it
-        model.update(s -> s.withCamera(s.camera().orbitedBy(-dxPx * ORBIT_DEG_PER_PX, dyPx * ORBIT_DEG_PER_PX)));
+        updateView(v -> v.withCamera(v.camera().orbitedBy(-dxPx * ORBIT_DEG_PER_PX, dyPx * ORBIT_DEG_PER_PX)));
     }
 
     /** Positive steps (wheel up) zoom in. */
     public void zoomBySteps(double steps) {
-        model.update(s -> s.withCamera(s.camera().zoomedBy(Math.pow(ZOOM_PER_WHEEL_STEP, steps))));
+        updateView(v -> v.withCamera(v.camera().zoomedBy(Math.pow(ZOOM_PER_WHEEL_STEP, steps))));
     }
 
     public void moveLightByPixels(int dxPx, int dyPx) {
-        model.update(s -> s.withLight(s.light().movedBy(dyPx * LIGHT_DEG_PER_PX, dxPx * LIGHT_DEG_PER_PX)));
+        updateView(v -> v.withLight(v.light().movedBy(dyPx * LIGHT_DEG_PER_PX, dxPx * LIGHT_DEG_PER_PX)));
     }
 
     public void moveLightBy(double deltaThetaDeg, double deltaPhiDeg) {
-        model.update(s -> s.withLight(s.light().movedBy(deltaThetaDeg, deltaPhiDeg)));
+        updateView(v -> v.withLight(v.light().movedBy(deltaThetaDeg, deltaPhiDeg)));
     }
 
     public void selectVariant(Variant variant) {
-        model.update(s -> s.withSettings(s.settings().withVariant(variant)));
+        model.update(s -> s.withSettings(s.settings().with(b -> b.variant(variant))));
     }
 
-    /** N + delta within [0, {@value #MAX_HIGHEST_ORDER}]; more terms than at hand start a background precompute. */
+    /** N + delta within [0, {@link TaylorSettings#MAX_HIGHEST_ORDER}]; more terms than at hand start a background precompute. */
     public void changeTaylorOrderBy(int delta) {
-        ViewerState state = model.update(s -> s.withSettings(s.settings().withHighestOrder(
-                Math.max(0, Math.min(MAX_HIGHEST_ORDER, s.settings().highestOrder() + delta)))));
+        ViewerState state = model.update(s -> s.withSettings(s.settings().with(b -> b.highestOrder(Math.max(0,
+                Math.min(TaylorSettings.MAX_HIGHEST_ORDER, s.settings().taylor().highestOrder() + delta))))));
         precomputer.ensureTermsFor(state);
     }
 
     /** One rung up (+1) or down (-1) the lambda-step ladder. */
     public void changeLambdaStep(int direction) {
-        model.update(s -> s.withSettings(s.settings().withLambdaStepNm(nextLambdaStep(s.settings(), direction))));
+        model.update(s -> s.withSettings(s.settings().with(b -> b.lambdaStepNm(nextLambdaStep(s.settings(), direction)))));
     }
 
     static double nextLambdaStep(BrdfSettings settings, int direction) {
-        double current = settings.lambdaStepNm();
+        double current = settings.spectral().lambdaStepNm();
         if (direction > 0) {
             for (double step : LAMBDA_STEPS_NM) {
                 if (step > current + 1e-9) {
@@ -108,19 +113,20 @@ public final class ViewerController implements AutoCloseable {
     }
 
     public void changeExposure(int direction) {
-        model.update(s -> s.withExposure(s.exposure() * Math.pow(EXPOSURE_STEP, direction)));
+        updateView(v -> v.withExposure(v.exposure() * Math.pow(EXPOSURE_STEP, direction)));
     }
 
     public void toggleBrdfMap() {
-        model.update(s -> s.withMode(s.mode() == DisplayMode.BRDF_MAP ? DisplayMode.SURFACE : DisplayMode.BRDF_MAP));
+        updateView(v -> v.withMode(v.mode() == DisplayMode.BRDF_MAP ? DisplayMode.SURFACE : DisplayMode.BRDF_MAP));
     }
 
     public void togglePigmentation() {
         if (model.pigmentationImage().isEmpty()) {
-            model.update(s -> s.withNotice(Notice.forSeconds("no pigmentation image: start with --pigmentation FILE", 4)));
+            model.update(s -> s.withNotice(Notice.forSeconds("no pigmentation image: give the scene one, or start "
+                    + "with a pigmentation image", 4)));
             return;
         }
-        model.update(s -> s.withPigmentationOn(!s.pigmentationOn()));
+        updateView(v -> v.withPigmentationOn(!v.pigmentationOn()));
     }
 
     public void reset() {
@@ -166,37 +172,14 @@ public final class ViewerController implements AutoCloseable {
         };
     }
 
-    /** Dispatches one key press; returns whether it was a control. */
+    /** Dispatches one key press through {@link KeyBindings#ALL}; returns whether it was a control. */
     boolean handleKey(short keyCode, char keyChar) {
-        switch (keyCode) {
-            case KeyEvent.VK_UP: moveLightBy(-5, 0); return true;
-            case KeyEvent.VK_DOWN: moveLightBy(5, 0); return true;
-            case KeyEvent.VK_LEFT: moveLightBy(0, -15); return true;
-            case KeyEvent.VK_RIGHT: moveLightBy(0, 15); return true;
-            case KeyEvent.VK_PAGE_UP: changeExposure(1); return true;
-            case KeyEvent.VK_PAGE_DOWN: changeExposure(-1); return true;
-            case KeyEvent.VK_F1: showHelp(); return true;
-            case KeyEvent.VK_ESCAPE: quit(); return true;
-            case KeyEvent.VK_ADD: changeTaylorOrderBy(1); return true;
-            case KeyEvent.VK_SUBTRACT: changeTaylorOrderBy(-1); return true;
-            default: break;
+        var action = KeyBindings.actionFor(keyCode, keyChar);
+        if (action == null) {
+            return false;
         }
-        switch (Character.toLowerCase(keyChar)) {
-            case '1': selectVariant(Variant.FLSS); return true;
-            case '2': selectVariant(Variant.NMM); return true;
-            case '3': selectVariant(Variant.PQ); return true;
-            case '+': case '=': changeTaylorOrderBy(1); return true; // '=' is '+' without shift on US keyboards
-            case '-': case '_': changeTaylorOrderBy(-1); return true;
-            case '[': changeLambdaStep(-1); return true;
-            case ']': changeLambdaStep(1); return true;
-            case 'b': toggleBrdfMap(); return true;
-            case 'p': togglePigmentation(); return true;
-            case 's': screenshot(); return true;
-            case 'r': reset(); return true;
-            case 'h': showHelp(); return true;
-            case 'q': quit(); return true;
-            default: return false;
-        }
+        action.accept(this);
+        return true;
     }
 
     /** Left drag orbits, right drag moves the light, the wheel zooms. */

@@ -3,6 +3,10 @@ package diffract.viewer;
 import diffract.jrtr.Shape;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.pipeline.DiffractionPipeline;
+import diffract.render.BakedTables;
+import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
 
 import java.awt.image.BufferedImage;
@@ -11,42 +15,40 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.UnaryOperator;
 
 /**
- * The viewer's model: the fixed {@link ViewerSetup} (patch, shape, pigmentation image), where more Taylor terms
- * come from, and the current {@link ViewerState}. Thread-safe: the state is an immutable snapshot behind an atomic
+ * The viewer's model: the fixed {@link SceneSetup} (the patch's pipeline, which also says where more Taylor terms
+ * come from, the shape, the pigmentation image) and the current {@link ViewerState}. Thread-safe: the state is an immutable snapshot behind an atomic
  * reference, replaced by compare-and-set, so the controller (input thread), the precompute worker and the render
  * thread never see half an update.
  */
 public final class ViewerModel {
-    private final ViewerSetup setup;
-    private final TermSource termSource;
+    private final SceneSetup setup;
     private final AtomicReference<ViewerState> state;
 
     /**
      * @param initialTerms terms 0..N of {@code setup.patch()}; when the setup asks for more, the viewer draws with
      *                     these ({@link ViewerState#drawableSettings}) until more are precomputed
      */
-    public ViewerModel(ViewerSetup setup, TermSource termSource, TaylorTerms initialTerms) {
+    public ViewerModel(SceneSetup setup, TaylorTerms initialTerms) {
         if (initialTerms.rows() != setup.patch().rows() || initialTerms.cols() != setup.patch().cols()) {
             throw new IllegalArgumentException("terms of a " + initialTerms.cols() + "x" + initialTerms.rows()
                     + " patch for a " + setup.patch().cols() + "x" + setup.patch().rows() + " patch");
         }
         this.setup = setup;
-        this.termSource = termSource;
         this.state = new AtomicReference<>(initialState(initialTerms));
     }
 
     /** Computes (or loads) the terms the setup asks for on this thread, then builds the model. */
-    public static ViewerModel load(ViewerSetup setup, TermSource termSource, Reporter reporter) {
-        TaylorTerms terms = termSource.terms(setup.settings().highestOrder(), reporter);
-        return new ViewerModel(setup, termSource, terms);
+    public static ViewerModel load(SceneSetup setup, Reporter reporter) {
+        TaylorTerms terms = setup.pipeline().terms(setup.settings().taylor().highestOrder(), reporter);
+        return new ViewerModel(setup, terms);
     }
 
     private ViewerState initialState(TaylorTerms terms) {
-        return new ViewerState(setup.settings(), setup.camera(), setup.light(), setup.exposure(), setup.mode(),
-                setup.pigmentationOn(), terms, null, null);
+        return new ViewerState(setup.settings(), new ViewerState.View(setup.camera(), setup.light(), setup.exposure(),
+                setup.mode(), setup.pigmentationOn()), terms, null, null);
     }
 
-    public ViewerSetup setup() {
+    public SceneSetup setup() {
         return setup;
     }
 
@@ -66,24 +68,24 @@ public final class ViewerModel {
         return Optional.ofNullable(setup.pigmentation());
     }
 
-    public TermSource termSource() {
-        return termSource;
+    public DiffractionPipeline pipeline() {
+        return setup.pipeline();
     }
 
-    /** The current snapshot. */
     /**
      * Bakes the BAKED table of the current state now, on the calling thread, if the state draws the baked variant:
      * the table is then in {@link diffract.render.BakedTables}' cache when the render thread asks for it, and its
      * progress shows before the first frame (a table the render thread asks for later, after a settings change, is
      * baked on a thread of its own while the frame waits).
      */
-    public void bakeIfNeeded(diffract.util.Reporter reporter) {
+    public void bakeIfNeeded(Reporter reporter) {
         ViewerState s = state();
-        if (s.drawableSettings().variant() == diffract.optics.Variant.BAKED) {
-            diffract.render.BakedTables.of(s.terms(), s.drawableSettings(), reporter);
+        if (s.drawableSettings().variant() == Variant.BAKED) {
+            BakedTables.of(s.terms(), s.drawableSettings(), reporter);
         }
     }
 
+    /** The current snapshot. */
     public ViewerState state() {
         return state.get();
     }

@@ -6,14 +6,21 @@ import diffract.jrtr.Frustum;
 import diffract.jrtr.Group;
 import diffract.jrtr.LightNode;
 import diffract.jrtr.Material;
+import diffract.jrtr.RenderItem;
+import diffract.jrtr.RenderList;
 import diffract.jrtr.Renderer;
+import diffract.jrtr.ShaderProgram;
 import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
 import diffract.optics.Direction;
 import diffract.render.DiffractionMaterials;
+import diffract.render.StageResources;
+import diffract.scene.DisplayMode;
+import diffract.scene.OrbitCamera;
 
 import javax.vecmath.Point3f;
 import javax.vecmath.Vector3f;
+import java.util.Map;
 
 /**
  * Draws the model: each frame reads one {@link ViewerState} and shows either the shape with the diffraction surface
@@ -33,6 +40,13 @@ public final class ViewerRenderer extends Renderer {
     private final Group surfaceScene;
     private final ShapeNode mapQuad;
     private final Group mapScene;
+    /** The stage's GPU side (scales, environment, ground, shadow), or null for the plain surface. */
+    private final StageResources stage;
+    private final Group casters;
+    private final Group maskScene;
+    private Material maskMaterial;
+    private volatile boolean maskOnly;
+    private volatile double lightTurnDeg;
     private volatile boolean drawingStopped;
     private volatile boolean inFrame;
     private int widthPx;
@@ -42,13 +56,38 @@ public final class ViewerRenderer extends Renderer {
         super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, (float) model.setup().verticalFovDeg()));
         this.model = model;
         this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight(),
-                model.setup().patch());
+                model.pipeline());
         // the nodes get their materials on the render thread, at the first frame
         this.surface = new ShapeNode(model.shape(), null);
         this.surfaceScene = new Group("surface").add(light, surface);
+        this.casters = new Group("shadow casters").add(new ShapeNode(model.shape(), null));
+        this.maskScene = new Group("mask").add(new ShapeNode(model.shape(), null));
+        this.stage = model.setup().stage().staged() ? new StageResources(model.setup().stage(), model.shape()) : null;
+        if (stage != null) {
+            materials.useStage(stage);
+            if (stage.groundNode() != null) {
+                surfaceScene.add(stage.groundNode());
+            }
+        }
         this.mapQuad = new ShapeNode(Shapes.fullScreenQuad(), null);
         this.mapScene = new Group("brdf map").add(mapQuad);
         setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+    }
+
+    /**
+     * Turns the key light (and the environment with it) about the world y axis by {@code degrees} from the state's
+     * light: a light going round the subject, for turntables.
+     */
+    public void setLightTurnDeg(double degrees) {
+        lightTurnDeg = degrees;
+    }
+
+    /**
+     * With {@code on}, frames show only the shape, white on black, unlit: the mask of where the subject is in the
+     * picture (for measurements of the picture).
+     */
+    public void setMaskOnly(boolean on) {
+        maskOnly = on;
     }
 
     public FrameStats stats() {
@@ -95,9 +134,13 @@ public final class ViewerRenderer extends Renderer {
     private void drawFrame(GLAutoDrawable drawable) {
         long start = System.nanoTime();
         ViewerState state = model.state();
+        if (maskOnly) {
+            showMask(drawable);
+            return;
+        }
         Material material = materials.materialFor(state, context());
-        material.setFloat("exposure", (float) state.exposure());
-        if (state.mode() == DisplayMode.BRDF_MAP) {
+        material.setFloat("exposure", (float) state.view().exposure());
+        if (state.view().mode() == DisplayMode.BRDF_MAP) {
             showBrdfMap(state, material);
         } else {
             showSurface(state, material);
@@ -108,21 +151,48 @@ public final class ViewerRenderer extends Renderer {
     }
 
     private void showSurface(ViewerState state, Material material) {
-        double[] eye = state.camera().eye();
-        OrbitCamera orbit = state.camera();
+        double[] eye = state.view().camera().eye();
+        OrbitCamera orbit = state.view().camera();
         camera().set(new Point3f((float) eye[0], (float) eye[1], (float) eye[2]),
                 new Point3f((float) orbit.targetX(), (float) orbit.targetY(), (float) orbit.targetZ()),
                 new Vector3f(0, 1, 0));
-        Direction towardsLight = state.light().direction();
-        light.setDirection(new Vector3f((float) towardsLight.x(), (float) towardsLight.y(), (float) towardsLight.z()));
+        Direction towardsLight = state.view().light().direction();
+        double turn = Math.toRadians(lightTurnDeg);
+        // turned about +y: (x, z) -> (x cos + z sin, -x sin + z cos), as Environment.rotatedAboutY
+        Vector3f towards = new Vector3f((float) (towardsLight.x() * Math.cos(turn) + towardsLight.z() * Math.sin(turn)),
+                (float) towardsLight.y(), (float) (-towardsLight.x() * Math.sin(turn) + towardsLight.z() * Math.cos(turn)));
+        light.setDirection(towards);
         surface.setMaterial(material);
+        if (stage != null && state.view().mode() == DisplayMode.SURFACE) {
+            stage.beforeFrame(context(), RenderList.collect(casters), towards, lightTurnDeg, material);
+        }
         setRoot(surfaceScene);
+    }
+
+    private void showMask(GLAutoDrawable drawable) {
+        if (maskMaterial == null) {
+            maskMaterial = new Material(ShaderProgram.fromClasspath("engine/unlit.vert", "engine/unlit.frag",
+                    Map.of())).setVec4("color", 1, 1, 1, 1);
+            for (RenderItem item : RenderList.collect(maskScene).items()) {
+                ((ShapeNode) item.node()).setMaterial(maskMaterial);
+            }
+        }
+        double[] eye = model.state().view().camera().eye();
+        OrbitCamera orbit = model.state().view().camera();
+        camera().set(new Point3f((float) eye[0], (float) eye[1], (float) eye[2]),
+                new Point3f((float) orbit.targetX(), (float) orbit.targetY(), (float) orbit.targetZ()),
+                new Vector3f(0, 1, 0));
+        setRoot(maskScene);
+        setClearColor(0, 0, 0, 1);
+        super.display(drawable);
+        setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+        context().gl().glFinish();
     }
 
     /** The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. */
     private void showBrdfMap(ViewerState state, Material material) {
         int size = Math.max(1, Math.min(widthPx, heightPx));
-        DiffractionMaterials.setLight(material, state.light().direction())
+        DiffractionMaterials.setLight(material, state.view().light().direction(), state.drawableSettings())
                 .setFloat("mapSizePx", size)
                 .setVec2("mapOriginPx", (widthPx - size) / 2, (heightPx - size) / 2);
         mapQuad.setMaterial(material);

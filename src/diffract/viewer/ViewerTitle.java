@@ -1,6 +1,7 @@
 package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
+import diffract.scene.DisplayMode;
 
 import java.util.Locale;
 
@@ -16,11 +17,11 @@ public final class ViewerTitle {
         BrdfSettings drawn = state.drawableSettings();
         StringBuilder title = new StringBuilder(String.format(Locale.ROOT,
                 "diffract %s | %s N=%d dlambda=%s nm R=%d | theta_i %.0f phi_i %.0f | %s%s | exposure %s",
-                model.patchName(), drawn.variant().cliName(), drawn.highestOrder(), number(drawn.lambdaStepNm()),
-                drawn.windowRadius(), state.light().thetaDeg(), state.light().phiDeg(),
-                state.mode() == DisplayMode.BRDF_MAP ? "BRDF map" : model.shape().name(),
-                state.pigmentationOn() && state.mode() == DisplayMode.SURFACE ? " + pigment" : "",
-                number(state.exposure())));
+                model.patchName(), drawn.variant().label(), drawn.taylor().highestOrder(),
+                number(drawn.spectral().lambdaStepNm()), drawn.window().radius(), state.view().light().thetaDeg(), state.view().light().phiDeg(),
+                state.view().mode() == DisplayMode.BRDF_MAP ? "BRDF map" : model.shape().name(),
+                state.view().pigmentationOn() && state.view().mode() == DisplayMode.SURFACE ? " + pigment" : "",
+                number(state.view().exposure())));
         double ms = stats.msPerFrame();
         title.append(Double.isNaN(ms) ? " | - ms/frame" : String.format(Locale.ROOT, " | %.0f ms/frame", ms));
         PrecomputeProgress precompute = state.precompute();
@@ -28,7 +29,7 @@ public final class ViewerTitle {
             title.append(String.format(Locale.ROOT, " | precomputing N=%d %d%%", precompute.targetOrder(),
                     precompute.percent()));
         } else if (state.needsMoreTerms()) {
-            title.append(" | N=").append(state.settings().highestOrder()).append(" waiting for terms");
+            title.append(" | N=").append(state.settings().taylor().highestOrder()).append(" waiting for terms");
         }
         Notice notice = state.notice();
         if (notice != null && notice.isShowingAt(nowNanos)) {

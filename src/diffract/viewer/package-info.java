@@ -1,5 +1,5 @@
 /**
- * The interactive viewer (issue #4 item 5), model-view-controller:
+ * The interactive viewer, model-view-controller:
  *
  * <ul>
  *   <li>Model: {@link diffract.viewer.ViewerModel} holds what does not change while the window is open (the patch,
@@ -13,8 +13,8 @@
  *       background work ({@link diffract.viewer.TermPrecomputer}, screenshots) so the window never waits.</li>
  * </ul>
  *
- * <p>A scene file fills a {@link diffract.viewer.ViewerSetup} (patch, shape, pigmentation, settings, camera, light)
- * and {@link diffract.viewer.ViewerModel#ViewerModel(ViewerSetup, TermSource)} turns it into a model.
- * The application layer: it may use the optics, the render wiring and the engine; none of them know it.
+ * <p>A scene's {@link diffract.scene.SceneSetup} (the patch's pipeline, shape, pigmentation, settings, camera,
+ * light) becomes a model through {@link diffract.viewer.ViewerModel#load}. Above the scene, the pipeline, the GPU
+ * materials and the engine, which it uses; only the command line uses it.
  */
 package diffract.viewer;

@@ -1,8 +1,7 @@
 package diffract.app;
 
 import diffract.bench.ResultsTable;
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -11,13 +10,14 @@ import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** {@code diffract bench} on a tiny sweep: the files, the CSV's columns and one row per configuration. */
 class BenchCommandTest {
     @Test
     void aTinySweepWritesOneCsvRowPerConfigurationAndThePlot(@TempDir Path dir) throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path out = dir.resolve("bench");
         // flss: 2 orders x 2 formats = 4; nmm ignores the step, same 4; 24 px maps keep it to seconds
         int code = Main.execute("bench", "--patches", "blazed", "--variants", "flss,nmm", "--terms", "4,8",
@@ -36,6 +36,8 @@ class BenchCommandTest {
             assertEquals(header.size(), f.length, line);
             assertEquals("blazed", f[header.indexOf("patch")]);
             assertEquals("24", f[header.indexOf("width")]);
+            assertFalse(f[header.indexOf("gl_renderer")].isBlank(), "the renderer is recorded: " + line);
+            assertFalse(f[header.indexOf("gl_version")].isBlank(), line);
             double ms = Double.parseDouble(f[header.indexOf("ms_per_frame")]);
             double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
             double p95 = Double.parseDouble(f[header.indexOf("deltaE_p95")]);

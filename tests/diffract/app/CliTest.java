@@ -5,13 +5,13 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
-import diffract.optics.ProceduralPatches;
+import diffract.optics.PatchCatalogue;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.Variant;
-import diffract.optics.io.HeightFieldReader;
-import diffract.util.Reporter;
 import diffract.optics.io.GsfWriter;
+import diffract.optics.io.HeightFieldReader;
 import diffract.util.ImageFiles;
+import diffract.util.Reporter;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -111,7 +111,7 @@ class CliTest {
         float[] rho = ImageFiles.readPfm(pfm, whc);
         assertEquals(1, whc[2]);
         HeightField patch = HeightFieldReader.load(grating, null, null, Reporter.SILENT);
-        BrdfSettings settings = new BrdfSettings(Variant.REFERENCE, 30, 1, 380, 780, 5, 0.5, 1.5, 0);
+        BrdfSettings settings = BrdfSettings.builder(Variant.REFERENCE).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 0.5).refractiveIndex(1.5).pqReplicas(0).build();
         DiffractionBrdf brdf = DiffractionBrdf.create(settings, patch, null);
         Direction wi = Direction.fromSphericalDeg(20, 0);
         int lit = 0;
@@ -154,7 +154,7 @@ class CliTest {
         Object[] noCommand = run();
         assertEquals(2, noCommand[0]);
 
-        // issue #5 options: the baked table is GPU-only, bad radius and grid values are one line each
+        // the baked table is GPU-only, bad radius and grid values are one line each
         for (String[] args : new String[][] {{"--variant", "baked"}, {"--window-radius", "wide"},
                 {"--baked-samples", "12"}, {"--taylor-tolerance", "-1"}}) {
             String[] full = {"brdfmap", "--patch", grating.toString(), "--theta-i", "10", "--terms", "4",
@@ -193,22 +193,18 @@ class CliTest {
         assertTrue(((String) result[2]).contains("was made from a 40x4 patch"), (String) result[2]);
     }
 
-    /** Every kind of {@code patch}: the written .gsf holds the procedural field (float32 in metres) and its size. */
+    /** Every named patch: the written .gsf holds the procedural field (float32 in metres) and its size. */
     @Test
-    void patchWritesEveryProceduralKind() {
-        for (String kind : new String[] {"blazed", "sinusoid", "elaphe-like", "xenopeltis-like"}) {
+    void patchWritesEveryNamedPatch() {
+        for (PatchCatalogue.Entry entry : PatchCatalogue.ALL) {
+            String kind = entry.name();
             Path gsf = dir.resolve(kind + ".gsf");
-            Object[] result = run("patch", kind, "--seed", "3", "-o", gsf.toString());
+            boolean grating = entry.spec().kind().isGrating();
+            Object[] result = grating ? run("patch", kind, "-o", gsf.toString())
+                    : run("patch", kind, "--seed", "3", "-o", gsf.toString());
             assertEquals(0, result[0], (String) result[2]);
             HeightField read = HeightFieldReader.load(gsf, null, null, Reporter.SILENT);
-            String specKind = switch (kind) {
-                case "elaphe-like" -> "elapheLike";
-                case "xenopeltis-like" -> "xenopeltisLike";
-                default -> kind;
-            };
-            ProceduralPatches.Spec d = ProceduralPatches.Spec.defaults(specKind);
-            HeightField expected = new ProceduralPatches.Spec(d.kind(), d.periodUm(), d.heightUm(), d.periods(),
-                    d.samplesPerPeriod(), d.rows(), d.sizePx(), d.roughnessUm(), 3).build().meanSubtracted();
+            HeightField expected = (grating ? entry.spec() : entry.spec().withSeed(3)).build().meanSubtracted();
             assertEquals(expected.rows(), read.rows(), kind);
             assertEquals(expected.cols(), read.cols(), kind);
             assertEquals(expected.pixelSizeXUm(), read.pixelSizeXUm(), 1e-9, kind);
@@ -219,7 +215,8 @@ class CliTest {
         }
         Object[] unknown = run("patch", "zebra", "-o", dir.resolve("z.gsf").toString());
         assertEquals(2, unknown[0]);
-        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like or xenopeltis-like"));
+        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like, xenopeltis-like, blazed-10um, tall"),
+                (String) unknown[2]);
     }
 
     @Test

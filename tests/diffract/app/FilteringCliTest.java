@@ -45,7 +45,7 @@ class FilteringCliTest {
 
     @Test
     void badFilteringOptionsEndWithOneLine() {
-        assertOneLine(run("--variant", "flss", "--light-size-deg", "2"), "lobes or reference");
+        assertOneLine(run("--variant", "flss", "--light-size-deg", "2"), "lobes variant");
         assertOneLine(run("--variant", "lobes", "--fresnel", "squared"), "--fresnel");
         assertOneLine(run("--variant", "lobes", "--light-size-deg", "25"), "angular diameter");
         assertOneLine(run("--variant", "lobes", "--light-size-deg", "1", "--lambda", "550"), "--light-size-deg");

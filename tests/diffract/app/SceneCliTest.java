@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -79,7 +79,7 @@ class SceneCliTest {
     @Test
     @Tag("gl")
     void anObjMeshFromASceneRendersWithItsExplicitTangents() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         squareObj("square.obj", false);
         Path scene = sceneWithObj("square.json", "square.obj");
         Path png = dir.resolve("square.png");
@@ -90,14 +90,14 @@ class SceneCliTest {
         assertEquals(48, image.getHeight());
         assertEquals(Pictures.clearColour(), image.getRGB(0, 0) & 0xffffff, "the corner is background");
         int coloured = Pictures.count(image, Pictures.COLOURED);
-        System.out.println("OBJ square 64x48: " + coloured + " coloured pixels");
+        TestReport.line(SceneCliTest.class, "OBJ square 64x48: " + coloured + " coloured pixels");
         assertTrue(coloured >= 20, "only " + coloured + " coloured pixels on the OBJ square");
     }
 
     @Test
     @Tag("gl")
     void commandLineOptionsOverrideTheScene() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("override.png");
         Object[] result = CliTest.run("render", "assets/scenes/blazed-grating-plane.json", "--variant", "pq",
                 "--terms", "6", "--lambda-step", "40", "--size", "48x32", "-o", png.toString());

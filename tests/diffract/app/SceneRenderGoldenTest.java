@@ -1,8 +1,7 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.GlTestSupport;
 import diffract.render.GoldenImages;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -35,7 +34,7 @@ class SceneRenderGoldenTest {
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = {"snake-elaphe", "snake-xenopeltis", "blazed-grating-plane", "brdfmap-elaphe"})
     void renderOfEachDefaultSceneMatchesItsGolden(String name) throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Files.createDirectories(GoldenImages.DIFFS);
         Path png = GoldenImages.DIFFS.resolve("scene-" + name + "-actual.png");
         Object[] result = CliTest.run("render", Path.of("assets", "scenes", name + ".json").toString(),

@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
-import org.junit.jupiter.api.Assumptions;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -23,19 +23,21 @@ class ViewerCliTest {
     @Test
     @Tag("gl")
     void renderWritesAPictureOfTheShapeAtTheRequestedSize() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("sphere.png");
-        Object[] result = CliTest.run("render", "--synthetic", "elaphe-like", "--terms", "8", "--lambda-step", "20",
-                "--coherence-length", "10", "--size", "96x64", "-o", png.toString());
+        Object[] result = CliTest.run("render", "--synthetic", "elaphe-like", "--variant", "flss", "--terms", "8",
+                "--lambda-step", "20", "--coherence-length", "10", "--size", "96x64", "-o", png.toString());
         assertEquals(0, result[0], (String) result[2]);
         assertTrue(((String) result[1]).contains("wrote " + png), (String) result[1]);
+        assertTrue(((String) result[2]).matches("(?s).*diffract: OpenGL \\d\\.\\d.*, GLSL .*"),
+                "render names the OpenGL it draws with: " + result[2]);
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(96, image.getWidth());
         assertEquals(64, image.getHeight());
         int centre = image.getRGB(48, 32) & 0xffffff;
         assertNotEquals(Pictures.clearColour(), centre, "the centre shows the background, not the sphere");
         int coloured = Pictures.count(image, Pictures.COLOURED);
-        System.out.println("render 96x64: " + coloured + " coloured pixels");
+        TestReport.line(ViewerCliTest.class, "render 96x64: " + coloured + " coloured pixels");
         assertTrue(coloured >= 5, "only " + coloured + " coloured pixels: no structural colour on the sphere");
     }
 
@@ -43,7 +45,7 @@ class ViewerCliTest {
     @Test
     @Tag("gl")
     void theSnakeIsIridescent() throws Exception {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         Path png = dir.resolve("snake.png");
         // fewer terms: llvmpipe is slow, and the patch needs only ~12 at 380 nm
         String[] args = {"render", DemoCommand.defaultScene(dir).toString(), "--terms", "12", "--size", "160x100",
@@ -54,7 +56,7 @@ class ViewerCliTest {
         int red = Pictures.count(image, (r, g, b) -> r > g + 30 && r > b + 30);
         int green = Pictures.count(image, (r, g, b) -> g > r + 30 && g > b + 30);
         int blue = Pictures.count(image, (r, g, b) -> b > r + 30 && b > g + 30);
-        System.out.printf("snake 160x100: %d red, %d green, %d blue pixels%n", red, green, blue);
+        TestReport.printf(ViewerCliTest.class, "snake 160x100: %d red, %d green, %d blue pixels%n", red, green, blue);
         assertTrue(red >= 3 && green >= 3 && blue >= 3, "not a rainbow: " + red + " red, " + green + " green, "
                 + blue + " blue pixels");
     }
@@ -66,14 +68,14 @@ class ViewerCliTest {
         assertOneLine(CliTest.run("render", "scene.json", "-o", out), "cannot read scene file scene.json");
         assertOneLine(CliTest.run("render", "assets/scenes/snake-elaphe.json", "--shape", "sphere", "-o", out),
                 "--shape cannot be combined with a SCENE");
-        assertOneLine(CliTest.run("render", "--variant", "reference", "-o", out), "flss, nmm or pq");
+        assertOneLine(CliTest.run("render", "--variant", "reference", "-o", out), "the GPU renders flss, nmm, pq, baked and lobes");
         assertOneLine(CliTest.run("render", "--shape", "teapot", "-o", out), "sphere, plane, cylinder or snake");
         assertOneLine(CliTest.run("render", "--size", "12x9000", "-o", out), "--size");
         assertOneLine(CliTest.run("render", "--tangent", "0,0,0", "-o", out), "--tangent");
-        assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "elaphe-like or blazed");
+        assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "unknown patch 'zebra': use blazed, sinusoid");
         assertOneLine(CliTest.run("render", "--patch", "missing.png", "--synthetic", "blazed", "-o", out), "not both");
         assertOneLine(CliTest.run("render", "-o", dir.resolve("x.jpg").toString()), "PNG");
-        assertOneLine(CliTest.run("view", "--terms", "500"), "--terms");
+        assertOneLine(CliTest.run("view", "--terms", "500"), "--terms: the highest Taylor order N must be in 0..100, got 500");
         Object[] missingOutput = CliTest.run("render");
         assertEquals(2, missingOutput[0]);
     }

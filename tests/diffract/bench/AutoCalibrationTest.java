@@ -1,12 +1,13 @@
 package diffract.bench;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -24,13 +25,13 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  */
 class AutoCalibrationTest {
     static final HeightField GRATING = SyntheticPatches.blazed(2.5, 0.13, 20, 4, 16).meanSubtracted();
-    static final BrdfSettings BASE = new BrdfSettings(Variant.FLSS, 30, 1, 380, 780, 5, 2.5, 1.5, 0);
+    static final BrdfSettings BASE = BrdfSettings.builder(Variant.FLSS).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 2.5).refractiveIndex(1.5).pqReplicas(0).build();
     static final int SIZE = 32;
     /** AutoCalibration's name for the patch it calibrates. */
     static final String GRATING_NAME = "patch";
     static final List<SweepPlan.Point> PLAN = List.of(SweepPlan.thesis(SIZE),
-            new SweepPlan.Point(4, 5, 1, "rg32f", SIZE), new SweepPlan.Point(30, 25, 1, "rg32f", SIZE),
-            new SweepPlan.Point(30, 5, 0, "rg32f", SIZE), new SweepPlan.Point(8, 10, 1, "rg8", SIZE));
+            new SweepPlan.Point(4, 5, 1, TermFormat.RG32F, SIZE), new SweepPlan.Point(30, 25, 1, TermFormat.RG32F, SIZE),
+            new SweepPlan.Point(30, 5, 0, TermFormat.RG32F, SIZE), new SweepPlan.Point(8, 10, 1, TermFormat.RG8, SIZE));
 
     @TempDir
     static Path cache;
@@ -38,9 +39,9 @@ class AutoCalibrationTest {
 
     @BeforeAll
     static void calibrate() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(), "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+        GlTestSupport.assumeOffscreenGl();
         calibration = AutoCalibration.of(GRATING, 0, BASE, cache, Reporter.SILENT, PLAN);
-        calibration.forEach(r -> System.out.printf("calibration: %s: %.2f ms, CIEDE2000 %.3f%n",
+        calibration.forEach(r -> TestReport.printf(AutoCalibrationTest.class, "calibration: %s: %.2f ms, CIEDE2000 %.3f%n",
                 AutoChoice.describe(r), r.msPerFrame(), r.deltaEMean()));
     }
 
@@ -53,7 +54,7 @@ class AutoCalibrationTest {
     @Test
     void theChoiceMeetsTheTargetAtHeldOutLights(@TempDir Path references) {
         AutoChoice choice = AutoChoice.choose(calibration, 2.0).orElseThrow();
-        System.out.println(choice.explanation());
+        TestReport.line(AutoCalibrationTest.class, choice.explanation());
         BenchRunner heldOut = new BenchRunner(new ReferenceMaps(references, Reporter.SILENT), Reporter.SILENT,
                 List.of(30.0, 60.0));
         List<BenchConfig> candidates = calibration.stream().filter(r -> r.deltaEMean() <= 2.0)
@@ -62,17 +63,21 @@ class AutoCalibrationTest {
         for (BenchResult check : heldOut.run(candidates, Map.of(GRATING_NAME, new BenchPatch(GRATING_NAME, GRATING, 0)),
                 BASE, r -> { })) {
             String what = AutoChoice.describe(check) + " held out (theta_i 30, 60): CIEDE2000 " + check.deltaEMean();
-            System.out.println(what);
+            TestReport.line(AutoCalibrationTest.class, what);
             assertTrue(check.error().litPixels() >= 20, "too few lit pixels: " + what);
             assertTrue(check.deltaEMean() <= 2.0, what);
         }
     }
 
-    /** Every swept variant is measured, once per distinct point (NMM ignores the step). */
+    /**
+     * Every swept variant the patch allows is measured, once per distinct point (NMM ignores the step); the lobes
+     * shader refuses this patch at 10 um (sigma_f = 0.64 texels: texel pairs matter), so its points are left out.
+     */
     @Test
     void theCalibrationCoversEveryVariant() {
         for (Variant v : SweepPlan.sweptVariants(true)) {
-            assertTrue(calibration.stream().anyMatch(r -> r.config().settings().variant() == v), v.toString());
+            assertEquals(v != Variant.LOBES, calibration.stream().anyMatch(r -> r.config().settings().variant() == v),
+                    v.toString());
         }
         assertEquals(5 + 4 + 5, calibration.size());
     }

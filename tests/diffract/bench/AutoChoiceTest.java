@@ -15,8 +15,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /** The auto variant's choice rules on hand-made calibrations. */
 class AutoChoiceTest {
     private static BenchResult result(int terms, double ms, double deltaE) {
-        BrdfSettings s = BrdfSettings.thesis(Variant.FLSS).withHighestOrder(terms);
-        return new BenchResult(new BenchConfig("p", s, "rg32f", 64), ms, new MapError(deltaE, 2 * deltaE, deltaE / 10, 100));
+        BrdfSettings s = BrdfSettings.thesis(Variant.FLSS).with(b -> b.highestOrder(terms));
+        return new BenchResult(new BenchConfig("p", s, 64), ms, new MapError(deltaE, 2 * deltaE, deltaE / 10, 100));
     }
 
     @Test
@@ -47,7 +47,7 @@ class AutoChoiceTest {
     void ofEquallyCheapConfigurationsTheMoreAccurateAndNeverOneWithoutLitPixels() {
         BenchResult a = result(8, 10, 1.0);
         BenchResult b = result(16, 10, 0.5);
-        BenchResult unlit = new BenchResult(new BenchConfig("p", BrdfSettings.thesis(Variant.NMM), "rg32f", 64), 1,
+        BenchResult unlit = new BenchResult(new BenchConfig("p", BrdfSettings.thesis(Variant.NMM), 64), 1,
                 new MapError(Double.NaN, Double.NaN, 0, 0));
         assertEquals(b, AutoChoice.choose(List.of(a, unlit, b), 2).orElseThrow().chosen());
     }

@@ -15,7 +15,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** What the sweeps hold: the lean points (early stop, automatic window), the baked table once per patch. */
 class SweepPlanTest {
-    private static final BrdfSettings BASE = BrdfSettings.thesis(Variant.FLSS).withSigmaSpatialUm(2.5);
+    private static final BrdfSettings BASE = BrdfSettings.thesis(Variant.FLSS).with(b -> b.coherenceLengthUm(4 * (2.5)));
 
     @Test
     void theQuickSweepMeasuresTheLeanThesisPointAgainstTheFixedOneAndLeavesTheBakeOut() {
@@ -27,7 +27,7 @@ class SweepPlanTest {
         BenchConfig lean = find(configs, 30, 5, SweepPlan.LEAN_TAYLOR_TOLERANCE);
         assertEquals("1", fixed.windowRadiusLabel());
         assertEquals("auto", lean.windowRadiusLabel());
-        assertTrue(lean.settings().automaticWindowRadius());
+        assertTrue(lean.settings().window().automatic());
         assertFalse(fixed.key().equals(lean.key()), "the lean point is a configuration of its own");
     }
 
@@ -37,10 +37,10 @@ class SweepPlanTest {
         List<BenchConfig> baked = SweepPlan.configs(List.of("a", "b"), List.of(Variant.BAKED), full, BASE);
         assertEquals(4, baked.size(), "2 patches x 2 sizes");
         for (BenchConfig c : baked) {
-            assertEquals(30, c.settings().highestOrder());
-            assertEquals(5, c.settings().lambdaStepNm());
-            assertEquals(0, c.settings().taylorTolerance());
-            assertEquals(SweepPlan.EXACT_FORMAT, c.textureFormat());
+            assertEquals(30, c.settings().taylor().highestOrder());
+            assertEquals(5, c.settings().spectral().lambdaStepNm());
+            assertEquals(0, c.settings().taylor().tolerance());
+            assertEquals(SweepPlan.EXACT_FORMAT, c.settings().gpu().termFormat());
         }
     }
 
@@ -57,14 +57,14 @@ class SweepPlanTest {
         assertEquals(results.size(), read.size());
         for (int i = 0; i < results.size(); i++) {
             assertEquals(results.get(i).config().key(), read.get(i).config().key());
-            assertEquals(results.get(i).config().settings().automaticWindowRadius(),
-                    read.get(i).config().settings().automaticWindowRadius());
+            assertEquals(results.get(i).config().settings().window().automatic(),
+                    read.get(i).config().settings().window().automatic());
         }
     }
 
     private static BenchConfig find(List<BenchConfig> configs, int n, double stepNm, double tolerance) {
-        return configs.stream().filter(c -> c.settings().highestOrder() == n && c.settings().lambdaStepNm() == stepNm
-                && c.settings().taylorTolerance() == tolerance && c.textureFormat().equals(SweepPlan.EXACT_FORMAT))
+        return configs.stream().filter(c -> c.settings().taylor().highestOrder() == n && c.settings().spectral().lambdaStepNm() == stepNm
+                && c.settings().taylor().tolerance() == tolerance && c.settings().gpu().termFormat() == SweepPlan.EXACT_FORMAT)
                 .findFirst().orElseThrow();
     }
 }

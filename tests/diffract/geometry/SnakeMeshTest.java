@@ -1,5 +1,6 @@
 package diffract.geometry;
 
+import diffract.util.TestReport;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -23,7 +24,7 @@ class SnakeMeshTest {
     @Test
     void triangleCountIsBetween20kAnd60k() {
         int triangles = mesh.triangleCount();
-        System.out.println("snake: " + triangles + " triangles, " + mesh.vertexCount() + " vertices");
+        TestReport.line(SnakeMeshTest.class, "snake: " + triangles + " triangles, " + mesh.vertexCount() + " vertices");
         assertEquals(SnakeMesh.Parameters.defaults().triangleCount(), triangles);
         assertTrue(triangles >= 20_000 && triangles <= 60_000, "triangles: " + triangles);
     }
@@ -139,7 +140,29 @@ class SnakeMeshTest {
                 () -> SnakeMesh.Parameters.defaults().withResolution(4, 64));
         assertTrue(e.getMessage().contains("rings"), e.getMessage());
         e = assertThrows(UserInputException.class, () -> new SnakeMesh.Parameters(1, 0.5, 0.85, 0.25, 2, 0.1, 0.02,
-                100, 32, SnakeMesh.RidgeDirection.ALONG_BODY));
+                100, 32, SnakeMesh.RidgeDirection.ALONG_BODY, SnakeMesh.Pose.S_CURVE));
         assertTrue(e.getMessage().contains("radiusM"), e.getMessage());
+    }
+
+    @Test
+    void theCoiledSnakeIsClosedLiesOnTheGroundAndItsCoilsDoNotTouch() {
+        SnakeMesh coiled = SnakeMesh.generate(SnakeMesh.Parameters.defaults().withPose(SnakeMesh.Pose.COILED));
+        Mesh m = coiled.mesh();
+        assertTrue(m.isClosed());
+        double[] b = m.bounds();
+        assertEquals(0, b[1], 2e-3, "the belly rests on y = 0");
+        // a 1.2 m snake in a flat coil is a disc of about 0.3 m, far smaller than when stretched out
+        assertTrue(b[3] - b[0] < 0.4 && b[5] - b[2] < 0.4, "coil extent " + (b[3] - b[0]) + " x " + (b[5] - b[2]));
+        // the profile: v rises from snout to tail, the vent where the tail begins
+        SnakeMesh.Profile profile = coiled.profile();
+        assertEquals(SnakeMesh.Parameters.defaults().rings(), profile.v().length);
+        assertTrue(profile.ventV() > 0.6 && profile.ventV() < 0.9, "vent at v " + profile.ventV());
+        assertTrue(profile.lengthAlongM() > 1.2, "the side is longer than the body's x extent");
+        float[] p = m.positions();
+        float[] n = m.normals();
+        float[] c = coiled.centreCurvePoints();
+        for (int v = 0; v < m.vertexCount(); v++) {
+            assertTrue(Vec3.at(p, v).minus(Vec3.at(c, v)).dot(Vec3.at(n, v)) > 0, "vertex " + v + " normal points in");
+        }
     }
 }

@@ -8,16 +8,32 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.Optional;
 
-/** Shared helpers for the GL tests: the display assumption, a standard camera, pixel access, shader files. */
-final class GlTestSupport {
+/**
+ * Shared helpers for the GL tests. The two assumptions are what every GL test in every package starts with:
+ * {@link #assumeOffscreenGl()} for anything drawn offscreen (headless EGL, no X server needed; {@link HeadlessGL}
+ * chooses the context exactly as the commands do), {@link #assumeWindow()} for tests that open a window (tag them
+ * {@value #WINDOW_TAG}: {@code .ci/run} runs that tag again under Xvfb). Also a standard camera, pixel access and
+ * shader files for the engine's own tests.
+ */
+public final class GlTestSupport {
+    /** JUnit tag of the tests that need a window, hence an X display. */
+    public static final String WINDOW_TAG = "window";
+
     private GlTestSupport() {
     }
 
-    /** GL tests are skipped, not failed, where no X display exists. */
-    static void assumeDisplay() {
+    /** Skips (does not fail) the test where no offscreen GL context can be made, saying why and what to install. */
+    public static void assumeOffscreenGl() {
+        Optional<String> problem = HeadlessGL.problem();
+        Assumptions.assumeTrue(problem.isEmpty(), () -> "skipping GL test: " + problem.orElse(""));
+    }
+
+    /** Skips the test where no X display exists for a window (e.g. outside {@code xvfb-run}). */
+    public static void assumeWindow() {
         Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
-                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
+                () -> "skipping window test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
     }
 
     /** Eye (0,0,1) looking at the origin: with a 90 degree frustum, z = 0 shows exactly [-1,1] x [-1,1]. */

@@ -1,5 +1,6 @@
 package diffract.jrtr;
 
+import diffract.util.TestReport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -11,12 +12,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class GpuTimerTest {
     @Test
     void medianFrameTimeIsPositiveAndFinite() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         Group root = new Group("root").add(new ShapeNode(Shapes.cube(0.5f), GlTestSupport.unlit(1, 0, 0)));
         try (OffscreenTarget target = new OffscreenTarget(new Renderer(root, GlTestSupport.unitCamera(),
                 GlTestSupport.rightAngleFrustum()))) {
             double ms = target.measureMedianMs(128, 128, 3, 10);
-            System.out.println("GpuTimer: median " + ms + " ms per 128x128 frame on " + target.info().renderer());
+            TestReport.line(GpuTimerTest.class, "GpuTimer: median " + ms + " ms per 128x128 frame on " + target.info().renderer());
             assertTrue(ms > 0 && Double.isFinite(ms), "median " + ms);
             assertTrue(ms < 10_000, "a tiny frame should not take seconds: " + ms);
             assertThrows(IllegalArgumentException.class, () -> target.withContext(gl ->

@@ -1,5 +1,6 @@
 package diffract.jrtr;
 
+import diffract.util.TestReport;
 import diffract.util.ImageFiles;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -29,11 +30,11 @@ class OffscreenRenderTest {
 
     @BeforeAll
     static void createTarget() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         renderer = new Renderer(new Group("empty"), GlTestSupport.unitCamera(), GlTestSupport.rightAngleFrustum());
         renderer.setClearColor(0.1f, 0.2f, 0.3f, 1f);
         target = new OffscreenTarget(renderer);
-        System.out.println("GL under test: " + target.info());
+        TestReport.line(OffscreenRenderTest.class, "GL under test: " + target.info());
     }
 
     @AfterAll

@@ -8,10 +8,11 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 /** The renderer that draws offscreen also draws into a window (here on Xvfb), with the same result. */
 @Tag("gl")
+@Tag(GlTestSupport.WINDOW_TAG)
 class OnscreenWindowTest {
     @Test
     void sameRendererDrawsTheSamePictureInAWindow() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeWindow();
         Group root = new Group("root").add(new ShapeNode(Shapes.rectangle("q", -0.5f, -0.5f, 0.5f, 0.5f, 0),
                 GlTestSupport.unlit(1, 0.5f, 0)));
         Renderer renderer = new Renderer(root, GlTestSupport.unitCamera(), GlTestSupport.rightAngleFrustum());

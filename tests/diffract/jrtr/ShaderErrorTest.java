@@ -1,5 +1,6 @@
 package diffract.jrtr;
 
+import diffract.util.TestReport;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
@@ -19,7 +20,7 @@ class ShaderErrorTest {
 
     @BeforeAll
     static void createTarget() {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         target = new OffscreenTarget(new Renderer(new Group("empty"), GlTestSupport.unitCamera(),
                 GlTestSupport.rightAngleFrustum()));
     }
@@ -60,7 +61,7 @@ class ShaderErrorTest {
         ShaderProgram program = ShaderProgram.fromDirectory(dir, "pass.vert", "main.frag",
                 Map.of("A", "1", "B", "2", "C", "3"));
         ShaderException error = compileError(program);
-        System.out.println(error.getMessage());
+        TestReport.line(ShaderErrorTest.class, error.getMessage());
         // the missing ';' is reported on line 3 or, by parsers that notice it at the next token, line 4 (the
         // first line of helpers.glsl after the include); what matters is the ORIGINAL file name and line
         assertTrue(error.getMessage().contains("lib/broken.glsl:3: "), error.getMessage());

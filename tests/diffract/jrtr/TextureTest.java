@@ -15,6 +15,7 @@ import java.util.Random;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
@@ -34,7 +35,7 @@ class TextureTest {
 
     @BeforeAll
     static void createTarget() throws Exception {
-        GlTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         GlTestSupport.write(shaderDir, "pass.vert", GlTestSupport.PASS_THROUGH_VERTEX);
         // pixel (x, y) with y = layer * HEIGHT + row shows texel (x, row) of that layer
         GlTestSupport.write(shaderDir, "array.frag", String.join("\n",
@@ -60,6 +61,13 @@ class TextureTest {
                 "uniform sampler2D image;",
                 "out vec4 fragColor;",
                 "void main() { fragColor = texelFetch(image, ivec2(gl_FragCoord.xy), 0); }",
+                ""));
+        GlTestSupport.write(shaderDir, "two1d.frag", String.join("\n",
+                "#version 330 core",
+                "uniform sampler1D first;",
+                "uniform sampler1D second;",
+                "out vec4 fragColor;",
+                "void main() { fragColor = vec4(texelFetch(first, 0, 0).r, texelFetch(second, 0, 0).r, 0.0, 1.0); }",
                 ""));
         renderer = new Renderer(new Group("empty"), GlTestSupport.unitCamera(), GlTestSupport.rightAngleFrustum());
         target = new OffscreenTarget(renderer);
@@ -201,5 +209,28 @@ class TextureTest {
         assertTrue(name > 0);
         draw(material, 1, 1);
         assertEquals(name, (int) target.withContext(gl -> table.glTexture()), "same GL texture object, no re-upload");
+    }
+
+    /**
+     * Two textures of one target, both uploaded by their first draw: the second's upload must not undo the first's
+     * binding (an upload binds on unit 0, where the first texture already sits for this draw).
+     */
+    @Test
+    void aFirstDrawUploadsEveryTextureWithoutLosingABinding() {
+        Material material = material("two1d.frag").setTexture("first", new FloatTexture1D(new float[] {3, 0, 0, 0}))
+                .setTexture("second", new FloatTexture1D(new float[] {5, 0, 0, 0}));
+        float[] rgba = draw(material, 1, 1);
+        assertEquals(3f, rgba[0], "the texture on unit 0");
+        assertEquals(5f, rgba[1], "the texture on unit 1");
+    }
+
+    /** A material names only uniforms its program declares, and sets every uniform the program uses. */
+    @Test
+    void unknownAndUnsetUniformsAreRefused() {
+        FloatTexture1D table = new FloatTexture1D(new float[] {1, 2, 3, 4});
+        Material typo = material("table1d.frag").setTexture("table", table).setFloat("tabel", 1);
+        assertThrows(IllegalArgumentException.class, () -> draw(typo, 1, 1));
+        Material unset = material("two1d.frag").setTexture("first", table);
+        assertThrows(IllegalStateException.class, () -> draw(unset, 1, 1));
     }
 }

@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.util.TestReport;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
@@ -8,7 +9,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * Issue #5, part 2: the Taylor loop that stops once the Lagrange remainder of the lookup's own x = |k w| max|h|
+ * The Taylor loop that stops once the Lagrange remainder of the lookup's own x = |k w| max|h|
  * meets a tolerance, and the window radius that follows sigma_f, held against the fixed-N, fixed-window sums.
  */
 class EarlyStopAndWindowTest {
@@ -39,9 +40,7 @@ class EarlyStopAndWindowTest {
             }
         }
         assertTrue(checked > 100);
-        assertEquals(new BrdfSettings(Variant.FLSS, 30, 1, 380, 780, 5, 16.25, 1.5, 0),
-                BrdfSettings.thesis(Variant.FLSS), "the 9-argument constructor keeps the old defaults");
-        assertEquals(0.0, BrdfSettings.thesis(Variant.FLSS).taylorTolerance());
+        assertEquals(0.0, BrdfSettings.thesis(Variant.FLSS).taylor().tolerance());
     }
 
     /**
@@ -82,7 +81,7 @@ class EarlyStopAndWindowTest {
                 }
             }
             double meanOrder = orderSum / count;
-            System.out.printf("early stop, tolerance %.0e: largest change / bound %.3g, mean stop order %.1f of 30%n",
+            TestReport.printf(EarlyStopAndWindowTest.class, "early stop, tolerance %.0e: largest change / bound %.3g, mean stop order %.1f of 30%n",
                     tolerance, worstRatio, meanOrder);
             assertTrue(meanOrder < 25, "the loop must stop early on average, got " + meanOrder);
         }
@@ -106,7 +105,7 @@ class EarlyStopAndWindowTest {
             }
         }
         // only the terms a patch can need are uploaded
-        BrdfSettings s = BrdfSettings.thesis(Variant.FLSS).withTaylorTolerance(8.8e-8);
+        BrdfSettings s = BrdfSettings.thesis(Variant.FLSS).with(b -> b.taylorTolerance(8.8e-8));
         assertEquals(26, s.highestOrderNeeded(0.15 * 380 / 400.0));
         assertEquals(30, BrdfSettings.thesis(Variant.FLSS).highestOrderNeeded(0.15));
     }
@@ -127,7 +126,7 @@ class EarlyStopAndWindowTest {
         for (double sigma : new double[] {0.02, 0.09, 0.2, 0.4, 0.637, 1.0, 1.5, 2.0}) {
             int r = WindowRadii.automatic(sigma);
             double captured = WindowRadii.capturedWeight(sigma, r);
-            System.out.printf("automatic window: sigma %.3f texels -> R = %d, captures %.5f per axis%n",
+            TestReport.printf(EarlyStopAndWindowTest.class, "automatic window: sigma %.3f texels -> R = %d, captures %.5f per axis%n",
                     sigma, r, captured);
             assertTrue(captured >= 0.997, "sigma " + sigma + ", R " + r + ": " + captured);
             assertTrue(captured * captured >= 0.994);
@@ -137,15 +136,15 @@ class EarlyStopAndWindowTest {
         // texel weights are the Gaussian at the cell centres, the continuous mass its integral over the cells: the
         // midpoint rule's error on the tails, ~ G'' / 24 per cell, separates them by 1.6e-4 here
         assertEquals(continuousWorstShare(2.0, 6), WindowRadii.capturedWeight(2.0, 6), 3e-4);
-        WindowRadii radii = BrdfSettings.thesis(Variant.FLSS).withAutomaticWindowRadius(true).windowRadii(65, 1.6);
+        WindowRadii radii = BrdfSettings.thesis(Variant.FLSS).with(b -> b.automaticWindowRadius(true)).windowRadii(65, 1.6);
         assertEquals(new WindowRadii(2, 0), radii, "the 65 x 1.6 um blazed grating");
     }
 
     /** The automatic radius changes the FLSS map by at most the weight it adds beyond the fixed window. */
     @Test
     void automaticRadiusIsUsedByTheCpuVariants() {
-        BrdfSettings s = new BrdfSettings(Variant.FLSS, 30, 1, 380, 780, 5, 2.5, 1.5, 0)
-                .withAutomaticWindowRadius(true);
+        BrdfSettings s = BrdfSettings.builder(Variant.FLSS).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 2.5).refractiveIndex(1.5).pqReplicas(0).build()
+                .with(b -> b.automaticWindowRadius(true));
         WindowRadii radii = s.windowRadii(TERMS.cols() * TERMS.pixelSizeXUm(), TERMS.rows() * TERMS.pixelSizeYUm());
         TaylorGaussianSpectrum literal = new TaylorGaussianSpectrum(TERMS, 30, radii, 0.0, s.coherenceWindow());
         DiffractionBrdf brdf = DiffractionBrdf.create(s, PATCH, TERMS);

@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.util.TestReport;
 import diffract.optics.io.HeightFieldReader;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Assumptions;
@@ -24,7 +25,7 @@ class ElaphePatchTest {
         DiffractionBrdf brdf = DiffractionBrdf.create(BrdfSettings.thesis(Variant.REFERENCE), patch, null);
         // incidence plane along y (phi_i = 90 deg), where the ridge period lies; 75 degrees as the thesis did
         double periodUm = PeakFinder.meanPeriodFromFirstOrderUm(brdf, 75, 90, 380, 780, 20);
-        System.out.printf("Elaphe patch, reference: first-order period %.2f nm (thesis: 1144.26 FLSS, 1144.18 NMM)%n",
+        TestReport.printf(ElaphePatchTest.class, "Elaphe patch, reference: first-order period %.2f nm (thesis: 1144.26 FLSS, 1144.18 NMM)%n",
                 periodUm * 1e3);
         assertEquals(1.144, periodUm, 0.02 * 1.144, "period " + periodUm + " um");
     }

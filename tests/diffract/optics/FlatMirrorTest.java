@@ -9,13 +9,13 @@ import org.junit.jupiter.params.provider.EnumSource;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
-/** A flat patch is a mirror: D65 white in the specular direction, nothing elsewhere (issue #2, relative BRDF). */
+/** A flat patch is a mirror: D65 white in the specular direction, nothing elsewhere (relative BRDF). */
 class FlatMirrorTest {
     private static final HeightField FLAT = SyntheticPatches.flat(64, 64, 0.1).meanSubtracted();
     private static final TaylorTerms TERMS = TaylorTermComputer.compute(FLAT, 4, Reporter.SILENT);
 
     private static DiffractionBrdf brdf(Variant variant) {
-        return DiffractionBrdf.create(BrdfSettings.thesis(variant).withHighestOrder(4), FLAT, TERMS);
+        return DiffractionBrdf.create(BrdfSettings.thesis(variant).with(b -> b.highestOrder(4)), FLAT, TERMS);
     }
 
     @ParameterizedTest

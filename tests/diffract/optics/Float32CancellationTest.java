@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.util.TestReport;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
@@ -11,7 +12,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * Measures where a float32 Taylor sum, as the GPU computes it, turns into rounding noise, and holds the measured
- * error to {@link Float32Cancellation}'s estimate 2^-24 e^x (issue #6).
+ * error to {@link Float32Cancellation}'s estimate 2^-24 e^x.
  */
 class Float32CancellationTest {
 
@@ -62,15 +63,15 @@ class Float32CancellationTest {
                 firstUnreliable = x;
             }
         }
-        System.out.print(table);
+        TestReport.line(Float32CancellationTest.class, table);
         // ... and the breakdown is real: by x ~ 20 the float32 sum errs by more than 1e-3 (P itself is <= 1)
         assertTrue(firstUnreliable <= 21, "float32 stayed accurate to x = 21?\n" + table);
-        System.out.printf(Locale.ROOT, "float32 sum first errs by > 1e-3 at x = %.1f (estimate: x > %.1f)%n",
+        TestReport.printf(Float32CancellationTest.class, Locale.ROOT, "float32 sum first errs by > 1e-3 at x = %.1f (estimate: x > %.1f)%n",
                 firstUnreliable, Float32Cancellation.reliablePhaseLimit(1e-3));
     }
 
     /**
-     * The phase-centred expansion (issue #6) summed exactly as taylor_centred.glsl does, in float32 (coefficients
+     * The phase-centred expansion summed exactly as taylor_centred.glsl does, in float32 (coefficients
      * of the offset k w - a_j by the shader's recurrence): its error stays at the float32 level, about
      * 2^-24 e^b (b = 2), at every height, where the plain series' error grows like e^x.
      */
@@ -105,7 +106,7 @@ class Float32CancellationTest {
             // measured at most 2.7e-7 up to x = 67 (printed)
             assertTrue(worst < 1e-5, "x = " + x + ": centred float32 error " + worst + "\n" + table);
         }
-        System.out.print(table);
+        TestReport.line(Float32CancellationTest.class, table);
     }
 
     /**
@@ -148,7 +149,7 @@ class Float32CancellationTest {
             previousLayers = centres.layerCount();
             previousOrders = centres.ordersPerCentre();
         }
-        System.out.print(table);
+        TestReport.line(Float32CancellationTest.class, table);
     }
 
     /**
@@ -177,7 +178,7 @@ class Float32CancellationTest {
                     worst, estimate));
             assertTrue(worst <= 10 * estimate, "estimate below a tenth of the error\n" + table);
         }
-        System.out.print(table);
+        TestReport.line(Float32CancellationTest.class, table);
     }
 
     @Test

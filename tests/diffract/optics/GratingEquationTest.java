@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.util.TestReport;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
@@ -53,7 +54,7 @@ class GratingEquationTest {
         for (Variant variant : new Variant[] {Variant.FLSS, Variant.REFERENCE}) {
             DiffractionBrdf brdf = DiffractionBrdf.create(BrdfSettings.thesis(variant), BLAZED, terms);
             double estimate = PeakFinder.meanPeriodFromFirstOrderUm(brdf, 75, 0, 380, 780, 20);
-            System.out.printf("blazed grating d = 2.5 um, %s: estimated d = %.4f nm%n", variant, estimate * 1e3);
+            TestReport.printf(GratingEquationTest.class, "blazed grating d = 2.5 um, %s: estimated d = %.4f nm%n", variant, estimate * 1e3);
             assertEquals(PERIOD_UM, estimate, 1e-3 * PERIOD_UM, variant + " estimated d = " + estimate + " um");
         }
     }

@@ -138,9 +138,10 @@ class LobeSpectrumTest {
         HeightField patch = SyntheticPatches.blazed(2.5, 0.2, 20, 4, 16).meanSubtracted();
         CoherenceWindow window = CoherenceWindow.thesis();
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
-        OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(2));
-        DiffractionBrdf lobes = DiffractionBrdf.create(BrdfSettings.thesis(Variant.LOBES), patch, terms, options);
-        DiffractionBrdf reference = DiffractionBrdf.create(BrdfSettings.thesis(Variant.REFERENCE), patch, null, options);
+        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
+                .lightSizeDeg(2));
+        DiffractionBrdf lobes = DiffractionBrdf.create(settings, patch, terms);
+        DiffractionBrdf reference = DiffractionBrdf.create(settings.with(b -> b.variant(Variant.REFERENCE)), patch, null);
         Direction wi = Direction.fromSphericalDeg(30, 30);
         int size = 64;
         int row = (int) Math.floor((1 + wi.y()) * size / 2);

@@ -1,7 +1,5 @@
 package diffract.optics;
 
-import diffract.app.AutoExposure;
-import diffract.app.BrdfMapDifference;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
@@ -34,11 +32,11 @@ class LobesAccuracyTest {
 
     private static void assertClose(HeightField patch, double phiDeg, double lightDeg, int size) {
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
-        OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(lightDeg));
+        BrdfSettings settings = BrdfSettings.thesis(Variant.REFERENCE).with(b -> b.pixelFilter(PixelFilter.BOX)
+                .lightSizeDeg(lightDeg));
         Direction wi = Direction.fromSphericalDeg(30, phiDeg);
-        float[] reference = strip(DiffractionBrdf.create(BrdfSettings.thesis(Variant.REFERENCE), patch, null,
-                options), wi, phiDeg, size);
-        float[] lobes = strip(DiffractionBrdf.create(BrdfSettings.thesis(Variant.LOBES), patch, terms, options), wi,
+        float[] reference = strip(DiffractionBrdf.create(settings, patch, null), wi, phiDeg, size);
+        float[] lobes = strip(DiffractionBrdf.create(settings.with(b -> b.variant(Variant.LOBES)), patch, terms), wi,
                 phiDeg, size);
         float[] luminance = new float[size * size];
         for (int p = 0; p < luminance.length; p++) {

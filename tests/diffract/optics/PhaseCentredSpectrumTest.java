@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.util.TestReport;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
@@ -12,7 +13,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The phase-centred expansion (issue #6) against the exact spectrum, from 10 nm to 2 um high patches, where the
+ * The phase-centred expansion against the exact spectrum, from 10 nm to 2 um high patches, where the
  * thesis' series around 0 (summed in double over the same kind of float32 terms) falls apart.
  */
 class PhaseCentredSpectrumTest {
@@ -106,7 +107,7 @@ class PhaseCentredSpectrumTest {
                 plainAtTwoMicrometres = worstPlain;
             }
         }
-        System.out.print(table);
+        TestReport.line(PhaseCentredSpectrumTest.class, table);
         assertTrue(plainAtTwoMicrometres > 1e-2, "the plain series should fail at 2 um:\n" + table);
     }
 }

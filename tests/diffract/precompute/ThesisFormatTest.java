@@ -1,5 +1,6 @@
 package diffract.precompute;
 
+import diffract.util.TestReport;
 import diffract.optics.HeightField;
 import diffract.optics.NaiveDft;
 import diffract.optics.TaylorTerms;
@@ -21,7 +22,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** Issue #7: the thesis' Octave term format, written and read back. */
+/** The thesis' Octave term format, written and read back. */
 class ThesisFormatTest {
     /** One ulp of a float32 in [0.5, 1]: the coarsest step of a stored normalised value in [0, 1]. */
     static final double ULP_OF_ONE = Math.ulp(1.0f);
@@ -69,7 +70,7 @@ class ThesisFormatTest {
         assertEquals(terms.pixelSizeXUm(), back.pixelSizeXUm());
         assertEquals(terms.maxAbsHeightUm(), back.maxAbsHeightUm());
         double worstRatio = compareWithinNormalisationBound(terms, back, readExtrema(dir), 0);
-        System.out.printf(Locale.ROOT, "thesis round trip %dx%d: worst |error| / ((rangeRe + rangeIm) ulp(1f)/2)"
+        TestReport.printf(ThesisFormatTest.class, Locale.ROOT, "thesis round trip %dx%d: worst |error| / ((rangeRe + rangeIm) ulp(1f)/2)"
                 + " = %.3f%n", rows, cols, worstRatio);
     }
 
@@ -158,7 +159,7 @@ class ThesisFormatTest {
         Files.delete(dir.resolve(ThesisFormat.EXTRAS_FILE));
         UserInputException e = assertThrows(UserInputException.class,
                 () -> ThesisFormat.read(dir, ThesisFormat.HeightUnit.AUTO, Reporter.SILENT));
-        assertTrue(e.getMessage().contains("--height-unit m or um"), e.getMessage());
+        assertTrue(e.getMessage().contains("give the height unit, m or um"), e.getMessage());
         ThesisFormat.read(dir, ThesisFormat.HeightUnit.MICROMETRES, Reporter.SILENT);
     }
 

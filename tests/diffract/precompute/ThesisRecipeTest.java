@@ -1,5 +1,6 @@
 package diffract.precompute;
 
+import diffract.util.TestReport;
 import diffract.optics.HeightField;
 import diffract.optics.NaiveDft;
 import diffract.optics.TaylorTerms;
@@ -53,7 +54,7 @@ class ThesisRecipeTest {
             assertEquals(rows, file.height());
             worst = Math.max(worst, compare(reference, file, extrema.get(n), rows, cols, "term " + n));
         }
-        System.out.printf(Locale.ROOT, "thesis recipe (Java) %dx%d: worst |difference| = %.3f ulp(1f) x (scale + range)%n",
+        TestReport.printf(ThesisRecipeTest.class, Locale.ROOT, "thesis recipe (Java) %dx%d: worst |difference| = %.3f ulp(1f) x (scale + range)%n",
                 rows, cols, worst);
     }
 
@@ -102,7 +103,7 @@ class ThesisRecipeTest {
                 worstValue = Math.max(worstValue, compare(reference, w, oursExtrema.get(n), rows, cols,
                         "octave term " + n));
             }
-            System.out.printf(Locale.ROOT, "thesis recipe (Octave) %dx%d: worst |difference| = %.3f ulp(1f) x "
+            TestReport.printf(ThesisRecipeTest.class, Locale.ROOT, "thesis recipe (Octave) %dx%d: worst |difference| = %.3f ulp(1f) x "
                     + "(scale + range)%n", rows, cols, worstValue);
         }
     }

@@ -1,5 +1,6 @@
 package diffract.precompute;
 
+import diffract.util.TestReport;
 import diffract.app.Main;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
@@ -37,7 +38,7 @@ class ThesisRenderTest {
     void thesisFolderRendersTheSameMapAsTheNativeFolder() throws IOException {
         HeightField field = SyntheticPatches.blazed(2.5, 0.2, 10, 4, 10).meanSubtracted();
         BrdfSettings settings = BrdfSettings.thesis(Variant.FLSS);
-        TaylorTerms terms = TaylorTermComputer.compute(field, settings.highestOrder(), Reporter.SILENT);
+        TaylorTerms terms = TaylorTermComputer.compute(field, settings.taylor().highestOrder(), Reporter.SILENT);
         Path nativeDir = tmp.resolve("native");
         TermStore.write(nativeDir, terms, new TermSidecar.Patch("blazed", field.contentSha256(), field.rows(),
                 field.cols(), field.pixelSizeXUm(), field.pixelSizeYUm(), null, field.maxAbsHeightUm()),
@@ -58,7 +59,7 @@ class ThesisRenderTest {
             DiffractionBrdf brdf = DiffractionBrdf.create(settings, field, TermFolders.read(dir, Reporter.SILENT));
             double xyz = relativeDifference(xyzNative, BrdfMap.xyz(brdf, wi, 32, Reporter.SILENT));
             double grey = relativeDifference(greyNative, BrdfMap.monochromatic(brdf, wi, 550, 32, Reporter.SILENT));
-            System.out.printf(Locale.ROOT, "thesis render %s: max |difference| / peak: XYZ %.3g, 550 nm %.3g%n",
+            TestReport.printf(ThesisRenderTest.class, Locale.ROOT, "thesis render %s: max |difference| / peak: XYZ %.3g, 550 nm %.3g%n",
                     dir.getFileName(), xyz, grey);
             assertTrue(xyz < 1e-6, "XYZ map differs by " + xyz + " of its peak");
             assertTrue(grey < 1e-6, "550 nm map differs by " + grey + " of its peak");

@@ -1,8 +1,9 @@
 package diffract.render;
 
-import diffract.app.BrdfMapDifference;
-import diffract.jrtr.FloatTextureArray;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
+import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
@@ -34,13 +35,13 @@ class BakedTradeMeasurement {
     @Test
     void measure() {
         Assumptions.assumeTrue("baked".equals(System.getProperty("diffract.measure")), "measurement only on request");
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField blazed = SyntheticPatches.blazed(2.5, 0.2, 25, 26, 16).meanSubtracted();
         HeightField elaphe = SyntheticPatches.elapheLike().meanSubtracted();
         String grids = System.getProperty("diffract.bakedGrids", "128,256");
-        System.out.println("| patch | 4 sigma_s | table (u x v x w) | GPU MB | bake s | theta_i | flss ms | baked ms | "
+        TestReport.line(BakedTradeMeasurement.class, "| patch | 4 sigma_s | table (u x v x w) | GPU MB | bake s | theta_i | flss ms | baked ms | "
                 + "speed-up | flss: lit mean / p95 | baked: lit mean / p95 | baked vs flss: lit mean / p95 |");
-        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|");
+        TestReport.line(BakedTradeMeasurement.class, "|---|---|---|---|---|---|---|---|---|---|---|---|");
         for (double coherenceUm : new double[] {10, 65}) {
             for (HeightField patch : new HeightField[] {blazed, elaphe}) {
                 for (String grid : grids.split(",")) {
@@ -54,11 +55,11 @@ class BakedTradeMeasurement {
     private static void measure(HeightField patch, String name, double phiDeg, double exposure, double coherenceUm,
                                 int uvSamples) {
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
-        BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS).withSigmaSpatialUm(coherenceUm / 4.0);
-        BrdfSettings baked = flss.withVariant(Variant.BAKED).withBakedSamples(uvSamples, 0);
-        DiffractionBrdf reference = DiffractionBrdf.create(flss.withVariant(Variant.REFERENCE), patch, null);
-        try (GpuBrdfMap flssMap = new GpuBrdfMap(terms, flss, FloatTextureArray.Precision.FLOAT32);
-             GpuBrdfMap bakedMap = new GpuBrdfMap(terms, baked, FloatTextureArray.Precision.FLOAT32)) {
+        BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS).with(b -> b.coherenceLengthUm(4 * (coherenceUm / 4.0)));
+        BrdfSettings baked = flss.with(b -> b.variant(Variant.BAKED)).with(b -> b.bakedSamples(uvSamples, 0));
+        DiffractionBrdf reference = DiffractionBrdf.create(flss.with(b -> b.variant(Variant.REFERENCE)), patch, null);
+        try (GpuBrdfMap flssMap = new GpuBrdfMap(terms, flss);
+             GpuBrdfMap bakedMap = new GpuBrdfMap(terms, baked)) {
             BakedTable table = bakedMap.bakedTable();
             for (double thetaI : new double[] {0, 45, 75}) {
                 Direction wi = Direction.fromSphericalDeg(thetaI, phiDeg);
@@ -70,7 +71,7 @@ class BakedTradeMeasurement {
                 BrdfMapDifference fr = BrdfMapDifference.of(ref, f, SIZE, exposure);
                 BrdfMapDifference br = BrdfMapDifference.of(ref, b, SIZE, exposure);
                 BrdfMapDifference bf = BrdfMapDifference.of(f, b, SIZE, exposure);
-                System.out.println(String.format(Locale.ROOT,
+                TestReport.line(BakedTradeMeasurement.class, String.format(Locale.ROOT,
                         "| %s | %.0f um | %d x %d x %d | %.1f | %.1f | %.0f | %.1f | %.2f | %.0f | %.2f / %.2f | "
                                 + "%.2f / %.2f | %.2f / %.2f |",
                         name, coherenceUm, table.grid().uvSamples(), table.grid().uvSamples(), table.grid().wSamples(),

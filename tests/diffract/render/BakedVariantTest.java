@@ -1,12 +1,13 @@
 package diffract.render;
 
-import diffract.app.BrdfMapDifference;
+import diffract.util.TestReport;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
 import diffract.jrtr.FloatTexture3D;
-import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfMap;
+import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
@@ -21,11 +22,12 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The BAKED variant (issue #5): FLSS's spectral XYZ(u, v, w) tabulated on the GPU and looked up trilinearly.
+ * The BAKED variant: FLSS's spectral XYZ(u, v, w) tabulated on the GPU and looked up trilinearly.
  * Settings as the other GPU tests ({@link RenderTestSupport#settings}: 30 terms, 3 x 3, 5 nm, 4 sigma_s = 10 um),
  * tables of 129 x 129 (u, v) samples (odd, so u = v = 0 is a sample) and the automatic w resolution.
  */
@@ -35,7 +37,7 @@ class BakedVariantTest {
     static final int UV_SAMPLES = 129;
 
     static BrdfSettings baked() {
-        return RenderTestSupport.settings(Variant.BAKED).withBakedSamples(UV_SAMPLES, 0);
+        return RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(UV_SAMPLES, 0));
     }
 
     /**
@@ -46,10 +48,10 @@ class BakedVariantTest {
      */
     @Test
     void tableSamplesAreTheCpuFlssSpectralSums() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).withBakedSamples(17, 3);
+        BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).with(b -> b.bakedSamples(17, 3));
         BakedTable table = BakedTable.bake(terms, settings, FloatTexture3D.Precision.FLOAT32, Reporter.SILENT);
         PatchSpectrum spectrum = DiffractionBrdf.create(settings, patch, terms).spectrum();
         WavelengthSampling sampling = WavelengthSampling.uniform(380, 780, 5);
@@ -86,7 +88,7 @@ class BakedVariantTest {
                 }
             }
         }
-        System.out.printf("baked samples vs CPU FLSS: %d samples, largest error %.2e of the table's peak %.3g%n",
+        TestReport.printf(BakedVariantTest.class, "baked samples vs CPU FLSS: %d samples, largest error %.2e of the table's peak %.3g%n",
                 compared, worst, largest);
         assertTrue(compared > 300);
     }
@@ -102,13 +104,13 @@ class BakedVariantTest {
      */
     @Test
     void bakedMapsAgreeWithFlssAndTheReference() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
             TaylorTerms terms = RenderTestSupport.terms(patch);
             DiffractionBrdf flss = DiffractionBrdf.create(RenderTestSupport.settings(Variant.FLSS), patch, terms);
             DiffractionBrdf reference = DiffractionBrdf.create(RenderTestSupport.settings(Variant.REFERENCE), patch,
                     terms);
-            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, baked(), FloatTextureArray.Precision.FLOAT32)) {
+            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, baked())) {
                 for (double thetaI : new double[] {0, 45, 75}) {
                     Direction wi = RenderTestSupport.light(patch, thetaI);
                     float[] cpuFlss = BrdfMap.xyz(flss, wi, SIZE, Reporter.SILENT);
@@ -118,8 +120,8 @@ class BakedVariantTest {
                     BrdfMapDifference toReference = RenderTestSupport.difference(cpuReference, actual, SIZE, wi);
                     BrdfMapDifference flssToReference = RenderTestSupport.difference(cpuReference, cpuFlss, SIZE, wi);
                     String where = "baked " + RenderTestSupport.name(patch) + " theta_i " + thetaI;
-                    System.out.println(where + " vs CPU flss: " + toFlss.summary());
-                    System.out.println(where + " vs CPU reference: " + toReference.summary()
+                    TestReport.line(BakedVariantTest.class, where + " vs CPU flss: " + toFlss.summary());
+                    TestReport.line(BakedVariantTest.class, where + " vs CPU reference: " + toReference.summary()
                             + "; flss vs reference: " + flssToReference.summary());
                     assertTrue(toFlss.litPixels() >= 20, where + ": too few lit pixels");
                     assertTrue(toFlss.disk().mean() <= 2.0, where + " vs flss: " + toFlss.summary());
@@ -136,12 +138,12 @@ class BakedVariantTest {
      */
     @Test
     void memoryIsAccountedAndTheBakeIsCached() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
-        BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).withBakedSamples(33, 0);
+        BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(33, 0));
         int before = BakedTables.bakeCount();
-        DiffractionTextures first = DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
-        DiffractionTextures second = DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures first = DiffractionTextures.of(terms, settings);
+        DiffractionTextures second = DiffractionTextures.of(terms, settings);
         assertEquals(before + 1, BakedTables.bakeCount(), "the same patch and settings bake once");
         assertTrue(first.baked() == second.baked());
         BakedTable table = first.baked();
@@ -152,7 +154,7 @@ class BakedVariantTest {
         assertEquals(33L * 33 * w * 12, table.hostBytes());
         assertEquals(table.gpuBytes(), first.bakedTexture().gpuBytes());
         assertEquals(3 * 33 * 33 * w, table.values().length);
-        DiffractionTextures.of(terms, settings.withLambdaStepNm(10), FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures.of(terms, settings.with(b -> b.lambdaStepNm(10)));
         assertEquals(before + 2, BakedTables.bakeCount(), "other settings, another table");
         // the (u, v) resolution that would resolve the thesis' 65 um orders, and the automatic cap
         BrdfSettings thesis = BrdfSettings.thesis(Variant.BAKED);
@@ -168,11 +170,11 @@ class BakedVariantTest {
      */
     @Test
     void finiteAtGrazingLightAndExactAtTheSpecularSample() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         DiffractionBrdf flss = DiffractionBrdf.create(RenderTestSupport.settings(Variant.FLSS), patch, terms);
-        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, baked(), FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, baked())) {
             for (double phi : new double[] {0, 90}) {
                 float[] grazing = gpu.xyz(Direction.fromSphericalDeg(89.9, phi), 32);
                 for (float v : grazing) {
@@ -201,10 +203,10 @@ class BakedVariantTest {
      */
     @Test
     void surfacePathReadsTheTable() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        DiffractionTextures textures = DiffractionTextures.of(terms, baked(), FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures textures = DiffractionTextures.of(terms, baked());
         float exposure = 0.5f;
         float[] rgba = GpuFinitenessTest.render(DiffractionMaterials.surface(textures, baked(), exposure, null, 0),
                 new javax.vecmath.Vector3f(0, 0, 1), diffract.jrtr.Shapes.rectangle("square", -1, -1, 1, 1, 0), 33);
@@ -228,9 +230,9 @@ class BakedVariantTest {
      */
     @Test
     void bakingFromInsideAGlContextLeavesThatContextAlone() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
-        BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).withBakedSamples(9, 2).withLambdaStepNm(20);
+        BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(9, 2)).with(b -> b.lambdaStepNm(20));
         int before = BakedTables.bakeCount();
         try (diffract.jrtr.OffscreenTarget outer = new diffract.jrtr.OffscreenTarget(new diffract.jrtr.Renderer(
                 new diffract.jrtr.Group("empty"), new diffract.jrtr.Camera(), new diffract.jrtr.Frustum()))) {
@@ -238,12 +240,13 @@ class BakedVariantTest {
                 int[] framebuffer = new int[1];
                 gl.glGenFramebuffers(1, framebuffer, 0);
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, framebuffer[0]);
-                com.jogamp.opengl.GLContext context = com.jogamp.opengl.GLContext.getCurrent();
+                Object context = diffract.jrtr.HeadlessGL.currentContext();
+                assertNotNull(context, "a context is current inside withContext");
                 BakedTables.of(terms, settings, Reporter.SILENT);
                 int[] after = new int[3];
                 gl.glGetIntegerv(com.jogamp.opengl.GL2ES3.GL_DRAW_FRAMEBUFFER_BINDING, after, 0);
                 after[1] = framebuffer[0];
-                after[2] = com.jogamp.opengl.GLContext.getCurrent() == context ? 1 : 0;
+                after[2] = context.equals(diffract.jrtr.HeadlessGL.currentContext()) ? 1 : 0;
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, 0);
                 gl.glDeleteFramebuffers(1, framebuffer, 0);
                 return after;

@@ -54,14 +54,14 @@ class DiffractionShadersTest {
                 () -> DiffractionShaders.defines(s, DiffractionShaders.Target.SURFACE, true, false));
         assertThrows(IllegalArgumentException.class,
                 () -> DiffractionShaders.defines(s, DiffractionShaders.Target.BRDF_MAP, false, true));
-        Map<String, String> d = DiffractionShaders.defines(s.withHighestOrder(12).withWindowRadius(2),
+        Map<String, String> d = DiffractionShaders.defines(s.with(b -> b.highestOrder(12)).with(b -> b.windowRadius(2)),
                 DiffractionShaders.Target.BRDF_MAP, false, false);
         assertEquals("12", d.get("TAYLOR_HIGHEST_ORDER"));
         assertEquals("2", d.get("WINDOW_RADIUS"));
         assertEquals("1024", d.get("NMM_MAX_NODES"));
         assertEquals("2", d.get("WINDOW_RADIUS_X"));
         assertEquals("2", d.get("WINDOW_RADIUS_Y"));
-        // issue #5: per-axis radii (automatic ones need the patch, so the settings-only overload refuses them)
+        // Per-axis radii (automatic ones need the patch, so the settings-only overload refuses them)
         Map<String, String> perAxis = DiffractionShaders.defines(s, 9, new diffract.optics.WindowRadii(2, 0),
                 DiffractionShaders.Target.BRDF_MAP, false, false);
         assertEquals("9", perAxis.get("TAYLOR_HIGHEST_ORDER"));
@@ -69,7 +69,7 @@ class DiffractionShadersTest {
         assertEquals("2", perAxis.get("WINDOW_RADIUS_X"));
         assertEquals("0", perAxis.get("WINDOW_RADIUS_Y"));
         assertThrows(IllegalArgumentException.class, () -> DiffractionShaders.defines(
-                s.withAutomaticWindowRadius(true), DiffractionShaders.Target.BRDF_MAP, false, false));
+                s.with(b -> b.automaticWindowRadius(true)), DiffractionShaders.Target.BRDF_MAP, false, false));
     }
 
     /** GLSL's mat3(a, b, c, ...) fills column 0 first: the constructor must list Srgb's matrix column by column. */

@@ -1,14 +1,16 @@
 package diffract.render;
 
-import diffract.app.BrdfMapDifference;
-import diffract.jrtr.FloatTextureArray;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
+import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.TaylorEvaluation;
+import diffract.optics.TaylorExpansion;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.precompute.TaylorTermComputer;
@@ -26,11 +28,11 @@ import java.util.Locale;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The extremes matrix of issue #6, measured against the CPU reference on the CPU and on the GPU, and written as the
+ * The extremes matrix, measured against the CPU reference on the CPU and on the GPU, and written as the
  * table of {@code docs/extremes.md} ({@code bash docs/extremes.sh} reruns it and copies
  * {@code target/extremes.md} there). Every map (colour, and monochromatic at 380 and 780 nm) of every variant on
  * every engine must be finite and non-negative; FLSS on the automatic expansion must meet the reference (the other
- * variants' errors are their own, measured and printed, see README "Accuracy").
+ * variants' errors are their own, measured and reported, see docs/accuracy.md).
  *
  * <p>Cases: blazed gratings (period 2.5 um, 20 pixels of 0.125 um, 4 periods, 8 rows) with max|h| 0.01, 0.1, 0.5,
  * 1 and 2 um (x = 2 k max|h| up to 66 at 380 nm), a flat (constant) patch, a 1 x 1 patch, an odd non-square
@@ -74,7 +76,7 @@ class ExtremesReportTest {
 
     @Test
     void everyExtremeCaseIsFiniteAndMeasuredAgainstTheReference() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         StringBuilder table = new StringBuilder();
         table.append("| case | theta_i | output | variant | expansion | CPU error | GPU error | GPU error, plain series |\n")
                 .append("|---|---|---|---|---|---|---|---|\n");
@@ -82,28 +84,28 @@ class ExtremesReportTest {
         String renderer = "";
         for (Case c : cases()) {
             TaylorTerms terms = TaylorTermComputer.compute(c.patch(), c.highestOrder(), Reporter.SILENT);
-            BrdfSettings base = new BrdfSettings(Variant.FLSS, c.highestOrder(), 1, 380, 780, 5, 2.5, 1.5, 3);
-            TaylorEvaluation auto = TaylorEvaluation.choose(TaylorEvaluation.Mode.AUTO, c.patch(), terms,
+            BrdfSettings base = BrdfSettings.builder(Variant.FLSS).highestOrder(c.highestOrder()).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 2.5).refractiveIndex(1.5).pqReplicas(3).build();
+            TaylorEvaluation auto = TaylorEvaluation.choose(TaylorExpansion.AUTO, c.patch(), terms,
                     c.highestOrder(), 380, (p, centres) -> TaylorTermComputer.computeCentred(p, centres, Reporter.SILENT),
                     Reporter.SILENT);
-            DiffractionBrdf reference = DiffractionBrdf.create(base.withVariant(Variant.REFERENCE), c.patch(), null);
+            DiffractionBrdf reference = DiffractionBrdf.create(base.with(b -> b.variant(Variant.REFERENCE)), c.patch(), null);
             List<Maps> referenceMaps = new ArrayList<>();
             for (double theta : THETAS_DEG) {
                 referenceMaps.add(Maps.of(reference, Direction.fromSphericalDeg(theta, 0)));
             }
             for (Variant variant : VARIANTS) {
-                BrdfSettings settings = base.withVariant(variant);
+                BrdfSettings settings = base.with(b -> b.variant(variant));
                 DiffractionBrdf cpu = auto.brdf(settings, c.patch());
                 List<Maps> gpuMaps = new ArrayList<>();
                 List<Maps> plainMaps = new ArrayList<>();
-                try (GpuBrdfMap gpu = GpuBrdfMap.of(auto, settings, FloatTextureArray.Precision.FLOAT32)) {
+                try (GpuBrdfMap gpu = new GpuBrdfMap(auto, settings, Reporter.SILENT)) {
                     renderer = gpu.info().renderer() + ", OpenGL " + gpu.info().version();
                     for (double theta : THETAS_DEG) {
                         gpuMaps.add(Maps.of(gpu, Direction.fromSphericalDeg(theta, 0)));
                     }
                 }
                 if (auto.isPhaseCentred()) {
-                    try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+                    try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
                         for (double theta : THETAS_DEG) {
                             plainMaps.add(Maps.of(gpu, Direction.fromSphericalDeg(theta, 0)));
                         }
@@ -115,7 +117,7 @@ class ExtremesReportTest {
                     Maps cpuMaps = Maps.of(cpu, wi);
                     Maps gpuMap = gpuMaps.get(t);
                     Maps plain = plainMaps.isEmpty() ? null : plainMaps.get(t);
-                    String where = c.name() + " theta_i " + THETAS_DEG[t] + " " + variant.cliName();
+                    String where = c.name() + " theta_i " + THETAS_DEG[t] + " " + variant.label();
                     for (String problem : new String[] {cpuMaps.problem(), gpuMap.problem()}) {
                         if (problem != null) {
                             failures.add(where + ": " + problem);
@@ -125,7 +127,7 @@ class ExtremesReportTest {
                         String cpuError = ref.error(cpuMaps, output, wi);
                         String gpuError = ref.error(gpuMap, output, wi);
                         table.append(String.format(Locale.ROOT, "| %s | %s | %s | %s | %s | %s | %s | %s |%n",
-                                c.name(), THETAS_DEG[t], Maps.OUTPUTS[output], variant.cliName(), auto.describe(),
+                                c.name(), THETAS_DEG[t], Maps.OUTPUTS[output], variant.label(), auto.describe(),
                                 cpuError, gpuError, plain == null ? "-" : ref.error(plain, output, wi)));
                         if (variant == Variant.FLSS) {
                             for (Maps m : new Maps[] {cpuMaps, gpuMap}) {
@@ -144,7 +146,7 @@ class ExtremesReportTest {
         Files.createDirectories(out.getParent());
         Files.writeString(out, table.toString());
         Files.writeString(Path.of("target", "extremes-renderer.txt"), renderer);
-        System.out.print(table);
+        TestReport.line(ExtremesReportTest.class, table);
         assertTrue(failures.isEmpty(), String.join("\n", failures));
     }
 
@@ -157,7 +159,7 @@ class ExtremesReportTest {
      */
     @Test
     void thePlainSeriesFailsWhereTheSwitchSaysItDoes() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         StringBuilder table = new StringBuilder("| max\\|h\\| um | x at 380 nm | estimated plain error in P | automatic"
                 + " choice | GPU plain N = 30 | GPU centred |\n|---|---|---|---|---|---|\n");
         List<String> failures = new ArrayList<>();
@@ -167,20 +169,20 @@ class ExtremesReportTest {
             TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
             // a 7 x 7 window: at sigma_f = 0.64 texels it misses 3e-7 of the weight, so FLSS equals the exact model
             // up to the expansion's error
-            BrdfSettings settings = new BrdfSettings(Variant.FLSS, 30, 3, 380, 780, 5, 2.5, 1.5, 0);
-            TaylorEvaluation centred = TaylorEvaluation.choose(TaylorEvaluation.Mode.CENTRED, patch, terms, 30, 380,
+            BrdfSettings settings = BrdfSettings.builder(Variant.FLSS).highestOrder(30).windowRadius(3).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 2.5).refractiveIndex(1.5).pqReplicas(0).build();
+            TaylorEvaluation centred = TaylorEvaluation.choose(TaylorExpansion.CENTRED, patch, terms, 30, 380,
                     (p, c) -> TaylorTermComputer.computeCentred(p, c, Reporter.SILENT), Reporter.SILENT);
             double a = 2 * 2 * Math.PI / 0.38;
             double estimate = diffract.optics.Float32Cancellation.plainSeriesError(terms, 30, a);
             boolean switches = !diffract.optics.Float32Cancellation.plainSeriesSuffices(terms, 30, 380);
-            float[] ref = BrdfMap.monochromatic(DiffractionBrdf.create(settings.withVariant(Variant.REFERENCE), patch,
+            float[] ref = BrdfMap.monochromatic(DiffractionBrdf.create(settings.with(b -> b.variant(Variant.REFERENCE)), patch,
                     null), wi, 380, SIZE, Reporter.SILENT);
             double plainError;
             double centredError;
-            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
                 plainError = relative(gpu.monochromatic(wi, 380, SIZE), ref);
             }
-            try (GpuBrdfMap gpu = GpuBrdfMap.of(centred, settings, FloatTextureArray.Precision.FLOAT32)) {
+            try (GpuBrdfMap gpu = new GpuBrdfMap(centred, settings, Reporter.SILENT)) {
                 centredError = relative(gpu.monochromatic(wi, 380, SIZE), ref);
             }
             table.append(String.format(Locale.ROOT, "| %.2f | %.1f | %.2g | %s | %.2g | %.2g |%n", maxH,
@@ -194,7 +196,7 @@ class ExtremesReportTest {
         }
         Files.createDirectories(Path.of("target"));
         Files.writeString(Path.of("target", "extremes-threshold.md"), table.toString());
-        System.out.print(table);
+        TestReport.line(ExtremesReportTest.class, table);
         assertTrue(failures.isEmpty(), String.join("\n", failures) + "\n" + table);
     }
 
@@ -208,20 +210,20 @@ class ExtremesReportTest {
      */
     @Test
     void a4096By4096PatchMeetsTheReferenceInThePlaneOfIncidence() throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         int size = 33;
         int middleRow = size / 2; // y = 0 exactly
         HeightField big = SyntheticPatches.blazed(0.8, 0.02, 16, 256, 4096).meanSubtracted();
         HeightField row = SyntheticPatches.blazed(0.8, 0.02, 16, 256, 1).meanSubtracted();
         // sigma_f = 204.8 um / (2 pi 16.25 um) = 2 texels: a 25 x 25 window leaves out weights below 3e-9, so
         // FLSS's window equals the reference's
-        BrdfSettings settings = BrdfSettings.thesis(Variant.FLSS).withHighestOrder(4).withWindowRadius(12);
+        BrdfSettings settings = BrdfSettings.thesis(Variant.FLSS).with(b -> b.highestOrder(4)).with(b -> b.windowRadius(12));
         TaylorTerms terms = TaylorTermComputer.compute(big, 4, Reporter.SILENT);
         DiffractionBrdf cpu = DiffractionBrdf.create(settings, big, terms);
-        DiffractionBrdf reference = DiffractionBrdf.create(settings.withVariant(Variant.REFERENCE), row, null);
+        DiffractionBrdf reference = DiffractionBrdf.create(settings.with(b -> b.variant(Variant.REFERENCE)), row, null);
         StringBuilder table = new StringBuilder("| theta_i | lambda | CPU flss | GPU flss |\n|---|---|---|---|\n");
         List<String> failures = new ArrayList<>();
-        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
             for (double theta : THETAS_DEG) {
                 Direction wi = Direction.fromSphericalDeg(theta, 0);
                 for (double lambda : new double[] {380, 780}) {
@@ -250,7 +252,7 @@ class ExtremesReportTest {
         }
         Files.createDirectories(Path.of("target"));
         Files.writeString(Path.of("target", "extremes-4096.md"), table.toString());
-        System.out.print(table);
+        TestReport.line(ExtremesReportTest.class, table);
         assertTrue(failures.isEmpty(), String.join("\n", failures) + "\n" + table);
     }
 

@@ -1,9 +1,10 @@
 package diffract.render;
 
-import diffract.app.AutoExposure;
 import diffract.colour.ColourPath;
 import diffract.colour.Xyz;
 import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
+import diffract.optics.AutoExposure;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.Variant;
@@ -50,7 +51,7 @@ class GoldenImageTest {
         Stream.Builder<Arguments> scenes = Stream.builder();
         for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
             for (Variant variant : new Variant[] {Variant.FLSS, Variant.NMM, Variant.PQ}) {
-                scenes.add(Arguments.of(RenderTestSupport.name(patch) + "-" + variant.cliName() + "-30", patch, variant));
+                scenes.add(Arguments.of(RenderTestSupport.name(patch) + "-" + variant.label() + "-30", patch, variant));
             }
         }
         return scenes.build();
@@ -59,11 +60,10 @@ class GoldenImageTest {
     @ParameterizedTest(name = "{0}")
     @MethodSource("scenes")
     void gpuBrdfMapMatchesItsGolden(String name, HeightField patch, Variant variant) throws IOException {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         Direction wi = RenderTestSupport.light(patch, 30);
         float[] xyz;
-        try (GpuBrdfMap gpu = new GpuBrdfMap(RenderTestSupport.terms(patch), RenderTestSupport.settings(variant),
-                FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(RenderTestSupport.terms(patch), RenderTestSupport.settings(variant))) {
             xyz = gpu.xyz(wi, SIZE);
         }
         Path actualPng = DIFFS.resolve(name + "-actual.png");

@@ -1,5 +1,6 @@
 package diffract.render;
 
+import diffract.util.TestReport;
 import javax.imageio.ImageIO;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
@@ -29,7 +30,7 @@ public final class GoldenImages {
         if (Boolean.getBoolean("diffract.updateGoldens")) {
             Files.createDirectories(golden.getParent());
             Files.copy(actualPng, golden, StandardCopyOption.REPLACE_EXISTING);
-            System.out.println("golden updated: " + golden);
+            TestReport.line(GoldenImages.class, "golden updated: " + golden);
             return;
         }
         if (!Files.isRegularFile(golden)) {
@@ -63,7 +64,7 @@ public final class GoldenImages {
         double percent = 100.0 * failing / (width * height);
         String summary = String.format(Locale.ROOT, "%s: %d pixels (%.3f %%) differ by more than %d/255, largest "
                 + "difference %d/255", name, failing, percent, channelTolerance, worst);
-        System.out.println("golden " + summary);
+        TestReport.line(GoldenImages.class, "golden " + summary);
         if (percent > pixelBudgetPercent) {
             Files.createDirectories(DIFFS);
             Path diffPng = DIFFS.resolve(name + "-diff.png");

@@ -5,6 +5,7 @@ import diffract.colour.Xyz;
 import diffract.jrtr.Camera;
 import diffract.jrtr.FloatTextureArray;
 import diffract.jrtr.Frustum;
+import diffract.jrtr.GlTestSupport;
 import diffract.jrtr.Group;
 import diffract.jrtr.LightNode;
 import diffract.jrtr.Material;
@@ -52,12 +53,12 @@ class GpuFinitenessTest {
     @ParameterizedTest
     @EnumSource(value = Variant.class, names = {"FLSS", "NMM", "PQ"})
     void everyPixelIsFiniteAtGrazingLightAndAtTheExactSpecularDirection(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
             TaylorTerms terms = RenderTestSupport.terms(patch);
             BrdfSettings settings = RenderTestSupport.settings(variant);
             DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, terms);
-            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
                 String where = variant + " " + RenderTestSupport.name(patch);
                 assertFiniteAndNonNegative(gpu.xyz(Direction.fromSphericalDeg(89.9, 0), 32), where + " at 89.9 deg");
                 assertFiniteAndNonNegative(gpu.xyz(Direction.fromSphericalDeg(89.9, 90), 32), where + " at 89.9 deg");
@@ -101,11 +102,11 @@ class GpuFinitenessTest {
      */
     @Test
     void meshPathShowsTheSameBrdfAsTheCpuInTheTangentFrame() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS);
-        DiffractionTextures textures = DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures textures = DiffractionTextures.of(terms, settings);
         float exposure = 20;
         Material material = DiffractionMaterials.surface(textures, settings, exposure, null, 0);
         Vector3f towardsLight = new Vector3f(0.5f, 0, 1);
@@ -136,11 +137,10 @@ class GpuFinitenessTest {
     /** Pigmentation blending and a degenerate frame (tangent parallel to the normal) stay finite and in [0, 1]. */
     @Test
     void meshPathWithPigmentationAndDegenerateTangentsStaysFinite() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.BLAZED;
         BrdfSettings settings = RenderTestSupport.settings(Variant.NMM);
-        DiffractionTextures textures = DiffractionTextures.of(RenderTestSupport.terms(patch), settings,
-                FloatTextureArray.Precision.FLOAT32);
+        DiffractionTextures textures = DiffractionTextures.of(RenderTestSupport.terms(patch), settings);
         BufferedImage pigment = new BufferedImage(4, 4, BufferedImage.TYPE_INT_ARGB);
         for (int y = 0; y < 4; y++) {
             for (int x = 0; x < 4; x++) {

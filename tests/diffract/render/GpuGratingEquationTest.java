@@ -1,6 +1,7 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTextureArray;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
@@ -36,14 +37,14 @@ class GpuGratingEquationTest {
     @ParameterizedTest
     @EnumSource(value = Variant.class, names = {"FLSS", "PQ"})
     void ordersOfTheGpuMapAreWhereTheGratingEquationSays(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = TaylorTermComputer.compute(BLAZED, 30, Reporter.SILENT);
         BrdfSettings settings = BrdfSettings.thesis(variant);
         DiffractionBrdf cpu = DiffractionBrdf.create(settings, BLAZED, terms);
         DiffractionBrdf exact = DiffractionBrdf.create(BrdfSettings.thesis(Variant.REFERENCE), BLAZED, null);
         int mapRow = MAP_SIZE / 2; // y = -1/S, the map row through the incidence plane
         double y = BrdfMap.yOf(mapRow, MAP_SIZE);
-        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
             for (double thetaI : new double[] {0, 30, 75}) {
                 Direction wi = Direction.fromSphericalDeg(thetaI, 0);
                 for (double lambdaNm : new double[] {400, 550, 700}) {
@@ -56,7 +57,7 @@ class GpuGratingEquationTest {
                     checkAgainstCpu(values, GratingOrders.row(cpu, wi, lambdaNm, y, MAP_SIZE), where);
                     int orders = GratingOrders.assertOrders(values, GratingOrders.row(exact, wi, lambdaNm, y, MAP_SIZE),
                             PERIOD_UM, thetaI, lambdaNm, y, variant == Variant.FLSS, where);
-                    System.out.printf(java.util.Locale.ROOT, "GPU grating equation, %s: %d orders in place%n", where, orders);
+                    TestReport.printf(GpuGratingEquationTest.class, java.util.Locale.ROOT, "GPU grating equation, %s: %d orders in place%n", where, orders);
                 }
             }
         }
@@ -70,7 +71,7 @@ class GpuGratingEquationTest {
             worst = Math.max(worst, Math.abs(gpu[i] - cpu[i]));
         }
         assertTrue(worst <= 1e-4 * peak, where + ": GPU differs from CPU by " + worst + " at peak " + peak);
-        System.out.printf(java.util.Locale.ROOT, "GPU vs CPU row, %s: largest difference %.2g of the peak%n", where,
+        TestReport.printf(GpuGratingEquationTest.class, java.util.Locale.ROOT, "GPU vs CPU row, %s: largest difference %.2g of the peak%n", where,
                 worst / peak);
     }
 

@@ -1,25 +1,18 @@
 package diffract.render;
 
-import diffract.app.BrdfMapDifference;
-import diffract.bench.BenchPatch;
 import diffract.colour.ColourPath;
-import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.GlTestSupport;
 import diffract.jrtr.Material;
 import diffract.jrtr.Shapes;
-import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
+import diffract.optics.InvalidSettingException;
 import diffract.optics.LightSource;
-import diffract.optics.OpticsOptions;
 import diffract.optics.PixelFilter;
-import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
-import diffract.precompute.TaylorTermComputer;
-import diffract.util.Reporter;
-import diffract.util.UserInputException;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -31,65 +24,12 @@ import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The lobes shader equals its CPU mirror (LobeSpectrum): 64 x 64 BRDF maps at the thesis' 65 um coherence, pixel
- * boxes, a point light, a 2-degree light in the plane of the patch's period and one tilted 30 degrees off it (the
- * Gauss-Hermite shifts), theta_i 30 and 60 degrees; over the pixels lit in either map (exposure of the CPU map's
- * brightest diffracted pixel), mean CIEDE2000 at most 0.05 and 99th percentile at most 0.5 (float32 against double:
- * measured 0.000 / 0.00x). The phase-centred path of a tall patch likewise; a surface of point-sampled pixels shows
- * the CPU's BRDF in the tangent frame; a patch that needs texel pairs is refused.
+ * The lobes shader on surfaces: point-sampled pixels show the CPU's BRDF (LobeSpectrum) in the tangent frame, pixel
+ * footprints and the sun's size spread the orders over more fragments and stay finite; a patch that needs texel pairs
+ * is refused in one line. GpuCpuAgreementTest holds the lobes' BRDF maps to the CPU.
  */
 @Tag("gl")
 class GpuLobesTest {
-    static final int SIZE = 64;
-    static final double MAX_MEAN = 0.05;
-    static final double MAX_P99 = 0.5;
-
-    @Test
-    void mapsEqualTheCpuOnLitPixels() {
-        RenderTestSupport.assumeDisplay();
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES);
-        for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
-            TaylorTerms terms = RenderTestSupport.terms(patch);
-            double phi = patch == RenderTestSupport.ELAPHE_LIKE ? 90 : 0;
-            for (double[] light : new double[][] {{0, 0}, {2, 0}, {2, 30}}) {
-                OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(light[0]));
-                DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, terms, options);
-                try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, options, FloatTextureArray.Precision.FLOAT32)) {
-                    for (double thetaI : new double[] {30, 60}) {
-                        Direction wi = Direction.fromSphericalDeg(thetaI, phi + light[1]);
-                        assertAgree(BrdfMap.xyz(cpu, wi, SIZE, Reporter.SILENT), gpu.xyz(wi, SIZE), wi,
-                                RenderTestSupport.name(patch) + " light " + light[0] + " deg at phi + " + light[1]
-                                        + ", theta_i " + thetaI);
-                    }
-                }
-            }
-        }
-    }
-
-    @Test
-    void phaseCentredMapsOfATallPatchEqualTheCpu() {
-        RenderTestSupport.assumeDisplay();
-        HeightField tall = BenchPatch.named("tall").field();
-        TaylorTerms terms = TaylorTermComputer.compute(tall, 30, Reporter.SILENT);
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).withExpansion(TaylorEvaluation.Mode.CENTRED);
-        TaylorEvaluation evaluation = TaylorEvaluation.choose(TaylorEvaluation.Mode.CENTRED, tall, terms, 30, 380,
-                (p, c) -> TaylorTermComputer.computeCentred(p, c, Reporter.SILENT), Reporter.SILENT);
-        assertTrue(evaluation.isPhaseCentred());
-        OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(2));
-        DiffractionBrdf cpu = evaluation.brdf(settings, tall, options);
-        Direction wi = Direction.fromSphericalDeg(30, 90);
-        try (GpuBrdfMap gpu = GpuBrdfMap.of(evaluation, settings, options, FloatTextureArray.Precision.FLOAT32)) {
-            assertAgree(BrdfMap.xyz(cpu, wi, SIZE, Reporter.SILENT), gpu.xyz(wi, SIZE), wi, "tall, centred, 2 deg");
-        }
-    }
-
-    private static void assertAgree(float[] cpu, float[] gpu, Direction wi, String where) {
-        BrdfMapDifference d = RenderTestSupport.difference(cpu, gpu, SIZE, wi);
-        assertTrue(d.litPixels() >= 20, where + ": too few lit pixels: " + d.summary());
-        assertTrue(d.lit().mean() <= MAX_MEAN, where + ": " + d.summary());
-        assertTrue(d.lit().p99() <= MAX_P99, where + ": " + d.summary());
-    }
-
     /**
      * A square seen head-on (GpuFinitenessTest's scene) with point-sampled pixels: each fragment's display sRGB is
      * the CPU's lobes XYZ of its (omega_i, omega_r); with pixel footprints the specular highlight spreads over more
@@ -97,21 +37,20 @@ class GpuLobesTest {
      */
     @Test
     void surfacePixelsShowTheCpuBrdfAndTheirFootprints() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES);
-        DiffractionTextures textures = DiffractionTextures.of(terms, settings, FloatTextureArray.Precision.FLOAT32);
-        OpticsOptions point = OpticsOptions.DEFAULT.withPixelFilter(PixelFilter.POINT);
+        BrdfSettings point = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.POINT));
+        DiffractionTextures textures = DiffractionTextures.of(terms, point);
         float exposure = 20;
         Vector3f towardsLight = new Vector3f(0, 0.3f, 1);
         towardsLight.normalize();
         int size = 33;
-        Material material = DiffractionMaterials.surface(textures, settings, point, exposure, null, 0);
+        Material material = DiffractionMaterials.surface(textures, point, exposure, null, 0);
         float[] rgba = GpuFinitenessTest.render(material, towardsLight, Shapes.rectangle("square", -1, -1, 1, 1, 0),
                 size);
         Direction wi = new Direction(towardsLight.y, -towardsLight.x, towardsLight.z); // T = world y, B = world -x
-        DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, terms, OpticsOptions.POINT_SAMPLED);
+        DiffractionBrdf cpu = DiffractionBrdf.create(point, patch, terms);
         int lit = 0;
         for (int j = 0; j < size; j += 2) {
             for (int i = 0; i < size; i += 2) {
@@ -128,8 +67,8 @@ class GpuLobesTest {
             }
         }
         assertTrue(lit >= 2, "only " + lit + " of the checked pixels are lit");
-        Material filtered = DiffractionMaterials.surface(textures, settings,
-                OpticsOptions.DEFAULT.withLight(new LightSource(LightSource.SUN_DEG)), exposure, null, 0);
+        BrdfSettings sun = point.with(b -> b.pixelFilter(PixelFilter.BOX).lightSizeDeg(LightSource.SUN_DEG));
+        Material filtered = DiffractionMaterials.surface(DiffractionTextures.of(terms, sun), sun, exposure, null, 0);
         float[] footprints = GpuFinitenessTest.render(filtered, towardsLight, Shapes.rectangle("square", -1, -1, 1, 1, 0),
                 size);
         int litPoint = 0;
@@ -146,15 +85,14 @@ class GpuLobesTest {
 
     @Test
     void aPatchThatNeedsTexelPairsIsRefusedWithOneLine() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         // 10 um coherence: sigma_f = 0.58 texels, pairs up to 3 texels apart weigh more than 1e-4
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).withSigmaSpatialUm(2.5);
-        UserInputException e = assertThrows(UserInputException.class,
-                () -> new GpuBrdfMap(terms, settings, OpticsOptions.DEFAULT, FloatTextureArray.Precision.FLOAT32)
-                        .close());
+        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.coherenceLengthUm(10));
+        InvalidSettingException e = assertThrows(InvalidSettingException.class,
+                () -> new GpuBrdfMap(terms, settings).close());
         assertFalse(e.getMessage().contains("\n"), e.getMessage());
-        assertTrue(e.getMessage().contains("--engine cpu"), e.getMessage());
+        assertTrue(e.getMessage().contains("lobes variant on the CPU"), e.getMessage());
     }
 }

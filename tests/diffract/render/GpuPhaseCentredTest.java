@@ -1,8 +1,9 @@
 package diffract.render;
 
-import diffract.app.BrdfMapDifference;
-import diffract.jrtr.FloatTextureArray;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
+import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
@@ -23,7 +24,7 @@ import java.util.Locale;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The phase-centred shader path (issue #6, {@code taylor_centred.glsl}) on blazed gratings 0.5 to 2 um high
+ * The phase-centred shader path ({@code taylor_centred.glsl}) on blazed gratings 0.5 to 2 um high
  * (x = 2 k max|h| = 16.5 to 66 at 380 nm), where the thesis' float32 series around 0 is noise: its monochromatic
  * map at 380 nm equals the exact reference, and its colour map equals the CPU mirror and the reference.
  */
@@ -52,13 +53,13 @@ class GpuPhaseCentredTest {
     @ParameterizedTest
     @org.junit.jupiter.params.provider.EnumSource(value = Variant.class, names = {"FLSS", "NMM", "PQ"})
     void everyPixelIsFiniteAtGrazingLightAndAtTheSpecularDirection(Variant variant) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = SyntheticPatches.blazed(2.5, 4.0, 20, 4, 8).meanSubtracted();
         BrdfSettings settings = RenderTestSupport.settings(variant);
         PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
-                PhaseCentres.forPatch(patch.maxAbsHeightUm(), settings.lambdaMinNm()), Reporter.SILENT);
+                PhaseCentres.forPatch(patch.maxAbsHeightUm(), settings.spectral().lambdaMinNm()), Reporter.SILENT);
         DiffractionBrdf mirror = DiffractionBrdf.createPhaseCentred(settings, centred);
-        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, settings, FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, settings)) {
             for (double phi : new double[] {0, 90}) {
                 Direction grazing = Direction.fromSphericalDeg(89.9, phi);
                 relativeError(gpu.xyz(grazing, 32), new float[32 * 32 * 3]); // asserts finite, >= 0
@@ -79,19 +80,19 @@ class GpuPhaseCentredTest {
     @ParameterizedTest
     @ValueSource(doubles = {1.0, 2.0, 4.0})
     void tallGratingsMatchTheReferenceOnlyWhenCentred(double gratingHeightUm) {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         // period 2.5 um, 20 pixels of 0.125 um, 4 periods, 8 rows; max|h| = half the height after the mean
         HeightField patch = SyntheticPatches.blazed(2.5, gratingHeightUm, 20, 4, 8).meanSubtracted();
         BrdfSettings flss = RenderTestSupport.settings(Variant.FLSS);
         // the monochromatic comparison uses the thesis' 65 um coherence length: sigma_f = 0.098 texels, so the
         // 3 x 3 window holds all the window's weight (beyond 1.5 texels: e^-117) and FLSS equals the exact model
         // up to the expansion; the colour maps keep 10 um, whose wider orders light many pixels
-        BrdfSettings mono = new BrdfSettings(Variant.FLSS, 30, 1, 380, 780, 5, 65 / 4.0, 1.5, 0);
-        PhaseCentres centres = PhaseCentres.forPatch(patch.maxAbsHeightUm(), flss.lambdaMinNm());
+        BrdfSettings mono = BrdfSettings.builder(Variant.FLSS).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 65 / 4.0).refractiveIndex(1.5).pqReplicas(0).build();
+        PhaseCentres centres = PhaseCentres.forPatch(patch.maxAbsHeightUm(), flss.spectral().lambdaMinNm());
         PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch, centres, Reporter.SILENT);
         TaylorTerms plain = RenderTestSupport.terms(patch);
-        DiffractionBrdf reference = DiffractionBrdf.create(flss.withVariant(Variant.REFERENCE), patch, null);
-        DiffractionBrdf monoReference = DiffractionBrdf.create(mono.withVariant(Variant.REFERENCE), patch, null);
+        DiffractionBrdf reference = DiffractionBrdf.create(flss.with(b -> b.variant(Variant.REFERENCE)), patch, null);
+        DiffractionBrdf monoReference = DiffractionBrdf.create(mono.with(b -> b.variant(Variant.REFERENCE)), patch, null);
         DiffractionBrdf mirror = DiffractionBrdf.createPhaseCentred(flss, centred);
         Direction wi = Direction.fromSphericalDeg(30, 0);
         float[] refMono = BrdfMap.monochromatic(monoReference, wi, 380, SIZE, Reporter.SILENT);
@@ -101,15 +102,15 @@ class GpuPhaseCentredTest {
         double plainMono;
         BrdfMapDifference toMirror;
         BrdfMapDifference toReference;
-        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, mono, FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, mono)) {
             centredMono = relativeError(gpu.monochromatic(wi, 380, SIZE), refMono);
         }
-        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, flss, FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(centred, flss)) {
             float[] xyz = gpu.xyz(wi, SIZE);
             toMirror = RenderTestSupport.difference(mirrorXyz, xyz, SIZE, wi);
             toReference = RenderTestSupport.difference(refXyz, xyz, SIZE, wi);
         }
-        try (GpuBrdfMap gpu = new GpuBrdfMap(plain, mono, FloatTextureArray.Precision.FLOAT32)) {
+        try (GpuBrdfMap gpu = new GpuBrdfMap(plain, mono)) {
             float[] plainMap = gpu.monochromatic(wi, 380, SIZE);
             double peak = 0;
             double worst = 0;
@@ -123,7 +124,7 @@ class GpuPhaseCentredTest {
                 + " error centred %.2g, plain N = 30 %.2g; colour vs CPU mirror %s; vs reference %s",
                 patch.maxAbsHeightUm(), 2 * 2 * Math.PI / 0.38 * patch.maxAbsHeightUm(), centres.centreCount(),
                 centres.ordersPerCentre(), centredMono, plainMono, toMirror.summary(), toReference.summary());
-        System.out.println("GPU phase-centred, " + line);
+        TestReport.line(GpuPhaseCentredTest.class, "GPU phase-centred, " + line);
         // the GPU's float32 sum around a centre at most b = 2 away: ~2^-24 e^2 |P| per term sum, 1e-6 relative
         // to the peak of |P|^2, plus the lookup's float32 rounding. Measured: see the printed lines.
         assertTrue(centredMono < 1e-3, line);

@@ -1,13 +1,15 @@
 package diffract.render;
 
-import diffract.app.BrdfMapDifference;
-import diffract.jrtr.FloatTextureArray;
+import diffract.util.TestReport;
+import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
+import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
+import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.precompute.ThesisExtrema;
 import diffract.util.Reporter;
@@ -25,19 +27,19 @@ class NormalisedTermsGpuTest {
 
     @Test
     void gpuMapOfByteTermsEqualsTheCpuMapOfTheDeNormalisedTerms() {
-        RenderTestSupport.assumeDisplay();
+        GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).withHighestOrder(12);
-        DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, deNormalised(terms, settings.highestOrder()));
-        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings, FloatTextureArray.Precision.UNORM8)) {
+        BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).with(b -> b.highestOrder(12));
+        DiffractionBrdf cpu = DiffractionBrdf.create(settings, patch, deNormalised(terms, settings.taylor().highestOrder()));
+        try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings.with(b -> b.termFormat(TermFormat.RG8)))) {
             for (double thetaI : new double[] {0, 45}) {
                 Direction wi = RenderTestSupport.light(patch, thetaI);
                 BrdfMapDifference c = RenderTestSupport.difference(BrdfMap.xyz(cpu, wi, SIZE, Reporter.SILENT),
                         gpu.xyz(wi, SIZE), SIZE, wi);
-                System.out.println("RG8 GPU vs CPU of de-normalised terms, theta_i " + thetaI + ": " + c.summary());
+                TestReport.line(NormalisedTermsGpuTest.class, "RG8 GPU vs CPU of de-normalised terms, theta_i " + thetaI + ": " + c.summary());
                 // measured on llvmpipe: mean 0.000, p99 <= 0.007 (float32 against double sums); 10x that as margin,
-                // far below the RG8 quantisation's own error against float terms (mean ~1, see README)
+                // far below the RG8 quantisation's own error against float terms (mean ~1, docs/bench.md)
                 assertTrue(c.litPixels() >= 20, c.summary());
                 assertTrue(c.disk().mean() <= 0.01, c.summary());
                 assertTrue(c.disk().p99() <= 0.07, c.summary());

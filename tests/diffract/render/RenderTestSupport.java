@@ -1,6 +1,5 @@
 package diffract.render;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
@@ -30,10 +29,6 @@ final class RenderTestSupport {
     }
 
     /** GL tests are skipped, not failed, where no X display exists. */
-    static void assumeDisplay() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
-                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
-    }
 
     /** Terms 0..30 of a patch, computed once per test run. */
     static TaylorTerms terms(HeightField patch) {
@@ -48,7 +43,7 @@ final class RenderTestSupport {
      * 10 um patches and switch the replication factor off).
      */
     static BrdfSettings settings(Variant variant) {
-        return new BrdfSettings(variant, 30, 1, 380, 780, 5, 2.5, 1.5, 3);
+        return BrdfSettings.builder(variant).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 2.5).refractiveIndex(1.5).pqReplicas(3).build();
     }
 
     /** Light in the plane of the period: along x for the grating, along y for the Elaphe-like ridges. */
@@ -57,16 +52,16 @@ final class RenderTestSupport {
     }
 
     /**
-     * Both maps through the exposure {@link diffract.app.AutoExposure} picks for the first (the CPU's): its
+     * Both maps through the exposure {@link diffract.optics.AutoExposure} picks for the first (the CPU's): its
      * brightest diffracted pixel maps to Y = 1, so the orders, not the specular peak, fill the display range.
      */
-    static diffract.app.BrdfMapDifference difference(float[] cpuXyz, float[] gpuXyz, int size, Direction wi) {
+    static diffract.optics.BrdfMapDifference difference(float[] cpuXyz, float[] gpuXyz, int size, Direction wi) {
         float[] luminance = new float[size * size];
         for (int p = 0; p < luminance.length; p++) {
             luminance[p] = cpuXyz[3 * p + 1];
         }
-        double exposure = diffract.app.AutoExposure.of(luminance, size, -wi.x(), -wi.y());
-        return diffract.app.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
+        double exposure = diffract.optics.AutoExposure.of(luminance, size, -wi.x(), -wi.y());
+        return diffract.optics.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
     }
 
     static String name(HeightField patch) {

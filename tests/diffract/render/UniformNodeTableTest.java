@@ -1,5 +1,6 @@
 package diffract.render;
 
+import diffract.util.TestReport;
 import diffract.colour.Cie1931;
 import diffract.colour.D65;
 import diffract.colour.SpectralIntegrator;
@@ -12,15 +13,14 @@ import org.junit.jupiter.api.Test;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 /**
- * Issue #5: the shader's wavelength loop runs only over the nodes where D65 x CMF is not zero. Inside the CIE
+ * The shader's wavelength loop runs only over the nodes where D65 x CMF is not zero. Inside the CIE
  * tables (380-780 nm) every node stays; a grid of 300-900 nm keeps exactly the nodes inside both tables.
  */
 class UniformNodeTableTest {
     @Test
     void nodesWithoutWeightAreLeftOut() {
         BrdfSettings thesis = BrdfSettings.thesis(Variant.FLSS);
-        assertEquals(81, DiffractionTextures.buildUniformNodeTable(thesis).size(), "380-780 nm at 5 nm: all nodes");
-        BrdfSettings wide = thesis.withLambdaRangeNm(300, 900).withLambdaStepNm(10);
+        assertEquals(81, DiffractionTextures.buildUniformNodeTable(thesis.spectral()).size(), "380-780 nm at 5 nm: all nodes");
         double first = Math.max(Cie1931.firstNm(), D65.firstNm());
         double last = Math.min(Cie1931.lastNm(), D65.lastNm());
         double[] nodes = Trapezoid.uniformNodes(300, 900, 10);
@@ -31,8 +31,8 @@ class UniformNodeTableTest {
                 inside++;
             }
         }
-        FloatTexture1D table = DiffractionTextures.buildUniformNodeTable(wide);
-        System.out.printf("300-900 nm at 10 nm: %d of %d nodes carry weight (tables %.0f-%.0f nm)%n",
+        FloatTexture1D table = DiffractionTextures.buildUniformNodeTable(300, 900, 10);
+        TestReport.printf(UniformNodeTableTest.class, "300-900 nm at 10 nm: %d of %d nodes carry weight (tables %.0f-%.0f nm)%n",
                 table.size(), nodes.length, first, last);
         assertEquals(inside, table.size());
         assertEquals(true, table.size() < nodes.length);

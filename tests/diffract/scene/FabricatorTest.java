@@ -1,18 +1,21 @@
 package diffract.scene;
 
+import diffract.colour.ToneMapping;
 import diffract.jrtr.VertexAttribute;
+import diffract.lighting.ExtendedLight;
+import diffract.lighting.LatLongMap;
+import diffract.lighting.RadianceHdr;
 import diffract.optics.Variant;
+import diffract.render.Stage;
 import diffract.util.Reporter;
-import diffract.viewer.DisplayMode;
-import diffract.viewer.LightDirection;
-import diffract.viewer.OrbitCamera;
-import diffract.viewer.ViewerSetup;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -26,43 +29,65 @@ class FabricatorTest {
 
     @Test
     void theDefaultSceneIsTheDemosView() {
-        Fabricator.Fabricated f = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-elaphe.json"), Reporter.SILENT);
-        ViewerSetup s = f.setup();
+        Scene scene = SceneFile.load(SceneFileTest.SCENES.resolve("snake-elaphe.json"));
+        SceneSetup s = Fabricator.fabricate(scene, Reporter.SILENT);
         assertEquals("snake", s.shape().name());
         assertEquals(128, s.patch().rows());
         assertEquals(128, s.patch().cols());
         assertEquals(8 * 1.144 / 128, s.patch().pixelSizeXUm(), 1e-12);
         assertEquals(Variant.FLSS, s.settings().variant());
-        assertEquals(20, s.settings().highestOrder());
-        assertEquals(10, s.settings().lambdaStepNm());
-        assertEquals(2.5, s.settings().sigmaSpatialUm());
-        assertEquals(1, s.settings().windowRadius());
-        assertEquals(50, s.exposure());
-        // eye [0.403459, 0.9, 1.505729] is the orbit camera at azimuth 15, elevation 30, distance 1.8 (to 6 digits)
+        assertEquals(20, s.settings().taylor().highestOrder());
+        assertEquals(10, s.settings().spectral().lambdaStepNm());
+        assertEquals(2.5, s.settings().illumination().sigmaSpatialUm());
+        assertEquals(10, s.settings().illumination().coherenceLengthUm());
+        assertEquals(1, s.settings().window().radius());
+        assertEquals(200, s.exposure());
+        // eye - lookAt = (0.3, 1.47, 1.68): the orbit camera's distance and azimuth
         OrbitCamera c = s.camera();
-        assertEquals(15, c.azimuthDeg(), 1e-4);
-        assertEquals(30, c.elevationDeg(), 1e-4);
-        assertEquals(1.8, c.distance(), 1e-6);
-        assertEquals(0, c.targetX());
-        // direction [0, 0.8660254, 0.5] towards the light is theta 60 from +z, phi 90 from +x
-        assertEquals(60, s.light().thetaDeg(), 1e-5);
-        assertEquals(90, s.light().phiDeg(), 1e-9);
+        assertEquals(Math.sqrt(0.3 * 0.3 + 1.47 * 1.47 + 1.68 * 1.68), c.distance(), 1e-9);
+        assertEquals(Math.toDegrees(Math.atan2(0.3, 1.68)), c.azimuthDeg(), 1e-9);
+        assertEquals(-0.12, c.targetY(), 1e-12);
         assertEquals(45, s.verticalFovDeg());
-        assertNotNull(s.pigmentation(), "the corn-snake pigmentation is there for P");
-        assertFalse(s.pigmentationOn());
+        // the corn snake's own pattern, painted on its scales, shown from the start
+        assertNotNull(s.pigmentation());
+        assertEquals(512, s.pigmentation().getWidth());
+        assertEquals(4096, s.pigmentation().getHeight());
+        assertTrue(s.pigmentationOn());
         assertEquals(DisplayMode.SURFACE, s.mode());
-        assertEquals(640, f.image().width());
-        assertEquals(400, f.image().height());
+        assertEquals(640, scene.image().width());
+        assertEquals(400, scene.image().height());
+        // staged: scales, a clear sky as 8 extended lights, a ground with the key light's shadow, Reinhard
+        Stage stage = s.stage();
+        assertTrue(stage.staged());
+        assertEquals(512, stage.scaleFrames().width());
+        assertEquals(4096, stage.scaleFrames().height());
+        assertEquals(8, stage.environment().lights().size());
+        assertTrue(stage.shadows());
+        assertEquals(ToneMapping.Operator.REINHARD, stage.toneMapping().operator());
+        assertEquals("1", stage.defines().get("SCALE_FRAMES"));
+        assertEquals("8", stage.defines().get("ENVIRONMENT_LIGHTS"));
+    }
+
+    @Test
+    void aSceneWithoutStagingKeysIsNotStaged() throws IOException {
+        Path file = dir.resolve("plain.json");
+        Files.writeString(file, "{\"camera\": {\"eye\": [0, 1, 4]}, \"light\": {\"direction\": [0, 0, 1]},"
+                + " \"shape\": {\"kind\": \"snake\"}, \"material\": {\"patch\": {\"procedural\": \"elaphe-like\"},"
+                + " \"taylorTerms\": 4}}");
+        SceneSetup s = Fabricator.fabricate(file, Reporter.SILENT);
+        assertFalse(s.stage().staged());
+        assertTrue(s.stage().defines().isEmpty());
     }
 
     @Test
     void theOtherDefaultScenes() {
-        ViewerSetup xenopeltis = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-xenopeltis.json"),
-                Reporter.SILENT).setup();
+        SceneSetup xenopeltis = Fabricator.fabricate(SceneFileTest.SCENES.resolve("snake-xenopeltis.json"),
+                Reporter.SILENT);
         assertEquals(16 * 0.65 / 128, xenopeltis.patch().pixelSizeYUm(), 1e-12);
-        assertEquals(null, xenopeltis.pigmentation());
-        ViewerSetup blazed = Fabricator.fabricate(SceneFileTest.SCENES.resolve("blazed-grating-plane.json"),
-                Reporter.SILENT).setup();
+        assertNotNull(xenopeltis.pigmentation());
+        assertEquals(8, xenopeltis.stage().environment().lights().size());
+        SceneSetup blazed = Fabricator.fabricate(SceneFileTest.SCENES.resolve("blazed-grating-plane.json"),
+                Reporter.SILENT);
         assertEquals("plane", blazed.shape().name());
         assertEquals(16, blazed.patch().rows());
         assertEquals(26 * 25, blazed.patch().cols());
@@ -70,7 +95,7 @@ class FabricatorTest {
         assertEquals(0, blazed.camera().elevationDeg(), 1e-12);
         assertEquals(30, blazed.light().thetaDeg(), 1e-9);
         assertEquals(0, blazed.light().phiDeg(), 1e-9);
-        ViewerSetup map = Fabricator.fabricate(SceneFileTest.SCENES.resolve("brdfmap-elaphe.json"), Reporter.SILENT).setup();
+        SceneSetup map = Fabricator.fabricate(SceneFileTest.SCENES.resolve("brdfmap-elaphe.json"), Reporter.SILENT);
         assertEquals(DisplayMode.BRDF_MAP, map.mode());
     }
 
@@ -100,9 +125,9 @@ class FabricatorTest {
                 + " \"scale\": 0.5}, \"tangents\": {\"project\": [0, 1, 0]}},"
                 + " \"material\": {\"patch\": {\"procedural\": \"xenopeltisLike\"}, \"tolerance\": 1e-3,"
                 + " \"variant\": \"pq\"}}");
-        ViewerSetup s = Fabricator.fabricate(file, Reporter.SILENT).setup();
+        SceneSetup s = Fabricator.fabricate(file, Reporter.SILENT);
         assertEquals(Variant.PQ, s.settings().variant());
-        assertTrue(s.settings().highestOrder() > 0 && s.settings().highestOrder() < 20, "N " + s.settings().highestOrder());
+        assertTrue(s.settings().taylor().highestOrder() > 0 && s.settings().taylor().highestOrder() < 20, "N " + s.settings().taylor().highestOrder());
         assertEquals(30, s.verticalFovDeg());
         assertEquals(2.0, s.camera().targetX());
         float[] p = s.shape().vertexData().attribute(VertexAttribute.POSITION);
@@ -113,5 +138,38 @@ class FabricatorTest {
             assertEquals(0.5, r, 1e-5, "a unit sphere scaled by 0.5 about (2, 0, 0)");
             assertEquals(0, t[i] * n[i] + t[i + 1] * n[i + 1] + t[i + 2] * n[i + 2], 1e-5, "tangent in the surface");
         }
+    }
+
+    @Test
+    void anHdrEnvironmentBecomesExtendedLightsCarryingItsPower() throws IOException {
+        // a dim grey map with one bright pixel: the brightest light points at it; scale doubles every light
+        int w = 64;
+        int h = 32;
+        float[] rgb = new float[3 * w * h];
+        Arrays.fill(rgb, 0.01f);
+        int column = 16;
+        int row = 8;
+        for (int k = 0; k < 3; k++) {
+            rgb[3 * (row * w + column) + k] = 400;
+        }
+        LatLongMap map = new LatLongMap(w, h, rgb);
+        RadianceHdr.write(dir.resolve("probe.hdr"), map, true);
+        Path file = dir.resolve("probe.json");
+        Files.writeString(file, "{\"camera\": {\"eye\": [0, 1, 4]}, \"light\": {\"direction\": [0, 1, 1]},"
+                + " \"shape\": {\"kind\": \"sphere\"}, \"environment\": {\"file\": \"probe.hdr\", \"scale\": 2,"
+                + " \"lights\": 4}, \"material\": {\"patch\": {\"procedural\": \"elaphe-like\"}, \"taylorTerms\": 4}}");
+        Stage stage = Fabricator.fabricate(file, Reporter.SILENT).stage();
+        List<ExtendedLight> lights = stage.environment().lights();
+        assertEquals(4, lights.size());
+        double[] expected = map.pixelDirection(column, row);
+        double[] d = lights.get(0).direction();
+        assertTrue(d[0] * expected[0] + d[1] * expected[1] + d[2] * expected[2] > Math.cos(Math.toRadians(1)));
+        double total = 0;
+        for (ExtendedLight l : lights) {
+            total += l.rgb()[1];
+        }
+        assertEquals(2 * map.totalPower()[1], total, 0.01 * total, "scale 2, RGBE rounding within 1 %");
+        assertEquals(null, stage.ground());
+        assertEquals("4", stage.defines().get("ENVIRONMENT_LIGHTS"));
     }
 }

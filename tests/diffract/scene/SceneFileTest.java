@@ -1,5 +1,8 @@
 package diffract.scene;
 
+import diffract.colour.ToneMapping;
+import diffract.geometry.SnakeMesh;
+import diffract.geometry.SnakeSpecies;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -54,7 +57,7 @@ class SceneFileTest {
     void theValidSceneParses() throws IOException {
         Path file = dir.resolve("ok.json");
         Files.writeString(file, valid(""));
-        assertEquals(diffract.optics.Variant.FLSS, SceneFile.load(file).material().variant());
+        assertEquals(diffract.optics.Variant.FLSS, SceneFile.load(file).material().settings().variant());
     }
 
     @Test
@@ -137,5 +140,76 @@ class SceneFileTest {
     void anEmptyFileAndANonObjectAreRefused() throws IOException {
         assertTrue(message("").startsWith("1: (json): the file is empty"));
         assertTrue(message("[1, 2]").startsWith("1: (scene): must be a JSON object"));
+    }
+
+    /** Every BRDF setting has its key, with the option's meaning: a radius or "auto", the coherence length. */
+    @Test
+    void theBrdfKeysMeanWhatTheOptionsMean() throws IOException {
+        Path file = dir.resolve("keys.json");
+        Files.writeString(file, valid(",\n    \"windowRadius\": \"auto\", \"coherenceLengthUm\": 10, \"taylorTolerance\": 1e-4,"
+                + " \"expansion\": \"centred\", \"termFormat\": \"rg16f\", \"pqReplicas\": 3, \"taylorTerms\": 12")
+                .replace("\"blazed\"", "\"elapheLike\""));
+        Scene scene = SceneFile.load(file);
+        diffract.optics.BrdfSettings s = scene.material().settings();
+        assertTrue(s.window().automatic());
+        assertEquals(3, s.window().pqReplicas());
+        assertEquals(10, s.illumination().coherenceLengthUm(), 1e-12);
+        assertEquals(1e-4, s.taylor().tolerance());
+        assertEquals(12, s.taylor().highestOrder());
+        assertEquals(diffract.optics.TaylorExpansion.CENTRED, s.taylor().expansion());
+        assertEquals(diffract.optics.TermFormat.RG16F, s.gpu().termFormat());
+        assertEquals(0, s.gpu().bakedUvSamples(), "automatic unless given");
+        assertEquals("elaphe-like", ((Scene.ProceduralPatch) scene.material().patch()).name(),
+                "a camelCase name is the catalogue's patch");
+    }
+
+    /** A value the settings refuse is reported at its key, in the settings' words. */
+    @Test
+    void aValueTheSettingsRefuseNamesItsKey() throws IOException {
+        String m = message(valid(",\n    \"taylorTolerance\": 1"));
+        assertTrue(m.startsWith("7: material.taylorTolerance: the per-lookup Taylor tolerance must be in [0, 1)"), m);
+        String baked = message(valid(",\n    \"bakedUvSamples\": 1"));
+        assertTrue(baked.startsWith("7: material.bakedUvSamples: the baked table's samples must be 0 (automatic)"), baked);
+        String both = message(valid(",\n    \"sigmaSpatialUm\": 2.5, \"coherenceLengthUm\": 10"));
+        assertTrue(both.contains("material.sigmaSpatialUm: give either"), both);
+    }
+
+    /** The staging keys: values read with their units, mistakes named by key with the way out. */
+    @Test
+    void stagingKeysAreReadAndTheirMistakesNamed() throws IOException {
+        String snake = "{\n  \"camera\": {\"eye\": [0, 1, 3]},\n  \"light\": {\"thetaDeg\": 30},\n"
+                + "  \"shape\": {\"kind\": \"snake\", \"pose\": \"coiled\", \"scales\": {\"species\": \"elapheGuttata\","
+                + " \"dorsalScaleRows\": 25, \"tiltDeg\": 9}},\n"
+                + "  \"material\": {\"patch\": {\"procedural\": \"elaphe-like\"}, \"pigmentation\": \"xenopeltisUnicolor\"},\n"
+                + "  \"environment\": {\"sky\": {\"irradianceRatio\": 0.2}, \"lights\": 4},\n"
+                + "  \"ground\": {\"albedoSrgb\": [0.5, 0.4, 0.3], \"shadows\": false},\n"
+                + "  \"toneMapping\": {\"operator\": \"aces\", \"exposureStops\": -1.5}\n}\n";
+        Path file = dir.resolve("staged.json");
+        Files.writeString(file, snake);
+        Scene scene = SceneFile.load(file);
+        assertEquals(SnakeMesh.Pose.COILED, scene.shape().pose());
+        assertEquals(25, scene.shape().scales().lattice().dorsalRows());
+        assertEquals(9, scene.shape().scales().lattice().tiltDeg());
+        assertEquals(SnakeSpecies.ELAPHE_GUTTATA.scales().ventralScales(),
+                scene.shape().scales().lattice().ventralScales());
+        assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, scene.material().pigmentation().species());
+        assertEquals(4, scene.stage().environment().lights());
+        assertEquals(0.2, scene.stage().environment().skyIrradianceRatio());
+        assertEquals(false, scene.stage().ground().shadows());
+        assertEquals(ToneMapping.Operator.ACES, scene.stage().toneMapping().operator());
+        assertEquals(-1.5, scene.stage().toneMapping().exposureStops());
+
+        String m = message(snake.replace("\"lights\": 4", "\"lights\": 6"));
+        assertTrue(m.startsWith("6: environment.lights: must be a power of two"), m);
+        m = message(snake.replace("\"species\": \"elapheGuttata\"", "\"species\": \"elapheGutata\""));
+        assertTrue(m.contains("shape.scales.species: unknown value \"elapheGutata\" (did you mean \"elapheGuttata\"?)"), m);
+        m = message(snake.replace("\"sky\": {\"irradianceRatio\": 0.2}, ", ""));
+        assertTrue(m.contains("environment.sky: missing; add \"sky\""), m);
+        m = message(snake.replace("\"operator\": \"aces\"", "\"operator\": \"filmic\""));
+        assertTrue(m.contains("toneMapping.operator: unknown value \"filmic\""), m);
+        m = message(snake.replace("\"tiltDeg\": 9", "\"tiltDeg\": 45"));
+        assertTrue(m.contains("shape.scales.tiltDeg: must be in [0, 30], got 45"), m);
+        m = message(snake.replace("\"kind\": \"snake\", \"pose\": \"coiled\"", "\"kind\": \"snake\", \"pose\": \"curled\""));
+        assertTrue(m.contains("shape.pose: unknown value \"curled\""), m);
     }
 }

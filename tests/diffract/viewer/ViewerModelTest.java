@@ -1,8 +1,14 @@
 package diffract.viewer;
 
+import diffract.geometry.SnakeMesh;
+import diffract.jrtr.Shape;
 import diffract.jrtr.VertexAttribute;
 import diffract.jrtr.VertexData;
 import diffract.optics.Variant;
+import diffract.scene.LightDirection;
+import diffract.scene.OrbitCamera;
+import diffract.scene.PrimitiveShapes;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 import java.util.concurrent.CountDownLatch;
@@ -42,32 +48,32 @@ class ViewerModelTest {
             controller.handleKey((short) 0, '2');
             assertEquals(Variant.NMM, model.state().settings().variant());
             controller.handleKey((short) 0, ']');
-            assertEquals(40, model.state().settings().lambdaStepNm());
+            assertEquals(40, model.state().settings().spectral().lambdaStepNm());
             controller.handleKey((short) 0, '[');
             controller.handleKey((short) 0, '[');
-            assertEquals(10, model.state().settings().lambdaStepNm());
+            assertEquals(10, model.state().settings().spectral().lambdaStepNm());
             controller.handleKey((short) 0, '-');
-            assertEquals(7, model.state().settings().highestOrder());
+            assertEquals(7, model.state().settings().taylor().highestOrder());
             assertTrue(!precomputer.isBusy(), "fewer terms need no precompute");
             controller.handleKey((short) 0, '+');
             controller.handleKey((short) 0, '+');
             controller.handleKey((short) 0, '+');
-            assertEquals(10, model.state().settings().highestOrder());
+            assertEquals(10, model.state().settings().taylor().highestOrder());
             assertTrue(precomputer.isBusy(), "more terms than at hand start a precompute");
-            assertEquals(8, model.state().drawableSettings().highestOrder(), "draws with the terms at hand meanwhile");
+            assertEquals(8, model.state().drawableSettings().taylor().highestOrder(), "draws with the terms at hand meanwhile");
             precomputeMayFinish.countDown();
             assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == 10, 30));
             assertTrue(ViewerTestSupport.waitFor(() -> model.state().precompute() == null && !precomputer.isBusy(), 5));
-            assertEquals(10, model.state().drawableSettings().highestOrder());
+            assertEquals(10, model.state().drawableSettings().taylor().highestOrder());
             controller.handleKey(com.jogamp.newt.event.KeyEvent.VK_UP, '\0');
-            assertEquals(25, model.state().light().thetaDeg(), 1e-12);
+            assertEquals(25, model.state().view().light().thetaDeg(), 1e-12);
             controller.handleKey((short) 0, 'p');
             assertTrue(model.state().notice().text().contains("no pigmentation image"));
             controller.handleKey((short) 0, 'r');
             assertEquals(Variant.FLSS, model.state().settings().variant());
-            assertEquals(8, model.state().settings().highestOrder());
+            assertEquals(8, model.state().settings().taylor().highestOrder());
             assertEquals(10, model.state().terms().highestOrder(), "reset keeps the precomputed terms");
-            assertEquals(30, model.state().light().thetaDeg(), 1e-12);
+            assertEquals(30, model.state().view().light().thetaDeg(), 1e-12);
             controller.handleKey((short) 0, 'q');
             assertTrue(quit[0]);
             assertNull(model.state().precompute());
@@ -77,7 +83,7 @@ class ViewerModelTest {
     @Test
     void titleNamesVariantParametersAndProgress() {
         ViewerModel model = ViewerTestSupport.model(ViewerTestSupport.directTerms());
-        ViewerState state = model.update(s -> s.withSettings(s.settings().withHighestOrder(12))
+        ViewerState state = model.update(s -> s.withSettings(s.settings().with(b -> b.highestOrder(12)))
                 .withPrecompute(new PrecomputeProgress(12, 0.4)));
         String title = ViewerTitle.of(model, state, new FrameStats(), System.nanoTime());
         assertEquals("diffract test-patch | flss N=8 dlambda=20 nm R=1 | theta_i 30 phi_i 90 | sphere | exposure 10"
@@ -86,8 +92,11 @@ class ViewerModelTest {
 
     @Test
     void shapesCarryUnitTangentsPerpendicularToTheirNormals() {
-        for (ViewerShapes.Kind kind : ViewerShapes.Kind.values()) {
-            VertexData data = kind.build(new double[] {1, 0, 0}).vertexData();
+        double[] x = {1, 0, 0};
+        for (Shape shape : List.of(PrimitiveShapes.sphere(x), PrimitiveShapes.plane(x), PrimitiveShapes.cylinder(x),
+                PrimitiveShapes.snake(SnakeMesh.Parameters.defaults()))) {
+            String kind = shape.name();
+            VertexData data = shape.vertexData();
             float[] n = data.attribute(VertexAttribute.NORMAL);
             float[] t = data.attribute(VertexAttribute.TANGENT);
             for (int v = 0; v < data.vertexCount(); v++) {
@@ -98,7 +107,7 @@ class ViewerModelTest {
             }
         }
         // on the plane the patch's x axis follows the requested direction, projected into the plane
-        float[] t = ViewerShapes.plane(new double[] {1, 1, 5}).vertexData().attribute(VertexAttribute.TANGENT);
+        float[] t = PrimitiveShapes.plane(new double[] {1, 1, 5}).vertexData().attribute(VertexAttribute.TANGENT);
         assertArrayEquals(new float[] {(float) Math.sqrt(0.5), (float) Math.sqrt(0.5), 0}, new float[] {t[0], t[1], t[2]},
                 1e-6f);
     }

@@ -1,14 +1,20 @@
 package diffract.viewer;
 
-import diffract.jrtr.DisplayCheck;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.pipeline.DiffractionPipeline;
+import diffract.pipeline.NamedPatch;
+import diffract.pipeline.TermSource;
 import diffract.precompute.TaylorTermComputer;
+import diffract.render.Stage;
+import diffract.scene.DisplayMode;
+import diffract.scene.LightDirection;
+import diffract.scene.OrbitCamera;
+import diffract.scene.PrimitiveShapes;
+import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
-import org.junit.jupiter.api.Assumptions;
 
 /** Small, fast viewer models for the tests: llvmpipe runs the shaders on the CPU. */
 final class ViewerTestSupport {
@@ -19,46 +25,26 @@ final class ViewerTestSupport {
     private ViewerTestSupport() {
     }
 
-    static void assumeDisplay() {
-        Assumptions.assumeTrue(DisplayCheck.problem().isEmpty(),
-                () -> "skipping GL test: " + DisplayCheck.NO_DISPLAY_MESSAGE);
-    }
 
     /** 8 terms, 20 nm steps, coherence length 10 um so the orders are wide enough to light many pixels. */
     static BrdfSettings settings() {
-        return new BrdfSettings(Variant.FLSS, 8, 1, 380, 780, 20, 2.5, 1.5, 0);
+        return BrdfSettings.builder(Variant.FLSS).highestOrder(8).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(20).coherenceLengthUm(4 * 2.5).refractiveIndex(1.5).pqReplicas(0).build();
     }
 
-    static ViewerSetup setup() {
-        return new ViewerSetup(PATCH, "test-patch", ViewerShapes.sphere(new double[] {1, 0, 0}), null, 0.2,
-                settings(), new OrbitCamera(0, 20, 3.0, 0, 0, 0), new LightDirection(30, 90), 10,
-                DisplayMode.SURFACE, false);
+    /** The sphere with the test patch, its terms from {@code source}. */
+    static SceneSetup setup(TermSource source) {
+        return new SceneSetup(new DiffractionPipeline(new NamedPatch("test-patch", PATCH, null), source),
+                PrimitiveShapes.sphere(new double[] {1, 0, 0}), null, 0.2, settings(), new OrbitCamera(0, 20, 3.0, 0, 0, 0),
+                new LightDirection(30, 90), 10, DisplayMode.SURFACE, false, SceneSetup.DEFAULT_VERTICAL_FOV_DEG,
+                Stage.none());
+    }
+
+    static SceneSetup setup() {
+        return setup(directTerms());
     }
 
     static TermSource directTerms() {
         return (n, reporter) -> TaylorTermComputer.compute(PATCH, n, reporter);
-    }
-
-    /**
-     * Terms computed directly, but only after {@code seconds} of reported progress: a precompute slow enough to
-     * count the frames the window draws meanwhile.
-     */
-    static TermSource slowTerms(double seconds) {
-        return (n, reporter) -> {
-            int steps = 10;
-            for (int i = 0; i < steps; i++) {
-                reporter.progress("test precompute", i / (double) steps);
-                try {
-                    Thread.sleep((long) (seconds * 1000 / steps));
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    throw new IllegalStateException("interrupted", e);
-                }
-            }
-            TaylorTerms terms = TaylorTermComputer.compute(PATCH, n, Reporter.SILENT);
-            reporter.progress("test precompute", 1);
-            return terms;
-        };
     }
 
     /**
@@ -68,7 +54,7 @@ final class ViewerTestSupport {
     static TermSource gatedTerms(java.util.concurrent.CountDownLatch gate) {
         return (n, reporter) -> {
             try {
-                if (n > settings().highestOrder() && !gate.await(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                if (n > settings().taylor().highestOrder() && !gate.await(600, java.util.concurrent.TimeUnit.SECONDS)) {
                     throw new IllegalStateException("the test never opened the gate");
                 }
             } catch (InterruptedException e) {
@@ -80,7 +66,7 @@ final class ViewerTestSupport {
     }
 
     static ViewerModel model(TermSource source) {
-        return ViewerModel.load(setup(), source, Reporter.SILENT);
+        return ViewerModel.load(setup(source), Reporter.SILENT);
     }
 
     /** Waits up to {@code seconds} for {@code condition}; returns whether it came true. */

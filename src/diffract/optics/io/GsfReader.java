@@ -1,6 +1,8 @@
 package diffract.optics.io;
 
 import diffract.optics.HeightField;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
@@ -179,14 +181,14 @@ final class GsfReader {
                 String fromFile = xRealUm != null && yRealUm != null
                         ? ReaderSupport.num(xRealUm / xRes) + " x " + ReaderSupport.num(yRealUm / yRes) + " um"
                         : ReaderSupport.num((xRealUm != null ? xRealUm / xRes : yRealUm / yRes)) + " um";
-                reporter.info(file + ": --pixel-size " + ReaderSupport.num(pixelSizeUm)
+                reporter.info(file + ": the given pixel size " + ReaderSupport.num(pixelSizeUm)
                         + " um overrides the file's pixel size of " + fromFile + " (XReal/XRes, YReal/YRes)");
             }
             return new double[] {pixelSizeUm, pixelSizeUm};
         }
         if (xRealUm == null && yRealUm == null) {
-            throw new UserInputException(file + ": the GSF header has no XReal/YReal, so the pixel size is unknown;"
-                    + " pass --pixel-size UM");
+            throw new InvalidSettingException(Quantity.PIXEL_SIZE, file + ": the GSF header has no XReal/YReal, so"
+                    + " the pixel size is unknown; give the pixel size in micrometres");
         }
         if (xRealUm == null || yRealUm == null) {
             // The spec's default for a missing size is 1 (metre), never what a measurement meant; square
@@ -211,8 +213,8 @@ final class GsfReader {
             throw new UserInputException(file + ": GSF " + key + " = '" + printable(value) + "' is not a number", e);
         }
         if (!(real > 0) || !Double.isFinite(real)) {
-            throw new UserInputException(file + ": GSF " + key + " = " + value + " must be a positive physical size"
-                    + " (in metres); fix the header or pass --pixel-size UM");
+            throw new InvalidSettingException(Quantity.PIXEL_SIZE, file + ": GSF " + key + " = " + value
+                    + " must be a positive physical size (in metres); fix the header or give the pixel size");
         }
         return real * xyToUm;
     }

@@ -1,6 +1,8 @@
 package diffract.optics.io;
 
 import diffract.optics.HeightField;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
@@ -51,9 +53,9 @@ public final class HeightFieldReader {
      * @throws UserInputException for any problem with the file or the options
      */
     public static HeightField load(Path file, Double maxHeightUm, Double pixelSizeUm, Reporter reporter) {
-        checkOption(file, "--max-height", maxHeightUm,
+        checkOption(file, Quantity.MAX_HEIGHT, maxHeightUm,
                 "the peak-to-valley height of the structure in micrometres");
-        checkOption(file, "--pixel-size", pixelSizeUm, "the sample spacing in micrometres");
+        checkOption(file, Quantity.PIXEL_SIZE, pixelSizeUm, "the sample spacing in micrometres");
         byte[] bytes = readBytes(file);
         Format format = detect(file, bytes);
 
@@ -65,8 +67,8 @@ public final class HeightFieldReader {
                 break;
             case TEXT:
                 if (pixelSizeUm == null) {
-                    throw new UserInputException(file + ": a text matrix carries no pixel size;"
-                            + " pass --pixel-size UM (the sample spacing in micrometres)");
+                    throw new InvalidSettingException(Quantity.PIXEL_SIZE, file + ": a text matrix carries no pixel"
+                            + " size; give the pixel size (the sample spacing in micrometres)");
                 }
                 raw = TextMatrixReader.read(file, bytes, pixelSizeUm);
                 break;
@@ -81,7 +83,7 @@ public final class HeightFieldReader {
         double rangeUm = raw.maxHeightUm() - raw.minHeightUm();
         if (maxHeightUm != null) {
             ReaderSupport.warnIfImplausible(file, "maximum height", maxHeightUm, "", MIN_PLAUSIBLE_HEIGHT_UM,
-                    MAX_PLAUSIBLE_HEIGHT_UM, "--max-height", reporter);
+                    MAX_PLAUSIBLE_HEIGHT_UM, "the given maximum height", reporter);
         }
         if (rangeUm == 0) {
             reporter.warn(file + ": the height field is flat (every sample is " + ReaderSupport.num(raw.minHeightUm())
@@ -99,25 +101,22 @@ public final class HeightFieldReader {
         return raw.meanSubtracted();
     }
 
-    private static void checkOption(Path file, String option, Double valueUm, String meaning) {
+    private static void checkOption(Path file, Quantity quantity, Double valueUm, String meaning) {
         if (valueUm != null && (!(valueUm > 0) || !Double.isFinite(valueUm))) {
-            throw new UserInputException(file + ": " + option + " " + valueUm + " is not valid; it must be a positive"
-                    + " number, " + meaning);
+            throw new InvalidSettingException(quantity, file + ": " + quantity.words() + " " + valueUm
+                    + " is not valid; it must be a positive number, " + meaning);
         }
     }
 
     private static void requireImageOptions(Path file, Double maxHeightUm, Double pixelSizeUm) {
-        if (maxHeightUm == null && pixelSizeUm == null) {
-            throw new UserInputException(file + ": an image carries neither heights nor a pixel size; pass"
-                    + " --max-height UM (the height of white) and --pixel-size UM (the sample spacing)");
-        }
         if (maxHeightUm == null) {
-            throw new UserInputException(file + ": an image carries no height scale; pass --max-height UM"
-                    + " (the height in micrometres that white maps to)");
+            throw new InvalidSettingException(Quantity.MAX_HEIGHT, file + ": an image carries no height scale; give"
+                    + " the height in micrometres that white maps to" + (pixelSizeUm == null
+                    ? ", and the pixel size (it carries none either)" : ""));
         }
         if (pixelSizeUm == null) {
-            throw new UserInputException(file + ": an image carries no pixel size; pass --pixel-size UM"
-                    + " (the sample spacing in micrometres)");
+            throw new InvalidSettingException(Quantity.PIXEL_SIZE, file + ": an image carries no pixel size; give"
+                    + " the pixel size (the sample spacing in micrometres)");
         }
     }
 
@@ -188,7 +187,7 @@ public final class HeightFieldReader {
     }
 
     private static void warnAboutPixelSize(Path file, HeightField field, Double pixelSizeUm, Reporter reporter) {
-        String source = pixelSizeUm != null ? "--pixel-size" : "XReal/XRes, YReal/YRes in the header";
+        String source = pixelSizeUm != null ? "the given pixel size" : "XReal/XRes, YReal/YRes in the header";
         boolean square = field.pixelSizeYUm() == field.pixelSizeXUm();
         ReaderSupport.warnIfImplausible(file, square ? "pixel size" : "pixel size along x", field.pixelSizeXUm(),
                 "per pixel", MIN_PLAUSIBLE_PIXEL_UM, MAX_PLAUSIBLE_PIXEL_UM, source, reporter);
@@ -206,7 +205,7 @@ public final class HeightFieldReader {
             heightsUm[i] *= scale;
         }
         reporter.info(file + ": heights rescaled by " + ReaderSupport.num(scale) + " so that max - min = "
-                + ReaderSupport.num(maxHeightUm) + " um (--max-height; the file's is "
+                + ReaderSupport.num(maxHeightUm) + " um (the given maximum height; the file's is "
                 + ReaderSupport.num(rangeUm) + " um)");
         return ReaderSupport.build(file, raw.rows(), raw.cols(), heightsUm, raw.pixelSizeXUm(), raw.pixelSizeYUm());
     }

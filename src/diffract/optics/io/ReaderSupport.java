@@ -44,7 +44,7 @@ final class ReaderSupport {
      *
      * @param what   e.g. "pixel size", "maximum height"
      * @param unitOf e.g. "per pixel" or "" (appears after "um")
-     * @param source where the value came from, e.g. "--pixel-size" or "XReal/XRes in the header"
+     * @param source where the value came from, e.g. "the given pixel size" or "XReal/XRes in the header"
      */
     static void warnIfImplausible(Path file, String what, double valueUm, String unitOf, double lowUm,
                                   double highUm, String source, Reporter reporter) {

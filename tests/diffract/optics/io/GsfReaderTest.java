@@ -80,7 +80,7 @@ class GsfReaderTest {
         assertEquals(0.05, field.pixelSizeXUm());
         assertEquals(0.05, field.pixelSizeYUm());
         assertEquals(0.21, field.maxHeightUm() - field.minHeightUm(), 1e-12);
-        assertTrue(reporter.infos().stream().anyMatch(i -> i.contains("--pixel-size 0.05 um overrides")
+        assertTrue(reporter.infos().stream().anyMatch(i -> i.contains("the given pixel size 0.05 um overrides")
                 && i.contains("0.1 x 0.2 um")), reporter.infos().toString());
         assertTrue(reporter.infos().stream().anyMatch(i -> i.contains("rescaled")), reporter.infos().toString());
     }
@@ -104,7 +104,7 @@ class GsfReaderTest {
     void headerProblemsAreUserErrors() throws IOException {
         Path noSize = write("nosize.gsf", gsf("XRes = 3\nYRes = 2\n", METRES, 0));
         assertUserError(noSize, () -> HeightFieldReader.load(noSize, null, null, Reporter.SILENT),
-                "no XReal/YReal", "--pixel-size UM");
+                "no XReal/YReal", "give the pixel size");
         // ... which the option fixes
         assertEquals(0.1, HeightFieldReader.load(noSize, null, 0.1, Reporter.SILENT).pixelSizeXUm());
 

@@ -49,14 +49,14 @@ class HeightFieldReaderTest {
     @Test
     void badOptionValuesAreUserErrors() throws IOException {
         Path file = matrix("opts.txt");
-        assertUserError(file, () -> HeightFieldReader.load(file, -1.0, 0.1, Reporter.SILENT), "--max-height -1.0");
-        assertUserError(file, () -> HeightFieldReader.load(file, 0.0, 0.1, Reporter.SILENT), "--max-height 0.0");
-        assertUserError(file, () -> HeightFieldReader.load(file, null, 0.0, Reporter.SILENT), "--pixel-size 0.0");
-        assertUserError(file, () -> HeightFieldReader.load(file, null, -0.1, Reporter.SILENT), "--pixel-size -0.1");
+        assertUserError(file, () -> HeightFieldReader.load(file, -1.0, 0.1, Reporter.SILENT), "the height of the brightest grey value -1.0");
+        assertUserError(file, () -> HeightFieldReader.load(file, 0.0, 0.1, Reporter.SILENT), "the height of the brightest grey value 0.0");
+        assertUserError(file, () -> HeightFieldReader.load(file, null, 0.0, Reporter.SILENT), "the pixel size 0.0");
+        assertUserError(file, () -> HeightFieldReader.load(file, null, -0.1, Reporter.SILENT), "the pixel size -0.1");
         assertUserError(file, () -> HeightFieldReader.load(file, null, Double.NaN, Reporter.SILENT),
-                "--pixel-size NaN", "positive");
+                "the pixel size NaN", "positive");
         assertUserError(file, () -> HeightFieldReader.load(file, Double.POSITIVE_INFINITY, 0.1, Reporter.SILENT),
-                "--max-height Infinity");
+                "the height of the brightest grey value Infinity");
     }
 
     @Test

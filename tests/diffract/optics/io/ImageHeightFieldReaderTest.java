@@ -138,10 +138,10 @@ class ImageHeightFieldReaderTest {
     @Test
     void imagesNeedMaxHeightAndPixelSize() throws IOException {
         Path file = write(sixteenBit(), "png", "needs-options.png");
-        assertUserError(file, () -> HeightFieldReader.load(file, null, 0.1, Reporter.SILENT), "--max-height UM");
-        assertUserError(file, () -> HeightFieldReader.load(file, 1.0, null, Reporter.SILENT), "--pixel-size UM");
+        assertUserError(file, () -> HeightFieldReader.load(file, null, 0.1, Reporter.SILENT), "the height in micrometres that white maps to");
+        assertUserError(file, () -> HeightFieldReader.load(file, 1.0, null, Reporter.SILENT), "give the pixel size");
         assertUserError(file, () -> HeightFieldReader.load(file, null, null, Reporter.SILENT),
-                "--max-height UM", "--pixel-size UM");
+                "white maps to", "and the pixel size");
     }
 
     @Test

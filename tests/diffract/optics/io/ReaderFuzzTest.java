@@ -19,7 +19,7 @@ import java.nio.file.Path;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * Property-based fuzzing of the height-field readers (issue #6): whatever bytes a file holds, loading it either
+ * Property-based fuzzing of the height-field readers: whatever bytes a file holds, loading it either
  * gives a valid field or a one-line {@link UserInputException}; no other exception escapes.
  */
 class ReaderFuzzTest {

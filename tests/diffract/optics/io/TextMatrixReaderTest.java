@@ -98,7 +98,7 @@ class TextMatrixReaderTest {
     @Test
     void textNeedsPixelSize() throws IOException {
         Path file = write("nopixel.txt", "1 2\n3 4\n");
-        assertUserError(file, () -> HeightFieldReader.load(file, null, null, Reporter.SILENT), "--pixel-size UM");
+        assertUserError(file, () -> HeightFieldReader.load(file, null, null, Reporter.SILENT), "give the pixel size");
     }
 
     @Test

@@ -1,0 +1,105 @@
+// The staged surface (define STAGE; diffract.render.Stage): the diffraction BRDF of diffraction_main.glsl, unchanged,
+// evaluated per fragment in the frame of the scale the fragment shows, for the key light and the environment's
+// extended lights, plus the pigment lit by the same lights and the environment's diffuse irradiance, tone mapped.
+//   SCALE_FRAMES        sampler2D scaleFrames (diffract.geometry.ScaledSkin.frameMap): per texel the scale normal's
+//                       components along the mesh's T and B, and the scale's long axis in (T, B); the patch's frame
+//                       (T', B', N') is rebuilt from it, so scales change the geometry and never the BRDF
+//   ENVIRONMENT_LIGHTS  K > 0: K directional lights (diffract.lighting.MedianCut) in world space, linear RGB
+//                       irradiance in units of the key light; each is a directional light to the BRDF today, and
+//                       environmentLightAngularDiameterDeg waits for a BRDF that filters by light size
+//   IRRADIANCE_SH, SHADOW_MAP (environment.glsl), TONE_MAP_OPERATOR (tone_mapping.glsl)
+// Every light colour tints the D65 result per channel (the diffraction is integrated under D65): exact for
+// D65-coloured lights, an approximation for coloured ones.
+#ifndef SURFACE_STAGE_GLSL
+#define SURFACE_STAGE_GLSL
+#include "/lighting/environment.glsl"
+#include "/lighting/tone_mapping.glsl"
+
+in vec3 surfaceWorldPosition;
+in vec3 surfaceWorldNormal;
+in vec3 surfaceWorldTangent;
+uniform vec3 cameraPosition;     // engine, world
+uniform vec3 lightDirection[8];  // engine: [0] towards the key light, world
+#ifdef SCALE_FRAMES
+uniform sampler2D scaleFrames;
+#endif
+#if defined(ENVIRONMENT_LIGHTS) && ENVIRONMENT_LIGHTS > 0
+uniform vec3 environmentLightDirection[ENVIRONMENT_LIGHTS];
+uniform vec3 environmentLightRgb[ENVIRONMENT_LIGHTS];
+uniform float environmentLightAngularDiameterDeg[ENVIRONMENT_LIGHTS];
+#endif
+
+struct SurfaceFrame {
+    vec3 t;    // the patch's x axis
+    vec3 b;
+    vec3 n;
+    vec3 base; // the mesh's own normal: light behind it is behind the body
+};
+
+SurfaceFrame surfaceFrame() {
+    SurfaceFrame f;
+    vec3 n0 = safeNormalize(surfaceWorldNormal);
+    vec3 t0 = safeNormalize(surfaceWorldTangent - dot(surfaceWorldTangent, n0) * n0);
+    vec3 b0 = cross(n0, t0);
+    f.base = n0;
+#ifdef SCALE_FRAMES
+    vec4 texel = texture(scaleFrames, surfaceTexcoord);
+    vec3 nLocal = vec3(texel.xy, sqrt(max(1.0 - dot(texel.xy, texel.xy), 0.0)));
+    f.n = safeNormalize(nLocal.x * t0 + nLocal.y * b0 + nLocal.z * n0);
+    vec3 axis = texel.z * t0 + texel.w * b0;
+    f.t = safeNormalize(axis - dot(axis, f.n) * f.n);
+    f.b = cross(f.n, f.t);
+#else
+    f.n = n0;
+    f.t = t0;
+    f.b = b0;
+#endif
+    return f;
+}
+
+vec3 toFrame(SurfaceFrame f, vec3 v) {
+    return vec3(dot(v, f.t), dot(v, f.b), dot(v, f.n));
+}
+
+// One directional light of linear RGB irradiance `rgb`: its structural colour (exposure x the BRDF's XYZ, in linear
+// sRGB) and, for the key light, the fraction of it that enters the skin and is scattered by the pigment (Algorithm
+// 4's (1 - alpha) cos); the environment's lights reach the pigment through its irradiance instead (counted once).
+void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigmentToo, inout vec3 structural,
+              inout vec3 diffuse) {
+    vec3 l = safeNormalize(towardsWorld);
+    if (dot(l, f.base) <= 0.0) {
+        return; // behind the body
+    }
+    vec3 wi = toFrame(f, l);
+    structural += rgb * max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
+    float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
+    if (pigmentToo) {
+        diffuse += rgb * (1.0 - clamp(fresnel, 0.0, 1.0)) * max(wi.z, 0.0);
+    }
+}
+
+vec3 stagedSurfaceLinear() {
+    SurfaceFrame f = surfaceFrame();
+    vec3 wr = toFrame(f, safeNormalize(cameraPosition - surfaceWorldPosition));
+    vec3 structural = vec3(0.0);
+    vec3 diffuse = vec3(0.0);
+    float visible = keyLightVisibility(surfaceWorldPosition, f.base);
+    if (visible > 0.0) {
+        addLight(f, lightDirection[0], vec3(visible), wr, true, structural, diffuse);
+    }
+#if defined(ENVIRONMENT_LIGHTS) && ENVIRONMENT_LIGHTS > 0
+    for (int k = 0; k < ENVIRONMENT_LIGHTS; k++) {
+        addLight(f, environmentLightDirection[k], environmentLightRgb[k], wr, false, structural, diffuse);
+    }
+#endif
+#ifdef PIGMENTATION
+    vec3 pigment = srgbDecode(texture(pigmentation, surfaceTexcoord).rgb);
+    // the environment's light enters the skin as the view's Fresnel transmission lets it out (reciprocity)
+    float viewFresnel = schlickFresnel(max(wr.z, 0.0), schlickR0(refractiveIndex));
+    diffuse += (1.0 - viewFresnel) * environmentIrradiance(f.n);
+    return (1.0 - diffuseWeight) * (structural + diffuse * pigment) + diffuseWeight * pigment;
+#else
+    return structural;
+#endif
+}
+#endif

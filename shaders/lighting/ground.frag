@@ -1,0 +1,42 @@
+#version 330 core
+// The ground (the ground material of diffract.render.StageResources): a Lambertian plane facing +y, its albedo
+// mottled by value noise, lit by the key light (irradiance 1, shadowed) and the environment's diffuse irradiance,
+// tone mapped as the surface is. Radiance = albedo x irradiance, in the units of the diffraction shaders' pigment term.
+#include "environment.glsl"
+#include "tone_mapping.glsl"
+
+in vec3 groundWorldPosition;
+
+uniform vec3 lightDirection[8];  // engine: towards the key light, world
+uniform vec3 albedoLinear;       // linear sRGB
+uniform float mottle;            // relative amplitude of the albedo's variation, 0..1
+uniform float mottleScale;       // noise cells per world unit
+
+out vec4 fragColor;
+
+float hash2(vec2 p) {
+    return fract(sin(dot(p, vec2(127.1, 311.7))) * 43758.5453);
+}
+
+float valueNoise(vec2 p) {
+    vec2 i = floor(p);
+    vec2 f = fract(p);
+    f = f * f * (3.0 - 2.0 * f);
+    return mix(mix(hash2(i), hash2(i + vec2(1.0, 0.0)), f.x), mix(hash2(i + vec2(0.0, 1.0)), hash2(i + vec2(1.0)), f.x), f.y);
+}
+
+float srgbEncodeChannel(float linear) {
+    float c = clamp(linear, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
+void main() {
+    vec3 n = vec3(0.0, 1.0, 0.0);
+    vec2 p = groundWorldPosition.xz * mottleScale;
+    float noise = 0.6 * valueNoise(p) + 0.3 * valueNoise(p * 3.1) + 0.1 * valueNoise(p * 9.7);
+    vec3 albedo = albedoLinear * (1.0 + mottle * (2.0 * noise - 1.0));
+    float cosKey = max(dot(normalize(lightDirection[0]), n), 0.0);
+    vec3 irradiance = vec3(cosKey * keyLightVisibility(groundWorldPosition, n)) + environmentIrradiance(n);
+    vec3 c = toneMap(albedo * irradiance);
+    fragColor = vec4(srgbEncodeChannel(c.r), srgbEncodeChannel(c.g), srgbEncodeChannel(c.b), 1.0);
+}

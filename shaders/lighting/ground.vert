@@ -1,0 +1,16 @@
+#version 330 core
+// The ground under the snake: world positions for lighting, shadow and mottling.
+in vec3 position;
+in vec3 normal;
+
+uniform mat4 model;
+uniform mat4 view;
+uniform mat4 projection;
+
+out vec3 groundWorldPosition;
+
+void main() {
+    vec4 world = model * vec4(position, 1.0);
+    groundWorldPosition = world.xyz;
+    gl_Position = projection * view * world;
+}

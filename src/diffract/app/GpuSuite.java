@@ -1,0 +1,299 @@
+package diffract.app;
+
+import diffract.bench.BenchPatch;
+import diffract.bench.BenchRunner;
+import diffract.bench.MapError;
+import diffract.bench.ReferenceMaps;
+import diffract.colour.DeltaEStatistics;
+import diffract.colour.Srgb;
+import diffract.colour.Xyz;
+import diffract.jrtr.GLInfo;
+import diffract.jrtr.OffscreenTarget;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+import diffract.optics.Variant;
+import diffract.render.GpuBrdfMap;
+import diffract.scene.Fabricator;
+import diffract.scene.SceneSetup;
+import diffract.util.ImageFiles;
+import diffract.util.Reporter;
+import diffract.util.UserInputException;
+import diffract.viewer.ViewerModel;
+import diffract.viewer.ViewerRenderer;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * {@code diffract bench --gpu-suite}: the table a GPU machine fills in a few minutes. For every GPU variant with the
+ * default scene's settings, and for the thesis' configuration (FLSS, N = 30, 5 nm, 65 um coherence length), it
+ * renders
+ * <ul>
+ *   <li>the default scene (the snake with the Elaphe-like patch) at the suite size (1920 x 1080 on a GPU): GPU
+ *       ms/frame from GL timer queries, and CIEDE2000 over the snake's pixels against the same scene and physics
+ *       drawn with FLSS at 1 nm and {@link #REFERENCE_ORDER} terms (no CPU renderer of meshes exists; the maps
+ *       below carry the error against the exact model);</li>
+ *   <li>the BRDF map of the scene's patch at the suite height (1080 x 1080): ms/frame, and CIEDE2000 over the lit
+ *       pixels of the maps at theta_i 0, 45 and 75 degrees against the CPU reference (exact model, 1 nm), at the
+ *       error size (128 px: the CPU reference of a 1080 px map would take longer than the whole suite).</li>
+ * </ul>
+ * On a software rasteriser (llvmpipe) the suite size is 1/8 of that, 240 x 135, unless {@code --suite-size} says.
+ * Writes {@code gpu-suite.csv}, {@code gpu-suite.md} and the scene pictures {@code scene-*.png} into the output
+ * folder; the reference maps are cached in {@code reference-maps/} there.
+ */
+final class GpuSuite {
+    static final int FULL_WIDTH = 1920;
+    static final int FULL_HEIGHT = 1080;
+    /** Software rasterisers get the suite at 1/8 of the full size in each direction. */
+    static final int SOFTWARE_DIVISOR = 8;
+    /** Taylor terms of the scene reference: the remainder bound of the default patch is 2e-8 at N = 30. */
+    static final int REFERENCE_ORDER = 30;
+    static final List<String> COLUMNS = List.of("kind", "configuration", "variant", "terms", "lambda_step_nm",
+            "window_radius", "coherence_length_um", "width", "height", "ms_per_frame", "error_size", "deltaE_mean",
+            "deltaE_p95", "compared_pixels", "reference", "gl_vendor", "gl_renderer", "gl_version", "gl_platform");
+
+    /** One measured row. */
+    record Row(String kind, String configuration, BrdfSettings settings, int width, int height, double msPerFrame,
+               int errorSize, double deltaEMean, double deltaEP95, int comparedPixels, String reference) {
+    }
+
+    private final Path outputDir;
+    private final int[] requestedSize;
+    private final int errorSizePx;
+    private final int frames;
+    private final Reporter reporter;
+    private final List<Variant> variants;
+
+    /**
+     * @param requestedSize {width, height}, or null for the automatic size
+     * @param errorSizePx   size of the BRDF maps compared with the CPU reference
+     * @param frames        timed frames per row (median; at least 10), after 2 unmeasured ones
+     * @param variants      the variants drawn with the scene's settings (the thesis' configuration always is)
+     */
+    GpuSuite(Path outputDir, int[] requestedSize, int errorSizePx, int frames, List<Variant> variants,
+             Reporter reporter) {
+        if (variants.contains(Variant.REFERENCE)) {
+            throw new UserInputException("the reference is what the suite measures against; list GPU variants");
+        }
+        this.variants = List.copyOf(variants);
+        if (frames < 10) {
+            throw new UserInputException("--frames must be at least 10 for a median, got " + frames);
+        }
+        if (errorSizePx < 8 || errorSizePx > 1024) {
+            throw new UserInputException("--error-size must be between 8 and 1024 pixels, got " + errorSizePx);
+        }
+        this.outputDir = outputDir;
+        this.requestedSize = requestedSize;
+        this.errorSizePx = errorSizePx;
+        this.frames = frames;
+        this.reporter = reporter;
+    }
+
+    /** The suite size: the one asked for, else full size, divided by {@link #SOFTWARE_DIVISOR} on software GL. */
+    static int[] size(int[] requested, GLInfo gl) {
+        if (requested != null) {
+            return requested.clone();
+        }
+        return isSoftware(gl) ? new int[] {FULL_WIDTH / SOFTWARE_DIVISOR, FULL_HEIGHT / SOFTWARE_DIVISOR}
+                : new int[] {FULL_WIDTH, FULL_HEIGHT};
+    }
+
+    /** Mesa's CPU rasterisers: their "GPU" times are CPU times of the shader code. */
+    static boolean isSoftware(GLInfo gl) {
+        String renderer = gl.renderer() == null ? "" : gl.renderer().toLowerCase(Locale.ROOT);
+        return renderer.contains("llvmpipe") || renderer.contains("softpipe") || renderer.contains("swrast")
+                || renderer.contains("software");
+    }
+
+    /** The configurations: the variants with the scene's settings, then the thesis' configuration. */
+    static List<String[]> names(List<Variant> variants) {
+        List<String[]> names = new ArrayList<>();
+        for (Variant v : variants) {
+            names.add(new String[] {"scene settings", v.label()});
+        }
+        names.add(new String[] {"thesis", Variant.FLSS.label()});
+        return names;
+    }
+
+    /** Every variant the GPU draws. */
+    static List<Variant> gpuVariants() {
+        return Arrays.stream(Variant.values()).filter(v -> v != Variant.REFERENCE).toList();
+    }
+
+    /** The same physics as {@code s}, converged: FLSS at 1 nm with at least {@link #REFERENCE_ORDER} terms. */
+    static BrdfSettings converged(BrdfSettings s) {
+        return s.with(b -> b.variant(Variant.FLSS).lambdaStepNm(1)
+                .highestOrder(Math.max(REFERENCE_ORDER, s.taylor().highestOrder())));
+    }
+
+    private void writePng(String file, float[] rgb, int[] size) {
+        try {
+            ImageFiles.writePng(outputDir.resolve(file), rgb, size[0], size[1], 3);
+        } catch (IOException e) {
+            throw new UserInputException("cannot write " + outputDir.resolve(file) + ": " + e.getMessage(), e);
+        }
+    }
+
+    private static BrdfSettings settingsOf(String[] name, BrdfSettings scene) {
+        return name[0].equals("thesis") ? BrdfSettings.thesis(Variant.FLSS)
+                : scene.with(b -> b.variant(Variant.parse(name[1])));
+    }
+
+    /** Runs every row and writes the files; returns the rows. */
+    List<Row> run() throws IOException {
+        Files.createDirectories(outputDir);
+        Path scene = DemoCommand.defaultScene(outputDir);
+        SceneSetup base = Fabricator.fabricate(scene, reporter);
+        GLInfo gl;
+        try (OffscreenTarget probe = sceneTarget(base)) {
+            gl = probe.info();
+        }
+        int[] size = size(requestedSize, gl);
+        reporter.info(String.format(Locale.ROOT, "gpu suite: %dx%d scene and %dx%d maps on %s%s", size[0], size[1],
+                size[1], size[1], gl.renderer(), requestedSize == null && isSoftware(gl)
+                        ? " (a software rasteriser: 1/" + SOFTWARE_DIVISOR + " of 1920x1080)" : ""));
+        List<Row> rows = new ArrayList<>();
+        // per physics (wavelength range, coherence, refractive index) one converged picture the rows compare with
+        Map<String, float[]> sceneReferences = new HashMap<>();
+        for (String[] name : names(variants)) {
+            BrdfSettings settings = settingsOf(name, base.settings());
+            BrdfSettings converged = converged(settings);
+            float[] reference = sceneReferences.computeIfAbsent(converged.toString(), k -> {
+                try (OffscreenTarget target = sceneTarget(base.withSettings(converged))) {
+                    float[] rgb = target.renderRgb(size[0], size[1]);
+                    writePng("scene-reference-" + fileName(name) + ".png", rgb, size);
+                    return rgb;
+                }
+            });
+            float[] picture;
+            double ms;
+            try (OffscreenTarget target = sceneTarget(base.withSettings(settings))) {
+                picture = target.renderRgb(size[0], size[1]);
+                ms = target.measureMedianMs(size[0], size[1], 2, frames);
+            }
+            writePng("scene-" + fileName(name) + ".png", picture, size);
+            boolean[] covered = covered(reference);
+            DeltaEStatistics error = DeltaEStatistics.of(xyzOfDisplayRgb(reference), xyzOfDisplayRgb(picture), covered);
+            rows.add(log(new Row("scene", name[0], settings, size[0], size[1], ms, size[0], error.mean(), error.p95(),
+                    error.pixels(), "gpu flss N=" + converged.taylor().highestOrder() + " 1 nm")));
+        }
+        BenchPatch patch = new BenchPatch("scene-patch", base.patch(), base.light().phiDeg());
+        ReferenceMaps references = new ReferenceMaps(outputDir.resolve("reference-maps"), reporter);
+        int mapSize = size[1];
+        for (String[] name : names(variants)) {
+            BrdfSettings settings = settingsOf(name, base.settings());
+            List<float[]> referenceMaps = new ArrayList<>();
+            List<float[]> maps = new ArrayList<>();
+            List<Double> exposures = new ArrayList<>();
+            double ms;
+            try (GpuBrdfMap map = base.pipeline().gpuMap(settings, settings.spectral().lambdaMinNm(), reporter)) {
+                for (double theta : BenchRunner.LIGHTS_DEG) {
+                    Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
+                    float[] ref = references.xyz(patch, theta, errorSizePx, settings);
+                    referenceMaps.add(ref);
+                    exposures.add(BenchRunner.exposure(ref, wi, errorSizePx));
+                    maps.add(map.xyz(wi, errorSizePx));
+                }
+                ms = map.medianMsPerFrame(Direction.fromSphericalDeg(BenchRunner.TIMED_LIGHT_DEG, patch.phiIDeg()),
+                        mapSize, 2, frames);
+            }
+            MapError error = MapError.pooled(referenceMaps, maps, exposures, errorSizePx);
+            rows.add(log(new Row("brdf map", name[0], settings, mapSize, mapSize, ms, errorSizePx, error.mean(),
+                    error.p95(), error.litPixels(), "cpu exact 1 nm")));
+        }
+        Files.writeString(outputDir.resolve("gpu-suite.csv"), csv(rows, gl), StandardCharsets.UTF_8);
+        Files.writeString(outputDir.resolve("gpu-suite.md"), markdown(rows, gl), StandardCharsets.UTF_8);
+        return rows;
+    }
+
+    private Row log(Row r) {
+        reporter.info(String.format(Locale.ROOT, "gpu suite: %-8s %-14s %-6s %dx%d: %9.2f ms/frame, CIEDE2000 mean %.3f "
+                        + "p95 %.3f (%d px at %d, against %s)", r.kind(), r.configuration(), r.settings().variant().label(),
+                r.width(), r.height(), r.msPerFrame(), r.deltaEMean(), r.deltaEP95(), r.comparedPixels(), r.errorSize(),
+                r.reference()));
+        return r;
+    }
+
+    private OffscreenTarget sceneTarget(SceneSetup setup) {
+        ViewerModel model = ViewerModel.load(setup, reporter);
+        model.bakeIfNeeded(reporter);
+        return new OffscreenTarget(new ViewerRenderer(model));
+    }
+
+    private static String fileName(String[] name) {
+        return name[0].equals("thesis") ? "thesis" : name[1];
+    }
+
+    /** The pixels that show the scene's object rather than the background (in the reference picture). */
+    static boolean[] covered(float[] rgb) {
+        float[] clear = ViewerRenderer.CLEAR_COLOUR;
+        boolean[] covered = new boolean[rgb.length / 3];
+        for (int p = 0; p < covered.length; p++) {
+            covered[p] = Math.abs(rgb[3 * p] - clear[0]) > 1e-3 || Math.abs(rgb[3 * p + 1] - clear[1]) > 1e-3
+                    || Math.abs(rgb[3 * p + 2] - clear[2]) > 1e-3;
+        }
+        return covered;
+    }
+
+    /** The viewer writes display-encoded sRGB; CIEDE2000 compares the XYZ it encodes (D65, Y = 1). */
+    static float[] xyzOfDisplayRgb(float[] rgb) {
+        float[] xyz = new float[rgb.length];
+        for (int p = 0; p < rgb.length; p += 3) {
+            Xyz c = Srgb.xyzFromLinear(new double[] {Srgb.decode(rgb[p]), Srgb.decode(rgb[p + 1]),
+                Srgb.decode(rgb[p + 2])});
+            xyz[p] = (float) c.x();
+            xyz[p + 1] = (float) c.y();
+            xyz[p + 2] = (float) c.z();
+        }
+        return xyz;
+    }
+
+    static String csv(List<Row> rows, GLInfo gl) {
+        StringBuilder b = new StringBuilder(String.join(",", COLUMNS)).append('\n');
+        for (Row r : rows) {
+            BrdfSettings s = r.settings();
+            b.append(String.join(",", r.kind(), r.configuration(), s.variant().label(),
+                    Integer.toString(s.taylor().highestOrder()), number(s.spectral().lambdaStepNm()),
+                    Integer.toString(s.window().radius()), number(4 * s.illumination().sigmaSpatialUm()), Integer.toString(r.width()), Integer.toString(r.height()),
+                    number(r.msPerFrame()), Integer.toString(r.errorSize()), number(r.deltaEMean()),
+                    number(r.deltaEP95()), Integer.toString(r.comparedPixels()), r.reference(), field(gl.vendor()),
+                    field(gl.renderer()), field(gl.version()), field(gl.platform()))).append('\n');
+        }
+        return b.toString();
+    }
+
+    static String markdown(List<Row> rows, GLInfo gl) {
+        StringBuilder b = new StringBuilder("GPU suite on " + gl + "\n\n");
+        b.append("| what | configuration | variant | N | step nm | size | ms/frame | CIEDE2000 mean | p95 | against |\n");
+        b.append("|---|---|---|---|---|---|---|---|---|---|\n");
+        for (Row r : rows) {
+            BrdfSettings s = r.settings();
+            b.append(String.format(Locale.ROOT, "| %s | %s | %s | %d | %s | %dx%d | %.2f | %.3f | %.3f | %s at %d px |%n",
+                    r.kind(), r.configuration(), s.variant().label(), s.taylor().highestOrder(),
+                    number(s.spectral().lambdaStepNm()),
+                    r.width(), r.height(), r.msPerFrame(), r.deltaEMean(), r.deltaEP95(), r.reference(), r.errorSize()));
+        }
+        return b.toString();
+    }
+
+    private static String number(double v) {
+        if (Double.isNaN(v)) {
+            return "nan";
+        }
+        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v)
+                : String.format(Locale.ROOT, "%.6g", v).replaceAll("(\\.\\d*?)0+$", "$1").replaceAll("\\.$", "");
+    }
+
+    /** Driver strings with their commas as semicolons, so that every row splits on commas. */
+    private static String field(String text) {
+        return text == null ? "" : text.replace(',', ';');
+    }
+}

@@ -1,0 +1,263 @@
+package diffract.app;
+
+import diffract.optics.FresnelModel;
+import diffract.optics.LobeQuadrature;
+import diffract.optics.PatchCatalogue;
+import diffract.optics.PixelFilter;
+import diffract.optics.Variant;
+import diffract.precompute.ThesisFormat;
+import diffract.scene.Scene;
+import diffract.util.UserInputException;
+import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.TypeConversionException;
+
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * The value types of the options that are more than a number or an enum, each with its picocli converter (a bad
+ * value is picocli's one-line "Invalid value for option" with the reason), and the completion candidates of the
+ * options whose values are names.
+ */
+final class OptionTypes {
+    private OptionTypes() {
+    }
+
+    /** {@code --variant}: a variant, or {@code auto} (null variant), the cheapest measured one for an accuracy target. */
+    record VariantChoice(Variant variant) {
+        static final String AUTO = "auto";
+
+        boolean auto() {
+            return variant == null;
+        }
+
+        static final class Converter implements ITypeConverter<VariantChoice> {
+            @Override
+            public VariantChoice convert(String text) {
+                if (text.trim().equalsIgnoreCase(AUTO)) {
+                    return new VariantChoice(null);
+                }
+                try {
+                    return new VariantChoice(Variant.parse(text));
+                } catch (UserInputException e) {
+                    throw new TypeConversionException(e.getMessage() + " or auto");
+                }
+            }
+        }
+
+        /** reference, flss, nmm, pq, baked, auto. */
+        static final class Candidates implements Iterable<String> {
+            @Override
+            public Iterator<String> iterator() {
+                List<String> names = new ArrayList<>();
+                for (Variant v : Variant.values()) {
+                    names.add(v.label());
+                }
+                names.add(AUTO);
+                return names.iterator();
+            }
+        }
+    }
+
+    /** {@code --window-radius R|auto}: a fixed radius, or (null) the radius per axis from sigma_f. */
+    record WindowRadius(Integer radius) {
+        boolean automatic() {
+            return radius == null;
+        }
+
+        static final class Converter implements ITypeConverter<WindowRadius> {
+            @Override
+            public WindowRadius convert(String text) {
+                if (text.trim().equalsIgnoreCase("auto")) {
+                    return new WindowRadius(null);
+                }
+                return new WindowRadius(whole(text, "a whole number of texels or auto"));
+            }
+        }
+    }
+
+    /** {@code --exposure E|auto}: a positive factor, or (null) the brightest diffracted pixel mapped to 1. */
+    record Exposure(Double factor) {
+        boolean automatic() {
+            return factor == null;
+        }
+
+        static final class Converter implements ITypeConverter<Exposure> {
+            @Override
+            public Exposure convert(String text) {
+                if (text.trim().equalsIgnoreCase("auto")) {
+                    return new Exposure(null);
+                }
+                return new Exposure(positive(text, "a positive number or auto"));
+            }
+        }
+    }
+
+    /** {@code --size WxH} (or {@code S} for a square), 16..4096 pixels per side. */
+    record ImageSize(int width, int height) {
+        static final class Converter implements ITypeConverter<ImageSize> {
+            @Override
+            public ImageSize convert(String text) {
+                String[] parts = text.toLowerCase(Locale.ROOT).split("x", -1);
+                if (parts.length <= 2) {
+                    int w = whole(parts[0], "WxH or S");
+                    int h = parts.length == 1 ? w : whole(parts[1], "WxH or S");
+                    if (w >= 16 && h >= 16 && w <= 4096 && h <= 4096) {
+                        return new ImageSize(w, h);
+                    }
+                }
+                throw new TypeConversionException("must be WxH (or S) with 16..4096 pixels per side, got '" + text + "'");
+            }
+        }
+    }
+
+    /** {@code --baked-samples UV,W}: the baked table's samples (0 = automatic). */
+    record BakedSamples(int uv, int w) {
+        static final class Converter implements ITypeConverter<BakedSamples> {
+            @Override
+            public BakedSamples convert(String text) {
+                String[] parts = text.split(",", -1);
+                if (parts.length != 2) {
+                    throw new TypeConversionException("must be UV,W (whole numbers, 0 = automatic), got '" + text + "'");
+                }
+                return new BakedSamples(whole(parts[0], "UV,W"), whole(parts[1], "UV,W"));
+            }
+        }
+    }
+
+    /**
+     * {@code --lobe-quadrature K=V[,K=V]}: the knobs of {@link LobeQuadrature} given, by their record names; the
+     * quadrature checks the values when applied.
+     */
+    record LobeQuadratureChange(java.util.Map<String, Double> values) {
+        static final List<String> KEYS = List.of("pairThreshold", "nodesPerSigma", "maxStepNm", "reachSigmas",
+                "weightStepNm", "lightNodes");
+
+        LobeQuadrature applyTo(LobeQuadrature q) {
+            java.util.function.Function<String, Double> v = values::get;
+            return new LobeQuadrature(or(v.apply("pairThreshold"), q.pairThreshold()),
+                    or(v.apply("nodesPerSigma"), q.nodesPerSigma()), or(v.apply("maxStepNm"), q.maxStepNm()),
+                    or(v.apply("reachSigmas"), q.reachSigmas()), or(v.apply("weightStepNm"), q.weightStepNm()),
+                    values.containsKey("lightNodes") ? (int) Math.round(values.get("lightNodes")) : q.lightNodes());
+        }
+
+        private static double or(Double given, double fallback) {
+            return given != null ? given : fallback;
+        }
+
+        static final class Converter implements ITypeConverter<LobeQuadratureChange> {
+            @Override
+            public LobeQuadratureChange convert(String text) {
+                java.util.Map<String, Double> values = new java.util.LinkedHashMap<>();
+                for (String part : text.split(",", -1)) {
+                    String[] kv = part.split("=", -1);
+                    String key = kv[0].trim();
+                    if (kv.length != 2 || !KEYS.contains(key)) {
+                        throw new TypeConversionException("must be K=V pairs with K one of " + String.join(", ", KEYS)
+                                + ", got '" + part.trim() + "'");
+                    }
+                    try {
+                        values.put(key, Double.parseDouble(kv[1].trim()));
+                    } catch (NumberFormatException e) {
+                        throw new TypeConversionException(key + " must be a number, got '" + kv[1].trim() + "'");
+                    }
+                }
+                return new LobeQuadratureChange(java.util.Map.copyOf(values));
+            }
+        }
+    }
+
+    /** physical, thesis. */
+    static final class FresnelNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return java.util.Arrays.stream(FresnelModel.values()).map(FresnelModel::label).iterator();
+        }
+    }
+
+    /** box, point. */
+    static final class PixelFilterNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return List.of(PixelFilter.BOX.label(), PixelFilter.POINT.label()).iterator();
+        }
+    }
+
+    /** {@code --tangent X,Y,Z}: a non-zero world direction. */
+    record Vector3(double x, double y, double z) {
+        static final class Converter implements ITypeConverter<Vector3> {
+            @Override
+            public Vector3 convert(String text) {
+                String[] parts = text.split(",", -1);
+                if (parts.length == 3) {
+                    try {
+                        Vector3 v = new Vector3(Double.parseDouble(parts[0].trim()), Double.parseDouble(parts[1].trim()),
+                                Double.parseDouble(parts[2].trim()));
+                        if (Double.isFinite(v.x + v.y + v.z) && v.x * v.x + v.y * v.y + v.z * v.z > 1e-12) {
+                            return v;
+                        }
+                    } catch (NumberFormatException e) {
+                        // the message below says what is expected
+                    }
+                }
+                throw new TypeConversionException("must be a non-zero vector X,Y,Z, got '" + text + "'");
+            }
+        }
+    }
+
+    /** {@code --terms-height-unit auto|m|um}. */
+    static final class HeightUnitConverter implements ITypeConverter<ThesisFormat.HeightUnit> {
+        @Override
+        public ThesisFormat.HeightUnit convert(String text) {
+            try {
+                return ThesisFormat.HeightUnit.parse(text);
+            } catch (UserInputException e) {
+                throw new TypeConversionException(e.getMessage());
+            }
+        }
+    }
+
+    /** The named patches of the {@link PatchCatalogue}. */
+    static final class PatchNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return PatchCatalogue.names().iterator();
+        }
+    }
+
+    /** The shapes a command line can name (an OBJ file needs a scene). */
+    static final class ShapeNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            List<String> names = new ArrayList<>();
+            for (Scene.ShapeKind kind : Scene.ShapeKind.values()) {
+                if (kind != Scene.ShapeKind.OBJ) {
+                    names.add(kind.sceneName());
+                }
+            }
+            return names.iterator();
+        }
+    }
+
+    private static int whole(String text, String expected) {
+        try {
+            return Integer.parseInt(text.trim());
+        } catch (NumberFormatException e) {
+            throw new TypeConversionException("must be " + expected + ", got '" + text + "'");
+        }
+    }
+
+    private static double positive(String text, String expected) {
+        try {
+            double v = Double.parseDouble(text.trim());
+            if (v > 0 && Double.isFinite(v)) {
+                return v;
+            }
+        } catch (NumberFormatException e) {
+            // the message below says what is expected
+        }
+        throw new TypeConversionException("must be " + expected + ", got '" + text + "'");
+    }
+}

@@ -1,0 +1,100 @@
+package diffract.app;
+
+import diffract.optics.HeightField;
+import diffract.optics.PatchCatalogue;
+import diffract.optics.ProceduralPatches;
+import diffract.optics.io.HeightFieldReader;
+import diffract.pipeline.NamedPatch;
+import diffract.scene.Scene;
+import diffract.util.Reporter;
+import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Option;
+
+import java.nio.file.Path;
+
+/**
+ * The options that name a height field, on every command that reads one: a file ({@code --patch} with the sizes
+ * an image or text matrix lacks) or a named patch of the {@link PatchCatalogue} ({@code --synthetic}).
+ */
+final class PatchOptions {
+    @Option(names = "--patch", paramLabel = "FILE",
+            description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix (.txt/.csv, heights in um) or "
+                    + "Gwyddion .gsf.")
+    Path file;
+
+    @Option(names = "--synthetic", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
+            description = "A patch made by code instead of --patch: ${COMPLETION-CANDIDATES} (diffract patch --help "
+                    + "says what they are); --period, --height, ... change it.")
+    String synthetic;
+
+    @Mixin
+    ProceduralOptions parameters;
+
+    @Option(names = "--max-height", paramLabel = "UM",
+            description = "Height of the brightest grey value in micrometres (images; rescales text/.gsf if given).")
+    Double maxHeightUm;
+
+    @Option(names = "--pixel-size", paramLabel = "UM",
+            description = "Pixel size dH in micrometres (images and text; overrides a .gsf's XReal/XRes).")
+    Double pixelSizeUm;
+
+    /** The options a scene file says by itself. */
+    static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size", "--period", "--height",
+        "--periods", "--samples-per-period", "--rows", "--seed"};
+
+    boolean given() {
+        return file != null || synthetic != null;
+    }
+
+    /** Checks what needs no file: one source at most, a known name, sizes only with a file. */
+    void validate() {
+        if (file != null && synthetic != null) {
+            throw new diffract.util.UserInputException("give --patch FILE or --synthetic NAME, not both");
+        }
+        if (synthetic == null && parameters.given()) {
+            throw new diffract.util.UserInputException("--period, --height, --periods, --samples-per-period, --rows "
+                    + "and --seed change a patch made by code: add --synthetic NAME");
+        }
+        if (synthetic != null) {
+            parameters.spec(PatchCatalogue.named(synthetic));
+            if (maxHeightUm != null || pixelSizeUm != null) {
+                throw new diffract.util.UserInputException("--max-height and --pixel-size size a --patch FILE; "
+                        + "a --synthetic patch has its own");
+            }
+        }
+    }
+
+    /** Like {@link #validate}, and one source is required. */
+    void validateRequired() {
+        validate();
+        if (!given()) {
+            throw new diffract.util.UserInputException("give the height field: --patch FILE or --synthetic NAME");
+        }
+    }
+
+    /** The height field, mean-subtracted, with its name ({@code fallback} when none was given). */
+    NamedPatch load(String fallback, Reporter reporter) {
+        if (file != null) {
+            HeightField field = HeightFieldReader.load(file, maxHeightUm, pixelSizeUm, reporter);
+            return new NamedPatch(file.getFileName().toString(), field.meanSubtracted(), maxHeightUm);
+        }
+        PatchCatalogue.Entry entry = PatchCatalogue.named(synthetic != null ? synthetic : fallback);
+        ProceduralPatches.Spec spec = parameters.spec(entry);
+        return NamedPatch.of(spec.equals(entry.spec()) ? entry.name() : entry.name() + "(" + spec.periodUm() + " um)",
+                spec.build());
+    }
+
+    /** As a scene's patch ({@code fallback} when none was given). */
+    Scene.PatchSpec spec(String fallback) {
+        if (file != null) {
+            return new Scene.FilePatch(file, maxHeightUm, pixelSizeUm);
+        }
+        PatchCatalogue.Entry entry = PatchCatalogue.named(synthetic != null ? synthetic : fallback);
+        return new Scene.ProceduralPatch(entry.name(), parameters.spec(entry));
+    }
+
+    /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */
+    double periodAzimuthDeg(String fallback) {
+        return file != null ? 0 : PatchCatalogue.named(synthetic != null ? synthetic : fallback).phiIDeg();
+    }
+}

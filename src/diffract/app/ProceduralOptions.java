@@ -1,0 +1,80 @@
+package diffract.app;
+
+import diffract.optics.PatchCatalogue;
+import diffract.optics.ProceduralPatches;
+import diffract.util.UserInputException;
+import picocli.CommandLine.Option;
+
+/**
+ * The parameters of a named patch made by code ({@code patch NAME}, {@code --synthetic NAME}), the scene file's
+ * {@code material.patch} keys of the same names: each replaces the catalogue's value when given.
+ */
+final class ProceduralOptions {
+    @Option(names = "--period", paramLabel = "UM", description = "Grating or ridge period d (scene: periodUm).")
+    Double periodUm;
+
+    @Option(names = "--height", paramLabel = "UM", description = "Peak-to-valley height (scene: heightUm).")
+    Double heightUm;
+
+    @Option(names = "--periods", paramLabel = "P", description = "Whole periods across (scene: periods).")
+    Integer periods;
+
+    @Option(names = {"--samples-per-period"}, paramLabel = "K",
+            description = "Gratings: pixels per period (scene: samplesPerPeriod).")
+    Integer samplesPerPeriod;
+
+    @Option(names = "--rows", paramLabel = "R", description = "Gratings: rows (scene: rows).")
+    Integer rows;
+
+    @Option(names = "--seed", paramLabel = "S", description = "Snake patches: the noise seed (scene: seed).")
+    Long seed;
+
+    /** Whether any parameter was given. */
+    boolean given() {
+        return periodUm != null || heightUm != null || periods != null || samplesPerPeriod != null || rows != null
+                || seed != null;
+    }
+
+    /** The named patch with the parameters given in place of its own. */
+    ProceduralPatches.Spec spec(PatchCatalogue.Entry entry) {
+        ProceduralPatches.Spec d = entry.spec();
+        boolean grating = d.kind().isGrating();
+        if (!grating && (samplesPerPeriod != null || rows != null)) {
+            throw new UserInputException("--samples-per-period and --rows size a grating; " + entry.name()
+                    + " is " + d.sizePx() + " x " + d.sizePx() + " pixels");
+        }
+        if (grating && seed != null) {
+            throw new UserInputException("--seed is the noise of the snake patches; a grating has none");
+        }
+        ProceduralPatches.Spec spec = new ProceduralPatches.Spec(d.kind(), or(periodUm, d.periodUm()),
+                or(heightUm, d.heightUm()), or(periods, d.periods()), or(samplesPerPeriod, d.samplesPerPeriod()),
+                or(rows, d.rows()), d.sizePx(), d.roughnessUm(), seed != null ? seed : d.seed());
+        if (grating) {
+            checkGrating(spec);
+        }
+        return spec;
+    }
+
+    /** Each grating parameter in its range, named by its option (the catalogue's own values all are). */
+    private static void checkGrating(ProceduralPatches.Spec s) {
+        if (!(s.periodUm() > 0) || !Double.isFinite(s.periodUm())) {
+            throw new UserInputException("--period must be a positive number of micrometres, got " + s.periodUm());
+        }
+        if (!(s.heightUm() >= 0) || !Double.isFinite(s.heightUm())) {
+            throw new UserInputException("--height must be >= 0 um, got " + s.heightUm());
+        }
+        if (s.samplesPerPeriod() < 2) {
+            throw new UserInputException("--samples-per-period must be at least 2, got " + s.samplesPerPeriod());
+        }
+        if (s.periods() < 1) {
+            throw new UserInputException("--periods must be at least 1, got " + s.periods());
+        }
+        if (s.rows() < 1) {
+            throw new UserInputException("--rows must be at least 1, got " + s.rows());
+        }
+    }
+
+    private static <T> T or(T given, T fallback) {
+        return given != null ? given : fallback;
+    }
+}

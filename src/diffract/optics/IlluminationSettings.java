@@ -1,0 +1,85 @@
+package diffract.optics;
+
+/**
+ * How the patch is lit, what a pixel sees of it, and how its reflection is weighed: the spatial coherence of the
+ * light (004, "Spatial Coherence and Windowing": 4 sigma_s, 65 um for filtered sunlight), the light's angular size
+ * ({@link LightSource}: a Gaussian of sigma D / 4 per axis), what a BRDF-map pixel shows ({@link PixelFilter}), and
+ * the gain factor's Fresnel term (004 eq. {@code gainfactor}: Schlick's with refractive index n, counted as
+ * {@link FresnelModel} says). docs/filtering.md defines the light and the pixel.
+ *
+ * @param sigmaSpatialUm  sigma_s of the Gaussian coherence window; 4 sigma_s is the coherence length
+ * @param refractiveIndex n of the surface (1.5 for snake skin)
+ * @param light           the light's angular diameter, 0..20 degrees (0: a point light)
+ * @param fresnel         Schlick's power reflectance counted once ({@link FresnelModel#PHYSICAL}) or squared as the
+ *                        thesis prints it
+ * @param pixelFilter     a BRDF-map pixel's value: the BRDF at its centre ({@link PixelFilter#POINT}, the thesis'
+ *                        map) or its average over the pixel's square ({@link PixelFilter#BOX}, the definition)
+ */
+public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex, LightSource light,
+                                   FresnelModel fresnel, PixelFilter pixelFilter) {
+    public static final double MAX_COHERENCE_LENGTH_UM = 40_000;
+    public static final double MAX_REFRACTIVE_INDEX = 4;
+
+    public IlluminationSettings {
+        if (!(sigmaSpatialUm > 0 && 4 * sigmaSpatialUm <= MAX_COHERENCE_LENGTH_UM)) {
+            throw new InvalidSettingException(Quantity.COHERENCE_LENGTH, Quantity.COHERENCE_LENGTH.words()
+                    + " must be in (0, " + InvalidSettingException.number(MAX_COHERENCE_LENGTH_UM) + "] um, got "
+                    + InvalidSettingException.number(4 * sigmaSpatialUm));
+        }
+        InvalidSettingException.requireWithin(Quantity.REFRACTIVE_INDEX, refractiveIndex, 1, MAX_REFRACTIVE_INDEX);
+        if (light == null || fresnel == null || pixelFilter == null) {
+            throw new NullPointerException("the light, the Fresnel model and the pixel filter are required");
+        }
+    }
+
+    /** A point light, physical Fresnel, point-sampled map pixels. */
+    public IlluminationSettings(double sigmaSpatialUm, double refractiveIndex) {
+        this(sigmaSpatialUm, refractiveIndex, LightSource.POINT, FresnelModel.PHYSICAL, PixelFilter.POINT);
+    }
+
+    /** From the coherence length 4 sigma_s; a point light, physical Fresnel, point-sampled map pixels. */
+    public static IlluminationSettings ofCoherenceLength(double coherenceLengthUm, double refractiveIndex) {
+        return new IlluminationSettings(coherenceLengthUm / 4.0, refractiveIndex);
+    }
+
+    /**
+     * The thesis' illumination, 4 sigma_s = 65 um and n = 1.5, seen as the thesis' maps see it (a point light, the
+     * BRDF at each pixel's centre), with the Fresnel term counted once.
+     */
+    public static IlluminationSettings thesis() {
+        return new IlluminationSettings(CoherenceWindow.COHERENCE_LENGTH_UM / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX);
+    }
+
+    public double coherenceLengthUm() {
+        return 4 * sigmaSpatialUm;
+    }
+
+    public CoherenceWindow coherenceWindow() {
+        return new CoherenceWindow(sigmaSpatialUm);
+    }
+
+    /** Whether a pixel averages anything (its square or an extended light) rather than point-sampling. */
+    public boolean filters() {
+        return pixelFilter == PixelFilter.BOX || !light.isPoint();
+    }
+
+    public IlluminationSettings withCoherenceLengthUm(double um) {
+        return new IlluminationSettings(um / 4.0, refractiveIndex, light, fresnel, pixelFilter);
+    }
+
+    public IlluminationSettings withRefractiveIndex(double n) {
+        return new IlluminationSettings(sigmaSpatialUm, n, light, fresnel, pixelFilter);
+    }
+
+    public IlluminationSettings withLight(LightSource l) {
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, l, fresnel, pixelFilter);
+    }
+
+    public IlluminationSettings withFresnel(FresnelModel f) {
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, light, f, pixelFilter);
+    }
+
+    public IlluminationSettings withPixelFilter(PixelFilter p) {
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, light, fresnel, p);
+    }
+}

@@ -1,0 +1,48 @@
+package diffract.optics;
+
+/**
+ * How P is read between the DFT texels (003 eq. 1.9 and sec. 1.5.3): the Gaussian coherence window's
+ * neighbourhood (FLSS, NMM, and the baked table's FLSS), or PQ's periodic replication.
+ *
+ * @param radius     R texels: a (2R + 1)^2 neighbourhood, when not {@code automatic}
+ * @param automatic  the radius per axis follows sigma_f in texels ({@link WindowRadii#automatic}) instead
+ * @param pqReplicas PQ's replicas per axis; 0 = enough to span the coherence length
+ */
+public record WindowSettings(int radius, boolean automatic, int pqReplicas) {
+    /**
+     * The largest fixed radius, a 33 x 33 window: sigma_f grows with the patch (2 texels for a 200 um patch at the
+     * thesis' coherence), and the automatic radius stops at {@link WindowRadii#MAX_AUTOMATIC} for cost.
+     */
+    public static final int MAX_RADIUS = 16;
+    public static final int MAX_PQ_REPLICAS = 100;
+
+    public WindowSettings {
+        if (radius < 0 || radius > MAX_RADIUS) {
+            throw new InvalidSettingException(Quantity.WINDOW_RADIUS, Quantity.WINDOW_RADIUS.words()
+                    + " must be in 0.." + MAX_RADIUS + " texels, got " + radius);
+        }
+        if (pqReplicas < 0 || pqReplicas > MAX_PQ_REPLICAS) {
+            throw new InvalidSettingException(Quantity.PQ_REPLICAS, Quantity.PQ_REPLICAS.words()
+                    + " must be in 0.." + MAX_PQ_REPLICAS + " (0 = span the coherence length), got " + pqReplicas);
+        }
+    }
+
+    /** The thesis' 3 x 3 window and automatic PQ replicas. */
+    public static WindowSettings thesis() {
+        return new WindowSettings(1, false, 0);
+    }
+
+    /** The radii per axis for a patch of this extent under this coherence window. */
+    public WindowRadii radii(CoherenceWindow window, double extentXUm, double extentYUm) {
+        if (!automatic) {
+            return new WindowRadii(radius, radius);
+        }
+        return new WindowRadii(WindowRadii.automatic(window.sigmaTexels(extentXUm)),
+                WindowRadii.automatic(window.sigmaTexels(extentYUm)));
+    }
+
+    /** PQ's replicas along an axis of this extent: the fixed count, or enough to span the coherence length. */
+    public int replicas(CoherenceWindow window, double extentUm) {
+        return pqReplicas > 0 ? pqReplicas : TaylorSincSpectrum.replicasForCoherence(window, extentUm);
+    }
+}

@@ -1,0 +1,80 @@
+package diffract.render;
+
+import diffract.colour.ToneMapping;
+import diffract.lighting.Environment;
+
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * Where a surface is shown, beyond its BRDF: the scales' frame map, the environment's light, a ground with the key
+ * light's shadow, and the tone mapping of the result. {@link #none()} is the plain surface of the thesis (no
+ * staging: the shaders are compiled exactly as without it).
+ *
+ * @param scaleFrames  the frame map of {@link diffract.geometry.ScaledSkin#frameMap}, or null for the mesh's frame
+ * @param environment  extended lights and diffuse irradiance, or null
+ * @param ground       the ground under the shape, or null
+ * @param toneMapping  from linear light to the display
+ */
+public record Stage(ScaleFrames scaleFrames, Environment environment, Ground ground, ToneMapping toneMapping) {
+    /** Most extended lights the surface shader evaluates (each one costs a full BRDF evaluation per fragment). */
+    public static final int MAX_ENVIRONMENT_LIGHTS = 16;
+
+    /** RGBA floats, width x height, row 0 at texture coordinate v = 0. */
+    public record ScaleFrames(int width, int height, float[] rgba) {
+    }
+
+    /**
+     * @param albedoLinear linear sRGB albedo
+     * @param mottle       relative amplitude of the albedo's noise, 0..1
+     * @param shadows      whether the key light casts shadows (on the ground and the shape)
+     * @param shadowMapPx  side of the shadow map, texels
+     */
+    public record Ground(double[] albedoLinear, double mottle, boolean shadows, int shadowMapPx) {
+    }
+
+    public Stage {
+        if (toneMapping == null) {
+            throw new IllegalArgumentException("a stage needs a tone mapping (ToneMapping.clip() for none)");
+        }
+        if (environment != null && environment.lights().size() > MAX_ENVIRONMENT_LIGHTS) {
+            throw new IllegalArgumentException(environment.lights().size() + " environment lights; at most "
+                    + MAX_ENVIRONMENT_LIGHTS);
+        }
+    }
+
+    public static Stage none() {
+        return new Stage(null, null, null, ToneMapping.clip());
+    }
+
+    /** Whether anything is staged: otherwise the surface shader is the thesis' own. */
+    public boolean staged() {
+        return scaleFrames != null || environment != null || ground != null
+                || toneMapping.operator() != ToneMapping.Operator.CLIP || toneMapping.exposureStops() != 0;
+    }
+
+    public boolean shadows() {
+        return ground != null && ground.shadows();
+    }
+
+    /** The compile-time switches of surface_stage.glsl and the ground shader. */
+    public Map<String, String> defines() {
+        Map<String, String> d = new TreeMap<>();
+        if (!staged()) {
+            return d;
+        }
+        d.put("STAGE", "1");
+        if (scaleFrames != null) {
+            d.put("SCALE_FRAMES", "1");
+        }
+        if (environment != null) {
+            d.put("ENVIRONMENT_LIGHTS", Integer.toString(environment.lights().size()));
+            d.put("IRRADIANCE_SH", "1");
+        }
+        if (shadows()) {
+            d.put("SHADOW_MAP", "1");
+        }
+        d.put("TONE_MAP_OPERATOR", Integer.toString(toneMapping.operator().ordinal()));
+        return d;
+    }
+}

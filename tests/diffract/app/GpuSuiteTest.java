@@ -1,0 +1,68 @@
+package diffract.app;
+
+import diffract.jrtr.GLInfo;
+import diffract.jrtr.GlTestSupport;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/** {@code bench --gpu-suite} at a tiny size: its rows, its numbers and the OpenGL it names. */
+class GpuSuiteTest {
+    @Test
+    void theSuiteRunsAtFullSizeOnGpusAndAnEighthOnSoftwareRasterisers() {
+        GLInfo llvmpipe = new GLInfo("4.5 (Core Profile) Mesa 22.3.6", "llvmpipe (LLVM 15.0.6, 256 bits)", "Mesa/X.org",
+                "4.50", true, "EGL surfaceless");
+        GLInfo nvidia = new GLInfo("4.6.0 NVIDIA 550.54.15", "NVIDIA H200/PCIe/SSE2", "NVIDIA Corporation", "4.60 NVIDIA",
+                true, "EGL device 0 of 1 (NVIDIA CUDA device)");
+        assertArrayEquals(new int[] {240, 135}, GpuSuite.size(null, llvmpipe));
+        assertArrayEquals(new int[] {1920, 1080}, GpuSuite.size(null, nvidia));
+        assertArrayEquals(new int[] {64, 36}, GpuSuite.size(new int[] {64, 36}, llvmpipe));
+        assertTrue(GpuSuite.isSoftware(llvmpipe));
+        assertFalse(GpuSuite.isSoftware(nvidia));
+    }
+
+    @Test
+    @Tag("gl")
+    void aTinySuiteWritesOneRowPerConfigurationWithTheRenderer(@TempDir Path dir) throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        Object[] result = CliTest.run("bench", "--gpu-suite", "--variants", "flss", "--suite-size", "48x27",
+                "--error-size", "16", "-o", dir.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        assertTrue(((String) result[2]).contains("diffract: OpenGL "), "the GL in use is named: " + result[2]);
+        List<String> lines = Files.readAllLines(dir.resolve("gpu-suite.csv"));
+        List<String> header = List.of(lines.get(0).split(","));
+        assertEquals(GpuSuite.COLUMNS, header);
+        // flss with the scene's settings and the thesis' configuration, each as a scene and as a BRDF map
+        assertEquals(1 + 4, lines.size(), String.join("\n", lines));
+        for (String line : lines.subList(1, lines.size())) {
+            String[] f = line.split(",", -1);
+            assertEquals(header.size(), f.length, line);
+            double ms = Double.parseDouble(f[header.indexOf("ms_per_frame")]);
+            double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
+            assertTrue(ms > 0 && Double.isFinite(ms), line);
+            assertTrue(Integer.parseInt(f[header.indexOf("compared_pixels")]) > 0, line);
+            assertFalse(f[header.indexOf("gl_renderer")].isBlank(), line);
+            boolean scene = f[0].equals("scene");
+            assertEquals(scene ? "48" : "27", f[header.indexOf("width")], line);
+            if (f[1].equals("scene settings")) {
+                // FLSS at 10 nm and N = 20 against its converged self (scene) or the exact model (map): close
+                assertTrue(mean < (scene ? 0.5 : 1.0), "CIEDE2000 " + mean + ": " + line);
+            }
+        }
+        BufferedImage picture = ImageIO.read(dir.resolve("scene-flss.png").toFile());
+        assertEquals(48, picture.getWidth());
+        assertEquals(27, picture.getHeight());
+        assertTrue(Files.readString(dir.resolve("gpu-suite.md")).startsWith("GPU suite on OpenGL "));
+    }
+}
