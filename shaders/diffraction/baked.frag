@@ -68,6 +68,11 @@ void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
     footprintGradientY = dUvDy * texcoordPerUv();
 }
 
+// The table holds the settings' light, isotropic: another light's size is not looked up (an approximation).
+void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
+    setSurfacePixel(dUvDx, dUvDy, wi);
+}
+
 vec3 spectralXyz(vec3 uvw) {
     vec3 tc = bakedTexcoord(uvw);
     float slice = clamp((uvw.z + 2.0) * 0.5 * (bakedSamples.y - 1.0), 0.0, bakedSamples.y - 1.0);

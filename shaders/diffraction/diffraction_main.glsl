@@ -17,6 +17,7 @@ float patchPower(vec3 uvw, float lambdaNm);
 // footprint before spectralXyz runs: a BRDF-map pixel's square, or a surface pixel's (u, v) derivatives.
 void setMapPixel(float halfWidth);
 void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi);
+void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad); // a light of sigma_a = sigmaRad
 #endif
 
 // CIE XYZ of the light reflected towards omega_r, D65 white at Y = 1 (DiffractionBrdf.xyz; eq. finalexpression).

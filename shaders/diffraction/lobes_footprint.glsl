@@ -24,8 +24,8 @@ vec3 footprintGaussian;    // (xx, xy, yy): the Gaussian convolved with the box 
 int footprintShiftCount;   // Gauss-Hermite shifts of the light's off-axis part (box only; 1 = none)
 
 // LightSource.uvCovariance: sigma_a^2 (cos^2 theta r r^T + e e^T), r = (cos phi, sin phi), e = (-sin phi, cos phi).
-vec3 lightCovariance(vec3 wi) {
-    float variance = lightSigmaRad * lightSigmaRad;
+vec3 lightCovariance(vec3 wi, float sigmaRad) {
+    float variance = sigmaRad * sigmaRad;
     float sinTheta = length(wi.xy);
     if (variance == 0.0) {
         return vec3(0.0);
@@ -58,14 +58,19 @@ void setTableCell(float halfWidth) {
     footprintShiftCount = 1;
 }
 
-// A surface pixel: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v) derivatives (Footprint.surfacePixel),
-// plus the light's covariance at omega_i.
-void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
+// A surface pixel lit by a light of sigma_a = sigmaRad: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v)
+// derivatives (Footprint.surfacePixel), plus the light's covariance at omega_i.
+void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
     vec3 pixel = pixelFootprintScale * vec3(dUvDx.x * dUvDx.x + dUvDy.x * dUvDy.x, dUvDx.x * dUvDx.y
             + dUvDy.x * dUvDy.y, dUvDx.y * dUvDx.y + dUvDy.y * dUvDy.y) / 12.0;
     footprintHalfWidth = vec2(0.0);
-    footprintGaussian = pixel + lightCovariance(wi);
+    footprintGaussian = pixel + lightCovariance(wi, sigmaRad);
     footprintShiftCount = 1;
+}
+
+// A surface pixel under the settings' light (lightSigmaRad).
+void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
+    setSurfacePixelUnder(dUvDx, dUvDy, wi, lightSigmaRad);
 }
 
 // ErrorFunction.fastErfc: Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7.

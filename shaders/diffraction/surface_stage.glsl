@@ -4,9 +4,11 @@
 //   SCALE_FRAMES        sampler2D scaleFrames (diffract.geometry.ScaledSkin.frameMap): per texel the scale normal's
 //                       components along the mesh's T and B, and the scale's long axis in (T, B); the patch's frame
 //                       (T', B', N') is rebuilt from it, so scales change the geometry and never the BRDF
-//   ENVIRONMENT_LIGHTS  K > 0: K directional lights (diffract.lighting.MedianCut) in world space, linear RGB
-//                       irradiance in units of the key light; each is a directional light to the BRDF today, and
-//                       environmentLightAngularDiameterDeg waits for a BRDF that filters by light size
+//   ENVIRONMENT_LIGHTS  K > 0: K extended lights (diffract.lighting.MedianCut) in world space, linear RGB
+//                       irradiance in units of the key light, each of angular diameter
+//                       environmentLightAngularDiameterDeg: a variant that filters (FILTERED: lobes, the filtered
+//                       baked table) widens its orders by that size as by the key light's (a Gaussian of sigma D / 4,
+//                       LightSource), the others see a direction
 //   IRRADIANCE_SH, SHADOW_MAP (environment.glsl), TONE_MAP_OPERATOR (tone_mapping.glsl)
 // Every light colour tints the D65 result per channel (the diffraction is integrated under D65): exact for
 // D65-coloured lights, an approximation for coloured ones.
@@ -28,6 +30,16 @@ uniform vec3 environmentLightDirection[ENVIRONMENT_LIGHTS];
 uniform vec3 environmentLightRgb[ENVIRONMENT_LIGHTS];
 uniform float environmentLightAngularDiameterDeg[ENVIRONMENT_LIGHTS];
 #endif
+
+// sigma_a of the key light: the settings' light size for the lobes method (lobes_footprint.glsl), which the baked
+// table of the lobes method holds already; unused by the variants that do not filter.
+float keyLightSigmaRad() {
+#if defined(FILTERED) && !defined(BAKED_FILTERED)
+    return lightSigmaRad;
+#else
+    return 0.0;
+#endif
+}
 
 struct SurfaceFrame {
     vec3 t;    // the patch's x axis
@@ -64,18 +76,33 @@ vec3 toFrame(SurfaceFrame f, vec3 v) {
 // One directional light of linear RGB irradiance `rgb`: its structural colour (exposure x the BRDF's XYZ, in linear
 // sRGB) and, for the key light, the fraction of it that enters the skin and is scattered by the pigment (Algorithm
 // 4's (1 - alpha) cos); the environment's lights reach the pigment through its irradiance instead (counted once).
-void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigmentToo, inout vec3 structural,
-              inout vec3 diffuse) {
+// uvDerivatives: the light's (u, v) = -(omega_i + omega_r).xy across the pixel (dFdx in .xy, dFdy in .zw), taken in
+// uniform control flow for the footprint of a filtering variant; sigmaRad: the light's sigma_a = D / 4.
+void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigmentToo, vec4 uvDerivatives,
+              float sigmaRad, inout vec3 structural, inout vec3 diffuse) {
     vec3 l = safeNormalize(towardsWorld);
     if (dot(l, f.base) <= 0.0) {
         return; // behind the body
     }
     vec3 wi = toFrame(f, l);
+#ifdef FILTERED
+    setSurfacePixelUnder(uvDerivatives.xy, uvDerivatives.zw, wi, sigmaRad);
+#endif
     structural += rgb * max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
     float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
     if (pigmentToo) {
         diffuse += rgb * (1.0 - clamp(fresnel, 0.0, 1.0)) * max(wi.z, 0.0);
     }
+}
+
+// The (u, v) of a light across the pixel (see addLight); zero for variants that do not filter.
+vec4 uvDerivatives(SurfaceFrame f, vec3 towardsWorld, vec3 wr) {
+#ifdef FILTERED
+    vec2 uv = -(toFrame(f, safeNormalize(towardsWorld)).xy + wr.xy);
+    return vec4(dFdx(uv), dFdy(uv));
+#else
+    return vec4(0.0);
+#endif
 }
 
 vec3 stagedSurfaceLinear() {
@@ -84,12 +111,16 @@ vec3 stagedSurfaceLinear() {
     vec3 structural = vec3(0.0);
     vec3 diffuse = vec3(0.0);
     float visible = keyLightVisibility(surfaceWorldPosition, f.base);
+    vec4 keyDerivatives = uvDerivatives(f, lightDirection[0], wr);
     if (visible > 0.0) {
-        addLight(f, lightDirection[0], vec3(visible), wr, true, structural, diffuse);
+        addLight(f, lightDirection[0], vec3(visible), wr, true, keyDerivatives, keyLightSigmaRad(), structural,
+                 diffuse);
     }
 #if defined(ENVIRONMENT_LIGHTS) && ENVIRONMENT_LIGHTS > 0
     for (int k = 0; k < ENVIRONMENT_LIGHTS; k++) {
-        addLight(f, environmentLightDirection[k], environmentLightRgb[k], wr, false, structural, diffuse);
+        addLight(f, environmentLightDirection[k], environmentLightRgb[k], wr, false,
+                 uvDerivatives(f, environmentLightDirection[k], wr),
+                 radians(environmentLightAngularDiameterDeg[k]) / 4.0, structural, diffuse);
     }
 #endif
 #ifdef PIGMENTATION
