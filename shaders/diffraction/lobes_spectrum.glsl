@@ -18,10 +18,6 @@ uniform float lobeMaxStepNm;
 uniform float lobeReachSigmas;
 uniform float lobeWeightStepNm;
 
-#ifdef TERMS_UNORM8
-uniform sampler1D termExtrema;
-#endif
-
 const int MAX_NODES = 512;   // nodes per lobe below 1 nm spacing (LobeSpectrum.MAX_NODES is a looser guard)
 const int MAX_MARCH = 4096;  // texels along the major axis (a guard: 2 x 2048 texels)
 
@@ -35,45 +31,78 @@ float sigmaFPerUm() {
     return sigmaTexels.x / patchExtentUm.x;
 }
 
-// One texel's terms divided by n!, fetched once per lobe (per phase centre on the centred path), so that T_m is a
-// plain polynomial in x evaluated by Horner's rule without divisions.
-vec2 lobeTerms[TERM_COUNT];
-int lobeTermsCentre;
+// LobeWeightTable: per texel (the term grid's), W_m(a) = |T_m(a)|^2 and delta dW/dp at p = -a = k delta, k = 0..K-1
+// (layers 0..K-1, (W, delta dW/dp)), interpolated by the cubic Hermite polynomial; layers K..K+3 hold the bounds of
+// the interpolant over 8 bins of p in [0, p_max] (bins 2j and 2j + 1 in layer K + j).
+uniform sampler2DArray lobeWeights;
+uniform int lobeWeightSamples;
+uniform float lobePhaseStepPerUm;
+uniform float lobeMaxPhasePerUm;
+// LobeQuadrature.cutoff: a lobe that can add less than this (white = 1) is skipped before its weight is read.
+uniform float lobeCutoff;
 
-void fetchTerms(ivec2 m, int centre) {
-    ivec2 texel = m + termCentre();
-    float inverseFactorial = 1.0;
-    for (int n = 0; n < TERM_COUNT; n++) {
-        vec2 raw = texelFetch(taylorTerms, ivec3(texel, centre * TERM_COUNT + n), 0).rg;
-#ifdef TERMS_UNORM8
-        vec4 e = texelFetch(termExtrema, n, 0);
-        raw = e.xy + e.zw * raw;
-#endif
-        if (n > 0) {
-            inverseFactorial /= float(n);
-        }
-        lobeTerms[n] = raw * inverseFactorial;
-    }
-    lobeTermsCentre = centre;
+ivec2 weightTexel(ivec2 m) {
+    return m + textureSize(lobeWeights, 0).xy / 2;
 }
 
-// |T_m(a)|^2 = |sum_n (a - a_j)^n / n! terms_n|^2 (TaylorTexels; the plain series has the one centre a_0 = 0).
+bool weightInBand(ivec2 m) {
+    ivec2 texel = weightTexel(m);
+    return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, textureSize(lobeWeights, 0).xy));
+}
+
+// W_m(a) (LobeWeightTable.weight): the Hermite cubic between the two samples around p = -a.
 float lobeWeight(ivec2 m, float a) {
-#ifdef PHASE_CENTRED
-    int centre = nearestPhaseCentre(a);
-    float x = a + float(centre) * centreSpacingPerUm;
-#else
-    int centre = 0;
-    float x = a;
-#endif
-    if (centre != lobeTermsCentre) {
-        fetchTerms(m, centre);
+    float x = clamp(-a / lobePhaseStepPerUm, 0.0, float(lobeWeightSamples - 1));
+    int k = min(lobeWeightSamples - 2, int(x));
+    float t = x - float(k);
+    ivec2 texel = weightTexel(m);
+    vec2 lo = texelFetch(lobeWeights, ivec3(texel, k), 0).rg;
+    vec2 hi = texelFetch(lobeWeights, ivec3(texel, k + 1), 0).rg;
+    float t2 = t * t;
+    float t3 = t2 * t;
+    return max(0.0, (2.0 * t3 - 3.0 * t2 + 1.0) * lo.x + (t3 - 2.0 * t2 + t) * lo.y + (3.0 * t2 - 2.0 * t3) * hi.x
+            + (t3 - t2) * hi.y);
+}
+
+int weightBin(float p) {
+    return clamp(int(floor(p / lobeMaxPhasePerUm * 8.0)), 0, 7);
+}
+
+// LobeWeightTable.bound: the largest weight of texel m for p in [pLo, pHi].
+float weightBound(ivec2 m, float pLo, float pHi) {
+    ivec2 texel = weightTexel(m);
+    float bound = 0.0;
+    for (int b = weightBin(pLo); b <= weightBin(pHi); b++) {
+        vec2 pair = texelFetch(lobeWeights, ivec3(texel, lobeWeightSamples + b / 2), 0).rg;
+        bound = max(bound, (b & 1) == 0 ? pair.x : pair.y);
     }
-    vec2 sum = lobeTerms[TERM_COUNT - 1];
-    for (int n = TERM_COUNT - 2; n >= 0; n--) {
-        sum = sum * x + lobeTerms[n];
+    return bound;
+}
+
+// LobeSpectrum.reaches: whether texel m's lobe over [fromNm, toNm] at w can add at least the cutoff, given the
+// footprint's peak average of a lobe.
+bool lobeReaches(ivec2 m, float w, float fromNm, float toNm, float peak) {
+    if (lobeCutoff == 0.0) {
+        return true;
     }
-    return dot(sum, sum);
+    float k = 6.28318531 * abs(w) * 1e3;
+    return weightBound(m, k / toNm, k / fromNm) * peak >= lobeCutoff;
+}
+
+// LobeSpectrum.Shape.peak: the largest average over the footprint a lobe of peak 1 can have (sigma_uv the widest).
+float axisPeak(float sigmaUv, float h, float variance) {
+    float peak = sigmaUv / sqrt(sigmaUv * sigmaUv + 2.0 * variance);
+    return h > 0.0 ? min(peak, 1.77245385 * sigmaUv / (2.0 * h)) : peak;
+}
+
+float footprintPeak(float widestLobeVariance) {
+    float sigma = sqrt(2.0 * widestLobeVariance);
+    if (footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0) {
+        return axisPeak(sigma, footprintHalfWidth.x, footprintGaussian.x)
+                * axisPeak(sigma, footprintHalfWidth.y, footprintGaussian.z);
+    }
+    vec3 s = footprintGaussian + vec3(widestLobeVariance, 0.0, widestLobeVariance);
+    return sigma * sigma / (2.0 * sqrt(s.x * s.z - s.y * s.y));
 }
 
 // The wavelengths (nm) at which a lobe moving as mu = lambda_um c (c per um) comes within reach of uv on both axes,
@@ -221,6 +250,7 @@ vec3 spectralXyz(vec3 uvw) {
     bool box = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0;
     vec3 full = footprintGaussian + (box ? lightRankOne : vec3(0.0));
     vec2 reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz);
+    float peak = footprintPeak(widest);
     float shortest = lambdaMinNm * 1e-3;
     float longest = lambdaMaxNm * 1e-3;
     vec2 xRange = texelRange(uv.x, reach.x, patchExtentUm.x, shortest, longest);
@@ -243,15 +273,14 @@ vec3 spectralXyz(vec3 uvw) {
         vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3, along.y * 1e-3);
         for (int k = int(floor(minorRange.x)); k <= int(ceil(minorRange.y)); k++) {
             ivec2 m = major == 0 ? ivec2(i, k) : ivec2(k, i);
-            if (!inBand(m)) {
+            if (!weightInBand(m)) {
                 continue;
             }
             vec2 c = vec2(m) / patchExtentUm;
             vec2 interval = lambdaInterval(c, uv, reach);
-            if (interval.x >= interval.y) {
+            if (interval.x >= interval.y || !lobeReaches(m, uvw.z, interval.x, interval.y, peak)) {
                 continue;
             }
-            lobeTermsCentre = -1;
             xyz += integrateLobe(m, c, uvw, interval.x, interval.y);
         }
     }
@@ -271,11 +300,10 @@ float patchPower(vec3 uvw, float lambdaNm) {
     for (int y = int(floor(lo.y)); y <= int(ceil(hi.y)); y++) {
         for (int x = int(floor(lo.x)); x <= int(ceil(hi.x)); x++) {
             ivec2 m = ivec2(x, y);
-            if (!inBand(m)) {
+            if (!weightInBand(m)) {
                 continue;
             }
             vec2 d = (uvw.xy - lambdaUm * vec2(m) / patchExtentUm) / sigmaUv;
-            lobeTermsCentre = -1;
             sum += lobeWeight(m, a) * exp(-dot(d, d));
         }
     }

@@ -10,6 +10,7 @@ import diffract.optics.Direction;
 import diffract.optics.GaussHermite;
 import diffract.optics.LightSource;
 import diffract.optics.LobeQuadrature;
+import diffract.optics.LobeWeightTable;
 import diffract.optics.OpticsOptions;
 import diffract.optics.PhaseCentres;
 import diffract.optics.PixelFilter;
@@ -152,6 +153,12 @@ public final class DiffractionMaterials {
                     4 * settings.sigmaSpatialUm(), window.sigmaTexels(Math.max(textures.extentXUm(),
                     textures.extentYUm())), q.pairThreshold()));
         }
+        LobeWeightTable table = textures.lobeWeightTable(settings, q);
+        m.setTexture("lobeWeights", textures.lobeWeights(settings, q))
+                .setInt("lobeWeightSamples", table.samples())
+                .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
+                .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
+                .setFloat("lobeCutoff", (float) q.cutoff());
         m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings))
                 .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings))
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())

@@ -45,7 +45,8 @@ import java.util.Locale;
  *
  * Options: {@code -Ddiffract.patches=blazed,elaphe-like,...}, {@code -Ddiffract.lights=0,2},
  * {@code -Ddiffract.thetas=30}, {@code -Ddiffract.size=64}, {@code -Ddiffract.lobes=q,step,reach,wstep} (the
- * quadrature), {@code -Ddiffract.gpu=false}.
+ * quadrature), {@code -Ddiffract.gpu=false}, {@code -Ddiffract.cpu=false} (no CPU map), {@code -Ddiffract.bakedSamples=0}
+ * (no baked table).
  */
 @Tag("gl")
 class FilteringMeasurement {
@@ -63,6 +64,7 @@ class FilteringMeasurement {
         LobeQuadrature quadrature = quadrature(System.getProperty("diffract.lobes"));
         System.out.println("lobes quadrature: " + quadrature);
         int bakedSamples = Integer.getInteger("diffract.bakedSamples", 256);
+        boolean cpu = Boolean.parseBoolean(System.getProperty("diffract.cpu", "true"));
         System.out.println("| patch | light | theta_i | lit px | lobes CPU: mean / p95 | lobes GPU: mean / p95 | "
                 + "flss (thesis): mean / p95 | baked " + bakedSamples + ": mean / p95 | lobes ms | flss ms | "
                 + "flss / lobes | baked ms (bake s, MB) |");
@@ -86,7 +88,7 @@ class FilteringMeasurement {
             for (String light : System.getProperty("diffract.lights", "0,2").split(",")) {
                 for (String theta : System.getProperty("diffract.thetas", "30").split(",")) {
                     measure(name, field, terms, phi, Double.parseDouble(theta), Double.parseDouble(light), size,
-                            quadrature, gpu, bakedSamples);
+                            quadrature, gpu, cpu, bakedSamples);
                 }
             }
         }
@@ -103,7 +105,8 @@ class FilteringMeasurement {
     }
 
     private static void measure(String name, HeightField field, TaylorTerms terms, double phi, double thetaDeg,
-                                double lightDeg, int size, LobeQuadrature quadrature, boolean gpu, int bakedSamples)
+                                double lightDeg, int size, LobeQuadrature quadrature, boolean gpu, boolean cpu,
+                                int bakedSamples)
             throws IOException {
         Direction wi = Direction.fromSphericalDeg(thetaDeg, phi);
         OpticsOptions options = OpticsOptions.DEFAULT.withLight(new LightSource(lightDeg)).withLobes(quadrature);
@@ -118,8 +121,14 @@ class FilteringMeasurement {
         double exposure = AutoExposure.of(luminance, size, -wi.x(), -wi.y());
         BrdfSettings lobesSettings = thesis.withVariant(Variant.LOBES);
         DiffractionBrdf lobes = evaluation.brdf(lobesSettings, field, options);
-        float[] lobesCpu = BrdfMap.xyz(lobes, wi, size, Reporter.SILENT);
-        BrdfMapDifference cpu = BrdfMapDifference.of(reference, lobesCpu, size, exposure);
+        String cpuCell = "-";
+        int litPixels = -1;
+        if (cpu) {
+            float[] lobesCpu = BrdfMap.xyz(lobes, wi, size, Reporter.SILENT);
+            BrdfMapDifference d = BrdfMapDifference.of(reference, lobesCpu, size, exposure);
+            cpuCell = cell(d);
+            litPixels = d.litPixels();
+        }
         String gpuCell = "-";
         String flssCell = "-";
         String times = "- | - | -";
@@ -130,11 +139,12 @@ class FilteringMeasurement {
             try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, lobesSettings, options, FloatTextureArray.Precision.FLOAT32)) {
                 BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
                 gpuCell = cell(d);
+                litPixels = d.litPixels();
                 lobesMs = map.medianMsPerFrame(wi, size, 2, 10);
             }
             BrdfSettings bakedSettings = thesis.withVariant(Variant.BAKED).withBakedSamples(bakedSamples, 0);
             // the baked table holds the thesis' series around 0 only: not on the phase-centred path
-            try (GpuBrdfMap map = evaluation.isPhaseCentred() ? null : GpuBrdfMap.of(evaluation, bakedSettings,
+            try (GpuBrdfMap map = evaluation.isPhaseCentred() || bakedSamples == 0 ? null : GpuBrdfMap.of(evaluation, bakedSettings,
                     options, FloatTextureArray.Precision.FLOAT32)) {
                 if (map == null) {
                     throw new SkipBaked();
@@ -144,7 +154,7 @@ class FilteringMeasurement {
                 bakedTime = String.format(Locale.ROOT, "%.2f (%.0f s, %.1f MB)", map.medianMsPerFrame(wi, size, 2, 10),
                         map.bakedTable().bakeSeconds(), map.bakedTable().gpuBytes() / 1e6);
             } catch (SkipBaked e) {
-                bakedCell = "(centred)";
+                bakedCell = bakedSamples == 0 ? "-" : "(centred)";
             }
             OpticsOptions pointLight = options.withLight(LightSource.POINT);
             try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, thesis, pointLight, FloatTextureArray.Precision.FLOAT32)) {
@@ -155,7 +165,7 @@ class FilteringMeasurement {
             }
         }
         System.out.printf(Locale.ROOT, "| %s | %s deg | %.0f | %d | %s | %s | %s | %s | %s | %s |%n", name, fmt(lightDeg),
-                thetaDeg, cpu.litPixels(), cell(cpu), gpuCell, flssCell, bakedCell, times, bakedTime);
+                thetaDeg, litPixels, cpuCell, gpuCell, flssCell, bakedCell, times, bakedTime);
     }
 
     private static String fmt(double v) {
