@@ -253,9 +253,9 @@ public final class LobeSpectrum {
     }
 
     /**
-     * One lobe's wavelength integral over [from, to] nm, added to total: the lobe's slow factor (its weight, times
-     * the footprint's average along an axis it does not move on) at the weight points, linearly interpolated; the
-     * moving axes' average at every node.
+     * One lobe's wavelength integral over [from, to] nm, added to total: at every node the footprint's average of the
+     * lobe times its weight, from the table at every node, or (no table) summed from the coefficients every
+     * {@link LobeQuadrature#weightStepNm} of the passage and at its ends and linearly interpolated between.
      */
     private void integrate(Weight lobe, double cx, double cy, double u, double v, double w, Shape shape,
                            double from, double to, double[] node, double[] total) {
@@ -270,67 +270,41 @@ public final class LobeSpectrum {
         if (j1 < j0) {
             return;
         }
-        // the axes the lobe moves on are averaged at every node; a static axis (c_i = 0) joins the slow factor
-        boolean hoist = shape.hasBox() && shape.shiftWeight.length == 1 && (cx == 0 || cy == 0);
-        double step = quadrature.weightStepNm();
+        double step = table == null ? quadrature.weightStepNm() : 0;
         double first = lambdaMinNm + j0 * spacing;
         double last = lambdaMinNm + j1 * spacing;
         double slowStep = step > 0 && last > first ? (last - first) / Math.max(1, Math.ceil((last - first) / step)) : 0;
         double slowLo = first;
         double slowHi = first;
-        double slowAtLo = slow(lobe, cx, cy, u, v, w, shape, first, hoist);
+        double slowAtLo = weight(lobe, w, first);
         double slowAtHi = slowAtLo;
         for (int j = j0; j <= j1; j++) {
             double lambdaNm = lambdaMinNm + j * spacing;
-            double slowValue;
+            double weight;
             if (slowStep == 0) {
-                slowValue = j == j0 ? slowAtLo : slow(lobe, cx, cy, u, v, w, shape, lambdaNm, hoist);
+                weight = j == j0 ? slowAtLo : weight(lobe, w, lambdaNm);
             } else {
                 while (lambdaNm > slowHi + 1e-9) {
                     slowLo = slowHi;
                     slowAtLo = slowAtHi;
                     slowHi = Math.min(last, slowLo + slowStep);
-                    slowAtHi = slow(lobe, cx, cy, u, v, w, shape, slowHi, hoist);
+                    slowAtHi = weight(lobe, w, slowHi);
                 }
                 double t = slowHi > slowLo ? (lambdaNm - slowLo) / (slowHi - slowLo) : 0;
-                slowValue = slowAtLo + t * (slowAtHi - slowAtLo);
+                weight = slowAtLo + t * (slowAtHi - slowAtLo);
             }
-            double a = fast(lambdaNm * 1e-3, cx, cy, u, v, shape, hoist);
+            double a = averaged(lambdaNm * 1e-3, cx, cy, u, v, shape);
             spectral.weight(lambdaNm, spacing, node);
-            double scale = slowValue * a;
+            double scale = weight * a;
             total[0] += scale * node[0];
             total[1] += scale * node[1];
             total[2] += scale * node[2];
         }
     }
 
-    /** The lobe's slowly varying factor at lambda: W_c(k w), times a static axis' average when hoisted. */
-    private double slow(Weight lobe, double cx, double cy, double u, double v, double w, Shape shape,
-                        double lambdaNm, boolean hoist) {
-        double lambdaUm = lambdaNm * 1e-3;
-        double weight = lobe.at(2 * Math.PI / lambdaUm * w);
-        if (!hoist) {
-            return weight;
-        }
-        double sigmaUv = lambdaUm * sigmaFPerUm;
-        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
-        return weight * (cx == 0 ? LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.xx(), 0, u, shape.hx, fastErf)
-                : LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), 0, v, shape.hy, fastErf));
-    }
-
-    /** The footprint's average of the lobe at lambda, over the axes it moves on when a static axis is hoisted. */
-    private double fast(double lambdaUm, double cx, double cy, double u, double v, Shape shape, boolean hoist) {
-        if (!hoist) {
-            return averaged(lambdaUm, cx, cy, u, v, shape);
-        }
-        double sigmaUv = lambdaUm * sigmaFPerUm;
-        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
-        if (cx == 0 && cy == 0) {
-            // both static: the y axis joins the node's factor, x is the slow one
-            return LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), 0, v, shape.hy, fastErf);
-        }
-        return cx == 0 ? LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), lambdaUm * cy, v, shape.hy, fastErf)
-                : LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.xx(), lambdaUm * cx, u, shape.hx, fastErf);
+    /** The lobe's weight W_c(k w) at lambda. */
+    private static double weight(Weight lobe, double w, double lambdaNm) {
+        return lobe.at(2 * Math.PI / (lambdaNm * 1e-3) * w);
     }
 
     /**

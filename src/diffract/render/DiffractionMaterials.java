@@ -164,7 +164,6 @@ public final class DiffractionMaterials {
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
                 .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
                 .setFloat("lobeReachSigmas", (float) q.reachSigmas())
-                .setFloat("lobeWeightStepNm", (float) q.weightStepNm())
                 .setFloat("pixelFootprintScale", options.pixelFilter() == PixelFilter.BOX ? 1f : 0f)
                 .setFloat("lightSigmaRad", (float) options.light().sigmaRad());
     }

@@ -44,8 +44,8 @@ import java.util.Locale;
  * <pre>xvfb-run -a mvn -q test -Dtest=FilteringMeasurement -Ddiffract.measure=filtering</pre>
  *
  * Options: {@code -Ddiffract.patches=blazed,elaphe-like,...}, {@code -Ddiffract.lights=0,2},
- * {@code -Ddiffract.thetas=30}, {@code -Ddiffract.size=64}, {@code -Ddiffract.lobes=q,step,reach,wstep} (the
- * quadrature), {@code -Ddiffract.gpu=false}, {@code -Ddiffract.cpu=false} (no CPU map), {@code -Ddiffract.bakedSamples=0}
+ * {@code -Ddiffract.thetas=30}, {@code -Ddiffract.size=64}, {@code -Ddiffract.lobes=q,step,reach,wstep[,cutoff[,wtol]]}
+ * (the quadrature: nodes per sigma, widest step nm, reach sigmas, weight step nm, cutoff, weight tolerance), {@code -Ddiffract.gpu=false}, {@code -Ddiffract.cpu=false} (no CPU map), {@code -Ddiffract.bakedSamples=0}
  * (no baked table).
  */
 @Tag("gl")
@@ -100,8 +100,15 @@ class FilteringMeasurement {
             return q;
         }
         String[] p = text.split(",");
-        return q.withNodesPerSigma(Double.parseDouble(p[0])).withMaxStepNm(Double.parseDouble(p[1]))
+        q = q.withNodesPerSigma(Double.parseDouble(p[0])).withMaxStepNm(Double.parseDouble(p[1]))
                 .withReachSigmas(Double.parseDouble(p[2])).withWeightStepNm(Double.parseDouble(p[3]));
+        if (p.length > 4) {
+            q = q.withCutoff(Double.parseDouble(p[4]));
+        }
+        if (p.length > 5) {
+            q = q.withWeightTolerance(Double.parseDouble(p[5]));
+        }
+        return q;
     }
 
     private static void measure(String name, HeightField field, TaylorTerms terms, double phi, double thetaDeg,
