@@ -37,16 +37,18 @@ import java.util.Locale;
  * light: CIEDE2000 (mean and 95th percentile over lit pixels, the reference's auto exposure) of the lobes method
  * (CPU and GPU) and of FLSS in the thesis' configuration (30 terms, 5 nm, 3 x 3; point-sampled, point light only)
  * against the filtered reference, the baked table of the lobes method ({@code -Ddiffract.bakedSamples}, 256 (u, v)
- * samples by default, cell- and light-averaged, mip-mapped), and the GPU's median ms per frame of each on the same
- * context (FLSS on the path TaylorEvaluation picks, the lobes method likewise). The reference
- * maps are cached under target/filtering-cache. Prints markdown rows.
+ * samples by default, cell- and light-averaged, mip-mapped), and the GPU's median ms per frame of each (FLSS on the
+ * path TaylorEvaluation picks, the lobes method likewise): lobes and FLSS in rounds of 10 frames each, one after the
+ * other, the ratio the median of the rounds' ratios. The reference maps are cached under target/filtering-cache.
+ * Prints markdown rows.
  *
  * <pre>xvfb-run -a mvn -q test -Dtest=FilteringMeasurement -Ddiffract.measure=filtering</pre>
  *
  * Options: {@code -Ddiffract.patches=blazed,elaphe-like,...}, {@code -Ddiffract.lights=0,2},
  * {@code -Ddiffract.thetas=30}, {@code -Ddiffract.size=64}, {@code -Ddiffract.lobes=q,step,reach,wstep[,cutoff[,wtol]]}
- * (the quadrature: nodes per sigma, widest step nm, reach sigmas, weight step nm, cutoff, weight tolerance), {@code -Ddiffract.gpu=false}, {@code -Ddiffract.cpu=false} (no CPU map), {@code -Ddiffract.bakedSamples=0}
- * (no baked table).
+ * (the quadrature: nodes per sigma, widest step nm, reach sigmas, weight step nm, cutoff, weight tolerance),
+ * {@code -Ddiffract.gpu=false}, {@code -Ddiffract.cpu=false} (no CPU map), {@code -Ddiffract.bakedSamples=0} (no
+ * baked table), {@code -Ddiffract.rounds=3} (timing rounds).
  */
 @Tag("gl")
 class FilteringMeasurement {
@@ -142,13 +144,6 @@ class FilteringMeasurement {
         String bakedCell = "-";
         String bakedTime = "-";
         if (gpu) {
-            double lobesMs;
-            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, lobesSettings, options, FloatTextureArray.Precision.FLOAT32)) {
-                BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
-                gpuCell = cell(d);
-                litPixels = d.litPixels();
-                lobesMs = map.medianMsPerFrame(wi, size, 2, 10);
-            }
             BrdfSettings bakedSettings = thesis.withVariant(Variant.BAKED).withBakedSamples(bakedSamples, 0);
             // the baked table holds the thesis' series around 0 only: not on the phase-centred path
             try (GpuBrdfMap map = evaluation.isPhaseCentred() || bakedSamples == 0 ? null : GpuBrdfMap.of(evaluation, bakedSettings,
@@ -164,15 +159,36 @@ class FilteringMeasurement {
                 bakedCell = bakedSamples == 0 ? "-" : "(centred)";
             }
             OpticsOptions pointLight = options.withLight(LightSource.POINT);
-            try (GpuBrdfMap map = GpuBrdfMap.of(evaluation, thesis, pointLight, FloatTextureArray.Precision.FLOAT32)) {
-                BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, size), size, exposure);
-                flssCell = cell(d);
-                double flssMs = map.medianMsPerFrame(wi, size, 2, 10);
-                times = String.format(Locale.ROOT, "%.1f | %.1f | %.1f", lobesMs, flssMs, flssMs / lobesMs);
+            try (GpuBrdfMap lobesMap = GpuBrdfMap.of(evaluation, lobesSettings, options,
+                    FloatTextureArray.Precision.FLOAT32);
+                 GpuBrdfMap flssMap = GpuBrdfMap.of(evaluation, thesis, pointLight, FloatTextureArray.Precision.FLOAT32)) {
+                BrdfMapDifference d = BrdfMapDifference.of(reference, lobesMap.xyz(wi, size), size, exposure);
+                gpuCell = cell(d);
+                litPixels = d.litPixels();
+                flssCell = cell(BrdfMapDifference.of(reference, flssMap.xyz(wi, size), size, exposure));
+                // rounds of lobes and FLSS frames one after the other, so that a change in the machine's load
+                // between them moves both: the ratio is the median of the rounds' ratios
+                int rounds = Integer.getInteger("diffract.rounds", 3);
+                double[] lobesMs = new double[rounds];
+                double[] flssMs = new double[rounds];
+                double[] ratio = new double[rounds];
+                for (int r = 0; r < rounds; r++) {
+                    lobesMs[r] = lobesMap.medianMsPerFrame(wi, size, 2, 10);
+                    flssMs[r] = flssMap.medianMsPerFrame(wi, size, 1, 10);
+                    ratio[r] = flssMs[r] / lobesMs[r];
+                }
+                times = String.format(Locale.ROOT, "%.1f | %.1f | %.1f", median(lobesMs), median(flssMs), median(ratio));
             }
         }
         System.out.printf(Locale.ROOT, "| %s | %s deg | %.0f | %d | %s | %s | %s | %s | %s | %s |%n", name, fmt(lightDeg),
                 thetaDeg, litPixels, cpuCell, gpuCell, flssCell, bakedCell, times, bakedTime);
+    }
+
+    private static double median(double[] values) {
+        double[] sorted = values.clone();
+        java.util.Arrays.sort(sorted);
+        int n = sorted.length;
+        return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
     }
 
     private static String fmt(double v) {
