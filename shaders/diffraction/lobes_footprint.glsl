@@ -1,13 +1,16 @@
 // What a pixel of the lobes method averages over (Footprint, LightSource, LobeGeometry on the CPU): a BRDF-map
-// pixel's square in (u, v) with the light's Gaussian folded into each axis, or a surface pixel's Gaussian (its
-// screen-space derivatives) plus the light's. Included by lobes.frag.
+// pixel's square in (u, v) with the light's Gaussian folded into each axis (define LOBES_BOX), or a surface pixel's
+// Gaussian (its screen-space derivatives) plus the light's. Included by lobes.frag. llvmpipe runs a group of
+// fragments in SIMD lanes and executes both sides of every branch under a mask, so the box and the Gaussian are
+// separate builds and the arithmetic below selects rather than branches.
 #ifndef LOBES_FOOTPRINT_GLSL
 #define LOBES_FOOTPRINT_GLSL
 #include "diffraction_common.glsl"
 
 #define LIGHT_NODES_MAX 8
 
-// 1: pixels average over their footprint (PixelFilter.BOX); 0: the centre direction only (PixelFilter.POINT).
+// 1: surface pixels average over their footprint (PixelFilter.BOX); 0: the centre direction only
+// (PixelFilter.POINT). A BRDF map's box is the define LOBES_BOX.
 uniform float pixelFootprintScale;
 // BRDF maps (one omega_i per map): the light's (u, v) covariance split on the CPU (Covariance2.diagonalPlusRankOne)
 // into a diagonal part (variances along u and v) and Gauss-Hermite shifts along the rest: (du, dv, weight) per node.
@@ -38,16 +41,19 @@ vec3 lightCovariance(vec3 wi, float sigmaRad) {
     return variance * vec3(c2 * r.x * r.x + r.y * r.y, (c2 - 1.0) * r.x * r.y, c2 * r.y * r.y + r.x * r.x);
 }
 
-// A BRDF-map pixel of an S x S map: a square of half-width 1 / S (Footprint.mapPixel), the light from uniforms.
+// A BRDF-map pixel of an S x S map: a square of half-width 1 / S (Footprint.mapPixel) with LOBES_BOX, else its
+// centre (PixelFilter.POINT); the light from uniforms.
 void setMapPixel(float halfWidth) {
-    footprintHalfWidth = vec2(halfWidth * pixelFootprintScale);
+#ifdef LOBES_BOX
+    footprintHalfWidth = vec2(halfWidth);
     footprintGaussian = vec3(lightDiagonal.x, 0.0, lightDiagonal.y);
     footprintShiftCount = max(lightShiftCount, 1);
-    if (footprintHalfWidth.x == 0.0 && footprintHalfWidth.y == 0.0) {
-        // no box: the light's full Gaussian is the footprint
-        footprintGaussian += lightRankOne;
-        footprintShiftCount = 1;
-    }
+#else
+    // no box: the light's full Gaussian is the footprint
+    footprintHalfWidth = vec2(0.0);
+    footprintGaussian = vec3(lightDiagonal.x, 0.0, lightDiagonal.y) + lightRankOne;
+    footprintShiftCount = 1;
+#endif
 }
 
 // A sample of the baked table (baked.frag's bake pass): the box of its cell, half-width halfWidth in u and v, and the
@@ -73,51 +79,37 @@ void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
     setSurfacePixelUnder(dUvDx, dUvDy, wi, lightSigmaRad);
 }
 
-// ErrorFunction.fastErfc: Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7.
-float fastErfc(float x) {
-    float a = abs(x);
-    float t = 1.0 / (1.0 + 0.3275911 * a);
-    float e = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))))
-            * exp(-a * a);
-    return x >= 0.0 ? e : 2.0 - e;
+// ErrorFunction.fastErfc for x >= 0: Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7.
+float erfcPositive(float x) {
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    return t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))))
+            * exp(-x * x);
 }
 
-// ErrorFunction.fastMassInInterval: (erf(b) - erf(a)) / 2 on the side where it does not cancel.
+// ErrorFunction.fastMassInInterval: (erf(b) - erf(a)) / 2 on the side where it does not cancel, from erfc(|a|) and
+// erfc(|b|) only (two exponentials; selects, not branches, so no lane evaluates a third).
 float massInInterval(float a, float b) {
-    if (a >= 0.0) {
-        return 0.5 * (fastErfc(a) - fastErfc(b));
-    }
-    if (b <= 0.0) {
-        return 0.5 * (fastErfc(-b) - fastErfc(-a));
-    }
-    return 0.5 * (2.0 - fastErfc(-a) - fastErfc(b));
+    float ea = erfcPositive(abs(a));
+    float eb = erfcPositive(abs(b));
+    float sameSide = a >= 0.0 ? ea - eb : eb - ea;
+    return 0.5 * (a < 0.0 && b > 0.0 ? 2.0 - ea - eb : sameSide);
 }
 
-// LobeGeometry.axis: sqrt(pi) sigmaUv times the average over [u - h, u + h] of N(mu, variance); the density at the
-// centre for a box narrower than 0.05 of the spread (LobeGeometry.NARROW_BOX).
+#ifdef LOBES_BOX
+// LobeGeometry.axis with a box: sqrt(pi) sigmaUv times the average over [u - h, u + h] of N(mu, variance).
 float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
-    float s = sqrt(variance);
-    if (h == 0.0 || 2.0 * h < 0.05 * s) {
-        float d = (u - mu) / s;
-        return sigmaUv / (1.41421356 * s) * exp(-0.5 * d * d);
-    }
-    float scale = 1.0 / (1.41421356 * s);
+    float scale = 1.0 / (1.41421356 * sqrt(variance));
     // the fast erf's absolute error (1.5e-7) could make a far tail's mass slightly negative
     float mass = max(0.0, massInInterval((u - h - mu) * scale, (u + h - mu) * scale));
     return 1.77245385 * sigmaUv * mass / (2.0 * h);
 }
+#endif
 
 // LobeGeometry.averagedLobe: the lobe of spread sigmaUv at mu, averaged over the fragment's footprint at uv (peak 1
-// for a point on the lobe's centre).
+// for a point on the lobe's centre). LOBES_BOX (a BRDF map's pixel square, a baked table's cell) or a Gaussian.
 float averagedLobe(float sigmaUv, vec2 mu, vec2 uv) {
     float lobeVariance = 0.5 * sigmaUv * sigmaUv;
-    if (footprintHalfWidth.x == 0.0 && footprintHalfWidth.y == 0.0) {
-        vec3 s = footprintGaussian + vec3(lobeVariance, 0.0, lobeVariance);
-        float det = s.x * s.z - s.y * s.y;
-        vec2 d = uv - mu;
-        float q = (s.z * d.x * d.x - 2.0 * s.y * d.x * d.y + s.x * d.y * d.y) / det;
-        return sigmaUv * sigmaUv / (2.0 * sqrt(det)) * exp(-0.5 * q);
-    }
+#ifdef LOBES_BOX
     float sum = 0.0;
     for (int k = 0; k < LIGHT_NODES_MAX; k++) {
         if (k >= footprintShiftCount) {
@@ -130,6 +122,13 @@ float averagedLobe(float sigmaUv, vec2 mu, vec2 uv) {
                 * lobeAxis(sigmaUv, lobeVariance + footprintGaussian.z, mu.y, at.y, footprintHalfWidth.y);
     }
     return sum;
+#else
+    vec3 s = footprintGaussian + vec3(lobeVariance, 0.0, lobeVariance);
+    float det = s.x * s.z - s.y * s.y;
+    vec2 d = uv - mu;
+    float q = (s.z * d.x * d.x - 2.0 * s.y * d.x * d.y + s.x * d.y * d.y) / det;
+    return sigmaUv * sigmaUv / (2.0 * sqrt(det)) * exp(-0.5 * q);
+#endif
 }
 
 #endif

@@ -16,10 +16,11 @@ uniform int lobeTablePositions;
 uniform float lobeNodesPerSigma;
 uniform float lobeMaxStepNm;
 uniform float lobeReachSigmas;
-uniform float lobeWeightStepNm;
 
 const int MAX_NODES = 512;   // nodes per lobe below 1 nm spacing (LobeSpectrum.MAX_NODES is a looser guard)
 const int MAX_MARCH = 4096;  // texels along the major axis (a guard: 2 x 2048 texels)
+const int MAX_LOBES = 1 << 16;        // lobes integrated per fragment (a guard)
+const int MAX_MARCH_STEPS = 1 << 20;  // march steps between two lobes (a guard)
 
 // The Gaussian window (spectrum_gaussian.glsl's), for diffraction_common's windowed sum, which lobes do not use.
 float windowWeight(float offsetTexels, int axis) {
@@ -31,45 +32,78 @@ float sigmaFPerUm() {
     return sigmaTexels.x / patchExtentUm.x;
 }
 
-// One texel's terms divided by n!, fetched once per lobe (per phase centre on the centred path), so that T_m is a
-// plain polynomial in x evaluated by Horner's rule without divisions.
-vec2 lobeTerms[TERM_COUNT];
-int lobeTermsCentre;
+// LobeWeightTable: per texel (the term grid's), W_m(a) = |T_m(a)|^2 and delta dW/dp at p = -a = k delta, k = 0..K-1
+// (layers 0..K-1, (W, delta dW/dp)), interpolated by the cubic Hermite polynomial; layers K..K+3 hold the bounds of
+// the interpolant over 8 bins of p in [0, p_max] (bins 2j and 2j + 1 in layer K + j).
+uniform sampler2DArray lobeWeights;
+uniform int lobeWeightSamples;
+uniform float lobePhaseStepPerUm;
+uniform float lobeMaxPhasePerUm;
+// LobeQuadrature.cutoff: a lobe that can add less than this (white = 1) is skipped before its weight is read.
+uniform float lobeCutoff;
 
-void fetchTerms(ivec2 m, int centre) {
-    ivec2 texel = m + termCentre();
-    float inverseFactorial = 1.0;
-    for (int n = 0; n < TERM_COUNT; n++) {
-        vec2 raw = texelFetch(taylorTerms, ivec3(texel, centre * TERM_COUNT + n), 0).rg;
-#ifdef TERMS_UNORM8
-        vec4 e = texelFetch(termExtrema, n, 0);
-        raw = e.xy + e.zw * raw;
-#endif
-        if (n > 0) {
-            inverseFactorial /= float(n);
-        }
-        lobeTerms[n] = raw * inverseFactorial;
-    }
-    lobeTermsCentre = centre;
+ivec2 weightTexel(ivec2 m) {
+    return m + textureSize(lobeWeights, 0).xy / 2;
 }
 
-// |T_m(a)|^2 = |sum_n (a - a_j)^n / n! terms_n|^2 (TaylorTexels; the plain series has the one centre a_0 = 0).
+bool weightInBand(ivec2 m) {
+    ivec2 texel = weightTexel(m);
+    return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, textureSize(lobeWeights, 0).xy));
+}
+
+// W_m(a) (LobeWeightTable.weight): the Hermite cubic between the two samples around p = -a.
 float lobeWeight(ivec2 m, float a) {
-#ifdef PHASE_CENTRED
-    int centre = nearestPhaseCentre(a);
-    float x = a + float(centre) * centreSpacingPerUm;
-#else
-    int centre = 0;
-    float x = a;
-#endif
-    if (centre != lobeTermsCentre) {
-        fetchTerms(m, centre);
+    float x = clamp(-a / lobePhaseStepPerUm, 0.0, float(lobeWeightSamples - 1));
+    int k = min(lobeWeightSamples - 2, int(x));
+    float t = x - float(k);
+    ivec2 texel = weightTexel(m);
+    vec2 lo = texelFetch(lobeWeights, ivec3(texel, k), 0).rg;
+    vec2 hi = texelFetch(lobeWeights, ivec3(texel, k + 1), 0).rg;
+    float t2 = t * t;
+    float t3 = t2 * t;
+    return max(0.0, (2.0 * t3 - 3.0 * t2 + 1.0) * lo.x + (t3 - 2.0 * t2 + t) * lo.y + (3.0 * t2 - 2.0 * t3) * hi.x
+            + (t3 - t2) * hi.y);
+}
+
+int weightBin(float p) {
+    return clamp(int(floor(p / lobeMaxPhasePerUm * 8.0)), 0, 7);
+}
+
+// LobeWeightTable.bound: the largest weight of texel m for p in [pLo, pHi].
+float weightBound(ivec2 m, float pLo, float pHi) {
+    ivec2 texel = weightTexel(m);
+    float bound = 0.0;
+    for (int b = weightBin(pLo); b <= weightBin(pHi); b++) {
+        vec2 pair = texelFetch(lobeWeights, ivec3(texel, lobeWeightSamples + b / 2), 0).rg;
+        bound = max(bound, (b & 1) == 0 ? pair.x : pair.y);
     }
-    vec2 sum = lobeTerms[TERM_COUNT - 1];
-    for (int n = TERM_COUNT - 2; n >= 0; n--) {
-        sum = sum * x + lobeTerms[n];
+    return bound;
+}
+
+// LobeSpectrum.reaches: whether texel m's lobe over [fromNm, toNm] at w can add at least the cutoff, given the
+// footprint's peak average of a lobe.
+bool lobeReaches(ivec2 m, float w, float fromNm, float toNm, float peak) {
+    if (lobeCutoff == 0.0) {
+        return true;
     }
-    return dot(sum, sum);
+    float k = 6.28318531 * abs(w) * 1e3;
+    return weightBound(m, k / toNm, k / fromNm) * peak >= lobeCutoff;
+}
+
+// LobeSpectrum.Shape.peak: the largest average over the footprint a lobe of peak 1 can have (sigma_uv the widest).
+float axisPeak(float sigmaUv, float h, float variance) {
+    float peak = sigmaUv / sqrt(sigmaUv * sigmaUv + 2.0 * variance);
+    return h > 0.0 ? min(peak, 1.77245385 * sigmaUv / (2.0 * h)) : peak;
+}
+
+float footprintPeak(float widestLobeVariance) {
+    float sigma = sqrt(2.0 * widestLobeVariance);
+    if (footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0) {
+        return axisPeak(sigma, footprintHalfWidth.x, footprintGaussian.x)
+                * axisPeak(sigma, footprintHalfWidth.y, footprintGaussian.z);
+    }
+    vec3 s = footprintGaussian + vec3(widestLobeVariance, 0.0, widestLobeVariance);
+    return sigma * sigma / (2.0 * sqrt(s.x * s.z - s.y * s.y));
 }
 
 // The wavelengths (nm) at which a lobe moving as mu = lambda_um c (c per um) comes within reach of uv on both axes,
@@ -120,50 +154,24 @@ int spectralLevelBase(float spacingNm) {
     return spacingNm >= 1.0 ? (1 + int(floor(log2(spacingNm) + 0.5))) * lobeTablePositions : -1;
 }
 
-// HatFilteredSpectrum.weight: h f_h(lambda_j) for node j of a spacing of 1..16 nm, h f(lambda_j) below 1 nm.
+// HatFilteredSpectrum.weight: h f_h(lambda_j) for node j of a spacing of 1..16 nm (a whole nanometre), h f(lambda_j)
+// interpolated in level 0 below 1 nm; entries outside the band are 0. Two fetches either way (no branch).
 vec3 spectralWeight(float lambdaNm, float spacingNm, int levelBase) {
     float position = lambdaNm - lambdaMinNm;
-    if (levelBase >= 0) {
-        int p = int(floor(position + 0.5));
-        if (p < 0 || p >= lobeTablePositions) {
-            return vec3(0.0);
-        }
-        return spacingNm * texelFetch(lobeSpectralTable, levelBase + p, 0).xyz;
-    }
-    int p = int(floor(position));
-    float t = position - float(p);
-    vec3 a = p >= 0 && p < lobeTablePositions ? texelFetch(lobeSpectralTable, p, 0).xyz : vec3(0.0);
-    vec3 b = p + 1 >= 0 && p + 1 < lobeTablePositions ? texelFetch(lobeSpectralTable, p + 1, 0).xyz : vec3(0.0);
+    bool hat = levelBase >= 0;
+    float p = hat ? floor(position + 0.5) : floor(position);
+    float t = hat ? 0.0 : position - p;
+    int i = int(p);
+    int base = max(levelBase, 0);
+    vec3 a = texelFetch(lobeSpectralTable, base + clamp(i, 0, lobeTablePositions - 1), 0).xyz
+            * (i >= 0 && i < lobeTablePositions ? 1.0 : 0.0);
+    vec3 b = texelFetch(lobeSpectralTable, base + clamp(i + 1, 0, lobeTablePositions - 1), 0).xyz
+            * (i + 1 >= 0 && i + 1 < lobeTablePositions ? 1.0 : 0.0);
     return spacingNm * mix(a, b, t);
 }
 
-// The lobe's slowly varying factor at lambda (LobeSpectrum.slow): W_c(k w), times the footprint's average along a
-// static axis (c_i = 0) when that axis is hoisted out of the nodes.
-float slowFactor(ivec2 m, vec2 c, vec3 uvw, float lambdaNm, bool hoist) {
-    float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * uvw.z);
-    if (!hoist) {
-        return weight;
-    }
-    float sigmaUv = lambdaNm * 1e-3 * sigmaFPerUm();
-    float lobeVariance = 0.5 * sigmaUv * sigmaUv;
-    return weight * (c.x == 0.0
-            ? lobeAxis(sigmaUv, lobeVariance + footprintGaussian.x, 0.0, uvw.x, footprintHalfWidth.x)
-            : lobeAxis(sigmaUv, lobeVariance + footprintGaussian.z, 0.0, uvw.y, footprintHalfWidth.y));
-}
-
-// The footprint's average of the lobe at lambda over the axes it moves on (LobeSpectrum.fast).
-float fastFactor(vec2 c, vec2 uv, float lambdaUm, bool hoist) {
-    float sigmaUv = lambdaUm * sigmaFPerUm();
-    if (!hoist) {
-        return averagedLobe(sigmaUv, lambdaUm * c, uv);
-    }
-    float lobeVariance = 0.5 * sigmaUv * sigmaUv;
-    return c.x == 0.0 ? lobeAxis(sigmaUv, lobeVariance + footprintGaussian.z, lambdaUm * c.y, uv.y, footprintHalfWidth.y)
-            : lobeAxis(sigmaUv, lobeVariance + footprintGaussian.x, lambdaUm * c.x, uv.x, footprintHalfWidth.x);
-}
-
-// One lobe's wavelength integral over [fromNm, toNm] (LobeSpectrum.integrate): the slow factor at the weight points
-// (every lobeWeightStepNm and the ends), linearly interpolated, times the moving axes' average at every node.
+// One lobe's wavelength integral over [fromNm, toNm] (LobeSpectrum.integrate): at every node its weight W_m(k w)
+// from the table times its average over the footprint times the spectral weight.
 vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
     float spacing = nodeSpacingNm(c, fromNm);
     int j0 = int(ceil((fromNm - lambdaMinNm) / spacing - 1e-4));
@@ -173,42 +181,22 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
         j0 = int(ceil((fromNm - lambdaMinNm) / spacing - 1e-4));
         j1 = int(floor((toNm - lambdaMinNm) / spacing + 1e-4));
     }
-    vec3 xyz = vec3(0.0);
-    if (j1 < j0) {
-        return xyz;
-    }
-    bool box = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0;
-    bool hoist = box && footprintShiftCount == 1 && (c.x == 0.0 || c.y == 0.0);
-    float first = lambdaMinNm + float(j0) * spacing;
-    float last = lambdaMinNm + float(j1) * spacing;
-    float slowStep = lobeWeightStepNm > 0.0 && last > first
-            ? (last - first) / max(1.0, ceil((last - first) / lobeWeightStepNm)) : 0.0;
-    float slowLo = first;
-    float slowHi = first;
-    float slowAtLo = slowFactor(m, c, uvw, first, hoist);
-    float slowAtHi = slowAtLo;
     int levelBase = spectralLevelBase(spacing);
+    float sigmaF = sigmaFPerUm();
+    vec3 xyz = vec3(0.0);
     for (int j = j0; j <= j1; j++) {
         float lambdaNm = lambdaMinNm + float(j) * spacing;
-        float slowValue;
-        if (slowStep == 0.0) {
-            slowValue = j == j0 ? slowAtLo : slowFactor(m, c, uvw, lambdaNm, hoist);
-        } else {
-            for (int guard = 0; guard < MAX_NODES && lambdaNm > slowHi + 1e-4; guard++) {
-                slowLo = slowHi;
-                slowAtLo = slowAtHi;
-                slowHi = min(last, slowLo + slowStep);
-                slowAtHi = slowFactor(m, c, uvw, slowHi, hoist);
-            }
-            float t = slowHi > slowLo ? (lambdaNm - slowLo) / (slowHi - slowLo) : 0.0;
-            slowValue = mix(slowAtLo, slowAtHi, t);
-        }
-        xyz += slowValue * fastFactor(c, uvw.xy, lambdaNm * 1e-3, hoist) * spectralWeight(lambdaNm, spacing, levelBase);
+        float lambdaUm = lambdaNm * 1e-3;
+        float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * uvw.z);
+        xyz += weight * averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy)
+                * spectralWeight(lambdaNm, spacing, levelBase);
     }
     return xyz;
 }
 
-// LobeSpectrum.xyz: the march over the texels whose lobes can reach the footprint.
+// LobeSpectrum.xyz: the lobes whose texels lie near the segment s(lambda), marched along its major axis, each
+// integrated once it is found. The march runs as one loop that stops at the next lobe to integrate: a SIMD group of
+// fragments then integrates as many lobes as its busiest fragment, and culled candidates cost only the march.
 vec3 spectralXyz(vec3 uvw) {
     vec2 uv = uvw.xy;
     float sigmaF = sigmaFPerUm();
@@ -217,6 +205,7 @@ vec3 spectralXyz(vec3 uvw) {
     bool box = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0;
     vec3 full = footprintGaussian + (box ? lightRankOne : vec3(0.0));
     vec2 reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz);
+    float peak = footprintPeak(widest);
     float shortest = lambdaMinNm * 1e-3;
     float longest = lambdaMaxNm * 1e-3;
     vec2 xRange = texelRange(uv.x, reach.x, patchExtentUm.x, shortest, longest);
@@ -224,32 +213,47 @@ vec3 spectralXyz(vec3 uvw) {
     int major = xRange.y - xRange.x >= yRange.y - yRange.x ? 0 : 1;
     int minor = 1 - major;
     vec2 majorRange = major == 0 ? xRange : yRange;
-    vec3 xyz = vec3(0.0);
+    vec2 majorAxis = vec2(major == 0 ? 1.0 : 0.0, major == 1 ? 1.0 : 0.0);
+    vec2 reachMajor = mix(vec2(1e30), reach, majorAxis);
     int first = int(floor(majorRange.x));
     int last = min(int(ceil(majorRange.y)), first + MAX_MARCH);
-    for (int i = first; i <= last; i++) {
-        vec2 cMajor = vec2(0.0);
-        cMajor[major] = float(i) / patchExtentUm[major];
-        vec2 reachMajor = vec2(1e30);
-        reachMajor[major] = reach[major];
-        vec2 along = lambdaInterval(cMajor, uv * vec2(major == 0 ? 1.0 : 0.0, major == 1 ? 1.0 : 0.0), reachMajor);
-        if (along.x >= along.y) {
-            continue;
-        }
-        vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3, along.y * 1e-3);
-        for (int k = int(floor(minorRange.x)); k <= int(ceil(minorRange.y)); k++) {
-            ivec2 m = major == 0 ? ivec2(i, k) : ivec2(k, i);
-            if (!inBand(m)) {
-                continue;
+    int i = first - 1; // the march: major index i, minor index k of kLast
+    int k = 0;
+    int kLast = -1;
+    vec3 xyz = vec3(0.0);
+    for (int lobe = 0; lobe < MAX_LOBES; lobe++) {
+        ivec2 m = ivec2(0);
+        vec2 interval = vec2(1.0, 0.0);
+        bool found = false;
+        for (int step = 0; step < MAX_MARCH_STEPS; step++) {
+            if (k > kLast) {
+                // the next major index: the minor texels its lobes can reach
+                i++;
+                if (i > last) {
+                    break;
+                }
+                vec2 along = lambdaInterval(majorAxis * float(i) / patchExtentUm, uv * majorAxis, reachMajor);
+                vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3,
+                        along.y * 1e-3);
+                bool any = along.x < along.y;
+                k = any ? int(floor(minorRange.x)) : 0;
+                kLast = any ? int(ceil(minorRange.y)) : -1;
+            } else {
+                ivec2 candidate = major == 0 ? ivec2(i, k) : ivec2(k, i);
+                k++;
+                vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
+                if (weightInBand(candidate) && at.x < at.y && lobeReaches(candidate, uvw.z, at.x, at.y, peak)) {
+                    m = candidate;
+                    interval = at;
+                    found = true;
+                    break;
+                }
             }
-            vec2 c = vec2(m) / patchExtentUm;
-            vec2 interval = lambdaInterval(c, uv, reach);
-            if (interval.x >= interval.y) {
-                continue;
-            }
-            lobeTermsCentre = -1;
-            xyz += integrateLobe(m, c, uvw, interval.x, interval.y);
         }
+        if (!found) {
+            break;
+        }
+        xyz += integrateLobe(m, vec2(m) / patchExtentUm, uvw, interval.x, interval.y);
     }
     return xyz;
 }
@@ -267,11 +271,10 @@ float patchPower(vec3 uvw, float lambdaNm) {
     for (int y = int(floor(lo.y)); y <= int(ceil(hi.y)); y++) {
         for (int x = int(floor(lo.x)); x <= int(ceil(hi.x)); x++) {
             ivec2 m = ivec2(x, y);
-            if (!inBand(m)) {
+            if (!weightInBand(m)) {
                 continue;
             }
             vec2 d = (uvw.xy - lambdaUm * vec2(m) / patchExtentUm) / sigmaUv;
-            lobeTermsCentre = -1;
             sum += lobeWeight(m, a) * exp(-dot(d, d));
         }
     }

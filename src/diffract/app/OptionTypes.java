@@ -133,14 +133,15 @@ final class OptionTypes {
      */
     record LobeQuadratureChange(java.util.Map<String, Double> values) {
         static final List<String> KEYS = List.of("pairThreshold", "nodesPerSigma", "maxStepNm", "reachSigmas",
-                "weightStepNm", "lightNodes");
+                "weightStepNm", "lightNodes", "cutoff", "weightTolerance");
 
         LobeQuadrature applyTo(LobeQuadrature q) {
             java.util.function.Function<String, Double> v = values::get;
             return new LobeQuadrature(or(v.apply("pairThreshold"), q.pairThreshold()),
                     or(v.apply("nodesPerSigma"), q.nodesPerSigma()), or(v.apply("maxStepNm"), q.maxStepNm()),
                     or(v.apply("reachSigmas"), q.reachSigmas()), or(v.apply("weightStepNm"), q.weightStepNm()),
-                    values.containsKey("lightNodes") ? (int) Math.round(values.get("lightNodes")) : q.lightNodes());
+                    values.containsKey("lightNodes") ? (int) Math.round(values.get("lightNodes")) : q.lightNodes(),
+                    or(v.apply("cutoff"), q.cutoff()), or(v.apply("weightTolerance"), q.weightTolerance()));
         }
 
         private static double or(Double given, double fallback) {

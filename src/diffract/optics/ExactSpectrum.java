@@ -147,6 +147,21 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
         return sigmaTexelsY;
     }
 
+    @Override
+    public int rows() {
+        return field.rows();
+    }
+
+    @Override
+    public int cols() {
+        return field.cols();
+    }
+
+    @Override
+    public double maxAbsHeightUm() {
+        return field.maxAbsHeightUm();
+    }
+
     /**
      * The exact coefficient T_m(a) = DFT(exp(i a h))(m) of texel m, the quantity the window sums in
      * {@link #transformAt} (for the lobe decomposition of the filtered reference).

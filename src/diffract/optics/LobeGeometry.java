@@ -9,9 +9,6 @@ package diffract.optics;
 final class LobeGeometry {
     private static final double SQRT_PI = Math.sqrt(Math.PI);
     private static final double SQRT_TWO = Math.sqrt(2.0);
-    /** The fast box average uses the density at the centre for boxes narrower than this share of the spread. */
-    static final double NARROW_BOX = 0.05;
-
     private LobeGeometry() {
     }
 
@@ -71,8 +68,7 @@ final class LobeGeometry {
      * point footprint on the lobe's centre; its integral over the (u, v) plane is pi sigmaUv^2 whatever the
      * footprint (the footprint only redistributes it).
      *
-     * @param fast the shader's arithmetic: {@link ErrorFunction#fastMassInInterval}, and the density at the
-     *             centre of boxes narrower than {@link #NARROW_BOX} of the spread
+     * @param fast the shader's arithmetic: {@link ErrorFunction#fastMassInInterval}
      */
     static double averagedLobe(double sigmaUv, double muU, double muV, double u, double v, double hx, double hy,
                                Covariance2 g, boolean fast) {
@@ -130,7 +126,7 @@ final class LobeGeometry {
     /** One axis: sqrt(pi) sigmaUv times the average over [u - h, u + h] of the density N(mu, variance). */
     static double axis(double sigmaUv, double variance, double mu, double u, double h, boolean fast) {
         double s = Math.sqrt(variance);
-        if (h == 0 || (fast && 2 * h < NARROW_BOX * s)) {
+        if (h == 0) {
             double d = (u - mu) / s;
             return sigmaUv / (SQRT_TWO * s) * Math.exp(-0.5 * d * d);
         }

@@ -20,10 +20,25 @@ import diffract.colour.HatFilteredSpectrum;
  *                       at its ends, linearly interpolated between; 0 = at every node
  * @param lightNodes     Gauss-Hermite nodes along the part of a light's covariance that a BRDF-map pixel's box
  *                       cannot average analytically (lights off the axes of the patch), 1..8
+ * @param cutoff         a lobe is skipped, before its weight is read, when it can add at most this much to a pixel's
+ *                       tristimulus values (D65 white = 1): its weight table's bound over the lobe's phases times the
+ *                       footprint's largest average of a lobe; in [0, 1e-2], 0 keeps every lobe
+ * @param weightTolerance the interpolation error of the tabulated lobe weights W_m(k w) ({@link LobeWeightTable}),
+ *                       relative to a texel's largest weight, in [0, 1e-2]; 0 sums the coefficients at every
+ *                       evaluation instead (CPU only: the shader reads the table)
  */
 public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
-                             double weightStepNm, int lightNodes) {
+                             double weightStepNm, int lightNodes, double cutoff, double weightTolerance) {
+    public static final double DEFAULT_CUTOFF = 1e-6;
+    public static final double DEFAULT_WEIGHT_TOLERANCE = 1e-4;
     public static final LobeQuadrature DEFAULT = new LobeQuadrature(1e-4, 0.67, 8, 4.0, 8, 3);
+
+    /** With the default cutoff and weight table. */
+    public LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
+                          double weightStepNm, int lightNodes) {
+        this(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, DEFAULT_CUTOFF,
+                DEFAULT_WEIGHT_TOLERANCE);
+    }
 
     public LobeQuadrature {
         if (!(pairThreshold > 0 && pairThreshold <= 1)) {
@@ -48,6 +63,12 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
         if (lightNodes < 1 || lightNodes > GaussHermite.MAX_NODES) {
             throw invalid("the light nodes must be 1.." + GaussHermite.MAX_NODES + ", got " + lightNodes);
         }
+        if (!(cutoff >= 0 && cutoff <= 1e-2)) {
+            throw invalid("the cutoff must be in [0, 1e-2] of white, got " + cutoff);
+        }
+        if (!(weightTolerance >= 0 && weightTolerance <= 1e-2)) {
+            throw invalid("the weight tolerance must be in [0, 1e-2] (0: no table), got " + weightTolerance);
+        }
     }
 
     private static InvalidSettingException invalid(String what) {
@@ -63,26 +84,42 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
     }
 
     public LobeQuadrature withNodesPerSigma(double nodes) {
-        return new LobeQuadrature(pairThreshold, nodes, maxStepNm, reachSigmas, weightStepNm, lightNodes);
+        return new LobeQuadrature(pairThreshold, nodes, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff,
+                weightTolerance);
     }
 
     public LobeQuadrature withMaxStepNm(double step) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, step, reachSigmas, weightStepNm, lightNodes);
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, step, reachSigmas, weightStepNm, lightNodes, cutoff,
+                weightTolerance);
     }
 
     public LobeQuadrature withPairThreshold(double threshold) {
-        return new LobeQuadrature(threshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes);
+        return new LobeQuadrature(threshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff,
+                weightTolerance);
     }
 
     public LobeQuadrature withReachSigmas(double reach) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reach, weightStepNm, lightNodes);
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reach, weightStepNm, lightNodes, cutoff,
+                weightTolerance);
     }
 
     public LobeQuadrature withWeightStepNm(double step) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, step, lightNodes);
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, step, lightNodes, cutoff,
+                weightTolerance);
     }
 
     public LobeQuadrature withLightNodes(int nodes) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, nodes);
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, nodes, cutoff,
+                weightTolerance);
+    }
+
+    public LobeQuadrature withCutoff(double c) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, c,
+                weightTolerance);
+    }
+
+    public LobeQuadrature withWeightTolerance(double tolerance) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff,
+                tolerance);
     }
 }

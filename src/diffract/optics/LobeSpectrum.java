@@ -42,6 +42,8 @@ public final class LobeSpectrum {
     private final double lambdaMinNm;
     private final double lambdaMaxNm;
     private final boolean fastErf;
+    /** The tabulated weights of whole-texel lobes, or null (pairs, or a weight tolerance of 0). */
+    private final LobeWeightTable table;
 
     /**
      * @param fastErf the shader's erf (Abramowitz and Stegun 7.1.26) instead of the accurate one
@@ -58,6 +60,45 @@ public final class LobeSpectrum {
         this.lambdaMinNm = lambdaMinNm;
         this.lambdaMaxNm = lambdaMaxNm;
         this.fastErf = fastErf;
+        this.table = quadrature.weightTolerance() > 0 && !lobes.hasPairs()
+                ? new LobeWeightTable(coefficients, lambdaMinNm, quadrature.weightTolerance())
+                : null;
+    }
+
+    /** A lobe's weight W_c(a) = W_c(k w): from the table, or summed from its texels' coefficients. */
+    private interface Weight {
+        double at(double phase);
+    }
+
+    /** The lobe centred at (twiceCx, twiceCy) / 2 as a weight, or null when no stored texel or kept pair makes it. */
+    private Weight weightOf(int twiceCx, int twiceCy) {
+        if (table != null) {
+            int col = twiceCx / 2 + table.cols() / 2;
+            int row = twiceCy / 2 + table.rows() / 2;
+            if (!TexelCoefficients.inBand(twiceCx / 2, twiceCy / 2, table.rows(), table.cols())) {
+                return null;
+            }
+            return a -> table.weight(col, row, a);
+        }
+        GaussianLobes.Lobe lobe = lobes.lobe(twiceCx, twiceCy);
+        return lobe == null ? null : lobe::weight;
+    }
+
+    /**
+     * Whether the lobe of whole texel (twiceCx, twiceCy) / 2, over wavelengths [fromNm, toNm] at w, can add at least
+     * the cutoff to the pixel: its table bound over those phases times the footprint's peak average of a lobe.
+     */
+    private boolean reaches(int twiceCx, int twiceCy, double w, double fromNm, double toNm, Shape shape) {
+        if (table == null || quadrature.cutoff() == 0) {
+            return true;
+        }
+        if (!TexelCoefficients.inBand(twiceCx / 2, twiceCy / 2, table.rows(), table.cols())) {
+            return false;
+        }
+        double k = 2 * Math.PI * Math.abs(w) * 1e3;
+        double bound = table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2, k / toNm,
+                k / fromNm);
+        return bound * shape.peak >= quadrature.cutoff();
     }
 
     /** Over the float32 Taylor terms, the plain series to {@code highestOrder}: what the shader reads. */
@@ -100,6 +141,8 @@ public final class LobeSpectrum {
         final double[] shiftWeight;
         final double reachU;
         final double reachV;
+        /** The largest average over the footprint a lobe of peak 1 can have (at the longest wavelength). */
+        final double peak;
 
         Shape(Footprint footprint, LobeQuadrature quadrature, double widestLobeVariance) {
             hx = footprint.halfWidthU();
@@ -127,6 +170,21 @@ public final class LobeSpectrum {
             // the full Gaussian's marginals bound the reach on each axis
             reachU = hx + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx());
             reachV = hy + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy());
+            double sigma = Math.sqrt(2 * widestLobeVariance);
+            if (hasBox()) {
+                // per axis: the box average of the widened lobe is at most the box's (sqrt(pi) sigma_uv / 2h) and
+                // the widened peak's (sigma_uv / sqrt(sigma_uv^2 + 2 Sigma_ii)); the light's shifts average these
+                peak = axisPeak(sigma, hx, gaussian.xx()) * axisPeak(sigma, hy, gaussian.yy());
+            } else {
+                double sxx = widestLobeVariance + g.xx();
+                double syy = widestLobeVariance + g.yy();
+                peak = sigma * sigma / (2 * Math.sqrt(sxx * syy - g.xy() * g.xy()));
+            }
+        }
+
+        private static double axisPeak(double sigmaUv, double h, double variance) {
+            double peak = sigmaUv / Math.sqrt(sigmaUv * sigmaUv + 2 * variance);
+            return h > 0 ? Math.min(peak, Math.sqrt(Math.PI) * sigmaUv / (2 * h)) : peak;
         }
 
         boolean hasBox() {
@@ -168,10 +226,10 @@ public final class LobeSpectrum {
                 double cy = 0.5 * ty / extentYUm;
                 double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, shape.reachU, shape.reachV,
                         lambdaMinNm, lambdaMaxNm);
-                if (interval == null) {
+                if (interval == null || !reaches(tx, ty, w, interval[0], interval[1], shape)) {
                     continue;
                 }
-                GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+                Weight lobe = weightOf(tx, ty);
                 if (lobe == null) {
                     continue;
                 }
@@ -195,11 +253,11 @@ public final class LobeSpectrum {
     }
 
     /**
-     * One lobe's wavelength integral over [from, to] nm, added to total: the lobe's slow factor (its weight, times
-     * the footprint's average along an axis it does not move on) at the weight points, linearly interpolated; the
-     * moving axes' average at every node.
+     * One lobe's wavelength integral over [from, to] nm, added to total: at every node the footprint's average of the
+     * lobe times its weight, from the table at every node, or (no table) summed from the coefficients every
+     * {@link LobeQuadrature#weightStepNm} of the passage and at its ends and linearly interpolated between.
      */
-    private void integrate(GaussianLobes.Lobe lobe, double cx, double cy, double u, double v, double w, Shape shape,
+    private void integrate(Weight lobe, double cx, double cy, double u, double v, double w, Shape shape,
                            double from, double to, double[] node, double[] total) {
         double spacing = spacingNm(cx, cy, shape, from);
         int j0 = (int) Math.ceil((from - lambdaMinNm) / spacing - 1e-9);
@@ -212,67 +270,41 @@ public final class LobeSpectrum {
         if (j1 < j0) {
             return;
         }
-        // the axes the lobe moves on are averaged at every node; a static axis (c_i = 0) joins the slow factor
-        boolean hoist = shape.hasBox() && shape.shiftWeight.length == 1 && (cx == 0 || cy == 0);
-        double step = quadrature.weightStepNm();
+        double step = table == null ? quadrature.weightStepNm() : 0;
         double first = lambdaMinNm + j0 * spacing;
         double last = lambdaMinNm + j1 * spacing;
         double slowStep = step > 0 && last > first ? (last - first) / Math.max(1, Math.ceil((last - first) / step)) : 0;
         double slowLo = first;
         double slowHi = first;
-        double slowAtLo = slow(lobe, cx, cy, u, v, w, shape, first, hoist);
+        double slowAtLo = weight(lobe, w, first);
         double slowAtHi = slowAtLo;
         for (int j = j0; j <= j1; j++) {
             double lambdaNm = lambdaMinNm + j * spacing;
-            double slowValue;
+            double weight;
             if (slowStep == 0) {
-                slowValue = j == j0 ? slowAtLo : slow(lobe, cx, cy, u, v, w, shape, lambdaNm, hoist);
+                weight = j == j0 ? slowAtLo : weight(lobe, w, lambdaNm);
             } else {
                 while (lambdaNm > slowHi + 1e-9) {
                     slowLo = slowHi;
                     slowAtLo = slowAtHi;
                     slowHi = Math.min(last, slowLo + slowStep);
-                    slowAtHi = slow(lobe, cx, cy, u, v, w, shape, slowHi, hoist);
+                    slowAtHi = weight(lobe, w, slowHi);
                 }
                 double t = slowHi > slowLo ? (lambdaNm - slowLo) / (slowHi - slowLo) : 0;
-                slowValue = slowAtLo + t * (slowAtHi - slowAtLo);
+                weight = slowAtLo + t * (slowAtHi - slowAtLo);
             }
-            double a = fast(lambdaNm * 1e-3, cx, cy, u, v, shape, hoist);
+            double a = averaged(lambdaNm * 1e-3, cx, cy, u, v, shape);
             spectral.weight(lambdaNm, spacing, node);
-            double scale = slowValue * a;
+            double scale = weight * a;
             total[0] += scale * node[0];
             total[1] += scale * node[1];
             total[2] += scale * node[2];
         }
     }
 
-    /** The lobe's slowly varying factor at lambda: W_c(k w), times a static axis' average when hoisted. */
-    private double slow(GaussianLobes.Lobe lobe, double cx, double cy, double u, double v, double w, Shape shape,
-                        double lambdaNm, boolean hoist) {
-        double lambdaUm = lambdaNm * 1e-3;
-        double weight = lobe.weight(2 * Math.PI / lambdaUm * w);
-        if (!hoist) {
-            return weight;
-        }
-        double sigmaUv = lambdaUm * sigmaFPerUm;
-        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
-        return weight * (cx == 0 ? LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.xx(), 0, u, shape.hx, fastErf)
-                : LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), 0, v, shape.hy, fastErf));
-    }
-
-    /** The footprint's average of the lobe at lambda, over the axes it moves on when a static axis is hoisted. */
-    private double fast(double lambdaUm, double cx, double cy, double u, double v, Shape shape, boolean hoist) {
-        if (!hoist) {
-            return averaged(lambdaUm, cx, cy, u, v, shape);
-        }
-        double sigmaUv = lambdaUm * sigmaFPerUm;
-        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
-        if (cx == 0 && cy == 0) {
-            // both static: the y axis joins the node's factor, x is the slow one
-            return LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), 0, v, shape.hy, fastErf);
-        }
-        return cx == 0 ? LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.yy(), lambdaUm * cy, v, shape.hy, fastErf)
-                : LobeGeometry.axis(sigmaUv, lobeVariance + shape.gaussian.xx(), lambdaUm * cx, u, shape.hx, fastErf);
+    /** The lobe's weight W_c(k w) at lambda. */
+    private static double weight(Weight lobe, double w, double lambdaNm) {
+        return lobe.at(2 * Math.PI / (lambdaNm * 1e-3) * w);
     }
 
     /**
@@ -322,11 +354,11 @@ public final class LobeSpectrum {
              tx <= Math.ceil(2 * (u + shape.reachU) * extentXUm / lambdaUm); tx += step) {
             for (int ty = first((v - shape.reachV) * extentYUm / lambdaUm, step);
                  ty <= Math.ceil(2 * (v + shape.reachV) * extentYUm / lambdaUm); ty += step) {
-                GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+                Weight lobe = weightOf(tx, ty);
                 if (lobe == null) {
                     continue;
                 }
-                sum += lobe.weight(a) * averaged(lambdaUm, 0.5 * tx / extentXUm, 0.5 * ty / extentYUm, u, v, shape);
+                sum += lobe.at(a) * averaged(lambdaUm, 0.5 * tx / extentXUm, 0.5 * ty / extentYUm, u, v, shape);
             }
         }
         return sum;

@@ -43,6 +43,21 @@ final class TaylorTexels implements TexelCoefficients {
     }
 
     @Override
+    public int rows() {
+        return perCentre[0].rows();
+    }
+
+    @Override
+    public int cols() {
+        return perCentre[0].cols();
+    }
+
+    @Override
+    public double maxAbsHeightUm() {
+        return perCentre[0].maxAbsHeightUm();
+    }
+
+    @Override
     public Texel texel(int mx, int my) {
         TaylorTerms first = perCentre[0];
         if (!TexelCoefficients.inBand(mx, my, first.rows(), first.cols())) {

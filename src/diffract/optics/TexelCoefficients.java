@@ -13,6 +13,15 @@ interface TexelCoefficients {
     /** L_y = rows dH_y, micrometres. */
     double extentYUm();
 
+    /** Rows of the DFT grid (frequency indices -rows/2 .. rows - rows/2 - 1 along y). */
+    int rows();
+
+    /** Columns of the DFT grid. */
+    int cols();
+
+    /** max |h| of the mean-subtracted patch: T_m(a) is band-limited to it in a. */
+    double maxAbsHeightUm();
+
     /** The texel of frequency index (mx, my), or null when it lies outside the stored band (T_m = 0 there). */
     Texel texel(int mx, int my);
 

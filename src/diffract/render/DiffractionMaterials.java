@@ -11,6 +11,7 @@ import diffract.optics.GaussHermite;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LightSource;
 import diffract.optics.LobeQuadrature;
+import diffract.optics.LobeWeightTable;
 import diffract.optics.PhaseCentres;
 import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
@@ -154,12 +155,17 @@ public final class DiffractionMaterials {
                     window.sigmaTexels(Math.max(textures.extentXUm(), textures.extentYUm())), q.pairThreshold()));
         }
         LightSource light = settings.illumination().light();
+        LobeWeightTable table = textures.lobeWeightTable(settings, q);
+        m.setTexture("lobeWeights", textures.lobeWeights(settings, q))
+                .setInt("lobeWeightSamples", table.samples())
+                .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
+                .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
+                .setFloat("lobeCutoff", (float) q.cutoff());
         m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings.spectral()))
                 .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings.spectral()))
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
                 .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
                 .setFloat("lobeReachSigmas", (float) q.reachSigmas())
-                .setFloat("lobeWeightStepNm", (float) q.weightStepNm())
                 .setFloat("pixelFootprintScale", settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f)
                 .setFloat("lightSigmaRad", (float) light.sigmaRad())
                 .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())

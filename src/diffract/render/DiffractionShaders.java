@@ -7,6 +7,7 @@ import diffract.optics.DiffractionBrdf;
 import diffract.optics.FresnelModel;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentres;
+import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
@@ -157,6 +158,11 @@ public final class DiffractionShaders {
             // the term lookup de-normalises 8-bit [0, 1] terms with the per-term extrema (NormalisedTerms)
             defines.put("TERMS_UNORM8", "1");
         }
+        if (settings.variant() == Variant.LOBES && target == Target.BRDF_MAP
+                && settings.illumination().pixelFilter() == PixelFilter.BOX) {
+            // the lobes shader's map pixels are boxes (lobes_footprint.glsl compiles one footprint, not both)
+            defines.put("LOBES_BOX", "1");
+        }
         if (textures.baked() != null && textures.baked().filtered()) {
             // the table holds cell- and light-averaged samples with mip levels: look up over the pixel's footprint
             defines.put("BAKED_FILTERED", "1");
@@ -180,6 +186,7 @@ public final class DiffractionShaders {
      */
     public static ShaderProgram bakeLobesProgram(BrdfSettings lobesSettings, DiffractionTextures textures) {
         Map<String, String> defines = definesFor(lobesSettings, textures, Target.BRDF_MAP, false, false);
+        defines.put("LOBES_BOX", "1"); // every sample averages over its cell
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
     }
 

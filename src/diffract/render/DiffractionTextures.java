@@ -10,6 +10,8 @@ import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.LobeQuadrature;
+import diffract.optics.LobeWeightTable;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
 import diffract.optics.Quantity;
@@ -65,6 +67,10 @@ public final class DiffractionTextures {
     private final PhaseCentres phaseCentres;
     private HatFilteredSpectrum lobeSpectrum;
     private FloatTexture1D lobeSpectralTable;
+    /** Makes the lobes method's weight table from these terms: (lambda_min nm, tolerance) -> table. */
+    private java.util.function.BiFunction<Double, Double, LobeWeightTable> lobeWeightSource;
+    private LobeWeightTable lobeWeightTable;
+    private FloatTextureArray lobeWeights;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
                                 FloatTexture1D spectralTable, double spectralTableFirstNm, TaylorTerms source,
@@ -114,9 +120,13 @@ public final class DiffractionTextures {
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
         BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
-        return new DiffractionTextures(termTexture, normalised ? NormalisedTerms.extremaTable(terms, highestOrder) : null,
-                buildUniformNodeTable(settings.spectral()), buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder,
-                baked, null);
+        DiffractionTextures textures = new DiffractionTextures(termTexture, normalised
+                ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
+                buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder, baked, null);
+        int lobeOrder = highestOrder;
+        textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lobeOrder, lambdaMinNm,
+                tolerance);
+        return textures;
     }
 
     /**
@@ -132,8 +142,11 @@ public final class DiffractionTextures {
         FloatTextureArray.Precision precision = TermFormats.precision(settings.gpu().termFormat());
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
-        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()), buildSpectralTable(),
-                Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null, terms.centres());
+        DiffractionTextures textures = new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()),
+                buildSpectralTable(), Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null,
+                terms.centres());
+        textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lambdaMinNm, tolerance);
+        return textures;
     }
 
     /**
@@ -224,6 +237,37 @@ public final class DiffractionTextures {
     public synchronized int lobeSpectralTablePositions(SpectralSettings spectral) {
         lobeSpectralTable(spectral);
         return lobeSpectrum.positions();
+    }
+
+    /**
+     * The lobes method's weight table ({@link LobeWeightTable}: |T_m(k w)|^2 per texel over the phase, and its
+     * bounds) for the settings' shortest wavelength and the quadrature's tolerance, made on first use from the same
+     * terms as the CPU's (the settings' Taylor order, or the phase-centred expansion); one RG32F texture array.
+     */
+    public synchronized FloatTextureArray lobeWeights(BrdfSettings settings, LobeQuadrature quadrature) {
+        LobeWeightTable table = lobeWeightTable(settings, quadrature);
+        if (lobeWeights == null) {
+            lobeWeights = new FloatTextureArray(table.cols(), table.rows(), table.layers(),
+                    FloatTextureArray.Precision.FLOAT32);
+        }
+        return lobeWeights;
+    }
+
+    /** The table behind {@link #lobeWeights}. */
+    public synchronized LobeWeightTable lobeWeightTable(BrdfSettings settings, LobeQuadrature quadrature) {
+        if (quadrature.weightTolerance() == 0) {
+            throw new InvalidSettingException(Quantity.LOBE_QUADRATURE, "the lobes shader reads a table of the lobe "
+                    + "weights: a weight tolerance of 0 (the coefficients at every wavelength) is for the CPU only");
+        }
+        if (lobeWeightTable != null && (lobeWeightTable.tolerance() != quadrature.weightTolerance()
+                || lobeWeightTable.lambdaMinNm() != settings.spectral().lambdaMinNm())) {
+            throw new IllegalStateException("these textures hold the lobe weights for tolerance "
+                    + lobeWeightTable.tolerance() + " from " + lobeWeightTable.lambdaMinNm() + " nm; make new textures");
+        }
+        if (lobeWeightTable == null) {
+            lobeWeightTable = lobeWeightSource.apply(settings.spectral().lambdaMinNm(), quadrature.weightTolerance());
+        }
+        return lobeWeightTable;
     }
 
     /** The phase centres of a phase-centred term array, null for the thesis' terms around 0. */

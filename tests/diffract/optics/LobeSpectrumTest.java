@@ -15,9 +15,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * The lobes method (LobeSpectrum) against FLSS at fine wavelength steps and against the filtered reference.
  */
 class LobeSpectrumTest {
-    /** Fine enough that the rule's own error is below 1e-6: 8 nodes per sigma, 0.05 nm at most, weights every node. */
+    /**
+     * Fine enough that the rule's own error is below 1e-6: 8 nodes per sigma, 0.05 nm at most, the coefficients summed
+     * at every node (no weight table), every lobe (no cutoff).
+     */
     static final LobeQuadrature FINE = LobeQuadrature.DEFAULT.withNodesPerSigma(8).withMaxStepNm(0.05)
-            .withWeightStepNm(0).withReachSigmas(9).withPairThreshold(1e-13);
+            .withWeightStepNm(0).withReachSigmas(9).withPairThreshold(1e-13).withWeightTolerance(0).withCutoff(0);
 
     /**
      * One lobe alone (a patch whose only texel is m = (3, 1), with the exact coefficient of a real texel), for window
@@ -39,6 +42,21 @@ class LobeSpectrumTest {
             @Override
             public double extentYUm() {
                 return patch.heightExtentUm();
+            }
+
+            @Override
+            public int rows() {
+                return patch.rows();
+            }
+
+            @Override
+            public int cols() {
+                return patch.cols();
+            }
+
+            @Override
+            public double maxAbsHeightUm() {
+                return patch.maxAbsHeightUm();
             }
 
             @Override
