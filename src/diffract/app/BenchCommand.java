@@ -4,6 +4,7 @@ import diffract.bench.BenchConfig;
 import diffract.bench.BenchPatch;
 import diffract.bench.BenchResult;
 import diffract.bench.BenchRunner;
+import diffract.bench.FilteringTargets;
 import diffract.bench.ParetoPlot;
 import diffract.bench.ReferenceMaps;
 import diffract.bench.ResultsTable;
@@ -13,6 +14,8 @@ import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.io.HeightFieldReader;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.OutputPaths;
@@ -87,10 +90,10 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--sizes", paramLabel = "LIST", split = ",", description = "Own grid: map sizes (default --size).")
     List<Integer> sizesList;
 
-    @Option(names = "--coherence-length", defaultValue = "10", paramLabel = "UM",
-            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the demo scene's: the "
-                    + "patches are about one coherence length wide and their orders a few map pixels; at the thesis' "
-                    + "65 um they are far thinner than a pixel and the maps point-sample them).")
+    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM",
+            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the thesis'). The "
+                    + "sweep's point-sampling variants need a short one (docs/bench.sh uses 10 um, where the orders "
+                    + "are a few map pixels wide); --filtering measures the filtering methods at this length.")
     double coherenceLengthUm;
 
     @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
@@ -107,6 +110,39 @@ final class BenchCommand implements Callable<Integer> {
             + "ms/frame and CIEDE2000; 1/8 of the size on a software rasteriser. Writes gpu-suite.csv, gpu-suite.md "
             + "and scene-*.png.")
     boolean gpuSuite;
+
+    @Option(names = "--filtering", description = "Instead of the sweep: the filtering targets (docs/filtering.md): "
+            + "per patch and light size (--lights), the lobes method, FLSS in the thesis' configuration and the baked "
+            + "table against the filtered reference (pixels averaged over their squares), CIEDE2000 over lit pixels "
+            + "and ms per frame, on the same GL context. Writes filtering.csv and filtering.md.")
+    boolean filtering;
+
+    @Option(names = "--lights", paramLabel = "LIST", split = ",", defaultValue = "0,2",
+            description = "--filtering: the lights' angular diameters in degrees (default ${DEFAULT-VALUE}).")
+    List<Double> lightsDeg;
+
+    @Option(names = "--baked-size", defaultValue = "256", paramLabel = "UV",
+            description = "--filtering: (u, v) samples of the baked table, 0 for none (default ${DEFAULT-VALUE}).")
+    int bakedUvSamples;
+
+    @Option(names = "--rounds", defaultValue = "3", paramLabel = "R",
+            description = "--filtering: alternating timing rounds of the lobes method and FLSS (default ${DEFAULT-VALUE}).")
+    int rounds;
+
+    @Option(names = "--patch", paramLabel = "FILE", description = "--filtering: a measured height field to add to the "
+            + "--patches (with --max-height and --pixel-size, as brdfmap reads it).")
+    Path patchFile;
+
+    @Option(names = "--max-height", paramLabel = "UM", description = "--patch: height of the brightest grey value.")
+    Double maxHeightUm;
+
+    @Option(names = "--pixel-size", paramLabel = "UM", description = "--patch: pixel size dH in micrometres.")
+    Double pixelSizeUm;
+
+    @Option(names = "--phi-i", defaultValue = "90", paramLabel = "DEG",
+            description = "--patch: the light's azimuth, in the plane of its period (default ${DEFAULT-VALUE}: "
+                    + "ridges along x, as a snake patch scanned along its scale).")
+    double patchPhiDeg;
 
     @Option(names = "--suite-size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
             description = "GPU suite: the scene's size (default 1920x1080, 240x135 on llvmpipe); the maps are HxH.")
@@ -134,6 +170,9 @@ final class BenchCommand implements Callable<Integer> {
                     (System.nanoTime() - start) * 1e-9, outputDir.resolve("gpu-suite.csv"),
                     outputDir.resolve("gpu-suite.md"));
             return 0;
+        }
+        if (filtering) {
+            return filtering();
         }
         if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
@@ -183,6 +222,54 @@ final class BenchCommand implements Callable<Integer> {
         System.out.printf(Locale.ROOT, "bench: %d configurations in %.0f s on %s%nwrote %s, %s, %s, %s%n%s",
                 results.size(), (System.nanoTime() - start) * 1e-9, machine, csv, outputDir.resolve("results.md"),
                 outputDir.resolve("targets.md"), plot, Targets.markdown(outcomes));
+        return 0;
+    }
+
+    /** The filtering targets ({@link FilteringTargets}): a table per patch and light. */
+    private Integer filtering() throws IOException {
+        if (sizePx < 8 || sizePx > 512) {
+            throw new UserInputException("--size of the filtering maps must be between 8 and 512 pixels");
+        }
+        if (rounds < 1 || rounds > 20) {
+            throw new UserInputException("--rounds must be 1..20, got " + rounds);
+        }
+        for (double d : lightsDeg) {
+            new diffract.optics.LightSource(d); // a refused size fails before any work
+        }
+        List<BenchPatch> list = new ArrayList<>(BenchPatch.named(patches));
+        Reporter reporter = quiet.reporter();
+        if (patchFile != null) {
+            HeightField field = HeightFieldReader.load(patchFile, maxHeightUm, pixelSizeUm, reporter).meanSubtracted();
+            list.add(new BenchPatch(patchFile.getFileName().toString().replaceFirst("\\.[^.]*$", ""), field,
+                    patchPhiDeg));
+        }
+        HeadlessGL.require();
+        Files.createDirectories(outputDir);
+        BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
+                .coherenceLengthUm(coherenceLengthUm));
+        FilteringTargets targets = new FilteringTargets(new ReferenceMaps(outputDir.resolve("reference-maps"),
+                reporter), lobes, sizePx, rounds, frames, bakedUvSamples, reporter);
+        int total = list.size() * lightsDeg.size();
+        List<FilteringTargets.Row> done = new ArrayList<>();
+        long start = System.nanoTime();
+        reporter.progress("filtering targets", 0);
+        List<FilteringTargets.Row> rows = targets.run(list, lightsDeg, r -> {
+            done.add(r);
+            reporter.progress("filtering targets", done.size() / (double) total);
+            try { // after every row: an interrupted run keeps its rows
+                Files.writeString(outputDir.resolve("filtering.csv"), FilteringTargets.csv(done, targets.glInfo()),
+                        StandardCharsets.UTF_8);
+            } catch (IOException e) {
+                throw new UserInputException("cannot write " + outputDir.resolve("filtering.csv") + ": "
+                        + e.getMessage(), e);
+            }
+        });
+        String md = FilteringTargets.markdown(rows, sizePx, lobes, bakedUvSamples)
+                + "\n" + machine(targets.glInfo()) + "\n";
+        Files.writeString(outputDir.resolve("filtering.md"), md, StandardCharsets.UTF_8);
+        System.out.printf(Locale.ROOT, "bench --filtering: %d rows in %.0f s%nwrote %s, %s%n%s", rows.size(),
+                (System.nanoTime() - start) * 1e-9, outputDir.resolve("filtering.csv"),
+                outputDir.resolve("filtering.md"), md);
         return 0;
     }
 

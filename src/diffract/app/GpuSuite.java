@@ -11,6 +11,7 @@ import diffract.jrtr.GLInfo;
 import diffract.jrtr.OffscreenTarget;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.render.GpuBrdfMap;
 import diffract.scene.Fabricator;
@@ -142,9 +143,14 @@ final class GpuSuite {
         }
     }
 
+    /**
+     * The row's settings. Every row draws a point light with point-sampled pixels, the physics every variant shares,
+     * so that each is timed and compared on the same picture; the filtering methods under a light of finite size are
+     * measured by {@code bench --filtering}.
+     */
     private static BrdfSettings settingsOf(String[] name, BrdfSettings scene) {
         return name[0].equals("thesis") ? BrdfSettings.thesis(Variant.FLSS)
-                : scene.with(b -> b.variant(Variant.parse(name[1])));
+                : scene.with(b -> b.variant(Variant.parse(name[1])).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
     }
 
     /** Runs every row and writes the files; returns the rows. */

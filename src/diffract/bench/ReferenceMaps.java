@@ -4,6 +4,7 @@ import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
+import diffract.optics.IlluminationSettings;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
@@ -16,7 +17,7 @@ import java.util.Locale;
 /**
  * The CPU reference maps (exact model at 1 nm, {@link Variant#REFERENCE}) the bench measures against, cached as
  * PFM files of XYZ under a folder, named by patch content hash, light, size and the settings that change the
- * reference (wavelength range, coherence, refractive index), so reruns compute none of them again.
+ * reference (wavelength range, coherence, refractive index, light size, pixel filter, Fresnel model), so reruns compute none of them again.
  */
 public final class ReferenceMaps {
     private final Path dir;
@@ -30,11 +31,12 @@ public final class ReferenceMaps {
     /** XYZ of the reference map (3 floats per pixel, rows from the top), from the cache or computed and cached. */
     public float[] xyz(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
         BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
-        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-c%s-n%s.pfm",
+        IlluminationSettings light = reference.illumination();
+        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-c%s-n%s-d%s-%s-%s.pfm",
                 patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
                 sizePx, Csv.number(reference.spectral().lambdaMinNm()), Csv.number(reference.spectral().lambdaMaxNm()),
-                Csv.number(reference.illumination().sigmaSpatialUm()),
-                Csv.number(reference.illumination().refractiveIndex())));
+                Csv.number(light.sigmaSpatialUm()), Csv.number(light.refractiveIndex()),
+                Csv.number(light.light().angularDiameterDeg()), light.pixelFilter().label(), light.fresnel().label()));
         if (Files.isRegularFile(file)) {
             try {
                 int[] whc = new int[3];

@@ -142,18 +142,11 @@ public final class DiffractionMaterials {
      * threshold is refused.
      */
     private static void lobes(Material m, DiffractionTextures textures, BrdfSettings settings) {
-        CoherenceWindow window = settings.coherenceWindow();
         LobeQuadrature q = settings.lobes();
-        int kx = LobeQuadrature.pairRadius(window.sigmaTexels(textures.extentXUm()), q.pairThreshold());
-        int ky = LobeQuadrature.pairRadius(window.sigmaTexels(textures.extentYUm()), q.pairThreshold());
-        if (kx > 0 || ky > 0) {
-            throw new InvalidSettingException(Quantity.COHERENCE_LENGTH, String.format(Locale.ROOT, "the lobes shader "
-                    + "sums whole texels, but this %.1f x %.1f um patch at a %.0f um coherence length has sigma_f = "
-                    + "%.2f texels: texel pairs weigh more than the pair threshold %.0e; render it with the lobes "
-                    + "variant on the CPU, with flss or the reference, with a longer coherence length or a smaller "
-                    + "patch", textures.extentXUm(), textures.extentYUm(), settings.illumination().coherenceLengthUm(),
-                    window.sigmaTexels(Math.max(textures.extentXUm(), textures.extentYUm())), q.pairThreshold()));
-        }
+        LobeQuadrature.wholeTexelsRefusal(settings, textures.extentXUm(), textures.extentYUm()).ifPresent(why -> {
+            throw new InvalidSettingException(Quantity.COHERENCE_LENGTH, why + "; render it with the lobes variant on "
+                    + "the CPU, with flss or the reference, with a longer coherence length or a smaller patch");
+        });
         LightSource light = settings.illumination().light();
         LobeWeightTable table = textures.lobeWeightTable(settings, q);
         m.setTexture("lobeWeights", textures.lobeWeights(settings, q))

@@ -4,6 +4,9 @@ import diffract.geometry.PigmentationTexture;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.LobeQuadrature;
+import diffract.optics.PixelFilter;
+import diffract.optics.Variant;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.Quantity;
 import diffract.optics.TaylorBound;
@@ -52,6 +55,15 @@ final class MaterialManager {
                         + TaylorSettings.MAX_HIGHEST_ORDER + ": use a larger tolerance");
             }
             s = s.with(b -> b.highestOrder(n));
+        }
+        HeightField field = patch.meanSubtracted();
+        var refusal = s.variant() == Variant.LOBES ? LobeQuadrature.wholeTexelsRefusal(s,
+                field.cols() * field.pixelSizeXUm(), field.rows() * field.pixelSizeYUm()) : java.util.Optional.<String>empty();
+        if (refusal.isPresent()) {
+            // a scene that asks for the lobes method on a patch the shader cannot sum still renders: FLSS, which
+            // point-samples the light, under a point light (said once)
+            reporter.warn(refusal.get() + ": drawing it with flss under a point light instead");
+            s = s.with(b -> b.variant(Variant.FLSS).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
         }
         settings = s;
         pipeline = DiffractionPipeline.cached(patch, settings.spectral().lambdaMinNm());
