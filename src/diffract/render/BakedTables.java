@@ -6,14 +6,18 @@ import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.Reporter;
 
+import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
 
 /**
  * Baked tables cached in memory per (patch terms, settings), so a viewer or a benchmark that draws the same patch
  * again never bakes twice. Terms are compared by identity (they are immutable); settings by value, with the
  * variant ignored (the table is FLSS's whatever variant asks). The least recently used table is dropped beyond
- * {@link #MAX_TABLES}: a table can take hundreds of MB. Thread-safe.
+ * {@link #MAX_TABLES}: a table can take hundreds of MB. Thread-safe; a request for a table being baked waits for
+ * that bake.
  */
 public final class BakedTables {
     /** Tables kept at once. */
@@ -37,22 +41,65 @@ public final class BakedTables {
             return size() > MAX_TABLES;
         }
     };
+    /** Bakes under way: a second caller waits for the first one's table instead of baking it again. */
+    private static final Map<Key, CompletableFuture<BakedTable>> BAKING = new HashMap<>();
     private static int bakes;
 
     private BakedTables() {
     }
 
-    /** The table of these terms and settings, baked on the first request. */
-    public static synchronized BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
-        // the table is FLSS's on float32 terms whatever variant and term format ask
-        Key key = new Key(terms, settings.with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)));
-        BakedTable table = CACHE.get(key);
-        if (table == null) {
-            table = bakeOffThisThread(terms, settings, reporter);
-            CACHE.put(key, table);
-            bakes++;
+    /**
+     * The table of these terms and settings, baked on the first request. The bake runs outside the cache's lock,
+     * so {@link #isBaked} answers at once while a table bakes.
+     */
+    public static BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        Key key = key(terms, settings);
+        CompletableFuture<BakedTable> mine = null;
+        CompletableFuture<BakedTable> pending;
+        synchronized (BakedTables.class) {
+            BakedTable table = CACHE.get(key);
+            if (table != null) {
+                return table;
+            }
+            pending = BAKING.get(key);
+            if (pending == null) {
+                mine = new CompletableFuture<>();
+                BAKING.put(key, mine);
+                pending = mine;
+            }
         }
-        return table;
+        if (mine != null) {
+            try {
+                BakedTable table = bakeOffThisThread(terms, settings, reporter);
+                synchronized (BakedTables.class) {
+                    CACHE.put(key, table);
+                    bakes++;
+                    BAKING.remove(key);
+                }
+                mine.complete(table);
+            } catch (RuntimeException | Error e) {
+                synchronized (BakedTables.class) {
+                    BAKING.remove(key);
+                }
+                mine.completeExceptionally(e);
+                throw e;
+            }
+        }
+        try {
+            return pending.join();
+        } catch (CompletionException e) {
+            throw e.getCause() instanceof RuntimeException r ? r : e;
+        }
+    }
+
+    /** Whether the table of these terms and settings is baked and cached (answers at once, even during a bake). */
+    public static synchronized boolean isBaked(TaylorTerms terms, BrdfSettings settings) {
+        return CACHE.containsKey(key(terms, settings));
+    }
+
+    /** The table is FLSS's on float32 terms whatever variant and term format ask. */
+    private static Key key(TaylorTerms terms, BrdfSettings settings) {
+        return new Key(terms, settings.with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)));
     }
 
     /**
@@ -70,7 +117,7 @@ public final class BakedTables {
                 command -> new Thread(command, "bake").start());
         try {
             return bake.join();
-        } catch (java.util.concurrent.CompletionException e) {
+        } catch (CompletionException e) {
             throw e.getCause() instanceof RuntimeException r ? r : e;
         }
     }
