@@ -62,8 +62,8 @@ class ViewerModelTest {
             assertTrue(precomputer.isBusy(), "more terms than at hand start a precompute");
             assertEquals(8, model.state().drawableSettings().taylor().highestOrder(), "draws with the terms at hand meanwhile");
             precomputeMayFinish.countDown();
-            assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == 10, 30));
-            assertTrue(ViewerTestSupport.waitFor(() -> model.state().precompute() == null && !precomputer.isBusy(), 5));
+            assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == 10, 300));
+            assertTrue(ViewerTestSupport.waitFor(() -> model.state().precompute() == null && !precomputer.isBusy(), 300));
             assertEquals(10, model.state().drawableSettings().taylor().highestOrder());
             press(controller, com.jogamp.newt.event.KeyEvent.VK_UP, '\0');
             assertEquals(25, model.state().view().light().thetaDeg(), 1e-12);
