@@ -38,10 +38,10 @@ final class ViewCommand implements Callable<Integer> {
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
     Path screenshotDir;
 
-    @Option(names = "--screenshot-after-frames", hidden = true, paramLabel = "N",
-            description = "Save one screenshot of the window (as the S key does) once N frames are drawn, then quit "
-                    + "(docs/viewer-screenshot.sh).")
-    Integer screenshotAfterFrames;
+    @Option(names = "--screenshot-when-refined", hidden = true,
+            description = "Save one screenshot of the window (as the S key does) once its picture is refined, then "
+                    + "quit (docs/viewer-screenshot.sh).")
+    boolean screenshotWhenRefined;
 
     @Override
     public Integer call() throws Exception {
@@ -55,11 +55,11 @@ final class ViewCommand implements Callable<Integer> {
         SceneSetup setup = options.setup(window, reporter);
         ViewerModel model = ViewerModel.load(setup, reporter);
         System.out.print(KeyBindings.helpText());
-        model.bakeIfNeeded(reporter);
+        // the window opens at once: it shows a preview while it refines, and bakes a baked table in the background
         try (ViewerWindow viewer = new ViewerWindow(model, window.width(), window.height(), screenshotDir)) {
             viewer.start();
-            if (screenshotAfterFrames != null) {
-                while (viewer.renderer().stats().frameCount() < screenshotAfterFrames) {
+            if (screenshotWhenRefined) {
+                while (!viewer.refinement().isRefined(model.state()) && !viewer.isCloseRequested()) {
                     Thread.sleep(50);
                 }
                 viewer.controller().screenshot().get();

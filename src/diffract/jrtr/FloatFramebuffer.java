@@ -8,15 +8,16 @@ import java.nio.FloatBuffer;
 
 /**
  * A framebuffer object with an RGBA32F colour renderbuffer and a 24-bit depth renderbuffer, so renders keep
- * full float precision (no clamping to [0, 1], no 8-bit rounding) and can be read back as floats.
+ * full float precision (no clamping to [0, 1], no 8-bit rounding) and can be read back as floats, or copied
+ * (scaled) into another framebuffer, e.g. a window's. Lives in the GL context it was made in.
  */
-final class FloatFramebuffer {
+public final class FloatFramebuffer {
     private final int width;
     private final int height;
     private final int framebuffer;
     private final int[] renderbuffers;
 
-    FloatFramebuffer(GL3 gl, int width, int height) {
+    public FloatFramebuffer(GL3 gl, int width, int height) {
         int[] maxSize = new int[1];
         gl.glGetIntegerv(GL.GL_MAX_RENDERBUFFER_SIZE, maxSize, 0);
         if (width <= 0 || height <= 0 || width > maxSize[0] || height > maxSize[0]) {
@@ -49,16 +50,16 @@ final class FloatFramebuffer {
         GLErrors.check(gl, "creating a " + width + "x" + height + " float framebuffer");
     }
 
-    int width() {
+    public int width() {
         return width;
     }
 
-    int height() {
+    public int height() {
         return height;
     }
 
     /** Makes this the draw and read framebuffer, drawing into colour attachment 0. */
-    void bind(GL3 gl) {
+    public void bind(GL3 gl) {
         gl.glBindFramebuffer(GL.GL_FRAMEBUFFER, framebuffer);
         gl.glDrawBuffers(1, new int[] {GL.GL_COLOR_ATTACHMENT0}, 0);
         gl.glReadBuffer(GL.GL_COLOR_ATTACHMENT0);
@@ -81,7 +82,25 @@ final class FloatFramebuffer {
         return topDown;
     }
 
-    void delete(GL3 gl) {
+    /**
+     * Copies {@code from} (pixels of this framebuffer) onto {@code to} of the framebuffer {@code target} (0 or a
+     * drawable's default framebuffer for a window), scaled with linear filtering; leaves {@code target} bound.
+     * The scissor test must be off (it clips blits too).
+     */
+    public void blitTo(GL3 gl, PixelRect from, int target, PixelRect to) {
+        if (from.isEmpty() || to.isEmpty()) {
+            return;
+        }
+        gl.glBindFramebuffer(GL.GL_READ_FRAMEBUFFER, framebuffer);
+        gl.glReadBuffer(GL.GL_COLOR_ATTACHMENT0);
+        gl.glBindFramebuffer(GL.GL_DRAW_FRAMEBUFFER, target);
+        gl.glBlitFramebuffer(from.x(), from.y(), from.x() + from.width(), from.y() + from.height(),
+                to.x(), to.y(), to.x() + to.width(), to.y() + to.height(), GL.GL_COLOR_BUFFER_BIT, GL.GL_LINEAR);
+        gl.glBindFramebuffer(GL.GL_FRAMEBUFFER, target);
+        GLErrors.check(gl, "copying a " + width + "x" + height + " float framebuffer");
+    }
+
+    public void delete(GL3 gl) {
         gl.glBindFramebuffer(GL.GL_FRAMEBUFFER, 0);
         gl.glDeleteFramebuffers(1, new int[] {framebuffer}, 0);
         gl.glDeleteRenderbuffers(2, renderbuffers, 0);

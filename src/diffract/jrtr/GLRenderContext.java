@@ -78,6 +78,16 @@ public final class GLRenderContext implements RenderContext {
     }
 
     @Override
+    public void setScissor(PixelRect rect) {
+        if (rect == null) {
+            gl.glDisable(GL.GL_SCISSOR_TEST);
+        } else {
+            gl.glEnable(GL.GL_SCISSOR_TEST);
+            gl.glScissor(rect.x(), rect.y(), rect.width(), rect.height());
+        }
+    }
+
+    @Override
     public void clear(float red, float green, float blue, float alpha) {
         gl.glClearColor(red, green, blue, alpha);
         gl.glClearDepth(1.0);

@@ -4,18 +4,18 @@ import com.jogamp.newt.opengl.GLWindow;
 import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
 import com.jogamp.opengl.GLEventListener;
-import com.jogamp.opengl.util.Animator;
 
 import java.nio.FloatBuffer;
 
 /**
  * A NEWT window showing a {@link GLEventListener} (usually a {@link Renderer}, the same one
  * {@link OffscreenTarget} drives). Input listeners attach to {@link #glWindow()} ({@code addKeyListener},
- * {@code addMouseListener}); {@link #setTitle} changes the caption, e.g. to show frame times.
+ * {@code addMouseListener}); {@link #setTitle} changes the caption, e.g. to show frame times. The caller drives
+ * drawing: {@link #display} draws one frame on the calling thread (a render loop of the caller's, which decides
+ * between frames what to do).
  */
 public final class OnscreenWindow implements AutoCloseable {
     private final GLWindow window;
-    private Animator animator;
 
     /** Creates and shows the window; throws {@link diffract.util.UserInputException} when there is no display. */
     public OnscreenWindow(String title, int width, int height, GLEventListener listener) {
@@ -35,29 +35,15 @@ public final class OnscreenWindow implements AutoCloseable {
         window.setTitle(title);
     }
 
-    /** Redraws continuously (as fast as vsync allows) until {@link #stopAnimation} or {@link #close}. */
-    public void startAnimation() {
-        if (animator == null) {
-            animator = new Animator(window);
-            animator.start();
-        }
-    }
-
-    public void stopAnimation() {
-        if (animator != null) {
-            animator.stop();
-            animator = null;
-        }
-    }
-
-    /** Draws one frame now (blocking). */
+    /** Draws one frame now, on this thread (the listener's display, then the buffer swap). */
     public void display() {
         window.display();
     }
 
     /**
-     * Draws one frame and reads what it drew: RGBA floats, rows top-down, {@code surfaceWidth() x
-     * surfaceHeight()} pixels (window pixels are 8-bit, so values are multiples of 1/255).
+     * Draws one frame on this thread and reads what it drew: RGBA floats, rows top-down, {@code surfaceWidth() x
+     * surfaceHeight()} pixels (window pixels are 8-bit, so values are multiples of 1/255). Not while another
+     * thread's render loop draws the window: that loop reads its own frames.
      */
     public float[] renderRgba() {
         int width = window.getSurfaceWidth();
@@ -92,10 +78,9 @@ public final class OnscreenWindow implements AutoCloseable {
         return window.getSurfaceHeight();
     }
 
-    /** Stops animation and destroys the window; the listener's dispose frees its GPU objects. */
+    /** Destroys the window; the listener's dispose frees its GPU objects. */
     @Override
     public void close() {
-        stopAnimation();
         window.destroy();
     }
 }

@@ -26,6 +26,12 @@ public interface RenderContext {
     /** The pixel rectangle to draw into. */
     void setViewport(int x, int y, int width, int height);
 
+    /**
+     * Restricts drawing and clearing to {@code rect} of the viewport's framebuffer (a tile of a frame drawn in
+     * parts), or lifts the restriction with null.
+     */
+    void setScissor(PixelRect rect);
+
     /** Clears colour (to the given RGBA) and depth. */
     void clear(float red, float green, float blue, float alpha);
 

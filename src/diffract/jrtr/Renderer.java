@@ -91,6 +91,26 @@ public class Renderer implements GLEventListener {
         context.draw(root, camera, frustum);
     }
 
+    /**
+     * Clears and draws only {@code tile} of a {@code width} x {@code height} viewport of the bound framebuffer: one
+     * part of a frame drawn in parts, so no single draw call runs long (a software rasteriser takes seconds for a
+     * full frame of an expensive shader). The frustum keeps its aspect: a viewport of another size than the
+     * window's (a frame at a fraction of its resolution) shows the same picture.
+     */
+    public void displayTile(int width, int height, PixelRect tile) {
+        if (context == null) {
+            throw new IllegalStateException("Renderer.displayTile before init");
+        }
+        context.setViewport(0, 0, width, height);
+        context.setScissor(tile);
+        try {
+            context.clear(clearColor[0], clearColor[1], clearColor[2], clearColor[3]);
+            context.draw(root, camera, frustum);
+        } finally {
+            context.setScissor(null);
+        }
+    }
+
     @Override
     public void dispose(GLAutoDrawable drawable) {
         if (context != null) {

@@ -15,15 +15,21 @@ import java.util.function.Consumer;
 public final class KeyBindings {
     /**
      * A key that triggers an action: a NEWT key code (arrows, page keys, F1, Esc, the keypad's + and -), or a
-     * character (compared in lower case).
+     * character (compared in lower case). The controller queues actions for the render loop, which applies them
+     * between the tiles it draws; an {@code immediate} one runs on the input thread at once (quitting must not
+     * wait for a tile).
      */
-    public record Trigger(short keyCode, char character, Consumer<ViewerController> action) {
+    public record Trigger(short keyCode, char character, Consumer<ViewerController> action, boolean immediate) {
         static Trigger code(short keyCode, Consumer<ViewerController> action) {
-            return new Trigger(keyCode, '\0', action);
+            return new Trigger(keyCode, '\0', action, false);
         }
 
         static Trigger character(char c, Consumer<ViewerController> action) {
-            return new Trigger((short) 0, c, action);
+            return new Trigger((short) 0, c, action, false);
+        }
+
+        Trigger immediately() {
+            return new Trigger(keyCode, character, action, true);
         }
 
         boolean matches(short code, char c) {
@@ -84,19 +90,25 @@ public final class KeyBindings {
                     Trigger.character('h', ViewerController::showHelp),
                     Trigger.code(KeyEvent.VK_F1, ViewerController::showHelp))),
             new Binding("Esc / Q", "quit", "Q quit", List.of(
-                    Trigger.code(KeyEvent.VK_ESCAPE, ViewerController::quit),
-                    Trigger.character('q', ViewerController::quit))));
+                    Trigger.code(KeyEvent.VK_ESCAPE, ViewerController::quit).immediately(),
+                    Trigger.character('q', ViewerController::quit).immediately())));
 
     private KeyBindings() {
     }
 
     /** The action of a key press, key codes first (the keypad's + has a character too); null when none. */
     static Consumer<ViewerController> actionFor(short keyCode, char keyChar) {
+        Trigger t = triggerFor(keyCode, keyChar);
+        return t == null ? null : t.action();
+    }
+
+    /** The trigger a key press matches, key codes first; null when none. */
+    static Trigger triggerFor(short keyCode, char keyChar) {
         for (boolean byCode : new boolean[] {true, false}) {
             for (Binding binding : ALL) {
                 for (Trigger t : binding.triggers()) {
                     if ((t.keyCode() != 0) == byCode && t.matches(keyCode, keyChar)) {
-                        return t.action();
+                        return t;
                     }
                 }
             }

@@ -11,16 +11,22 @@ import diffract.scene.DisplayMode;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 
 /**
- * Maps input to the model. Every handler only replaces the model's snapshot or hands work to a background thread
- * (a precompute of more Taylor terms, writing a screenshot), so the input thread and the render thread never wait
- * for it. The NEWT listeners ({@link #keyListener()}, {@link #mouseListener()}) translate events into the public
- * actions, which tests may also call directly.
+ * Maps input to the model. The NEWT listeners ({@link #keyListener()}, {@link #mouseListener()}) translate events
+ * into the public actions and queue them; the render loop applies the queue, in order, between the tiles it draws
+ * ({@link #applyQueuedInput}), so no input is lost however long a frame takes, and a frame never sees half of a
+ * burst of input. Quitting runs at once on the input thread. Every action only replaces the model's snapshot or
+ * hands work to a background thread (a precompute of more Taylor terms, writing a screenshot), so it never waits.
+ * Tests may call the actions directly.
  */
 public final class ViewerController implements AutoCloseable {
     /** The lambda steps [ and ] walk through, in nm. */
@@ -40,6 +46,7 @@ public final class ViewerController implements AutoCloseable {
     private final TermPrecomputer precomputer;
     private final Screenshotter screenshotter;
     private final Runnable quit;
+    private final BlockingQueue<Consumer<ViewerController>> queued = new LinkedBlockingQueue<>();
     private final ExecutorService screenshotWriter = Executors.newSingleThreadExecutor(runnable -> {
         Thread thread = new Thread(runnable, "diffract-viewer-screenshot");
         thread.setDaemon(true);
@@ -160,6 +167,32 @@ public final class ViewerController implements AutoCloseable {
         quit.run();
     }
 
+    // ---- the input queue
+
+    /** Queues an action for the render loop ({@link #applyQueuedInput}). */
+    public void queue(Consumer<ViewerController> action) {
+        queued.add(action);
+    }
+
+    /**
+     * Applies the queued actions, in order, on the calling thread (the render loop's); first waits up to
+     * {@code waitMs} for one if none is queued. Returns how many were applied.
+     */
+    public int applyQueuedInput(long waitMs) throws InterruptedException {
+        Consumer<ViewerController> action = waitMs > 0 ? queued.poll(waitMs, TimeUnit.MILLISECONDS) : queued.poll();
+        int applied = 0;
+        for (; action != null; action = queued.poll()) {
+            action.accept(this);
+            applied++;
+        }
+        return applied;
+    }
+
+    /** Actions queued and not yet applied. */
+    public int queuedInput() {
+        return queued.size();
+    }
+
     // ---- NEWT input
 
     /** Keys as in {@link KeyBindings}. */
@@ -172,17 +205,24 @@ public final class ViewerController implements AutoCloseable {
         };
     }
 
-    /** Dispatches one key press through {@link KeyBindings#ALL}; returns whether it was a control. */
+    /**
+     * Dispatches one key press through {@link KeyBindings#ALL}: queues its action, or runs it now if it is
+     * immediate; returns whether it was a control.
+     */
     boolean handleKey(short keyCode, char keyChar) {
-        var action = KeyBindings.actionFor(keyCode, keyChar);
-        if (action == null) {
+        KeyBindings.Trigger trigger = KeyBindings.triggerFor(keyCode, keyChar);
+        if (trigger == null) {
             return false;
         }
-        action.accept(this);
+        if (trigger.immediate()) {
+            trigger.action().accept(this);
+        } else {
+            queue(trigger.action());
+        }
         return true;
     }
 
-    /** Left drag orbits, right drag moves the light, the wheel zooms. */
+    /** Left drag orbits, right drag moves the light, the wheel zooms (queued, as keys are). */
     public MouseAdapter mouseListener() {
         return new MouseAdapter() {
             private int lastX;
@@ -203,16 +243,17 @@ public final class ViewerController implements AutoCloseable {
                 lastX = e.getX();
                 lastY = e.getY();
                 if (button == MouseEvent.BUTTON3) {
-                    moveLightByPixels(dx, dy);
+                    queue(c -> c.moveLightByPixels(dx, dy));
                 } else {
-                    orbitByPixels(dx, dy);
+                    queue(c -> c.orbitByPixels(dx, dy));
                 }
             }
 
             @Override
             public void mouseWheelMoved(MouseEvent e) {
                 float[] rotation = e.getRotation();
-                zoomBySteps(rotation[1] != 0 ? rotation[1] : rotation[0]); // shift turns NEWT's wheel sideways
+                float steps = rotation[1] != 0 ? rotation[1] : rotation[0]; // shift turns NEWT's wheel sideways
+                queue(c -> c.zoomBySteps(steps));
             }
         };
     }

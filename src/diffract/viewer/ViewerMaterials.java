@@ -13,19 +13,25 @@ import diffract.render.StageResources;
 import diffract.scene.DisplayMode;
 import diffract.util.Reporter;
 
-import java.awt.image.BufferedImage;
-import java.util.EnumMap;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Objects;
 
 /**
- * The viewer's diffraction materials, rebuilt only when what they are compiled or uploaded from changes: the
- * term textures when the terms, N, the expansion, the term format or the wavelength grid change; a material when
- * its textures, its program's defines (variant, N, window radius, pigmentation) or its uniforms from the settings
- * change. Per-frame values (light, exposure, map placement) are plain uniform updates. Replaced programs and
- * textures are freed at once. Used on the render thread only.
+ * The viewer's diffraction materials, built only when what they are compiled or uploaded from changes: the term
+ * textures when the terms, N, the expansion, the term format or the wavelength grid change; a material when its
+ * textures, its program's defines (variant, N, window radius, pigmentation) or its uniforms from the settings
+ * change. Per-frame values (light, exposure, map placement) are plain uniform updates. A few of each are kept, the
+ * least recently used freed beyond that: the window alternates between a preview's settings and the configured
+ * ones ({@link PreviewPolicy}), and neither is rebuilt when it comes back. Used on the render thread only.
  */
 final class ViewerMaterials {
+    /** Sets of term textures kept: the preview's and the configured settings'. */
+    static final int KEPT_TEXTURES = 2;
+    /** Materials kept: the preview's and the configured settings', each for a surface and a BRDF map. */
+    static final int KEPT_MATERIALS = 4;
+
     /** What the term and wavelength textures are made of; terms compared by identity (they are immutable). */
     private record TexturesKey(TaylorTerms terms, BrdfSettings textureSettings) {
         /**
@@ -48,10 +54,7 @@ final class ViewerMaterials {
         }
     }
 
-    private record MaterialKey(BrdfSettings settings, boolean pigmentation) {
-    }
-
-    private record Built(MaterialKey key, Material material) {
+    private record MaterialKey(TexturesKey textures, DisplayMode mode, BrdfSettings settings, boolean pigmentation) {
     }
 
     private final Texture2D pigmentationTexture;
@@ -59,14 +62,13 @@ final class ViewerMaterials {
     private final DiffractionPipeline pipeline;
     /** The stage's GPU side when the setup stages the surface (scales, environment, ground), else null. */
     private StageResources stage;
-    private TexturesKey texturesKey;
-    private DiffractionTextures textures;
-    private final Map<DisplayMode, Built> materials = new EnumMap<>(DisplayMode.class);
+    private final LinkedHashMap<TexturesKey, DiffractionTextures> textures = new LinkedHashMap<>(4, 0.75f, true);
+    private final LinkedHashMap<MaterialKey, Material> materials = new LinkedHashMap<>(8, 0.75f, true);
     private int rebuildCount;
 
     /** @param pipeline the patch's pipeline: it chooses the expansion and keeps the phase-centred terms */
-    ViewerMaterials(BufferedImage pigmentation, double diffuseWeight, DiffractionPipeline pipeline) {
-        this.pigmentationTexture = pigmentation == null ? null : new Texture2D(pigmentation);
+    ViewerMaterials(Texture2D pigmentation, double diffuseWeight, DiffractionPipeline pipeline) {
+        this.pigmentationTexture = pigmentation;
         this.diffuseWeight = (float) diffuseWeight;
         this.pipeline = pipeline;
     }
@@ -76,28 +78,28 @@ final class ViewerMaterials {
         this.stage = stageResources;
     }
 
-    /** The material for this state's display mode and drawable settings, built if anything it depends on changed. */
-    Material materialFor(ViewerState state, GLRenderContext context) {
-        BrdfSettings settings = state.drawableSettings();
-        TexturesKey wantedTextures = TexturesKey.of(state.terms(), settings);
-        if (!wantedTextures.equals(texturesKey)) {
-            releaseAll(context);
+    /** The material for this state's display mode drawn with {@code settings}, built if not at hand. */
+    Material materialFor(ViewerState state, BrdfSettings settings, GLRenderContext context) {
+        TexturesKey texturesKey = TexturesKey.of(state.terms(), settings);
+        DiffractionTextures t = textures.get(texturesKey);
+        if (t == null) {
             // the expansion is decided per N (its estimate depends on N); the pipeline keeps the centred terms
-            textures = pipeline.textures(settings, state.terms(), Reporter.STDERR);
-            texturesKey = wantedTextures;
+            t = pipeline.textures(settings, state.terms(), Reporter.STDERR);
+            textures.put(texturesKey, t);
+            dropOldTextures(context);
         }
-        boolean pigmentation = state.view().pigmentationOn() && pigmentationTexture != null;
-        MaterialKey key = new MaterialKey(settings, state.view().mode() == DisplayMode.SURFACE && pigmentation);
-        Built built = materials.get(state.view().mode());
-        if (built == null || !built.key().equals(key)) {
-            if (built != null) {
-                context.release(built.material().program());
-            }
-            built = new Built(key, build(state.view().mode(), settings, key.pigmentation(), state.view().exposure()));
-            materials.put(state.view().mode(), built);
+        DisplayMode mode = state.view().mode();
+        boolean pigmentation = mode == DisplayMode.SURFACE && state.view().pigmentationOn()
+                && pigmentationTexture != null;
+        MaterialKey key = new MaterialKey(texturesKey, mode, settings, pigmentation);
+        Material material = materials.get(key);
+        if (material == null) {
+            material = build(t, mode, settings, pigmentation, state.view().exposure());
+            materials.put(key, material);
             rebuildCount++;
+            dropOldMaterials(context);
         }
-        return built.material();
+        return material;
     }
 
     /** How many materials were built so far (tests: no rebuild per frame). */
@@ -105,44 +107,62 @@ final class ViewerMaterials {
         return rebuildCount;
     }
 
-    private Material build(DisplayMode mode, BrdfSettings settings, boolean pigmentation, double exposure) {
+    private Material build(DiffractionTextures t, DisplayMode mode, BrdfSettings settings, boolean pigmentation,
+                           double exposure) {
         if (mode == DisplayMode.BRDF_MAP) {
-            return DiffractionMaterials.brdfMapForDisplay(textures, settings, (float) exposure);
+            return DiffractionMaterials.brdfMapForDisplay(t, settings, (float) exposure);
         }
         if (stage != null) {
-            return stage.surface(textures, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
+            return stage.surface(t, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
                     diffuseWeight);
         }
-        return DiffractionMaterials.surface(textures, settings, (float) exposure,
-                pigmentation ? pigmentationTexture : null, diffuseWeight);
+        return DiffractionMaterials.surface(t, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
+                diffuseWeight);
     }
 
-    /** Frees the textures and all programs made from them (not the pigmentation image, which never changes). */
-    private void releaseAll(GLRenderContext context) {
-        for (Built built : materials.values()) {
-            context.release(built.material().program());
+    private void dropOldMaterials(GLRenderContext context) {
+        Iterator<Map.Entry<MaterialKey, Material>> eldest = materials.entrySet().iterator();
+        while (materials.size() > KEPT_MATERIALS) {
+            context.release(eldest.next().getValue().program());
+            eldest.remove();
+        }
+    }
+
+    /** Frees the least recently used textures beyond {@link #KEPT_TEXTURES}, and the materials made from them. */
+    private void dropOldTextures(GLRenderContext context) {
+        Iterator<Map.Entry<TexturesKey, DiffractionTextures>> eldest = textures.entrySet().iterator();
+        while (textures.size() > KEPT_TEXTURES) {
+            Map.Entry<TexturesKey, DiffractionTextures> dropped = eldest.next();
+            eldest.remove();
+            materials.entrySet().removeIf(m -> {
+                boolean usesThem = m.getKey().textures().equals(dropped.getKey());
+                if (usesThem) {
+                    context.release(m.getValue().program());
+                }
+                return usesThem;
+            });
+            release(context, dropped.getValue());
+        }
+    }
+
+    private static void release(GLRenderContext context, DiffractionTextures t) {
+        context.release(t.terms());
+        context.release(t.uniformNodeTable());
+        context.release(t.spectralTable());
+        if (t.bakedTexture() != null) {
+            context.release(t.bakedTexture());
+        }
+    }
+
+    /** Frees all programs and textures (not the pigmentation image or the stage, which the renderer owns). */
+    void releaseAll(GLRenderContext context) {
+        for (Material m : materials.values()) {
+            context.release(m.program());
         }
         materials.clear();
-        if (textures != null) {
-            context.release(textures.terms());
-            context.release(textures.uniformNodeTable());
-            context.release(textures.spectralTable());
-            if (textures.bakedTexture() != null) {
-                context.release(textures.bakedTexture());
-            }
-            textures = null;
-            texturesKey = null;
+        for (DiffractionTextures t : textures.values()) {
+            release(context, t);
         }
-    }
-
-    /** Frees everything, the pigmentation texture included (the context is about to go). */
-    void releaseAll(GLRenderContext context, boolean includingPigmentation) {
-        releaseAll(context);
-        if (includingPigmentation && pigmentationTexture != null) {
-            context.release(pigmentationTexture);
-        }
-        if (includingPigmentation && stage != null) {
-            stage.release(context);
-        }
+        textures.clear();
     }
 }

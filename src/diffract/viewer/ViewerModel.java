@@ -45,7 +45,7 @@ public final class ViewerModel {
 
     private ViewerState initialState(TaylorTerms terms) {
         return new ViewerState(setup.settings(), new ViewerState.View(setup.camera(), setup.light(), setup.exposure(),
-                setup.mode(), setup.pigmentationOn()), terms, null, null);
+                setup.mode(), setup.pigmentationOn()), terms, null, null, null);
     }
 
     public SceneSetup setup() {
@@ -74,9 +74,8 @@ public final class ViewerModel {
 
     /**
      * Bakes the BAKED table of the current state now, on the calling thread, if the state draws the baked variant:
-     * the table is then in {@link diffract.render.BakedTables}' cache when the render thread asks for it, and its
-     * progress shows before the first frame (a table the render thread asks for later, after a settings change, is
-     * baked on a thread of its own while the frame waits).
+     * the table is then in {@link diffract.render.BakedTables}' cache when an offscreen frame asks for it, and its
+     * progress shows on the console (the viewer's window bakes in the background instead, {@link TableBaker}).
      */
     public void bakeIfNeeded(Reporter reporter) {
         ViewerState s = state();
@@ -100,6 +99,6 @@ public final class ViewerModel {
      * way) are kept, since they cost time and stay valid for the same patch.
      */
     public ViewerState reset(Notice notice) {
-        return update(s -> initialState(s.terms()).withPrecompute(s.precompute()).withNotice(notice));
+        return update(s -> initialState(s.terms()).withPrecompute(s.precompute()).withBake(s.bake()).withNotice(notice));
     }
 }

@@ -12,6 +12,8 @@ import diffract.jrtr.Renderer;
 import diffract.jrtr.ShaderProgram;
 import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
+import diffract.jrtr.Texture2D;
+import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.render.DiffractionMaterials;
 import diffract.render.StageResources;
@@ -26,13 +28,16 @@ import java.util.Map;
  * Draws the model: each frame reads one {@link ViewerState} and shows either the shape with the diffraction surface
  * material seen from the orbit camera (the shader takes omega_r from each fragment to this frame's camera
  * position, so the shading follows the camera), or the BRDF map of the current light, centred in the viewport.
- * The same renderer draws into the viewer's window and, for {@code diffract render}, into an offscreen target.
+ * As a GLEventListener it draws whole frames of the model's state, for {@code diffract render} into an offscreen
+ * target; the viewer's window draws through {@link RefiningRenderer}, which prepares a frame of a state and
+ * settings of its choice ({@link #prepareFrame}) and draws it in tiles ({@link #displayTile}).
  */
 public final class ViewerRenderer extends Renderer {
     /** Grey, not black: a black background would hide where the surface reflects nothing. */
     public static final float[] CLEAR_COLOUR = {0.12f, 0.12f, 0.14f, 1f};
 
     private final ViewerModel model;
+    private final Texture2D pigmentationTexture;
     private final ViewerMaterials materials;
     private final FrameStats stats = new FrameStats();
     private final LightNode light = new LightNode("light", new Vector3f(0, 0, 1), new Vector3f(1, 1, 1));
@@ -47,16 +52,14 @@ public final class ViewerRenderer extends Renderer {
     private Material maskMaterial;
     private volatile boolean maskOnly;
     private volatile double lightTurnDeg;
-    private volatile boolean drawingStopped;
-    private volatile boolean inFrame;
     private int widthPx;
     private int heightPx;
 
     public ViewerRenderer(ViewerModel model) {
         super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, (float) model.setup().verticalFovDeg()));
         this.model = model;
-        this.materials = new ViewerMaterials(model.pigmentationImage().orElse(null), model.setup().diffuseWeight(),
-                model.pipeline());
+        this.pigmentationTexture = model.pigmentationImage().map(Texture2D::new).orElse(null);
+        this.materials = new ViewerMaterials(pigmentationTexture, model.setup().diffuseWeight(), model.pipeline());
         // the nodes get their materials on the render thread, at the first frame
         this.surface = new ShapeNode(model.shape(), null);
         this.surfaceScene = new Group("surface").add(light, surface);
@@ -106,48 +109,34 @@ public final class ViewerRenderer extends Renderer {
         super.reshape(drawable, x, y, width, height);
     }
 
-    /**
-     * Makes later frames return at once and waits (up to {@code timeoutMs}) for the frame under way: JOGL's animator
-     * gives a frame 1 s to finish when stopped, and a diffraction frame on llvmpipe may take longer.
-     */
-    public void stopDrawing(long timeoutMs) throws InterruptedException {
-        drawingStopped = true;
-        long end = System.nanoTime() + timeoutMs * 1_000_000L;
-        while (inFrame && System.nanoTime() < end) {
-            Thread.sleep(10);
-        }
-    }
-
+    /** One whole frame of the model's current state, as configured. */
     @Override
     public void display(GLAutoDrawable drawable) {
-        if (drawingStopped) {
-            return;
-        }
-        inFrame = true;
-        try {
-            drawFrame(drawable);
-        } finally {
-            inFrame = false;
-        }
-    }
-
-    private void drawFrame(GLAutoDrawable drawable) {
         long start = System.nanoTime();
         ViewerState state = model.state();
         if (maskOnly) {
             showMask(drawable);
             return;
         }
-        Material material = materials.materialFor(state, context());
-        material.setFloat("exposure", (float) state.view().exposure());
-        if (state.view().mode() == DisplayMode.BRDF_MAP) {
-            showBrdfMap(state, material);
-        } else {
-            showSurface(state, material);
-        }
+        prepareFrame(state, state.drawableSettings(), widthPx, heightPx);
         super.display(drawable);
         context().gl().glFinish(); // so the frame time includes the GPU's work, not just issuing it
         stats.record((System.nanoTime() - start) / 1e6);
+    }
+
+    /**
+     * Sets up a frame of {@code state} drawn with {@code settings} (the state's own, or a cheaper preview's) in a
+     * viewport of {@code widthPx} x {@code heightPx}: the material (built if not at hand), camera, light and the
+     * stage's shadow map. Its tiles are then drawn with {@link #displayTile}. On the render thread.
+     */
+    void prepareFrame(ViewerState state, BrdfSettings settings, int widthPx, int heightPx) {
+        Material material = materials.materialFor(state, settings, context());
+        material.setFloat("exposure", (float) state.view().exposure());
+        if (state.view().mode() == DisplayMode.BRDF_MAP) {
+            showBrdfMap(state, material, widthPx, heightPx);
+        } else {
+            showSurface(state, material);
+        }
     }
 
     private void showSurface(ViewerState state, Material material) {
@@ -190,7 +179,7 @@ public final class ViewerRenderer extends Renderer {
     }
 
     /** The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. */
-    private void showBrdfMap(ViewerState state, Material material) {
+    private void showBrdfMap(ViewerState state, Material material, int widthPx, int heightPx) {
         int size = Math.max(1, Math.min(widthPx, heightPx));
         DiffractionMaterials.setLight(material, state.view().light().direction(), state.drawableSettings())
                 .setFloat("mapSizePx", size)
@@ -202,7 +191,13 @@ public final class ViewerRenderer extends Renderer {
     @Override
     public void dispose(GLAutoDrawable drawable) {
         if (context() != null) {
-            materials.releaseAll(context(), true);
+            materials.releaseAll(context());
+            if (pigmentationTexture != null) {
+                context().release(pigmentationTexture);
+            }
+            if (stage != null) {
+                stage.release(context());
+            }
         }
         super.dispose(drawable);
     }

@@ -17,10 +17,11 @@ import java.util.Objects;
  * @param view        camera, light, exposure and what is shown
  * @param terms       the Taylor terms at hand (0..terms.highestOrder())
  * @param precompute  the background precompute under way, or null
+ * @param bake        the background bake of the baked table under way, or null
  * @param notice      a transient message for the title, or null
  */
 public record ViewerState(BrdfSettings settings, View view, TaylorTerms terms, PrecomputeProgress precompute,
-                          Notice notice) {
+                          BakeProgress bake, Notice notice) {
     /** How the user looks at the patch: the orbit camera, the light, the exposure, the mode, the pigmentation. */
     public record View(OrbitCamera camera, LightDirection light, double exposure, DisplayMode mode,
                        boolean pigmentationOn) {
@@ -61,13 +62,17 @@ public record ViewerState(BrdfSettings settings, View view, TaylorTerms terms, P
         return settings.taylor().highestOrder() > terms.highestOrder();
     }
 
-    public ViewerState withSettings(BrdfSettings s) { return new ViewerState(s, view, terms, precompute, notice); }
+    public ViewerState withSettings(BrdfSettings s) { return new ViewerState(s, view, terms, precompute, bake, notice); }
 
-    public ViewerState withView(View v) { return new ViewerState(settings, v, terms, precompute, notice); }
+    public ViewerState withView(View v) { return new ViewerState(settings, v, terms, precompute, bake, notice); }
 
-    public ViewerState withTerms(TaylorTerms t) { return new ViewerState(settings, view, t, precompute, notice); }
+    public ViewerState withTerms(TaylorTerms t) { return new ViewerState(settings, view, t, precompute, bake, notice); }
 
-    public ViewerState withPrecompute(PrecomputeProgress p) { return new ViewerState(settings, view, terms, p, notice); }
+    public ViewerState withPrecompute(PrecomputeProgress p) {
+        return new ViewerState(settings, view, terms, p, bake, notice);
+    }
 
-    public ViewerState withNotice(Notice n) { return new ViewerState(settings, view, terms, precompute, n); }
+    public ViewerState withBake(BakeProgress b) { return new ViewerState(settings, view, terms, precompute, b, notice); }
+
+    public ViewerState withNotice(Notice n) { return new ViewerState(settings, view, terms, precompute, bake, n); }
 }

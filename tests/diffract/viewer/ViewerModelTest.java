@@ -45,38 +45,71 @@ class ViewerModelTest {
         try (TermPrecomputer precomputer = new TermPrecomputer(model)) {
             boolean[] quit = {false};
             ViewerController controller = new ViewerController(model, precomputer, () -> null, () -> quit[0] = true);
-            controller.handleKey((short) 0, '2');
+            press(controller, (short) 0, '2');
             assertEquals(Variant.NMM, model.state().settings().variant());
-            controller.handleKey((short) 0, ']');
+            press(controller, (short) 0, ']');
             assertEquals(40, model.state().settings().spectral().lambdaStepNm());
-            controller.handleKey((short) 0, '[');
-            controller.handleKey((short) 0, '[');
+            press(controller, (short) 0, '[');
+            press(controller, (short) 0, '[');
             assertEquals(10, model.state().settings().spectral().lambdaStepNm());
-            controller.handleKey((short) 0, '-');
+            press(controller, (short) 0, '-');
             assertEquals(7, model.state().settings().taylor().highestOrder());
             assertTrue(!precomputer.isBusy(), "fewer terms need no precompute");
-            controller.handleKey((short) 0, '+');
-            controller.handleKey((short) 0, '+');
-            controller.handleKey((short) 0, '+');
+            press(controller, (short) 0, '+');
+            press(controller, (short) 0, '+');
+            press(controller, (short) 0, '+');
             assertEquals(10, model.state().settings().taylor().highestOrder());
             assertTrue(precomputer.isBusy(), "more terms than at hand start a precompute");
             assertEquals(8, model.state().drawableSettings().taylor().highestOrder(), "draws with the terms at hand meanwhile");
             precomputeMayFinish.countDown();
-            assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == 10, 30));
-            assertTrue(ViewerTestSupport.waitFor(() -> model.state().precompute() == null && !precomputer.isBusy(), 5));
+            assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == 10, 300));
+            assertTrue(ViewerTestSupport.waitFor(() -> model.state().precompute() == null && !precomputer.isBusy(), 300));
             assertEquals(10, model.state().drawableSettings().taylor().highestOrder());
-            controller.handleKey(com.jogamp.newt.event.KeyEvent.VK_UP, '\0');
+            press(controller, com.jogamp.newt.event.KeyEvent.VK_UP, '\0');
             assertEquals(25, model.state().view().light().thetaDeg(), 1e-12);
-            controller.handleKey((short) 0, 'p');
+            press(controller, (short) 0, 'p');
             assertTrue(model.state().notice().text().contains("no pigmentation image"));
-            controller.handleKey((short) 0, 'r');
+            press(controller, (short) 0, 'r');
             assertEquals(Variant.FLSS, model.state().settings().variant());
             assertEquals(8, model.state().settings().taylor().highestOrder());
             assertEquals(10, model.state().terms().highestOrder(), "reset keeps the precomputed terms");
             assertEquals(30, model.state().view().light().thetaDeg(), 1e-12);
             controller.handleKey((short) 0, 'q');
-            assertTrue(quit[0]);
+            assertTrue(quit[0], "Q quits at once, without waiting for the render loop");
+            assertEquals(0, controller.queuedInput());
             assertNull(model.state().precompute());
+        }
+    }
+
+    /** Applies a key press as the render loop would: queued by the input listener, then applied. */
+    private static void press(ViewerController controller, short keyCode, char keyChar) throws InterruptedException {
+        controller.handleKey(keyCode, keyChar);
+        controller.applyQueuedInput(0);
+    }
+
+    @Test
+    void keysPressedWhileTheLoopIsBusyWaitInTheQueueAndAllApplyInOrder() throws InterruptedException {
+        ViewerModel model = ViewerTestSupport.model(ViewerTestSupport.directTerms());
+        try (TermPrecomputer precomputer = new TermPrecomputer(model)) {
+            ViewerController controller = new ViewerController(model, precomputer, () -> null, () -> { });
+            double exposure = model.state().view().exposure();
+            double theta = model.state().view().light().thetaDeg();
+            // a burst of input while the render loop draws a tile: nothing applies until the loop reads the queue
+            for (int i = 0; i < 3; i++) {
+                controller.handleKey(com.jogamp.newt.event.KeyEvent.VK_PAGE_UP, '\0');
+            }
+            controller.handleKey(com.jogamp.newt.event.KeyEvent.VK_DOWN, '\0');
+            controller.handleKey((short) 0, ']');
+            controller.handleKey((short) 0, '[');
+            controller.handleKey((short) 0, '[');
+            assertEquals(7, controller.queuedInput());
+            assertEquals(exposure, model.state().view().exposure());
+            assertEquals(7, controller.applyQueuedInput(0));
+            assertEquals(exposure * Math.pow(ViewerController.EXPOSURE_STEP, 3), model.state().view().exposure(), 1e-9);
+            assertEquals(theta + 5, model.state().view().light().thetaDeg(), 1e-12);
+            // 20 -> 40 -> 20 -> 10: in the order pressed
+            assertEquals(10, model.state().settings().spectral().lambdaStepNm());
+            assertEquals(0, controller.queuedInput());
         }
     }
 
@@ -85,9 +118,20 @@ class ViewerModelTest {
         ViewerModel model = ViewerTestSupport.model(ViewerTestSupport.directTerms());
         ViewerState state = model.update(s -> s.withSettings(s.settings().with(b -> b.highestOrder(12)))
                 .withPrecompute(new PrecomputeProgress(12, 0.4)));
-        String title = ViewerTitle.of(model, state, new FrameStats(), System.nanoTime());
+        String title = ViewerTitle.of(model, state, new FrameStats(), RefinementStatus.STARTING, System.nanoTime());
         assertEquals("diffract test-patch | flss N=8 dlambda=20 nm R=1 | theta_i 30 phi_i 90 | sphere | exposure 10"
-                + " | - ms/frame | precomputing N=12 40%", title);
+                + " | starting | - ms/frame | precomputing N=12 40%", title);
+        FrameStats stats = new FrameStats();
+        stats.record(1234.4);
+        ViewerState baking = model.update(s -> s.withPrecompute(null).withBake(new BakeProgress(0.407)));
+        String refining = ViewerTitle.of(model, baking, stats, new RefinementStatus(RefinementStatus.Stage.REFINING, 4,
+                0.375, baking, 3, 1), System.nanoTime());
+        assertTrue(refining.endsWith(" | exposure 10 | refining 1/4 37% | 1234 ms/frame | baking table 40%"
+                + " | N=12 waiting for terms"), refining);
+        assertTrue(ViewerTitle.of(model, baking, stats, new RefinementStatus(RefinementStatus.Stage.PREVIEW, 8, 0,
+                baking, 0, 0), System.nanoTime()).contains(" | preview 1/8 | "));
+        assertTrue(ViewerTitle.of(model, baking, stats, new RefinementStatus(RefinementStatus.Stage.REFINING, 1, 0.5,
+                baking, 0, 0), System.nanoTime()).contains(" | refining full size 50% | "));
     }
 
     @Test

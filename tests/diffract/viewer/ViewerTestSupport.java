@@ -69,6 +69,23 @@ final class ViewerTestSupport {
         return ViewerModel.load(setup(source), Reporter.SILENT);
     }
 
+    /**
+     * A model whose configured frame is deliberately expensive: N = 60, 1 nm steps (401 wavelengths), a 9 x 9
+     * window, about two million term lookups per pixel; on llvmpipe minutes for a 128 x 128 frame, seconds for its
+     * 1/8 pass. The preview ({@link PreviewPolicy}: one texel, 40 nm) stays cheap.
+     */
+    static ViewerModel expensiveModel() {
+        SceneSetup cheap = setup();
+        SceneSetup expensive = cheap.withSettings(cheap.settings().with(b -> b.highestOrder(60).lambdaStepNm(1)
+                .windowRadius(4)));
+        return ViewerModel.load(expensive, Reporter.SILENT);
+    }
+
+    /** Waits (a generous ceiling: a busy machine is slow) until the window shows the refined picture of the model's state. */
+    static boolean awaitRefined(ViewerWindow viewer, ViewerModel model) throws InterruptedException {
+        return waitFor(() -> viewer.refinement().isRefined(model.state()), 300);
+    }
+
     /** Waits up to {@code seconds} for {@code condition}; returns whether it came true. */
     static boolean waitFor(java.util.function.BooleanSupplier condition, double seconds) throws InterruptedException {
         long end = System.nanoTime() + (long) (seconds * 1e9);

@@ -31,6 +31,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * The viewer's real window under Xvfb, driven by NEWT input events handed to the controller's listeners: drags,
  * keys, the background precompute, screenshots. One 128 x 128 window for the class (opening one costs a second).
+ * Nothing here counts frames or times them: each test waits (with a generous ceiling) for the event it needs, most
+ * often "the window shows the refined picture of the model's state".
  */
 @Tag("gl")
 @Tag(GlTestSupport.WINDOW_TAG)
@@ -64,93 +66,104 @@ class ViewerWindowTest {
     void resetModel() throws InterruptedException {
         GlTestSupport.assumeWindow();
         model.reset(null);
-        awaitFreshFrames(2); // so every test starts from frames of the reset state
+        awaitRefined(); // so every test starts from the refined picture of the reset state
     }
 
     @Test
     void orbitDragChangesTheRenderedImage() throws InterruptedException {
-        float[] before = viewer.window().renderRgba();
+        float[] before = viewer.shown().rgba();
         OrbitCamera cameraBefore = model.state().view().camera();
         var mouse = viewer.controller().mouseListener();
         mouse.mousePressed(mouse(MouseEvent.EVENT_MOUSE_PRESSED, 40, 64, MouseEvent.BUTTON1));
         mouse.mouseDragged(mouse(MouseEvent.EVENT_MOUSE_DRAGGED, 70, 64, MouseEvent.BUTTON1));
         mouse.mouseDragged(mouse(MouseEvent.EVENT_MOUSE_DRAGGED, 100, 50, MouseEvent.BUTTON1));
-        OrbitCamera cameraAfter = model.state().view().camera();
-        assertEquals(cameraBefore.azimuthDeg() - 60 * ViewerController.ORBIT_DEG_PER_PX, cameraAfter.azimuthDeg(), 1e-9);
-        assertEquals(cameraBefore.elevationDeg() - 14 * ViewerController.ORBIT_DEG_PER_PX, cameraAfter.elevationDeg(),
-                1e-9);
-        // a frame under way may have read the model before the drag: read the window after one that began after it
-        awaitFreshFrames(2);
-        float[] after = viewer.window().renderRgba();
+        double azimuth = cameraBefore.azimuthDeg() - 60 * ViewerController.ORBIT_DEG_PER_PX;
+        double elevation = cameraBefore.elevationDeg() - 14 * ViewerController.ORBIT_DEG_PER_PX;
+        // the drags are queued for the render loop, which applies both
+        assertTrue(ViewerTestSupport.waitFor(() -> Math.abs(model.state().view().camera().azimuthDeg() - azimuth)
+                < 1e-9 && Math.abs(model.state().view().camera().elevationDeg() - elevation) < 1e-9, 60));
+        awaitRefined();
+        float[] after = viewer.shown().rgba();
         int differing = differingPixels(before, after);
         TestReport.printf(ViewerWindowTest.class, "orbit drag of 60 x -14 px: %d of %d window pixels changed%n", differing, SIZE_PX * SIZE_PX);
         assertTrue(differing > 100, "only " + differing + " pixels changed");
     }
 
     @Test
-    void rightDragMovesTheLightAndTheWheelZooms() {
+    void rightDragMovesTheLightAndTheWheelZooms() throws InterruptedException {
         var mouse = viewer.controller().mouseListener();
         LightDirection light = model.state().view().light();
+        double distance = model.state().view().camera().distance();
         mouse.mousePressed(mouse(MouseEvent.EVENT_MOUSE_PRESSED, 64, 64, MouseEvent.BUTTON3));
         mouse.mouseDragged(mouse(MouseEvent.EVENT_MOUSE_DRAGGED, 84, 74, MouseEvent.BUTTON3));
-        assertEquals(light.thetaDeg() + 10 * ViewerController.LIGHT_DEG_PER_PX, model.state().view().light().thetaDeg(), 1e-9);
-        assertEquals(light.phiDeg() + 20 * ViewerController.LIGHT_DEG_PER_PX, model.state().view().light().phiDeg(), 1e-9);
-        double distance = model.state().view().camera().distance();
         mouse.mouseWheelMoved(new MouseEvent(MouseEvent.EVENT_MOUSE_WHEEL_MOVED, viewer.window().glWindow(),
                 System.currentTimeMillis(), 0, 64, 64, (short) 0, (short) 0, new float[] {0, 2, 0}, 1f));
-        assertEquals(distance * 0.81, model.state().view().camera().distance(), 1e-9);
+        assertTrue(ViewerTestSupport.waitFor(() -> Math.abs(model.state().view().camera().distance() - distance * 0.81)
+                < 1e-9, 60), "the wheel was not applied");
+        assertEquals(light.thetaDeg() + 10 * ViewerController.LIGHT_DEG_PER_PX, model.state().view().light().thetaDeg(), 1e-9);
+        assertEquals(light.phiDeg() + 20 * ViewerController.LIGHT_DEG_PER_PX, model.state().view().light().phiDeg(), 1e-9);
     }
 
     @Test
     void variantKeySwitchesTheModelAndTheTitle() throws InterruptedException {
         press('3');
-        assertEquals(Variant.PQ, model.state().settings().variant());
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| pq N=8"), 30), viewer.title());
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.window().glWindow().getTitle().contains("| pq N=8"), 5));
+        assertTrue(ViewerTestSupport.waitFor(() -> model.state().settings().variant() == Variant.PQ, 60));
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| pq N=8"), 60), viewer.title());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.window().glWindow().getTitle().contains("| pq N=8"), 60));
         press('2');
-        assertEquals(Variant.NMM, model.state().settings().variant());
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| nmm N=8"), 30), viewer.title());
+        assertTrue(ViewerTestSupport.waitFor(() -> model.state().settings().variant() == Variant.NMM, 60));
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| nmm N=8"), 60), viewer.title());
         press('1');
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().matches(".*\\| flss N=8 .*\\d+ ms/frame.*"), 30),
-                viewer.title());
+        awaitRefined();
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().matches(".*\\| flss N=8 .*\\| refined \\| \\d+ ms/frame.*"),
+                60), viewer.title());
     }
 
     @Test
-    void plusPrecomputesInTheBackgroundWhileFramesKeepComing() throws InterruptedException {
+    void plusPrecomputesInTheBackgroundWhileTheWindowKeepsAnswering() throws InterruptedException {
         int before = model.state().terms().highestOrder();
         press('+');
-        assertEquals(before + 1, model.state().settings().taylor().highestOrder());
-        // the precompute waits for the gate: however slow the machine, frames must keep coming meanwhile
-        long framesBefore = viewer.renderer().stats().frameCount();
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= framesBefore + 3, 300),
-                "the render loop stalled while the precompute ran: "
-                        + (viewer.renderer().stats().frameCount() - framesBefore) + " frames");
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("precomputing N=" + (before + 1)), 30),
+        assertTrue(ViewerTestSupport.waitFor(() -> model.state().settings().taylor().highestOrder() == before + 1, 60));
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("precomputing N=" + (before + 1)), 60),
                 "the title never showed the precompute: " + viewer.title());
+        // the precompute waits for the gate: however slow the machine, the window must take input and refine meanwhile
+        for (int i = 0; i < 2; i++) {
+            double exposure = model.state().view().exposure();
+            viewer.controller().keyListener().keyPressed(KeyEvent.create(KeyEvent.EVENT_KEY_PRESSED,
+                    viewer.window().glWindow(), System.currentTimeMillis(), 0, KeyEvent.VK_PAGE_UP, KeyEvent.VK_PAGE_UP,
+                    '\0'));
+            assertTrue(ViewerTestSupport.waitFor(() -> model.state().view().exposure() > exposure, 60));
+            awaitRefined();
+        }
         assertEquals(before, model.state().terms().highestOrder(), "the terms arrived before the gate opened");
+        assertTrue(viewer.title().contains("precomputing N="), viewer.title());
         PRECOMPUTE_MAY_FINISH.countDown();
-        assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == before + 1, 120),
+        assertTrue(ViewerTestSupport.waitFor(() -> model.state().terms().highestOrder() == before + 1, 300),
                 "terms never arrived");
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("flss N=" + (before + 1)), 30),
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("flss N=" + (before + 1)), 60),
                 viewer.title());
+        awaitRefined();
         assertEquals(null, model.state().precompute());
     }
 
     @Test
     void materialsAreNotRebuiltPerFrame() throws InterruptedException {
-        press('1');
-        long frames = viewer.renderer().stats().frameCount();
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= frames + 2, 30));
         int builds = viewer.renderer().materialBuildCount();
-        long later = viewer.renderer().stats().frameCount();
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= later + 3, 30));
+        // exposure changes redraw every pass of the refinement, preview and configured, with the materials at hand
+        for (short key : new short[] {KeyEvent.VK_PAGE_UP, KeyEvent.VK_PAGE_DOWN, KeyEvent.VK_PAGE_UP}) {
+            double exposure = model.state().view().exposure();
+            viewer.controller().keyListener().keyPressed(KeyEvent.create(KeyEvent.EVENT_KEY_PRESSED,
+                    viewer.window().glWindow(), System.currentTimeMillis(), 0, key, key, '\0'));
+            assertTrue(ViewerTestSupport.waitFor(() -> model.state().view().exposure() != exposure, 60));
+            awaitRefined();
+        }
         assertEquals(builds, viewer.renderer().materialBuildCount());
     }
 
     @Test
     void screenshotKeySavesAPngOfTheWindow() throws Exception {
         press('s');
-        assertTrue(ViewerTestSupport.waitFor(() -> pngs().size() > 0, 30), "no screenshot written");
+        assertTrue(ViewerTestSupport.waitFor(() -> pngs().size() > 0, 60), "no screenshot written");
         Path png = pngs().get(0);
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(viewer.window().surfaceWidth(), image.getWidth());
@@ -164,21 +177,20 @@ class ViewerWindowTest {
     @Test
     void brdfMapKeyShowsTheMapAndHelpGoesToTheTitle() throws InterruptedException {
         press('b');
-        assertEquals(DisplayMode.BRDF_MAP, model.state().view().mode());
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("BRDF map"), 30), viewer.title());
-        awaitFreshFrames(2);
-        float[] map = viewer.window().renderRgba();
+        assertTrue(ViewerTestSupport.waitFor(() -> model.state().view().mode() == DisplayMode.BRDF_MAP, 60));
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("BRDF map"), 60), viewer.title());
+        awaitRefined();
+        float[] map = viewer.shown().rgba();
         // outside the unit disk the map is black, unlike the surface mode's grey background
         assertEquals(0f, map[0] + map[1] + map[2], 1e-6f);
         press('h');
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("right-drag light"), 30), viewer.title());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("right-drag light"), 60), viewer.title());
         press('b');
-        assertEquals(DisplayMode.SURFACE, model.state().view().mode());
+        assertTrue(ViewerTestSupport.waitFor(() -> model.state().view().mode() == DisplayMode.SURFACE, 60));
     }
 
-    static void awaitFreshFrames(int frames) throws InterruptedException {
-        long now = viewer.renderer().stats().frameCount();
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.renderer().stats().frameCount() >= now + frames, 30));
+    static void awaitRefined() throws InterruptedException {
+        assertTrue(ViewerTestSupport.awaitRefined(viewer, model), "never refined: " + viewer.refinement());
     }
 
     static void press(char key) {

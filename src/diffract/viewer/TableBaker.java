@@ -1,0 +1,97 @@
+package diffract.viewer;
+
+import diffract.optics.BrdfSettings;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.render.BakedTables;
+import diffract.util.Reporter;
+
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Bakes the baked variant's table in the background when the window needs one it has not got (a bake takes
+ * minutes on a software rasteriser): the window shows the preview meanwhile, the title the bake's progress. The
+ * table goes into {@link BakedTables}' cache, where the render thread finds it. One bake at a time; a request
+ * during a bake is dropped, and the window asks again when the bake ends if it still needs another table.
+ */
+public final class TableBaker implements AutoCloseable {
+    private final ViewerModel model;
+    private final ExecutorService executor = Executors.newSingleThreadExecutor(runnable -> {
+        Thread thread = new Thread(runnable, "diffract-viewer-bake");
+        thread.setDaemon(true); // a bake must not keep the JVM alive after the window closed
+        return thread;
+    });
+    private boolean busy;
+
+    public TableBaker(ViewerModel model) {
+        this.model = model;
+    }
+
+    /** Starts baking the table of these terms and settings unless a bake is under way; returns at once. */
+    public synchronized void ensureBaked(TaylorTerms terms, BrdfSettings settings) {
+        if (busy || BakedTables.isBaked(terms, settings)) {
+            return;
+        }
+        busy = true;
+        model.update(s -> s.withBake(new BakeProgress(0)));
+        executor.execute(() -> bake(terms, settings));
+    }
+
+    /** Whether a bake is under way. */
+    public synchronized boolean isBusy() {
+        return busy;
+    }
+
+    private void bake(TaylorTerms terms, BrdfSettings settings) {
+        try {
+            BakedTables.of(terms, settings, new ProgressToModel());
+            model.update(s -> s.withBake(null));
+        } catch (RuntimeException e) {
+            // back to FLSS, whose textures need no bake, so the window does not ask for the failing table again
+            model.update(s -> s.withBake(null)
+                    .withSettings(s.settings().variant() == Variant.BAKED ? s.settings().with(b -> b.variant(Variant.FLSS))
+                            : s.settings())
+                    .withNotice(Notice.forSeconds("baking the table failed: " + e.getMessage() + "; drawing flss", 10)));
+        } finally {
+            synchronized (this) {
+                busy = false;
+            }
+        }
+    }
+
+    /** Stops waiting bakes; a bake under way finishes on its daemon thread and is discarded with the JVM. */
+    @Override
+    public void close() {
+        executor.shutdownNow();
+        try {
+            executor.awaitTermination(100, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** The bake's progress into the model, only when the whole percent changes. */
+    private final class ProgressToModel implements Reporter {
+        private int lastPercent = -1;
+
+        @Override
+        public void warn(String message) {
+            model.update(s -> s.withNotice(Notice.forSeconds(message, 5)));
+        }
+
+        @Override
+        public void info(String message) {
+        }
+
+        @Override
+        public void progress(String task, double fraction) {
+            BakeProgress progress = new BakeProgress(fraction);
+            if (progress.percent() != lastPercent) {
+                lastPercent = progress.percent();
+                model.update(s -> s.withBake(progress));
+            }
+        }
+    }
+}

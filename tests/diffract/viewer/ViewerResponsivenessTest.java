@@ -1,0 +1,188 @@
+package diffract.viewer;
+
+import com.jogamp.newt.event.KeyEvent;
+import com.jogamp.newt.event.MouseEvent;
+import diffract.jrtr.GlTestSupport;
+import diffract.optics.Variant;
+import diffract.render.BakedTables;
+import diffract.util.Reporter;
+import diffract.util.ImageFiles;
+import diffract.util.TestReport;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.io.IOException;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The viewer never looks hung: a window whose configured frame is deliberately expensive (minutes on llvmpipe,
+ * {@link ViewerTestSupport#expensiveModel}) shows a picture of the scene long before that frame could finish, takes
+ * every key pressed while it draws, names the refinement stage in its title, and quits on Q while the expensive
+ * frame is under way. The assertions are about the order of events, read from the refinement's own counters; the
+ * one bound on time, the quit's, is loose, so a busy machine does not fail it: a quick quit can only come from the
+ * tiles (a whole pass of the expensive frame takes many times that bound).
+ */
+@Tag("gl")
+@Tag(GlTestSupport.WINDOW_TAG)
+class ViewerResponsivenessTest {
+    static final int SIZE_PX = 128;
+    /** The loose ceiling of a quit; the design answers within about one tile ({@link RefiningRenderer#TILE_MS}). */
+    static final double QUIT_CEILING_S = 10;
+    @TempDir
+    Path screenshots;
+    ViewerModel model;
+    ViewerWindow viewer;
+
+    void open(ViewerModel m) {
+        GlTestSupport.assumeWindow();
+        model = m;
+        viewer = new ViewerWindow(model, SIZE_PX, SIZE_PX, screenshots);
+        viewer.start();
+    }
+
+    @AfterEach
+    void close() {
+        if (viewer != null) {
+            viewer.close();
+        }
+    }
+
+    @Test
+    void aPictureOfTheSceneComesBeforeTheExpensiveFrame() throws InterruptedException, IOException {
+        open(ViewerTestSupport.expensiveModel());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.refinement().passesCompleted() >= 1, 300),
+                "no pass completed: " + viewer.refinement());
+        RefiningRenderer.Shown shown = viewer.shown();
+        // what the window showed, and where the refinement stood at that moment
+        assertEquals(0, shown.status().refinedFrames(), "the expensive frame came first");
+        assertNotEquals(RefinementStatus.Stage.REFINED, shown.status().stage());
+        int background = 0;
+        int coloured = 0;
+        float[] clear = ViewerRenderer.CLEAR_COLOUR;
+        float[] rgba = shown.rgba();
+        for (int p = 0; p < rgba.length; p += 4) {
+            float r = rgba[p];
+            float g = rgba[p + 1];
+            float b = rgba[p + 2];
+            if (Math.abs(r - clear[0]) + Math.abs(g - clear[1]) + Math.abs(b - clear[2]) < 0.02f) {
+                background++;
+            } else if (Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) > 0.1f) {
+                coloured++;
+            }
+        }
+        int pixels = SIZE_PX * SIZE_PX;
+        float[] rgb = new float[pixels * 3];
+        for (int p = 0; p < pixels; p++) {
+            System.arraycopy(rgba, 4 * p, rgb, 3 * p, 3);
+        }
+        ImageFiles.writePng(TestReport.DIR.resolve("ViewerResponsivenessTest-first-picture.png"), rgb, SIZE_PX, SIZE_PX, 3);
+        TestReport.printf(ViewerResponsivenessTest.class, "first picture (%s 1/%d, %d passes done): %d of %d pixels"
+                        + " background, %d coloured%n", shown.status().stage(), shown.status().divisor(),
+                shown.status().passesCompleted(), background, pixels, coloured);
+        // the sphere (radius 1 at distance 3 under a 45 degree field of view: 2/3 of the height across) on the grey
+        // background, the orders in colour on it
+        assertTrue(background > pixels / 5 && background < pixels * 0.9, background + " background pixels");
+        assertTrue(coloured > pixels / 200, coloured + " coloured pixels");
+    }
+
+    @Test
+    void qQuitsWhileTheExpensiveFrameIsDrawn() throws InterruptedException {
+        open(ViewerTestSupport.expensiveModel());
+        awaitExpensivePass();
+        RefinementStatus atQ = viewer.refinement();
+        long start = System.nanoTime();
+        press('q');
+        assertTrue(viewer.isCloseRequested(), "Q asks to quit at once, on the input thread");
+        viewer.close();
+        double seconds = (System.nanoTime() - start) / 1e9;
+        RefinementStatus end = viewer.refinement();
+        ViewerWindow closed = viewer;
+        viewer = null;
+        TestReport.printf(ViewerResponsivenessTest.class, "Q during the expensive pass (1/%d, %.0f%% drawn): window"
+                + " closed after %.2f s; passes completed %d at Q, %d at the end%n", atQ.divisor(),
+                100 * atQ.fraction(), seconds, atQ.passesCompleted(), end.passesCompleted());
+        assertFalse(closed.isDrawing(), "the render loop still draws");
+        // the quit did not wait for the expensive frame: its full-resolution pass was never reached
+        assertEquals(0, end.refinedFrames());
+        assertTrue(end.passesCompleted() < RefiningRenderer.LADDER.size(), end.toString());
+        assertTrue(seconds < QUIT_CEILING_S, "the quit took " + seconds + " s");
+    }
+
+    @Test
+    void keysPressedDuringTheExpensivePassAreAllApplied() throws InterruptedException {
+        open(ViewerTestSupport.expensiveModel());
+        awaitExpensivePass();
+        ViewerState before = model.state();
+        // a burst of input while the render loop draws a tile of the expensive frame
+        for (int i = 0; i < 3; i++) {
+            pressCode(KeyEvent.VK_PAGE_UP);
+        }
+        pressCode(KeyEvent.VK_UP);
+        pressCode(KeyEvent.VK_UP);
+        press(']');
+        viewer.controller().mouseListener().mouseWheelMoved(new MouseEvent(MouseEvent.EVENT_MOUSE_WHEEL_MOVED,
+                viewer.window().glWindow(), System.currentTimeMillis(), 0, 64, 64, (short) 0, (short) 0,
+                new float[] {0, 1, 0}, 1f));
+        double exposure = before.view().exposure() * Math.pow(ViewerController.EXPOSURE_STEP, 3);
+        assertTrue(ViewerTestSupport.waitFor(() -> Math.abs(model.state().view().camera().distance()
+                - before.view().camera().distance() * ViewerController.ZOOM_PER_WHEEL_STEP) < 1e-9, 120),
+                "the last input never arrived");
+        ViewerState after = model.state();
+        assertEquals(exposure, after.view().exposure(), 1e-9);
+        assertEquals(before.view().light().thetaDeg() - 10, after.view().light().thetaDeg(), 1e-9);
+        assertEquals(2, after.settings().spectral().lambdaStepNm());
+        // the window refines the new state, and its title says so
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.refinement().state() != null
+                && viewer.refinement().state().view().equals(after.view()), 120), viewer.refinement().toString());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("dlambda=2 nm")
+                && viewer.title().contains("exposure " + ViewerTitle.number(exposure)), 120), viewer.title());
+    }
+
+    @Test
+    void theTitleNamesTheRefinementStage() throws InterruptedException {
+        open(ViewerTestSupport.expensiveModel());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().matches(".*\\| refining 1/8 \\d+% \\|.*"), 300),
+                viewer.title());
+    }
+
+    @Test
+    void theBakedVariantShowsThePreviewWhileItsTableBakesThenRefinesWithIt() throws InterruptedException {
+        // N = 20: the thesis' series reaches this patch, which the baked table is made of
+        ViewerModel m = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
+                .with(b -> b.variant(Variant.BAKED).highestOrder(20).bakedSamples(24, 8))), Reporter.SILENT);
+        int bakes = BakedTables.bakeCount();
+        open(m);
+        assertTrue(ViewerTestSupport.awaitRefined(viewer, model), viewer.refinement().toString());
+        assertEquals(bakes + 1, BakedTables.bakeCount(), "the window baked the table once");
+        assertTrue(BakedTables.isBaked(model.state().terms(), model.state().drawableSettings()));
+        assertNull(model.state().bake());
+        assertEquals(Variant.BAKED, viewer.refinement().state().drawableSettings().variant());
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| baked N=20")
+                && viewer.title().contains("| refined |"), 60), viewer.title());
+    }
+
+    /** Waits until the expensive configured pass has drawn at least one tile. */
+    void awaitExpensivePass() throws InterruptedException {
+        assertTrue(ViewerTestSupport.waitFor(() -> viewer.refinement().stage() == RefinementStatus.Stage.REFINING
+                && viewer.refinement().fraction() > 0, 300), "the expensive pass never started: " + viewer.refinement());
+    }
+
+    void press(char key) {
+        short code = KeyEvent.utf16ToVKey(key);
+        viewer.controller().keyListener().keyPressed(KeyEvent.create(KeyEvent.EVENT_KEY_PRESSED,
+                viewer.window().glWindow(), System.currentTimeMillis(), 0, code, code, key));
+    }
+
+    void pressCode(short code) {
+        viewer.controller().keyListener().keyPressed(KeyEvent.create(KeyEvent.EVENT_KEY_PRESSED,
+                viewer.window().glWindow(), System.currentTimeMillis(), 0, code, code, '\0'));
+    }
+}
