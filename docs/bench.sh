@@ -6,7 +6,7 @@
 # short table (docs/headless-gl.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-./diffract bench -o out/bench
+./diffract bench --coherence-length 10 -o out/bench
 mkdir -p docs/images docs/bench
 cp out/bench/pareto.png docs/images/bench-pareto.png
 cp out/bench/results.csv out/bench/results.md out/bench/pareto.md out/bench/targets.md out/bench/machine.txt docs/bench/

@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
+import diffract.optics.Variant;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
@@ -45,6 +46,8 @@ final class ViewCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        // interactive: the baked table of the lobes method (one lookup per pixel, baked behind the preview)
+        options.defaultVariant(Variant.BAKED);
         options.validate();
         Optional<String> problem = noDisplayProblem(System.getenv(), System.getProperty("os.name", ""));
         if (problem.isPresent()) {

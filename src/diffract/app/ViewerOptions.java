@@ -155,7 +155,7 @@ final class ViewerOptions {
         }
         patch.validate();
         brdf.validate();
-        if (brdf.variantOr(Variant.LOBES) == Variant.REFERENCE) {
+        if (brdf.variantOr(defaultVariant) == Variant.REFERENCE) {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY
                     + " (the reference is drawn by ./diffract brdfmap)");
         }
@@ -223,12 +223,21 @@ final class ViewerOptions {
     }
 
     /**
-     * The settings of a scene the options describe, as a scene file's defaults: the lobes method at the thesis'
-     * 65 um coherence under the sun (0.53 degrees), each pixel its footprint's average, the Fresnel term counted once.
+     * The settings of a scene the options describe, as a scene file's defaults: the command's variant (the lobes
+     * method for stills, its baked table for the viewer) at the thesis' 65 um coherence under the sun (0.53
+     * degrees), each pixel its footprint's average, the Fresnel term counted once.
      */
-    static BrdfSettings defaults() {
-        return BrdfSettings.thesis(Variant.LOBES).with(b -> b.lightSizeDeg(LightSource.SUN_DEG)
+    BrdfSettings defaults() {
+        return BrdfSettings.thesis(defaultVariant).with(b -> b.lightSizeDeg(LightSource.SUN_DEG)
                 .pixelFilter(PixelFilter.BOX));
+    }
+
+    /** The variant when none is given: {@link Variant#LOBES} unless the command says otherwise. */
+    private Variant defaultVariant = Variant.LOBES;
+
+    /** Sets the variant drawn when the options give none (before {@link #validate}). */
+    void defaultVariant(Variant v) {
+        defaultVariant = v;
     }
 
     private static double[] vector(LightDirection light) {

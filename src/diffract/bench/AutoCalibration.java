@@ -19,13 +19,13 @@ import java.util.Map;
  * The {@code auto} variant's calibration: the {@code --quick} sweep ({@link SweepPlan#quick}) restricted to the
  * scene's own patch, with the light at the scene's azimuth, measured once and cached under the user cache
  * ({@code <cache>/calibration/<key>.csv}, key = patch content hash and every setting that changes a
- * measurement), so a second run with the same patch and settings does not recalibrate.
+ * measurement: the light's size, the pixel filter and the Fresnel model too), so a second run with the same patch and settings does not recalibrate.
  */
 public final class AutoCalibration {
     /** Map size of the calibration (as {@code bench --quick}): mean errors change little with the size. */
     public static final int SIZE_PX = 64;
     /** Bump when the plan or the measurement changes, so old calibrations are not reused. */
-    static final int VERSION = 1;
+    static final int VERSION = 2;
 
     private AutoCalibration() {
     }
@@ -84,7 +84,8 @@ public final class AutoCalibration {
         String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
                 Csv.number(base.spectral().lambdaMinNm()), Csv.number(base.spectral().lambdaMaxNm()),
                 Csv.number(base.illumination().sigmaSpatialUm()), Csv.number(base.illumination().refractiveIndex()),
-                Integer.toString(base.window().pqReplicas()), plan.toString());
+                Csv.number(base.illumination().light().angularDiameterDeg()), base.illumination().pixelFilter().label(),
+                base.illumination().fresnel().label(), Integer.toString(base.window().pqReplicas()), plan.toString());
         try {
             byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));
             return HexFormat.of().formatHex(hash).substring(0, 32);

@@ -40,7 +40,9 @@ public final class SweepPlan {
      */
     static final Map<Variant, Set<Axis>> IGNORED_AXES = Map.of(Variant.NMM, EnumSet.of(Axis.LAMBDA_STEP),
             // the baked table tabulates FLSS at the thesis' point once per patch; its own grid is automatic
-            Variant.BAKED, EnumSet.of(Axis.TERMS, Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN));
+            Variant.BAKED, EnumSet.of(Axis.TERMS, Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN),
+            // the lobes method integrates wavelength exactly, sums whole texels and reads a float32 weight table
+            Variant.LOBES, EnumSet.of(Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN));
 
     /** The thesis' storage: float32 terms. */
     public static final TermFormat EXACT_FORMAT = TermFormat.RG32F;

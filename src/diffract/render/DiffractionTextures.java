@@ -135,6 +135,11 @@ public final class DiffractionTextures {
      * apply, the centres fix theirs.
      */
     public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings) {
+        if (settings.variant() == Variant.BAKED) {
+            throw new InvalidSettingException(Quantity.VARIANT, "the baked table tabulates the thesis' series around 0; "
+                    + "this patch needs the phase-centred expansion (its phase k w h reaches beyond what that series "
+                    + "sums): draw it with the lobes method or flss");
+        }
         if (settings.gpu().termFormat() == TermFormat.RG8) {
             throw new InvalidSettingException(Quantity.TERM_FORMAT, "8-bit terms (rg8) hold the thesis' series around"
                     + " 0 only; this patch needs the phase-centred expansion: store the terms as rg32f or rg16f");

@@ -50,6 +50,19 @@ class GpuPhaseCentredTest {
      * ((u, v) = 0: NMM's fallback, PQ's 0/0, sinc(0); w = -2, the largest phase, the last centre). Every pixel
      * finite and non-negative; the specular pixel equals the CPU mirror to 1e-3 relative (float32 lookup).
      */
+    /** The baked table holds the thesis' series around 0: on the centred path it is refused, with the reason. */
+    @org.junit.jupiter.api.Test
+    void theBakedTableIsRefusedOnTheCentredPath() {
+        GlTestSupport.assumeOffscreenGl();
+        HeightField patch = SyntheticPatches.blazed(2.5, 4.0, 20, 4, 8).meanSubtracted();
+        BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED);
+        PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
+                PhaseCentres.forPatch(patch.maxAbsHeightUm(), settings.spectral().lambdaMinNm()), Reporter.SILENT);
+        var refused = org.junit.jupiter.api.Assertions.assertThrows(diffract.optics.InvalidSettingException.class,
+                () -> new GpuBrdfMap(centred, settings).close());
+        assertTrue(refused.getMessage().contains("phase-centred expansion"), refused.getMessage());
+    }
+
     @ParameterizedTest
     @org.junit.jupiter.params.provider.EnumSource(value = Variant.class, names = {"FLSS", "NMM", "PQ"})
     void everyPixelIsFiniteAtGrazingLightAndAtTheSpecularDirection(Variant variant) {
