@@ -95,10 +95,17 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
     }
 }
 
-// The (u, v) of a light across the pixel (see addLight); zero for variants that do not filter.
-vec4 uvDerivatives(SurfaceFrame f, vec3 towardsWorld, vec3 wr) {
+// The (u, v) of a light across the pixel (see addLight); zero for variants that do not filter. The derivatives are
+// taken in the mesh's own smooth frame (perspective and the body's curvature), not in the scale's: a scale's frame
+// jumps at its border, and a finite difference across two scales is not the spread of one footprint (it darkened
+// whole 2 x 2 quads at grazing view); within a scale the pixel's own frame still places the lobes.
+vec4 uvDerivatives(SurfaceFrame f, vec3 towardsWorld, vec3 towardsCamera) {
 #ifdef FILTERED
-    vec2 uv = -(toFrame(f, safeNormalize(towardsWorld)).xy + wr.xy);
+    SurfaceFrame mesh = f;
+    mesh.n = f.base;
+    mesh.t = safeNormalize(surfaceWorldTangent - dot(surfaceWorldTangent, f.base) * f.base);
+    mesh.b = cross(mesh.n, mesh.t);
+    vec2 uv = -(toFrame(mesh, safeNormalize(towardsWorld)).xy + toFrame(mesh, towardsCamera).xy);
     return vec4(dFdx(uv), dFdy(uv));
 #else
     return vec4(0.0);
@@ -107,11 +114,12 @@ vec4 uvDerivatives(SurfaceFrame f, vec3 towardsWorld, vec3 wr) {
 
 vec3 stagedSurfaceLinear() {
     SurfaceFrame f = surfaceFrame();
-    vec3 wr = toFrame(f, safeNormalize(cameraPosition - surfaceWorldPosition));
+    vec3 towardsCamera = safeNormalize(cameraPosition - surfaceWorldPosition);
+    vec3 wr = toFrame(f, towardsCamera);
     vec3 structural = vec3(0.0);
     vec3 diffuse = vec3(0.0);
     float visible = keyLightVisibility(surfaceWorldPosition, f.base);
-    vec4 keyDerivatives = uvDerivatives(f, lightDirection[0], wr);
+    vec4 keyDerivatives = uvDerivatives(f, lightDirection[0], towardsCamera);
     if (visible > 0.0) {
         addLight(f, lightDirection[0], vec3(visible), wr, true, keyDerivatives, keyLightSigmaRad(), structural,
                  diffuse);
@@ -119,7 +127,7 @@ vec3 stagedSurfaceLinear() {
 #if defined(ENVIRONMENT_LIGHTS) && ENVIRONMENT_LIGHTS > 0
     for (int k = 0; k < ENVIRONMENT_LIGHTS; k++) {
         addLight(f, environmentLightDirection[k], environmentLightRgb[k], wr, false,
-                 uvDerivatives(f, environmentLightDirection[k], wr),
+                 uvDerivatives(f, environmentLightDirection[k], towardsCamera),
                  radians(environmentLightAngularDiameterDeg[k]) / 4.0, structural, diffuse);
     }
 #endif

@@ -56,8 +56,10 @@ class GpuSuiteTest {
             boolean scene = f[0].equals("scene");
             assertEquals(scene ? "48" : "27", f[header.indexOf("width")], line);
             if (f[1].equals("scene settings")) {
-                // FLSS at 10 nm and N = 20 against its converged self (scene) or the exact model (map): close
-                assertTrue(mean < (scene ? 0.5 : 1.0), "CIEDE2000 " + mean + ": " + line);
+                // FLSS at N = 20 against its converged self (scene) or the exact model at 1 nm (map): close; at the
+                // scene's 65 um the map's orders are narrower than FLSS' 5 nm step, which costs about 3.5 here (a
+                // wrong colour costs tens)
+                assertTrue(mean < (scene ? 0.5 : 5.0), "CIEDE2000 " + mean + ": " + line);
             }
         }
         BufferedImage picture = ImageIO.read(dir.resolve("scene-flss.png").toFile());

@@ -5,6 +5,8 @@ import diffract.jrtr.VertexAttribute;
 import diffract.lighting.ExtendedLight;
 import diffract.lighting.LatLongMap;
 import diffract.lighting.RadianceHdr;
+import diffract.optics.LightSource;
+import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.render.Stage;
 import diffract.util.Reporter;
@@ -35,13 +37,13 @@ class FabricatorTest {
         assertEquals(128, s.patch().rows());
         assertEquals(128, s.patch().cols());
         assertEquals(8 * 1.144 / 128, s.patch().pixelSizeXUm(), 1e-12);
-        assertEquals(Variant.FLSS, s.settings().variant());
+        assertEquals(Variant.LOBES, s.settings().variant());
         assertEquals(20, s.settings().taylor().highestOrder());
-        assertEquals(10, s.settings().spectral().lambdaStepNm());
-        assertEquals(2.5, s.settings().illumination().sigmaSpatialUm());
-        assertEquals(10, s.settings().illumination().coherenceLengthUm());
-        assertEquals(1, s.settings().window().radius());
-        assertEquals(200, s.exposure());
+        assertEquals(65 / 4.0, s.settings().illumination().sigmaSpatialUm());
+        assertEquals(65, s.settings().illumination().coherenceLengthUm());
+        assertEquals(LightSource.SUN_DEG, s.settings().illumination().light().angularDiameterDeg());
+        assertEquals(PixelFilter.BOX, s.settings().illumination().pixelFilter());
+        assertEquals(8000, s.exposure());
         // eye - lookAt = (0.3, 1.47, 1.68): the orbit camera's distance and azimuth
         OrbitCamera c = s.camera();
         assertEquals(Math.sqrt(0.3 * 0.3 + 1.47 * 1.47 + 1.68 * 1.68), c.distance(), 1e-9);
