@@ -8,8 +8,7 @@ cd "$ROOT"
 shots="$(mktemp -d)"
 trap 'rm -rf "$shots"' EXIT
 # DISPLAY is set by xvfb-run here, so the launcher does not start (or flag) a second, private Xvfb
-xvfb-run -a -s "-screen 0 1280x1024x24" ./diffract view --synthetic elaphe-like --shape sphere --variant flss \
-    --terms 20 --lambda-step 10 --coherence-length 10 --theta-i 30 --phi-i 90 --exposure 10 \
+xvfb-run -a -s "-screen 0 1280x1024x24" ./diffract view --synthetic elaphe-like --shape sphere --theta-i 30 --phi-i 90 \
     --elevation 25 --azimuth -20 --size 480x360 --screenshot-dir "$shots" --screenshot-when-refined >/dev/null
 mkdir -p docs/images
 mv "$(ls "$shots"/*.png | head -1)" docs/images/viewer.png

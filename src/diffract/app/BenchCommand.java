@@ -144,6 +144,14 @@ final class BenchCommand implements Callable<Integer> {
                     + "ridges along x, as a snake patch scanned along its scale).")
     double patchPhiDeg;
 
+    @Option(names = "--suite-scene", paramLabel = "FILE",
+            description = "GPU suite: the scene drawn (default: the default snake scene).")
+    Path suiteScene;
+
+    @Option(names = "--suite-scenes-only", description = "GPU suite: the scene with each of --variants only (no BRDF "
+            + "maps, no thesis row): ms per frame of what a viewer draws, against the converged picture.")
+    boolean suiteScenesOnly;
+
     @Option(names = "--suite-size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
             description = "GPU suite: the scene's size (default 1920x1080, 240x135 on llvmpipe); the maps are HxH.")
     OptionTypes.ImageSize suiteSize;
@@ -164,8 +172,8 @@ final class BenchCommand implements Callable<Integer> {
             long start = System.nanoTime();
             List<Variant> suiteVariants = variants == null ? GpuSuite.gpuVariants() : variants;
             int[] size = suiteSize == null ? null : new int[] {suiteSize.width(), suiteSize.height()};
-            List<GpuSuite.Row> rows = new GpuSuite(outputDir, size, errorSizePx, frames, suiteVariants,
-                    quiet.reporter()).run();
+            List<GpuSuite.Row> rows = new GpuSuite(outputDir, size, errorSizePx, frames, suiteVariants, suiteScene,
+                    suiteScenesOnly, quiet.reporter()).run();
             System.out.printf(Locale.ROOT, "gpu suite: %d rows in %.0f s%nwrote %s, %s%n", rows.size(),
                     (System.nanoTime() - start) * 1e-9, outputDir.resolve("gpu-suite.csv"),
                     outputDir.resolve("gpu-suite.md"));

@@ -72,6 +72,8 @@ final class GpuSuite {
     private final int frames;
     private final Reporter reporter;
     private final List<Variant> variants;
+    private final Path sceneFile;
+    private final boolean scenesOnly;
 
     /**
      * @param requestedSize {width, height}, or null for the automatic size
@@ -81,6 +83,17 @@ final class GpuSuite {
      */
     GpuSuite(Path outputDir, int[] requestedSize, int errorSizePx, int frames, List<Variant> variants,
              Reporter reporter) {
+        this(outputDir, requestedSize, errorSizePx, frames, variants, null, false, reporter);
+    }
+
+    /**
+     * @param sceneFile  the scene drawn, null for the default scene
+     * @param scenesOnly the scene rows of the variants only: no BRDF maps, no thesis row (a viewer's frame rate)
+     */
+    GpuSuite(Path outputDir, int[] requestedSize, int errorSizePx, int frames, List<Variant> variants, Path sceneFile,
+             boolean scenesOnly, Reporter reporter) {
+        this.sceneFile = sceneFile;
+        this.scenesOnly = scenesOnly;
         if (variants.contains(Variant.REFERENCE)) {
             throw new UserInputException("the reference is what the suite measures against; list GPU variants");
         }
@@ -129,10 +142,15 @@ final class GpuSuite {
         return Arrays.stream(Variant.values()).filter(v -> v != Variant.REFERENCE).toList();
     }
 
-    /** The same physics as {@code s}, converged: FLSS at 1 nm with at least {@link #REFERENCE_ORDER} terms. */
+    /**
+     * The same physics as {@code s}, converged: for a filtering variant the lobes method (exact in wavelength; within
+     * CIEDE2000 1 of the filtered reference on BRDF maps, docs/bench/filtering.md), else FLSS at 1 nm; with at least
+     * {@link #REFERENCE_ORDER} terms.
+     */
     static BrdfSettings converged(BrdfSettings s) {
-        return s.with(b -> b.variant(Variant.FLSS).lambdaStepNm(1)
-                .highestOrder(Math.max(REFERENCE_ORDER, s.taylor().highestOrder())));
+        int order = Math.max(REFERENCE_ORDER, s.taylor().highestOrder());
+        return filters(s.variant()) ? s.with(b -> b.variant(Variant.LOBES).highestOrder(order))
+                : s.with(b -> b.variant(Variant.FLSS).lambdaStepNm(1).highestOrder(order));
     }
 
     private void writePng(String file, float[] rgb, int[] size) {
@@ -149,14 +167,23 @@ final class GpuSuite {
      * measured by {@code bench --filtering}.
      */
     private static BrdfSettings settingsOf(String[] name, BrdfSettings scene) {
-        return name[0].equals("thesis") ? BrdfSettings.thesis(Variant.FLSS)
-                : scene.with(b -> b.variant(Variant.parse(name[1])).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
+        if (name[0].equals("thesis")) {
+            return BrdfSettings.thesis(Variant.FLSS);
+        }
+        Variant v = Variant.parse(name[1]);
+        return filters(v) ? scene.with(b -> b.variant(v))
+                : scene.with(b -> b.variant(v).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
+    }
+
+    /** The variants that filter by pixel footprint and light size: the lobes method and its baked table. */
+    static boolean filters(Variant v) {
+        return v == Variant.LOBES || v == Variant.BAKED;
     }
 
     /** Runs every row and writes the files; returns the rows. */
     List<Row> run() throws IOException {
         Files.createDirectories(outputDir);
-        Path scene = DemoCommand.defaultScene(outputDir);
+        Path scene = sceneFile != null ? sceneFile : DemoCommand.defaultScene(outputDir);
         SceneSetup base = Fabricator.fabricate(scene, reporter);
         GLInfo gl;
         try (OffscreenTarget probe = sceneTarget(base)) {
@@ -169,7 +196,9 @@ final class GpuSuite {
         List<Row> rows = new ArrayList<>();
         // per physics (wavelength range, coherence, refractive index) one converged picture the rows compare with
         Map<String, float[]> sceneReferences = new HashMap<>();
-        for (String[] name : names(variants)) {
+        List<String[]> configurations = scenesOnly ? variants.stream().map(v -> new String[] {"scene settings",
+                v.label()}).toList() : names(variants);
+        for (String[] name : configurations) {
             BrdfSettings settings = settingsOf(name, base.settings());
             BrdfSettings converged = converged(settings);
             float[] reference = sceneReferences.computeIfAbsent(converged.toString(), k -> {
@@ -189,7 +218,13 @@ final class GpuSuite {
             boolean[] covered = covered(reference);
             DeltaEStatistics error = DeltaEStatistics.of(xyzOfDisplayRgb(reference), xyzOfDisplayRgb(picture), covered);
             rows.add(log(new Row("scene", name[0], settings, size[0], size[1], ms, size[0], error.mean(), error.p95(),
-                    error.pixels(), "gpu flss N=" + converged.taylor().highestOrder() + " 1 nm")));
+                    error.pixels(), "gpu " + (filters(settings.variant()) ? "lobes" : "flss") + " N="
+                    + converged.taylor().highestOrder() + (filters(settings.variant()) ? "" : " 1 nm"))));
+        }
+        if (scenesOnly) {
+            Files.writeString(outputDir.resolve("gpu-suite.csv"), csv(rows, gl), StandardCharsets.UTF_8);
+            Files.writeString(outputDir.resolve("gpu-suite.md"), markdown(rows, gl), StandardCharsets.UTF_8);
+            return rows;
         }
         BenchPatch patch = new BenchPatch("scene-patch", base.patch(), base.light().phiDeg());
         ReferenceMaps references = new ReferenceMaps(outputDir.resolve("reference-maps"), reporter);

@@ -101,7 +101,8 @@ final class ViewerOptions {
         @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
         double distance = 3.5;
 
-        @Option(names = "--exposure", defaultValue = "10", paramLabel = "E", description = "Multiplies linear XYZ before display (default ${DEFAULT-VALUE}).")
+        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E", description = "Multiplies linear XYZ before "
+                + "display (default ${DEFAULT-VALUE}: at 65 um the thesis' gain factor keeps a mirror's peak, not its energy, at white).")
         double exposure = 10;
 
         @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
