@@ -121,14 +121,6 @@ final class BenchCommand implements Callable<Integer> {
             description = "--filtering: the lights' angular diameters in degrees (default ${DEFAULT-VALUE}).")
     List<Double> lightsDeg;
 
-    @Option(names = "--baked-size", defaultValue = "256", paramLabel = "UV",
-            description = "--filtering: (u, v) samples of the baked table, 0 for none (default ${DEFAULT-VALUE}).")
-    int bakedUvSamples;
-
-    @Option(names = "--rounds", defaultValue = "3", paramLabel = "R",
-            description = "--filtering: alternating timing rounds of the lobes method and FLSS (default ${DEFAULT-VALUE}).")
-    int rounds;
-
     @Option(names = "--patch", paramLabel = "FILE", description = "--filtering: a measured height field to add to the "
             + "--patches (with --max-height and --pixel-size, as brdfmap reads it).")
     Path patchFile;
@@ -238,9 +230,6 @@ final class BenchCommand implements Callable<Integer> {
         if (sizePx < 8 || sizePx > 512) {
             throw new UserInputException("--size of the filtering maps must be between 8 and 512 pixels");
         }
-        if (rounds < 1 || rounds > 20) {
-            throw new UserInputException("--rounds must be 1..20, got " + rounds);
-        }
         for (double d : lightsDeg) {
             new diffract.optics.LightSource(d); // a refused size fails before any work
         }
@@ -256,7 +245,7 @@ final class BenchCommand implements Callable<Integer> {
         BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
                 .coherenceLengthUm(coherenceLengthUm));
         FilteringTargets targets = new FilteringTargets(new ReferenceMaps(outputDir.resolve("reference-maps"),
-                reporter), lobes, sizePx, rounds, frames, bakedUvSamples, reporter);
+                reporter), lobes, sizePx, FilteringTargets.ROUNDS, frames, FilteringTargets.BAKED_UV_SAMPLES, reporter);
         int total = list.size() * lightsDeg.size();
         List<FilteringTargets.Row> done = new ArrayList<>();
         long start = System.nanoTime();
@@ -272,7 +261,7 @@ final class BenchCommand implements Callable<Integer> {
                         + e.getMessage(), e);
             }
         });
-        String md = FilteringTargets.markdown(rows, sizePx, lobes, bakedUvSamples)
+        String md = FilteringTargets.markdown(rows, sizePx, lobes, FilteringTargets.BAKED_UV_SAMPLES)
                 + "\n" + machine(targets.glInfo()) + "\n";
         Files.writeString(outputDir.resolve("filtering.md"), md, StandardCharsets.UTF_8);
         System.out.printf(Locale.ROOT, "bench --filtering: %d rows in %.0f s%nwrote %s, %s%n%s", rows.size(),

@@ -101,22 +101,22 @@ final class BrdfOptions {
         @Option(names = "--refractive-index", paramLabel = "N", description = "For Schlick's Fresnel term (default 1.5).")
         Double refractiveIndex;
 
-        @Option(names = "--light-size-deg", paramLabel = "DEG",
-                description = "Angular diameter of the light, 0.." + (int) LightSource.MAX_DIAMETER_DEG + " degrees, a "
-                        + "Gaussian of sigma D/4 per axis (default: 0, a point light, on brdfmap; the sun's 0.53 on "
-                        + "view, render and in scenes). Rendered by lobes, baked and the reference.")
-        Double lightSizeDeg;
+        @Option(names = "--pixel-filter", paramLabel = "F", completionCandidates = OptionTypes.PixelFilterNames.class,
+                description = "${COMPLETION-CANDIDATES}: a pixel shows the average over its footprint (default) or "
+                        + "the BRDF at its centre, as the thesis' maps (aliases orders narrower than a pixel). "
+                        + "Honoured by lobes and the reference.")
+        PixelFilter pixelFilter;
 
         @Option(names = "--fresnel", paramLabel = "F", completionCandidates = OptionTypes.FresnelNames.class,
                 description = "${COMPLETION-CANDIDATES}: Schlick's reflectance counted once (default) or squared, as "
                         + "the thesis' eq. cfact prints it (for comparisons).")
         FresnelModel fresnel;
 
-        @Option(names = "--pixel-filter", paramLabel = "F", completionCandidates = OptionTypes.PixelFilterNames.class,
-                description = "${COMPLETION-CANDIDATES}: a pixel shows the average over its footprint (default) or "
-                        + "the BRDF at its centre, as the thesis' maps (aliases orders narrower than a pixel). "
-                        + "Honoured by lobes and the reference.")
-        PixelFilter pixelFilter;
+        @Option(names = "--light-size-deg", paramLabel = "DEG",
+                description = "Angular diameter of the light, 0.." + (int) LightSource.MAX_DIAMETER_DEG + " degrees, a "
+                        + "Gaussian of sigma D/4 per axis (default: 0, a point light, on brdfmap; the sun's 0.53 on "
+                        + "view, render and in scenes). Rendered by lobes, baked and the reference.")
+        Double lightSizeDeg;
     }
 
     /** {@link diffract.optics.LobeQuadrature}. */

@@ -37,6 +37,10 @@ public final class FilteringTargets {
     public static final double THETA_I_DEG = 30;
     public static final double MAX_DELTA_E = 1;
     public static final double MIN_SPEED_UP = 10;
+    /** Alternating timing rounds of the lobes method and FLSS. */
+    public static final int ROUNDS = 3;
+    /** (u, v) samples of the baked table measured beside them. */
+    public static final int BAKED_UV_SAMPLES = 256;
 
     /** One patch under one light: errors against the reference and GPU times (NaN where not measured). */
     public record Row(String patch, double lightDeg, int litPixels, double lobesMean, double lobesP95,

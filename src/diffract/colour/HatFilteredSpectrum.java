@@ -186,16 +186,5 @@ public final class HatFilteredSpectrum {
         return out;
     }
 
-    /** N = integral over the band of S ybar (the product interpolated between whole nanometres). */
-    public double normaliser() {
-        return normaliser;
-    }
 
-    public double lambdaMinNm() {
-        return lambdaMinNm;
-    }
-
-    public double lambdaMaxNm() {
-        return lambdaMaxNm;
-    }
 }

@@ -68,11 +68,20 @@ public final class FloatFramebuffer {
     /** RGBA floats, rows top-down (OpenGL's row 0 is the bottom one, images start at the top). */
     float[] readRgbaTopDown(GL3 gl) {
         bind(gl);
+        float[] topDown = readBoundRgbaTopDown(gl, width, height);
+        GLErrors.check(gl, "reading back the float framebuffer");
+        return topDown;
+    }
+
+    /**
+     * RGBA floats of the read buffer bound now (a framebuffer's attachment or a window's back buffer), {@code width}
+     * x {@code height} from the corner, rows top-down.
+     */
+    public static float[] readBoundRgbaTopDown(GL3 gl, int width, int height) {
         gl.glPixelStorei(GL.GL_PACK_ALIGNMENT, 4);
         gl.glPixelStorei(GL2ES3.GL_PACK_ROW_LENGTH, 0);
         FloatBuffer buffer = FloatBuffer.allocate(width * height * 4);
         gl.glReadPixels(0, 0, width, height, GL.GL_RGBA, GL.GL_FLOAT, buffer);
-        GLErrors.check(gl, "reading back the float framebuffer");
         float[] bottomUp = buffer.array();
         float[] topDown = new float[bottomUp.length];
         int row = width * 4;

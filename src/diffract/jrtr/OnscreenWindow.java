@@ -5,7 +5,6 @@ import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
 import com.jogamp.opengl.GLEventListener;
 
-import java.nio.FloatBuffer;
 
 /**
  * A NEWT window showing a {@link GLEventListener} (usually a {@link Renderer}, the same one
@@ -52,16 +51,8 @@ public final class OnscreenWindow implements AutoCloseable {
         // runs after the listeners' display and before the buffer swap, so the back buffer holds this frame
         window.invoke(true, drawable -> {
             GL3 gl = drawable.getGL().getGL3();
-            FloatBuffer buffer = FloatBuffer.allocate(width * height * 4);
             gl.glReadBuffer(GL.GL_BACK);
-            gl.glPixelStorei(GL.GL_PACK_ALIGNMENT, 4);
-            gl.glReadPixels(0, 0, width, height, GL.GL_RGBA, GL.GL_FLOAT, buffer);
-            float[] topDown = new float[width * height * 4];
-            int row = width * 4;
-            for (int y = 0; y < height; y++) {
-                System.arraycopy(buffer.array(), y * row, topDown, (height - 1 - y) * row, row);
-            }
-            result[0] = topDown;
+            result[0] = FloatFramebuffer.readBoundRgbaTopDown(gl, width, height);
             return true;
         });
         if (result[0] == null) {

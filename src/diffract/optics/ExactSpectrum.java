@@ -178,18 +178,9 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
             private int cachedCentre = Integer.MIN_VALUE;
             private double[][] e;
 
-            @Override
-            public void at(double a, double[] out) {
-                sum(a, out, false);
-            }
-
-            @Override
-            public void withDerivative(double a, double[] out) {
-                sum(a, out, true);
-            }
-
             /** sum_n delta^n / n! E_{j,n}(texel), and its derivative sum_n delta^(n-1) / (n-1)! E_{j,n}. */
-            private void sum(double a, double[] out, boolean derivative) {
+            @Override
+            public void sum(double a, double[] out, boolean derivative) {
                 int centre = Double.isInfinite(centreSpacing) ? 0 : (int) Math.rint(a / centreSpacing);
                 double delta = Double.isInfinite(centreSpacing) ? 0 : a - centre * centreSpacing;
                 if (centre != cachedCentre) {

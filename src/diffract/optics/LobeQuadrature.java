@@ -83,46 +83,6 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
         return GaussianLobes.pairRadius(sigmaTexels, pairThreshold);
     }
 
-    public LobeQuadrature withNodesPerSigma(double nodes) {
-        return new LobeQuadrature(pairThreshold, nodes, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withMaxStepNm(double step) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, step, reachSigmas, weightStepNm, lightNodes, cutoff,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withPairThreshold(double threshold) {
-        return new LobeQuadrature(threshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withReachSigmas(double reach) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reach, weightStepNm, lightNodes, cutoff,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withWeightStepNm(double step) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, step, lightNodes, cutoff,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withLightNodes(int nodes) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, nodes, cutoff,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withCutoff(double c) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, c,
-                weightTolerance);
-    }
-
-    public LobeQuadrature withWeightTolerance(double tolerance) {
-        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff,
-                tolerance);
-    }
-
     /**
      * Why a shader that sums whole texels (lobes.frag) cannot draw a patch of this extent under these settings: the
      * window keeps pairs of texels above the pair threshold (sigma_f too wide); empty when it can.

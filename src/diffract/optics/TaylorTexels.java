@@ -70,16 +70,7 @@ final class TaylorTexels implements TexelCoefficients {
             private final double[] im = new double[highestOrder + 1];
 
             @Override
-            public void at(double a, double[] out) {
-                sum(a, out, false);
-            }
-
-            @Override
-            public void withDerivative(double a, double[] out) {
-                sum(a, out, true);
-            }
-
-            private void sum(double a, double[] out, boolean derivative) {
+            public void sum(double a, double[] out, boolean derivative) {
                 int j = centres == null ? 0 : centres.nearestCentre(a);
                 if (j != cachedCentre) {
                     for (int n = 0; n <= highestOrder; n++) {

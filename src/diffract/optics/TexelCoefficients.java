@@ -27,11 +27,18 @@ interface TexelCoefficients {
 
     /** One texel's coefficient. Not thread-safe: each thread asks for its own. */
     interface Texel {
+        /** T_m(a) as (Re, Im) into {@code out}; with {@code derivative} also dT_m/da as (dRe, dIm) after them. */
+        void sum(double a, double[] out, boolean derivative);
+
         /** T_m(a) as (Re, Im) into {@code out}. */
-        void at(double a, double[] out);
+        default void at(double a, double[] out) {
+            sum(a, out, false);
+        }
 
         /** T_m(a) and dT_m/da as (Re, Im, dRe, dIm) into {@code out}. */
-        void withDerivative(double a, double[] out);
+        default void withDerivative(double a, double[] out) {
+            sum(a, out, true);
+        }
     }
 
     /** Whether frequency index (mx, my) lies inside a rows x cols DFT whose centre is at (cols / 2, rows / 2). */

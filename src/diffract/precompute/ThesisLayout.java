@@ -71,20 +71,10 @@ public final class ThesisLayout {
      */
     public static double[] toThesis(float[] nativeTerm, int rows, int cols) {
         double[] out = new double[2 * rows * cols];
-        for (int i = 0; i < rows; i++) {
-            int r = nativeRowOfThesisRow(i, rows);
-            double angle = 2 * Math.PI * frequencyOfThesisRow(i, rows) / rows;
-            double cos = Math.cos(angle);
-            double sin = Math.sin(angle);
-            for (int j = 0; j < cols; j++) {
-                int src = 2 * (r * cols + j);
-                double re = nativeTerm[src];
-                double im = nativeTerm[src + 1];
-                int dst = 2 * (i * cols + j);
-                out[dst] = re * cos - im * sin;
-                out[dst + 1] = re * sin + im * cos;
-            }
-        }
+        rotateRows(rows, cols, 1, k -> nativeTerm[k], false, (d, re, im) -> {
+            out[d] = re;
+            out[d + 1] = im;
+        });
         return out;
     }
 
@@ -94,20 +84,38 @@ public final class ThesisLayout {
      */
     public static float[] toNative(double[] thesisImage, int rows, int cols) {
         float[] out = new float[2 * rows * cols];
+        rotateRows(rows, cols, -1, k -> thesisImage[k], true, (d, re, im) -> {
+            out[d] = (float) re;
+            out[d + 1] = (float) im;
+        });
+        return out;
+    }
+
+    /** Receives one complex value at an interleaved index. */
+    private interface ComplexSink {
+        void put(int index, double re, double im);
+    }
+
+    /**
+     * Each thesis row i and its native row r: the row's complex values times exp(sign i 2 pi f_i / R), read from
+     * {@code in} (interleaved Re/Im; in thesis rows when {@code inThesisRows}, else native rows) and written to the
+     * other layout.
+     */
+    private static void rotateRows(int rows, int cols, int sign, java.util.function.IntToDoubleFunction in,
+                                   boolean inThesisRows, ComplexSink out) {
         for (int i = 0; i < rows; i++) {
             int r = nativeRowOfThesisRow(i, rows);
-            double angle = -2 * Math.PI * frequencyOfThesisRow(i, rows) / rows;
+            double angle = sign * 2 * Math.PI * frequencyOfThesisRow(i, rows) / rows;
             double cos = Math.cos(angle);
             double sin = Math.sin(angle);
+            int from = inThesisRows ? i : r;
+            int to = inThesisRows ? r : i;
             for (int j = 0; j < cols; j++) {
-                int src = 2 * (i * cols + j);
-                double re = thesisImage[src];
-                double im = thesisImage[src + 1];
-                int dst = 2 * (r * cols + j);
-                out[dst] = (float) (re * cos - im * sin);
-                out[dst + 1] = (float) (re * sin + im * cos);
+                int src = 2 * (from * cols + j);
+                double re = in.applyAsDouble(src);
+                double im = in.applyAsDouble(src + 1);
+                out.put(2 * (to * cols + j), re * cos - im * sin, re * sin + im * cos);
             }
         }
-        return out;
     }
 }

@@ -13,7 +13,6 @@ import diffract.optics.Variant;
 import diffract.render.BakedTables;
 import diffract.scene.DisplayMode;
 
-import java.nio.FloatBuffer;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -330,16 +329,9 @@ public final class RefiningRenderer implements GLEventListener {
         }
         int width = windowWidth;
         int height = windowHeight;
-        FloatBuffer buffer = FloatBuffer.allocate(width * height * 4);
         gl.glBindFramebuffer(GL.GL_READ_FRAMEBUFFER, framebuffer);
         gl.glReadBuffer(framebuffer == 0 ? GL.GL_BACK : GL.GL_COLOR_ATTACHMENT0);
-        gl.glPixelStorei(GL.GL_PACK_ALIGNMENT, 4);
-        gl.glReadPixels(0, 0, width, height, GL.GL_RGBA, GL.GL_FLOAT, buffer);
-        float[] topDown = new float[width * height * 4];
-        int row = width * 4;
-        for (int y = 0; y < height; y++) {
-            System.arraycopy(buffer.array(), y * row, topDown, (height - 1 - y) * row, row);
-        }
+        float[] topDown = diffract.jrtr.FloatFramebuffer.readBoundRgbaTopDown(gl, width, height);
         Shown shownNow = new Shown(topDown, width, height, status);
         for (; request != null; request = readBacks.poll()) {
             request.complete(shownNow);

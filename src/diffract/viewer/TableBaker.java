@@ -7,8 +7,6 @@ import diffract.render.BakedTables;
 import diffract.util.Reporter;
 
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.TimeUnit;
 
 /**
  * Bakes the baked variant's table in the background when the window needs one it has not got (a bake takes
@@ -18,11 +16,7 @@ import java.util.concurrent.TimeUnit;
  */
 public final class TableBaker implements AutoCloseable {
     private final ViewerModel model;
-    private final ExecutorService executor = Executors.newSingleThreadExecutor(runnable -> {
-        Thread thread = new Thread(runnable, "diffract-viewer-bake");
-        thread.setDaemon(true); // a bake must not keep the JVM alive after the window closed
-        return thread;
-    });
+    private final ExecutorService executor = diffract.util.BackgroundThreads.single("diffract-viewer-bake");
     private boolean busy;
 
     public TableBaker(ViewerModel model) {
@@ -64,12 +58,7 @@ public final class TableBaker implements AutoCloseable {
     /** Stops waiting bakes; a bake under way finishes on its daemon thread and is discarded with the JVM. */
     @Override
     public void close() {
-        executor.shutdownNow();
-        try {
-            executor.awaitTermination(100, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        diffract.util.BackgroundThreads.stop(executor);
     }
 
     /** The bake's progress into the model, only when the whole percent changes. */

@@ -4,8 +4,6 @@ import diffract.optics.TaylorTerms;
 import diffract.util.Reporter;
 
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.TimeUnit;
 
 /**
  * Computes more Taylor terms in the background when the model asks for more than it holds. Progress goes into the
@@ -15,11 +13,7 @@ import java.util.concurrent.TimeUnit;
  */
 public final class TermPrecomputer implements AutoCloseable {
     private final ViewerModel model;
-    private final ExecutorService executor = Executors.newSingleThreadExecutor(runnable -> {
-        Thread thread = new Thread(runnable, "diffract-viewer-precompute");
-        thread.setDaemon(true); // a precompute must not keep the JVM alive after the window closed
-        return thread;
-    });
+    private final ExecutorService executor = diffract.util.BackgroundThreads.single("diffract-viewer-precompute");
     private int runningOrder = -1;
 
     public TermPrecomputer(ViewerModel model) {
@@ -70,12 +64,7 @@ public final class TermPrecomputer implements AutoCloseable {
     /** Stops waiting runs; a run under way finishes on its daemon thread and is discarded with the JVM. */
     @Override
     public void close() {
-        executor.shutdownNow();
-        try {
-            executor.awaitTermination(100, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        diffract.util.BackgroundThreads.stop(executor);
     }
 
     /** Turns the precompute's progress into model updates, only when the whole percent changes. */

@@ -19,8 +19,9 @@ class LobeSpectrumTest {
      * Fine enough that the rule's own error is below 1e-6: 8 nodes per sigma, 0.05 nm at most, the coefficients summed
      * at every node (no weight table), every lobe (no cutoff).
      */
-    static final LobeQuadrature FINE = LobeQuadrature.DEFAULT.withNodesPerSigma(8).withMaxStepNm(0.05)
-            .withWeightStepNm(0).withReachSigmas(9).withPairThreshold(1e-13).withWeightTolerance(0).withCutoff(0);
+    // pair threshold, nodes per sigma, widest step nm, reach, weight step nm, light nodes, cutoff, weight tolerance
+    static final LobeQuadrature FINE = new LobeQuadrature(1e-13, 8, 0.05, 9, 0, LobeQuadrature.DEFAULT.lightNodes(), 0,
+            0);
 
     /**
      * One lobe alone (a patch whose only texel is m = (3, 1), with the exact coefficient of a real texel), for window
