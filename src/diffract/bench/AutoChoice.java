@@ -54,6 +54,10 @@ public record AutoChoice(BenchResult chosen, Optional<BenchResult> cheaperReject
     /** "flss, N = 16, 10 nm, R = 0, rg8", or with the early stop "flss, N = 30, 5 nm, R = auto, stop at 0.0001, rg32f". */
     public static String describe(BenchResult r) {
         BenchConfig c = r.config();
+        if (c.settings().variant() == diffract.optics.Variant.LOBES) {
+            // exact in wavelength, whole texels, its own float32 weight table: only N applies
+            return String.format(Locale.ROOT, "lobes, N = %d", c.settings().taylor().highestOrder());
+        }
         double tolerance = c.settings().taylor().tolerance();
         return String.format(Locale.ROOT, "%s, N = %d, %s nm, R = %s, %s%s", c.settings().variant().label(),
                 c.settings().taylor().highestOrder(), Csv.number(c.settings().spectral().lambdaStepNm()),
