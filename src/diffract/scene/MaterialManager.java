@@ -65,10 +65,23 @@ final class MaterialManager {
             reporter.warn(refusal.get() + ": drawing it with flss under a point light instead");
             s = s.with(b -> b.variant(Variant.FLSS).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
         }
+        if (!filters(s.variant()) && !s.illumination().light().isPoint()) {
+            // a point-sampling variant asked for on a scene lit by an extended light (the sun by default): it samples
+            // the light at its centre, said once
+            reporter.warn(s.variant().label() + " samples the light at its centre: drawing the "
+                    + s.illumination().light().angularDiameterDeg()
+                    + "-degree light as a point light (lobes and baked filter by its size)");
+            s = s.with(b -> b.lightSizeDeg(0));
+        }
         settings = s;
         pipeline = DiffractionPipeline.cached(patch, settings.spectral().lambdaMinNm());
         SamplingCheck.warnAboutAliasing(patch.meanSubtracted(), settings.spectral().lambdaMinNm(),
                 settings.spectral().lambdaMaxNm(), reporter);
+    }
+
+    /** Whether the variant filters by the light's size (the lobes method and its baked table). */
+    private static boolean filters(Variant v) {
+        return v == Variant.LOBES || v == Variant.BAKED;
     }
 
     DiffractionPipeline pipeline() {

@@ -104,6 +104,8 @@ class SceneCliTest {
         assertEquals(0, result[0], (String) result[2]);
         String out = (String) result[1];
         assertTrue(out.contains("48x32") && out.contains("pq N=6") && out.contains("lambda step 40.0 nm"), out);
+        // the scene's sun is drawn as a point light by a variant that samples the light at its centre, with a notice
+        assertTrue(((String) result[2]).contains("pq samples the light at its centre"), (String) result[2]);
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(48, image.getWidth());
         assertEquals(32, image.getHeight());

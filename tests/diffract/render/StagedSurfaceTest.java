@@ -47,10 +47,11 @@ class StagedSurfaceTest {
     @Test
     void flatScalesGiveThePlainSurfaceAndTiltedOnesDoNot() {
         GlTestSupport.assumeOffscreenGl();
-        // at 10 um the grating's orders are a few pixels wide: a tilt moves many lit values
+        // FLSS at 10 um under a point light: the grating's orders are a few pixels wide, so a tilt moves many values
         SceneSetup scene = Fabricator.fabricate(Path.of("assets", "scenes", "blazed-grating-plane.json"),
                 Reporter.SILENT);
-        SceneSetup plain = scene.withSettings(scene.settings().with(b -> b.coherenceLengthUm(10)));
+        SceneSetup plain = scene.withSettings(scene.settings().with(b -> b.coherenceLengthUm(10)
+                .variant(diffract.optics.Variant.FLSS).lightSizeDeg(0)));
         float[] reference = render(plain);
         float[] flat = render(plain.withStage(new Stage(frames(0), null, null, ToneMapping.clip())));
         float[] tilted = render(plain.withStage(new Stage(frames(0.2f), null, null, ToneMapping.clip())));

@@ -92,7 +92,8 @@ class FabricatorTest {
                 Reporter.SILENT);
         assertEquals("plane", blazed.shape().name());
         assertEquals(16, blazed.patch().rows());
-        assertEquals(26 * 25, blazed.patch().cols());
+        assertEquals(6 * 25, blazed.patch().cols());
+        assertEquals(Variant.LOBES, blazed.settings().variant());
         assertEquals(3.5, blazed.camera().distance(), 1e-12);
         assertEquals(0, blazed.camera().elevationDeg(), 1e-12);
         assertEquals(30, blazed.light().thetaDeg(), 1e-9);
