@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates the BRDF-map pictures of README.md and docs/accuracy.md from the repository root: bash docs/figures.sh
 # The Elaphe pictures need the measured patch in ../shared/data (skipped without it). They are drawn at a 10 um
-# coherence, where the thesis' point-sampling approximations are valid (docs/filtering.md has the 65 um pictures).
+# coherence, where the thesis' point-sampling approximations are valid, with pixels sampled at their centres as the
+# thesis' maps are (docs/filtering.md has the 65 um pictures, pixels averaged).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -p docs/images out/figures
@@ -9,21 +10,21 @@ run() { echo "+ ./diffract $*" >&2; ./diffract "$@" >/dev/null; }
 
 run patch blazed --period 2.5 --height 0.2 --samples-per-period 25 --periods 26 --rows 16 -o out/figures/blazed.gsf
 for variant in reference flss nmm pq; do
-    run brdfmap --patch out/figures/blazed.gsf --theta-i 30 --coherence-length 10 --variant "$variant" --exposure 15 --size 256 \
+    run brdfmap --patch out/figures/blazed.gsf --theta-i 30 --coherence-length 10 --pixel-filter point --variant "$variant" --exposure 15 --size 256 \
         -o "docs/images/blazed-$variant-30.png"
 done
-run brdfmap --patch out/figures/blazed.gsf --theta-i 75 --coherence-length 10 --variant reference --exposure auto --size 256 \
+run brdfmap --patch out/figures/blazed.gsf --theta-i 75 --coherence-length 10 --pixel-filter point --variant reference --exposure auto --size 256 \
     -o docs/images/blazed-reference-75.png
-run brdfmap --patch out/figures/blazed.gsf --theta-i 30 --coherence-length 10 --lambda 550 --variant reference --exposure auto --size 256 \
+run brdfmap --patch out/figures/blazed.gsf --theta-i 30 --coherence-length 10 --pixel-filter point --lambda 550 --variant reference --exposure auto --size 256 \
     -o docs/images/blazed-reference-30-550nm.png
 
 ELAPHE=../shared/data/patches/elaphe-100px.png
 if [ -f "$ELAPHE" ]; then
     for variant in reference flss nmm pq; do
-        run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 30 --phi-i 90 --coherence-length 10 \
+        run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 30 --phi-i 90 --coherence-length 10 --pixel-filter point \
             --variant "$variant" --exposure 25 --size 256 -o "docs/images/elaphe-$variant-30.png"
     done
-    run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 75 --phi-i 90 --coherence-length 10 \
+    run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 75 --phi-i 90 --coherence-length 10 --pixel-filter point \
         --variant reference --exposure auto --size 256 -o docs/images/elaphe-reference-75.png
 else
     echo "no $ELAPHE: Elaphe pictures skipped" >&2
