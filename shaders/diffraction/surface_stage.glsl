@@ -45,7 +45,8 @@ struct SurfaceFrame {
     vec3 t;    // the patch's x axis
     vec3 b;
     vec3 n;
-    vec3 base; // the mesh's own normal: light behind it is behind the body
+    vec3 base;  // the mesh's own normal: light behind it is behind the body
+    vec3 baseT; // the mesh's own tangent frame (baseT, cross(base, baseT), base), smooth across the scales
 };
 
 SurfaceFrame surfaceFrame() {
@@ -54,6 +55,7 @@ SurfaceFrame surfaceFrame() {
     vec3 t0 = safeNormalize(surfaceWorldTangent - dot(surfaceWorldTangent, n0) * n0);
     vec3 b0 = cross(n0, t0);
     f.base = n0;
+    f.baseT = t0;
 #ifdef SCALE_FRAMES
     vec4 texel = texture(scaleFrames, surfaceTexcoord);
     vec3 nLocal = vec3(texel.xy, sqrt(max(1.0 - dot(texel.xy, texel.xy), 0.0)));
@@ -103,8 +105,8 @@ vec4 uvDerivatives(SurfaceFrame f, vec3 towardsWorld, vec3 towardsCamera) {
 #ifdef FILTERED
     SurfaceFrame mesh = f;
     mesh.n = f.base;
-    mesh.t = safeNormalize(surfaceWorldTangent - dot(surfaceWorldTangent, f.base) * f.base);
-    mesh.b = cross(mesh.n, mesh.t);
+    mesh.t = f.baseT;
+    mesh.b = cross(f.base, f.baseT);
     vec2 uv = -(toFrame(mesh, safeNormalize(towardsWorld)).xy + toFrame(mesh, towardsCamera).xy);
     return vec4(dFdx(uv), dFdy(uv));
 #else

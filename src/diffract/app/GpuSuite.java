@@ -149,7 +149,7 @@ final class GpuSuite {
      */
     static BrdfSettings converged(BrdfSettings s) {
         int order = Math.max(REFERENCE_ORDER, s.taylor().highestOrder());
-        return filters(s.variant()) ? s.with(b -> b.variant(Variant.LOBES).highestOrder(order))
+        return s.variant().filtersLight() ? s.with(b -> b.variant(Variant.LOBES).highestOrder(order))
                 : s.with(b -> b.variant(Variant.FLSS).lambdaStepNm(1).highestOrder(order));
     }
 
@@ -171,14 +171,10 @@ final class GpuSuite {
             return BrdfSettings.thesis(Variant.FLSS);
         }
         Variant v = Variant.parse(name[1]);
-        return filters(v) ? scene.with(b -> b.variant(v))
+        return v.filtersLight() ? scene.with(b -> b.variant(v))
                 : scene.with(b -> b.variant(v).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
     }
 
-    /** The variants that filter by pixel footprint and light size: the lobes method and its baked table. */
-    static boolean filters(Variant v) {
-        return v == Variant.LOBES || v == Variant.BAKED;
-    }
 
     /** Runs every row and writes the files; returns the rows. */
     List<Row> run() throws IOException {
@@ -218,13 +214,11 @@ final class GpuSuite {
             boolean[] covered = covered(reference);
             DeltaEStatistics error = DeltaEStatistics.of(xyzOfDisplayRgb(reference), xyzOfDisplayRgb(picture), covered);
             rows.add(log(new Row("scene", name[0], settings, size[0], size[1], ms, size[0], error.mean(), error.p95(),
-                    error.pixels(), "gpu " + (filters(settings.variant()) ? "lobes" : "flss") + " N="
-                    + converged.taylor().highestOrder() + (filters(settings.variant()) ? "" : " 1 nm"))));
+                    error.pixels(), "gpu " + (settings.variant().filtersLight() ? "lobes" : "flss") + " N="
+                    + converged.taylor().highestOrder() + (settings.variant().filtersLight() ? "" : " 1 nm"))));
         }
         if (scenesOnly) {
-            Files.writeString(outputDir.resolve("gpu-suite.csv"), csv(rows, gl), StandardCharsets.UTF_8);
-            Files.writeString(outputDir.resolve("gpu-suite.md"), markdown(rows, gl), StandardCharsets.UTF_8);
-            return rows;
+            return written(rows, gl);
         }
         BenchPatch patch = new BenchPatch("scene-patch", base.patch(), base.light().phiDeg());
         ReferenceMaps references = new ReferenceMaps(outputDir.resolve("reference-maps"), reporter);
@@ -250,6 +244,11 @@ final class GpuSuite {
             rows.add(log(new Row("brdf map", name[0], settings, mapSize, mapSize, ms, errorSizePx, error.mean(),
                     error.p95(), error.litPixels(), "cpu exact 1 nm")));
         }
+        return written(rows, gl);
+    }
+
+    /** Writes gpu-suite.csv and gpu-suite.md of the rows; returns them. */
+    private List<Row> written(List<Row> rows, GLInfo gl) throws IOException {
         Files.writeString(outputDir.resolve("gpu-suite.csv"), csv(rows, gl), StandardCharsets.UTF_8);
         Files.writeString(outputDir.resolve("gpu-suite.md"), markdown(rows, gl), StandardCharsets.UTF_8);
         return rows;

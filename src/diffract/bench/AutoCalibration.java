@@ -83,9 +83,7 @@ public final class AutoCalibration {
     static String key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
         String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
                 Csv.number(base.spectral().lambdaMinNm()), Csv.number(base.spectral().lambdaMaxNm()),
-                Csv.number(base.illumination().sigmaSpatialUm()), Csv.number(base.illumination().refractiveIndex()),
-                Csv.number(base.illumination().light().angularDiameterDeg()), base.illumination().pixelFilter().label(),
-                base.illumination().fresnel().label(), Integer.toString(base.window().pqReplicas()), plan.toString());
+                Csv.illuminationKey(base.illumination()), Integer.toString(base.window().pqReplicas()), plan.toString());
         try {
             byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));
             return HexFormat.of().formatHex(hash).substring(0, 32);

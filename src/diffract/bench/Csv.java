@@ -1,5 +1,7 @@
 package diffract.bench;
 
+import diffract.optics.IlluminationSettings;
+
 import java.util.Locale;
 
 /** Number formatting shared by the bench's CSV, keys and tables. */
@@ -16,5 +18,14 @@ final class Csv {
             return Long.toString((long) v);
         }
         return String.format(Locale.ROOT, "%.6g", v).replaceAll("(\\.\\d*?)0+$", "$1").replaceAll("\\.$", "");
+    }
+
+    /**
+     * Every illumination setting that changes a map, for cache keys: sigma_s, refractive index, the light's
+     * diameter, the pixel filter and the Fresnel model.
+     */
+    static String illuminationKey(IlluminationSettings i) {
+        return String.join("-", "c" + number(i.sigmaSpatialUm()), "n" + number(i.refractiveIndex()),
+                "d" + number(i.light().angularDiameterDeg()), i.pixelFilter().label(), i.fresnel().label());
     }
 }

@@ -145,9 +145,10 @@ public final class FilteringTargets {
         return n % 2 == 1 ? sorted[n / 2] : (sorted[n / 2 - 1] + sorted[n / 2]) / 2;
     }
 
-    /** The patch as the pipeline names it (terms from the user cache). */
-    public static DiffractionPipeline pipelineOf(BenchPatch patch) {
-        return DiffractionPipeline.cached(NamedPatch.of("bench:" + patch.name(), patch.field()), 380);
+    /** The patch as the pipeline names it (terms from the user cache, for the settings' shortest wavelength). */
+    DiffractionPipeline pipelineOf(BenchPatch patch) {
+        return DiffractionPipeline.cached(NamedPatch.of("bench:" + patch.name(), patch.field()),
+                lobes.spectral().lambdaMinNm());
     }
 
     public static String csv(List<Row> rows, GLInfo gl) {

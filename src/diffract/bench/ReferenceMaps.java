@@ -4,7 +4,6 @@ import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
-import diffract.optics.IlluminationSettings;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
@@ -31,12 +30,10 @@ public final class ReferenceMaps {
     /** XYZ of the reference map (3 floats per pixel, rows from the top), from the cache or computed and cached. */
     public float[] xyz(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
         BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
-        IlluminationSettings light = reference.illumination();
-        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-c%s-n%s-d%s-%s-%s.pfm",
+        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-%s.pfm",
                 patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
                 sizePx, Csv.number(reference.spectral().lambdaMinNm()), Csv.number(reference.spectral().lambdaMaxNm()),
-                Csv.number(light.sigmaSpatialUm()), Csv.number(light.refractiveIndex()),
-                Csv.number(light.light().angularDiameterDeg()), light.pixelFilter().label(), light.fresnel().label()));
+                Csv.illuminationKey(reference.illumination())));
         if (Files.isRegularFile(file)) {
             try {
                 int[] whc = new int[3];

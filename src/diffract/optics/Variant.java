@@ -34,6 +34,14 @@ public enum Variant {
         return this != BAKED;
     }
 
+    /**
+     * Whether it averages over an extended light's directions (the lobes method and its baked table); the reference
+     * does too but draws no scenes, and the others sample the light at its centre.
+     */
+    public boolean filtersLight() {
+        return this == LOBES || this == BAKED;
+    }
+
     /** Whether it runs as a GPU shader (all but the reference). */
     public boolean runsOnGpu() {
         return this != REFERENCE;

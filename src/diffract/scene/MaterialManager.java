@@ -65,7 +65,7 @@ final class MaterialManager {
             reporter.warn(refusal.get() + ": drawing it with flss under a point light instead");
             s = s.with(b -> b.variant(Variant.FLSS).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
         }
-        if (!filters(s.variant()) && !s.illumination().light().isPoint()) {
+        if (!s.variant().filtersLight() && !s.illumination().light().isPoint()) {
             // a point-sampling variant asked for on a scene lit by an extended light (the sun by default): it samples
             // the light at its centre, said once
             reporter.warn(s.variant().label() + " samples the light at its centre: drawing the "
@@ -77,11 +77,6 @@ final class MaterialManager {
         pipeline = DiffractionPipeline.cached(patch, settings.spectral().lambdaMinNm());
         SamplingCheck.warnAboutAliasing(patch.meanSubtracted(), settings.spectral().lambdaMinNm(),
                 settings.spectral().lambdaMaxNm(), reporter);
-    }
-
-    /** Whether the variant filters by the light's size (the lobes method and its baked table). */
-    private static boolean filters(Variant v) {
-        return v == Variant.LOBES || v == Variant.BAKED;
     }
 
     DiffractionPipeline pipeline() {
