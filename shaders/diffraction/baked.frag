@@ -6,7 +6,7 @@
 // wavelength rule) per table sample; without BAKE each fragment reads the table with one trilinear lookup and
 // multiplies by its own gain factor and shadowing (diffraction_main.glsl), which depend on the directions.
 // A table of the lobes method (baked_lobes.frag bakes it: each sample averaged over its cell and the light) is
-// mip-mapped and looked up over the pixel's footprint with textureGrad (BAKED_FILTERED).
+// mip-mapped and looked up over the pixel's footprint (BAKED_FILTERED).
 #include "spectrum_gaussian.glsl"
 #include "wavelengths_uniform.glsl"
 
@@ -46,39 +46,55 @@ vec3 bakedTexcoord(vec3 uvw) {
 }
 
 #ifdef BAKED_FILTERED
-// The table as one mip-mapped 2-D layer per w sample (FloatTexture3D mipmapped): the pixel's footprint becomes
-// texture-coordinate gradients in (u, v), GL picks the mip level whose cells match it (2 x 2 box averages of the
-// cell-averaged samples within a slice), and the shader interpolates linearly between the two nearest w slices.
+// The table as one mip-mapped 2-D layer per w sample (FloatTexture3D mipmapped): the pixel's footprint, a Gaussian in
+// (u, v), becomes a mip level and two lookups along its long axis (mip_footprint.glsl), and the shader interpolates
+// linearly between the two nearest w slices.
 #define FILTERED 1
+#include "/engine/mip_footprint.glsl"
 uniform sampler2DArray bakedLayers;
-vec2 footprintGradientX;
-vec2 footprintGradientY;
+// 1: surface pixels average over their footprint (PixelFilter.BOX); 0: their centre direction only
+uniform float pixelFootprintScale;
+// sigma_a of the light the table holds (isotropic, as at normal incidence: baked_lobes.frag)
+uniform float tableLightSigmaRad;
+MipFootprint footprint;
 
-float texcoordPerUv() {
-    return 0.25 * (bakedSamples.x - 1.0) / bakedSamples.x;
+// Texels of the table per unit of u or v.
+float texelsPerUv() {
+    return 0.25 * (bakedSamples.x - 1.0);
 }
 
+// A BRDF-map pixel: a box of half-width halfWidth in u and v, variance halfWidth^2 / 3 per axis.
 void setMapPixel(float halfWidth) {
-    footprintGradientX = vec2(2.0 * halfWidth * texcoordPerUv(), 0.0);
-    footprintGradientY = vec2(0.0, 2.0 * halfWidth * texcoordPerUv());
+    float h = halfWidth * texelsPerUv();
+    footprint = mipFootprint(vec3(h * h / 3.0, 0.0, h * h / 3.0));
+}
+
+// A surface pixel: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v) derivatives (lobes_footprint.glsl's
+// setSurfacePixelUnder), plus what a light of sigma_a = sigmaRad adds to the table's light: LightSource.uvCovariance
+// at omega_i, sigma_a^2 (cos^2 theta r r^T + e e^T), less the table's isotropic sigma_a^2 where positive (a
+// narrower light than the table's is not sharpened).
+void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
+    vec3 c = pixelFootprintScale * vec3(dUvDx.x * dUvDx.x + dUvDy.x * dUvDy.x, dUvDx.x * dUvDx.y
+            + dUvDy.x * dUvDy.y, dUvDx.y * dUvDx.y + dUvDy.y * dUvDy.y) / 12.0;
+    float sinTheta = length(wi.xy);
+    vec2 r = sinTheta > 1e-6 ? wi.xy / sinTheta : vec2(1.0, 0.0);
+    float table = tableLightSigmaRad * tableLightSigmaRad;
+    float along = max(sigmaRad * sigmaRad * wi.z * wi.z - table, 0.0);
+    float across = max(sigmaRad * sigmaRad - table, 0.0);
+    c += along * vec3(r.x * r.x, r.x * r.y, r.y * r.y) + across * vec3(r.y * r.y, -r.x * r.y, r.x * r.x);
+    footprint = mipFootprint(c * texelsPerUv() * texelsPerUv());
 }
 
 void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
-    footprintGradientX = dUvDx * texcoordPerUv();
-    footprintGradientY = dUvDy * texcoordPerUv();
-}
-
-// The table holds the settings' light, isotropic: another light's size is not looked up (an approximation).
-void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
-    setSurfacePixel(dUvDx, dUvDy, wi);
+    setSurfacePixelUnder(dUvDx, dUvDy, wi, tableLightSigmaRad);
 }
 
 vec3 spectralXyz(vec3 uvw) {
-    vec3 tc = bakedTexcoord(uvw);
+    vec2 tc = bakedTexcoord(uvw).xy;
     float slice = clamp((uvw.z + 2.0) * 0.5 * (bakedSamples.y - 1.0), 0.0, bakedSamples.y - 1.0);
     float below = min(floor(slice), bakedSamples.y - 2.0);
-    vec3 a = textureGrad(bakedLayers, vec3(tc.xy, below), footprintGradientX, footprintGradientY).rgb;
-    vec3 b = textureGrad(bakedLayers, vec3(tc.xy, below + 1.0), footprintGradientX, footprintGradientY).rgb;
+    vec3 a = textureFootprint(bakedLayers, tc, below, footprint).rgb;
+    vec3 b = textureFootprint(bakedLayers, tc, below + 1.0, footprint).rgb;
     return mix(a, b, slice - below);
 }
 #else

@@ -3,6 +3,7 @@ package diffract.app;
 import diffract.bench.AutoChoice;
 import diffract.bench.AutoVariant;
 import diffract.geometry.SnakeMesh;
+import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightSource;
@@ -63,8 +64,16 @@ final class ViewerOptions {
     static final class Surface {
         @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S", converter = ShapeConverter.class,
                 completionCandidates = OptionTypes.ShapeNames.class,
-                description = "${COMPLETION-CANDIDATES} (procedural, with corn-snake pigmentation; default ${DEFAULT-VALUE}).")
+                description = "${COMPLETION-CANDIDATES} (procedural; default ${DEFAULT-VALUE}).")
         Scene.ShapeKind shape = Scene.ShapeKind.SPHERE;
+
+        @Option(names = "--species", defaultValue = "elapheGuttata", paramLabel = "NAME", converter = SpeciesConverter.class,
+                description = "--shape snake: the species whose scales and pigment it wears, elapheGuttata or "
+                        + "xenopeltisUnicolor (default ${DEFAULT-VALUE}).")
+        SnakeSpecies species = SnakeSpecies.ELAPHE_GUTTATA;
+
+        @Option(names = "--smooth-skin", description = "--shape snake: no scales, the corn-snake pattern over a smooth skin.")
+        boolean smoothSkin;
 
         @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
                 description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
@@ -78,7 +87,7 @@ final class ViewerOptions {
         boolean noPigmentation;
 
         @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
-                description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}).")
+                description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}, " + SNAKE_DIFFUSE_WEIGHT + " for --shape snake).")
         double diffuseWeight = 0.2;
     }
 
@@ -95,14 +104,15 @@ final class ViewerOptions {
         @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
         double azimuthDeg;
 
-        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}).")
+        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}; " + SNAKE_ELEVATION_DEG + " for --shape snake).")
         double elevationDeg = 20;
 
-        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}).")
+        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}; " + SNAKE_DISTANCE + " for --shape snake).")
         double distance = 3.5;
 
         @Option(names = "--exposure", defaultValue = "400", paramLabel = "E", description = "Multiplies linear XYZ before "
-                + "display (default ${DEFAULT-VALUE}: at 65 um the thesis' gain factor keeps a mirror's peak, not its energy, at white).")
+                + "display (default ${DEFAULT-VALUE}, " + SNAKE_EXPOSURE + " for --shape snake: at 65 um the thesis' gain factor keeps a "
+                + "mirror's peak, not its energy, at white).")
         double exposure = 10;
 
         @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
@@ -113,6 +123,16 @@ final class ViewerOptions {
                         + "for view and 512x512 for render).")
         OptionTypes.ImageSize size;
     }
+
+    /** Where the orbit camera starts for {@code --shape snake}: the coiled body fills an 800 x 600 window. */
+    static final double SNAKE_DISTANCE = 2.4;
+    static final double SNAKE_ELEVATION_DEG = 40;
+    /**
+     * The snake's exposure and diffuse weight, the demo scene's: the scales' glints are thin at 65 um, and the pigment
+     * is lit by Algorithm 4's transmitted light alone.
+     */
+    static final double SNAKE_EXPOSURE = 8000;
+    static final double SNAKE_DIFFUSE_WEIGHT = 0;
 
     /** The patch a command line without --patch or --synthetic shows. */
     static final String DEFAULT_PATCH = "elaphe-like";
@@ -125,7 +145,7 @@ final class ViewerOptions {
 
     private static List<String> sceneOnly() {
         List<String> names = new ArrayList<>(List.of(PatchOptions.NAMES));
-        names.addAll(List.of("--shape", "--tangent", "--pigmentation"));
+        names.addAll(List.of("--shape", "--tangent", "--pigmentation", "--species", "--smooth-skin"));
         return List.copyOf(names);
     }
 
@@ -140,6 +160,19 @@ final class ViewerOptions {
             }
             throw new TypeConversionException("unknown shape '" + text + "': use sphere, plane, cylinder or snake "
                     + "(an OBJ file needs a scene file)");
+        }
+    }
+
+    /** The species by its scene-file name (elapheGuttata, xenopeltisUnicolor). */
+    static final class SpeciesConverter implements ITypeConverter<SnakeSpecies> {
+        @Override
+        public SnakeSpecies convert(String text) {
+            for (SnakeSpecies s : SnakeSpecies.values()) {
+                if (s.sceneName().equalsIgnoreCase(text.trim())) {
+                    return s;
+                }
+            }
+            throw new TypeConversionException("unknown species '" + text + "': use elapheGuttata or xenopeltisUnicolor");
         }
     }
 
@@ -206,19 +239,29 @@ final class ViewerOptions {
     /** The scene the options describe: the patch on a shape, the thesis' settings, an orbit camera, one light. */
     private Scene optionsScene(Scene.ImageSize size) {
         double phi = view.phiIDeg != null ? view.phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
-        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, view.distance, 0, 0, 0).eye();
+        boolean snake = surface.shape == Scene.ShapeKind.SNAKE;
+        // the snake lies coiled, as in the demo, and the camera comes close enough that it fills the window
+        double elevation = snake && !given("--elevation") ? SNAKE_ELEVATION_DEG : view.elevationDeg;
+        double distance = snake && !given("--distance") ? SNAKE_DISTANCE : view.distance;
+        double[] eye = new OrbitCamera(view.azimuthDeg, elevation, distance, 0, 0, 0).eye();
         Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
                 SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
         Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(view.thetaIDeg, phi)), "D65");
+        boolean scaled = surface.shape == Scene.ShapeKind.SNAKE && !surface.smoothSkin;
         Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null,
                 TangentSource.projected(surface.tangent.x(), surface.tangent.y(), surface.tangent.z()),
                 SnakeMesh.RidgeDirection.ALONG_BODY,
-                Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
+                Scene.Transform.identity(), snake ? SnakeMesh.Pose.COILED : SnakeMesh.Pose.S_CURVE,
+                scaled ? StageSpec.ScalesSpec.of(surface.species) : null, null);
         Scene.PigmentationSpec pigment = surface.pigmentation != null
                 ? Scene.PigmentationSpec.imageFile(surface.pigmentation)
+                : scaled ? Scene.PigmentationSpec.ofSpecies(surface.species)
                 : surface.shape == Scene.ShapeKind.SNAKE ? Scene.PigmentationSpec.proceduralPattern()
                 : Scene.PigmentationSpec.none();
-        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null, pigment, pigment.present() && !surface.noPigmentation, surface.diffuseWeight, view.exposure);
+        double exposure = snake && !given("--exposure") ? SNAKE_EXPOSURE : view.exposure;
+        double diffuseWeight = snake && !given("--diffuse-weight") ? SNAKE_DIFFUSE_WEIGHT : surface.diffuseWeight;
+        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null, pigment,
+                pigment.present() && !surface.noPigmentation, diffuseWeight, exposure);
         return new Scene(null, size, camera, light, shapeSpec, material,
                 view.brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, StageSpec.none());
     }

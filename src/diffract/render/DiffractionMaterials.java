@@ -184,6 +184,10 @@ public final class DiffractionMaterials {
             BakedGrid grid = textures.baked().grid();
             m.setTexture(textures.baked().filtered() ? "bakedLayers" : "bakedXyz", textures.bakedTexture())
                     .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
+            if (textures.baked().filtered()) {
+                m.setFloat("pixelFootprintScale", settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f)
+                        .setFloat("tableLightSigmaRad", (float) settings.illumination().light().sigmaRad());
+            }
         } else {
             m.setTexture("taylorTerms", textures.terms());
         }

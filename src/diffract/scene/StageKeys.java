@@ -104,8 +104,10 @@ final class StageKeys {
                 s.number("yawJitterDeg", SceneObject.Range.closed(0, 30), d.yawJitterDeg()),
                 s.number("overlap", SceneObject.Range.closed(1.15, 1.6), d.overlap()),
                 s.wholeNumber("seed", d.seed()));
-        int width = s.integer("mapWidthPx", SceneObject.Range.closed(64, 4096), 512);
-        int height = s.integer("mapHeightPx", SceneObject.Range.closed(256, 16384), 4096);
+        int width = s.integer("mapWidthPx", SceneObject.Range.closed(64, 4096),
+                StageSpec.ScalesSpec.DEFAULT_MAP_WIDTH_PX);
+        int height = s.integer("mapHeightPx", SceneObject.Range.closed(256, 16384),
+                StageSpec.ScalesSpec.DEFAULT_MAP_HEIGHT_PX);
         s.finish();
         return new StageSpec.ScalesSpec(species, p, width, height);
     }

@@ -41,6 +41,14 @@ public record StageSpec(EnvironmentSpec environment, GroundSpec ground, ToneMapp
      * A snake's scales: the species (its defaults), the lattice with the scene's overrides, the frame map's size.
      */
     public record ScalesSpec(SnakeSpecies species, ScaleLattice.Parameters lattice, int mapWidthPx, int mapHeightPx) {
+        /** The frame map's default size: across the body, along it (a snake is long). */
+        public static final int DEFAULT_MAP_WIDTH_PX = 512;
+        public static final int DEFAULT_MAP_HEIGHT_PX = 4096;
+
+        /** The species' own scales on a frame map of the default size. */
+        public static ScalesSpec of(SnakeSpecies species) {
+            return new ScalesSpec(species, species.scales(), DEFAULT_MAP_WIDTH_PX, DEFAULT_MAP_HEIGHT_PX);
+        }
     }
 
     /** An OBJ shape's tangent-space normal map (OpenGL convention), or none. */
