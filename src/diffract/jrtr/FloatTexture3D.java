@@ -48,7 +48,7 @@ public final class FloatTexture3D extends Texture {
     /**
      * @param mipmapped a GL_TEXTURE_2D_ARRAY instead (layer z = the z-th slice, same data layout) with mip levels per
      *                  layer (2 x 2 box averages within a slice) and GL_LINEAR_MIPMAP_LINEAR, for lookups with
-     *                  {@code textureGrad} that average over a footprint larger than a texel without blurring the
+     *                  {@code textureLod} that average over a footprint larger than a texel without blurring the
      *                  slices into each other (the shader interpolates between slices itself)
      */
     public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision, boolean mipmapped) {
