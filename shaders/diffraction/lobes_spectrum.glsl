@@ -3,6 +3,14 @@
 #ifndef LOBES_SPECTRUM_GLSL
 #define LOBES_SPECTRUM_GLSL
 #include "lobes_footprint.glsl"
+#ifdef ENVIRONMENT_TABLE
+// Lights wider than the lobes method takes (an environment's extended lights: surface_stage.glsl) read the lobes
+// method's own table over their footprint instead: the same physics integrated ahead, where the lobes to sum would
+// be counted in thousands per fragment.
+#include "baked_table.glsl"
+bool footprintFromTable = false;
+MipFootprint tableFootprint;
+#endif
 
 // sigma_f in texels per axis (CoherenceWindow.sigmaTexels); sigma_f per um is sigmaTexels / patchExtentUm.
 uniform vec2 sigmaTexels;
@@ -198,6 +206,11 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
 // integrated once it is found. The march runs as one loop that stops at the next lobe to integrate: a SIMD group of
 // fragments then integrates as many lobes as its busiest fragment, and culled candidates cost only the march.
 vec3 spectralXyz(vec3 uvw) {
+#ifdef ENVIRONMENT_TABLE
+    if (footprintFromTable) {
+        return tableXyz(uvw, tableFootprint);
+    }
+#endif
     vec2 uv = uvw.xy;
     float sigmaF = sigmaFPerUm();
     float widest = 0.5 * pow(lambdaMaxNm * 1e-3 * sigmaF, 2.0);

@@ -9,6 +9,9 @@
 //                       environmentLightAngularDiameterDeg: a variant that filters (FILTERED: lobes, the filtered
 //                       baked table) widens its orders by that size as by the key light's (a Gaussian of sigma D / 4,
 //                       LightSource), the others see a direction
+//   ENVIRONMENT_TABLE   the lobes method with extended lights wider than it takes (sigma_a above
+//                       TABLE_BEYOND_SIGMA_RAD): those read the lobes method's baked table over their footprint
+//                       (baked_table.glsl), the key light and narrower ones sum their lobes
 //   IRRADIANCE_SH, SHADOW_MAP (environment.glsl), TONE_MAP_OPERATOR (tone_mapping.glsl)
 // Every light colour tints the D65 result per channel (the diffraction is integrated under D65): exact for
 // D65-coloured lights, an approximation for coloured ones.
@@ -87,7 +90,15 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
         return; // behind the body
     }
     vec3 wi = toFrame(f, l);
-#ifdef FILTERED
+#if defined(ENVIRONMENT_TABLE)
+    // a light wider than the lobes method takes reads the table (lobes_spectrum.glsl)
+    footprintFromTable = sigmaRad > TABLE_BEYOND_SIGMA_RAD;
+    if (footprintFromTable) {
+        tableFootprint = tableSurfacePixel(uvDerivatives.xy, uvDerivatives.zw, wi, sigmaRad, pixelFootprintScale);
+    } else {
+        setSurfacePixelUnder(uvDerivatives.xy, uvDerivatives.zw, wi, sigmaRad);
+    }
+#elif defined(FILTERED)
     setSurfacePixelUnder(uvDerivatives.xy, uvDerivatives.zw, wi, sigmaRad);
 #endif
     structural += rgb * max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));

@@ -35,6 +35,11 @@ public record LightSource(double angularDiameterDeg) {
 
     /** sigma_a = D / 4 in radians. */
     public double sigmaRad() {
+        return sigmaRadOf(angularDiameterDeg);
+    }
+
+    /** sigma_a = D / 4 in radians of a light of angular diameter D degrees (any D: an environment's lights too). */
+    public static double sigmaRadOf(double angularDiameterDeg) {
         return Math.toRadians(angularDiameterDeg) / 4.0;
     }
 

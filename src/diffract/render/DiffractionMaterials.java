@@ -16,6 +16,7 @@ import diffract.optics.PhaseCentres;
 import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
 import diffract.optics.Variant;
+import diffract.util.Reporter;
 
 import java.util.Locale;
 
@@ -69,10 +70,15 @@ public final class DiffractionMaterials {
      * the same constants as {@link #surface}, the program compiled with the stage's defines.
      */
     static Material staged(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
-                           float diffuseWeight, Stage stage) {
+                           float diffuseWeight, Stage stage, Reporter reporter) {
+        java.util.Optional<BakedTable> table = DiffractionShaders.environmentTableNeeded(settings, stage)
+                ? textures.lobesTable(reporter) : java.util.Optional.empty();
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
-                stage));
+                stage, table.isPresent()));
         common(m, textures, settings).setFloat("exposure", exposure);
+        table.ifPresent(t -> m.setTexture("bakedLayers", t.texture())
+                .setVec2("bakedSamples", t.grid().uvSamples(), t.grid().wSamples())
+                .setFloat("tableLightSigmaRad", (float) settings.illumination().light().sigmaRad()));
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }

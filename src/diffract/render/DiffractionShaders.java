@@ -6,6 +6,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.FresnelModel;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.LightSource;
 import diffract.optics.PhaseCentres;
 import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
@@ -139,10 +140,32 @@ public final class DiffractionShaders {
      * The surface program on a {@link Stage}: the same BRDF, evaluated per fragment in each scale's frame for the key
      * and environment lights, tone mapped ({@code surface_stage.glsl}, switched on by the stage's defines).
      */
+    /**
+     * sigma_a of the widest light the lobes method sums on a staged surface (LightSource's largest diameter, where
+     * it is measured against the reference): a wider environment light reaches thousands of lobes per fragment (on
+     * llvmpipe past the 65535 loop iterations one shader invocation may run, after which its loops stop silently), and
+     * reads the lobes method's baked table over its footprint instead.
+     */
+    public static final double TABLE_BEYOND_SIGMA_RAD = LightSource.sigmaRadOf(LightSource.MAX_DIAMETER_DEG);
+
+    /** Whether a staged surface of these settings reads the lobes method's table for its widest environment lights. */
+    public static boolean environmentTableNeeded(BrdfSettings settings, Stage stage) {
+        return environmentTableNeeded(settings.variant(), stage.widestEnvironmentLightDeg());
+    }
+
+    /** As above, for the variant and the angular diameter of the widest environment light (degrees, 0: none). */
+    static boolean environmentTableNeeded(Variant variant, double widestEnvironmentLightDeg) {
+        return variant == Variant.LOBES && LightSource.sigmaRadOf(widestEnvironmentLightDeg) > TABLE_BEYOND_SIGMA_RAD;
+    }
+
     public static ShaderProgram stagedSurfaceProgram(BrdfSettings settings, DiffractionTextures textures,
-                                                     boolean pigmentation, Stage stage) {
+                                                     boolean pigmentation, Stage stage, boolean environmentTable) {
         Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);
         defines.putAll(stage.defines());
+        if (environmentTable) {
+            defines.put("ENVIRONMENT_TABLE", "1");
+            defines.put("TABLE_BEYOND_SIGMA_RAD", Float.toString((float) TABLE_BEYOND_SIGMA_RAD));
+        }
         return ShaderProgram.fromClasspath(vertexPath(Target.SURFACE), fragmentPath(settings.variant()), defines);
     }
 

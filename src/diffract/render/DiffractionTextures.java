@@ -70,6 +70,8 @@ public final class DiffractionTextures {
     /** Makes the lobes method's weight table from these terms: (lambda_min nm, tolerance) -> table. */
     private java.util.function.BiFunction<Double, Double, LobeWeightTable> lobeWeightSource;
     private LobeWeightTable lobeWeightTable;
+    /** Bakes the lobes method's filtered table of these terms on request (null on the phase-centred path). */
+    private java.util.function.Function<Reporter, BakedTable> lobesTableSource;
     private FloatTextureArray lobeWeights;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
@@ -126,6 +128,7 @@ public final class DiffractionTextures {
         int lobeOrder = highestOrder;
         textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lobeOrder, lambdaMinNm,
                 tolerance);
+        textures.lobesTableSource = r -> BakedTables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r);
         return textures;
     }
 
@@ -293,6 +296,20 @@ public final class DiffractionTextures {
     /** max|h| of the patch in um, for each fragment's early stop. */
     public double maxAbsHeightUm() {
         return maxAbsHeightUm;
+    }
+
+    /**
+     * The baked table of the lobes method for the settings these textures were made for (cached by {@link BakedTables}, baked on the
+     * first request with progress on {@code reporter}): what environment lights wider than the lobes method takes
+     * read (surface_stage.glsl); empty on the phase-centred path, which has no table, and where the settings do not
+     * filter (the table would be FLSS's).
+     */
+    public java.util.Optional<BakedTable> lobesTable(Reporter reporter) {
+        if (lobesTableSource == null) {
+            return java.util.Optional.empty();
+        }
+        BakedTable table = lobesTableSource.apply(reporter);
+        return table.filtered() ? java.util.Optional.of(table) : java.util.Optional.empty();
     }
 
     /** The baked table (BAKED only), else null. */

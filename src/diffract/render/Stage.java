@@ -57,6 +57,12 @@ public record Stage(ScaleFrames scaleFrames, Environment environment, Ground gro
         return ground != null && ground.shadows();
     }
 
+    /** The angular diameter of the environment's widest extended light, degrees (0 without an environment). */
+    public double widestEnvironmentLightDeg() {
+        return environment == null ? 0 : environment.lights().stream()
+                .mapToDouble(diffract.lighting.ExtendedLight::angularDiameterDeg).max().orElse(0);
+    }
+
     /** The compile-time switches of surface_stage.glsl and the ground shader. */
     public Map<String, String> defines() {
         Map<String, String> d = new TreeMap<>();

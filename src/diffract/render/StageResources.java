@@ -15,8 +15,10 @@ import diffract.jrtr.VertexData;
 import diffract.lighting.Environment;
 import diffract.lighting.ExtendedLight;
 import diffract.optics.BrdfSettings;
+import diffract.util.Reporter;
 
 import javax.vecmath.Vector3f;
+
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -67,10 +69,15 @@ public final class StageResources {
         return groundNode;
     }
 
-    /** The staged surface material: the diffraction program with the stage's defines, textures and constants. */
+    /**
+     * The staged surface material: the diffraction program with the stage's defines, textures and constants; the
+     * lobes method under environment lights wider than it takes bakes its table first, with progress on
+     * {@code reporter}.
+     */
     public Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
-                            float diffuseWeight) {
-        Material m = DiffractionMaterials.staged(textures, settings, exposure, pigmentation, diffuseWeight, stage);
+                            float diffuseWeight, Reporter reporter) {
+        Material m = DiffractionMaterials.staged(textures, settings, exposure, pigmentation, diffuseWeight, stage,
+                reporter);
         if (scaleFrames != null) {
             m.setTexture("scaleFrames", scaleFrames);
         }

@@ -114,7 +114,7 @@ final class ViewerMaterials {
         }
         if (stage != null) {
             return stage.surface(t, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
-                    diffuseWeight);
+                    diffuseWeight, Reporter.STDERR);
         }
         return DiffractionMaterials.surface(t, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
                 diffuseWeight);

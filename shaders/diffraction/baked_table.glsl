@@ -1,0 +1,63 @@
+// The baked table's samples and, with BAKED_FILTERED or ENVIRONMENT_TABLE, its lookup over a footprint: the lobes
+// method's table (baked_lobes.frag) as one mip-mapped 2-D layer per w sample (FloatTexture3D mipmapped), spread by a
+// Gaussian footprint in (u, v) through a mip level and two lookups along its long axis (mip_footprint.glsl), and
+// interpolated linearly between the two nearest w slices. Included by baked.frag (the BAKED variant) and by
+// lobes_spectrum.glsl for environment lights wider than the lobes method takes (ENVIRONMENT_TABLE).
+#ifndef BAKED_TABLE_GLSL
+#define BAKED_TABLE_GLSL
+
+// Samples of the table along u and along v (.x) and along w (.y): sample i of n sits at -2 + 4 i / (n - 1)
+// (u, v) and -2 + 2 i / (n - 1) (w), both ends included (BakedGrid.uv, BakedGrid.w).
+uniform vec2 bakedSamples;
+
+// Sample index t = (x - x_min) / (x_max - x_min) (n - 1) per axis; texel i's centre is at (i + 0.5) / n.
+vec3 bakedTexcoord(vec3 uvw) {
+    vec3 t = vec3((uvw.xy + 2.0) * 0.25 * (bakedSamples.x - 1.0), (uvw.z + 2.0) * 0.5 * (bakedSamples.y - 1.0));
+    return (t + 0.5) / bakedSamples.xxy;
+}
+
+#if defined(BAKED_FILTERED) || defined(ENVIRONMENT_TABLE)
+#include "/engine/mip_footprint.glsl"
+uniform sampler2DArray bakedLayers;
+// sigma_a of the light the table holds (isotropic, as at normal incidence: baked_lobes.frag)
+uniform float tableLightSigmaRad;
+
+// Texels of the table per unit of u or v.
+float tableTexelsPerUv() {
+    return 0.25 * (bakedSamples.x - 1.0);
+}
+
+// A BRDF-map pixel: a box of half-width halfWidth in u and v, variance halfWidth^2 / 3 per axis.
+MipFootprint tableMapPixel(float halfWidth) {
+    float h = halfWidth * tableTexelsPerUv();
+    return mipFootprint(vec3(h * h / 3.0, 0.0, h * h / 3.0));
+}
+
+// A surface pixel: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v) derivatives times pixelScale (1 for a
+// box pixel, 0 for a point: lobes_footprint.glsl's setSurfacePixelUnder), plus what a light of sigma_a = sigmaRad
+// adds to the table's light: LightSource.uvCovariance at omega_i, sigma_a^2 (cos^2 theta r r^T + e e^T), less the
+// table's isotropic sigma_a^2 where positive (a narrower light than the table's is not sharpened).
+MipFootprint tableSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad, float pixelScale) {
+    vec3 c = pixelScale * vec3(dUvDx.x * dUvDx.x + dUvDy.x * dUvDy.x, dUvDx.x * dUvDx.y + dUvDy.x * dUvDy.y,
+            dUvDx.y * dUvDx.y + dUvDy.y * dUvDy.y) / 12.0;
+    float sinTheta = length(wi.xy);
+    vec2 r = sinTheta > 1e-6 ? wi.xy / sinTheta : vec2(1.0, 0.0);
+    float table = tableLightSigmaRad * tableLightSigmaRad;
+    float along = max(sigmaRad * sigmaRad * wi.z * wi.z - table, 0.0);
+    float across = max(sigmaRad * sigmaRad - table, 0.0);
+    c += along * vec3(r.x * r.x, r.x * r.y, r.y * r.y) + across * vec3(r.y * r.y, -r.x * r.y, r.x * r.x);
+    return mipFootprint(c * tableTexelsPerUv() * tableTexelsPerUv());
+}
+
+// XYZ(u, v, w) of the table spread by the footprint.
+vec3 tableXyz(vec3 uvw, MipFootprint footprint) {
+    vec2 tc = bakedTexcoord(uvw).xy;
+    float slice = clamp((uvw.z + 2.0) * 0.5 * (bakedSamples.y - 1.0), 0.0, bakedSamples.y - 1.0);
+    float below = min(floor(slice), bakedSamples.y - 2.0);
+    vec3 a = textureFootprint(bakedLayers, tc, below, footprint).rgb;
+    vec3 b = textureFootprint(bakedLayers, tc, below + 1.0, footprint).rgb;
+    return mix(a, b, slice - below);
+}
+#endif
+
+#endif
