@@ -18,6 +18,7 @@ vec3 bakedTexcoord(vec3 uvw) {
 
 #if defined(BAKED_FILTERED) || defined(ENVIRONMENT_TABLE)
 #include "/engine/mip_footprint.glsl"
+#include "footprint_covariance.glsl"
 uniform sampler2DArray bakedLayers;
 // sigma_a of the light the table holds (isotropic, as at normal incidence: baked_lobes.frag)
 uniform float tableLightSigmaRad;
@@ -38,14 +39,9 @@ MipFootprint tableMapPixel(float halfWidth) {
 // adds to the table's light: LightSource.uvCovariance at omega_i, sigma_a^2 (cos^2 theta r r^T + e e^T), less the
 // table's isotropic sigma_a^2 where positive (a narrower light than the table's is not sharpened).
 MipFootprint tableSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad, float pixelScale) {
-    vec3 c = pixelScale * vec3(dUvDx.x * dUvDx.x + dUvDy.x * dUvDy.x, dUvDx.x * dUvDx.y + dUvDy.x * dUvDy.y,
-            dUvDx.y * dUvDx.y + dUvDy.y * dUvDy.y) / 12.0;
-    float sinTheta = length(wi.xy);
-    vec2 r = sinTheta > 1e-6 ? wi.xy / sinTheta : vec2(1.0, 0.0);
     float table = tableLightSigmaRad * tableLightSigmaRad;
-    float along = max(sigmaRad * sigmaRad * wi.z * wi.z - table, 0.0);
-    float across = max(sigmaRad * sigmaRad - table, 0.0);
-    c += along * vec3(r.x * r.x, r.x * r.y, r.y * r.y) + across * vec3(r.y * r.y, -r.x * r.y, r.x * r.x);
+    vec3 c = pixelScale * pixelCovariance(dUvDx, dUvDy) + lightCovarianceAxes(wi,
+            max(sigmaRad * sigmaRad * wi.z * wi.z - table, 0.0), max(sigmaRad * sigmaRad - table, 0.0));
     return mipFootprint(c * tableTexelsPerUv() * tableTexelsPerUv());
 }
 

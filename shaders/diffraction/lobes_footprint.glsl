@@ -6,6 +6,7 @@
 #ifndef LOBES_FOOTPRINT_GLSL
 #define LOBES_FOOTPRINT_GLSL
 #include "diffraction_common.glsl"
+#include "footprint_covariance.glsl"
 
 #define LIGHT_NODES_MAX 8
 
@@ -25,21 +26,6 @@ uniform float lightSigmaRad;
 vec2 footprintHalfWidth;   // the box's half-widths in (u, v) (0: none)
 vec3 footprintGaussian;    // (xx, xy, yy): the Gaussian convolved with the box (diagonal when there is a box)
 int footprintShiftCount;   // Gauss-Hermite shifts of the light's off-axis part (box only; 1 = none)
-
-// LightSource.uvCovariance: sigma_a^2 (cos^2 theta r r^T + e e^T), r = (cos phi, sin phi), e = (-sin phi, cos phi).
-vec3 lightCovariance(vec3 wi, float sigmaRad) {
-    float variance = sigmaRad * sigmaRad;
-    float sinTheta = length(wi.xy);
-    if (variance == 0.0) {
-        return vec3(0.0);
-    }
-    if (sinTheta < 1e-6) {
-        return vec3(variance, 0.0, variance);
-    }
-    vec2 r = wi.xy / sinTheta;
-    float c2 = wi.z * wi.z;
-    return variance * vec3(c2 * r.x * r.x + r.y * r.y, (c2 - 1.0) * r.x * r.y, c2 * r.y * r.y + r.x * r.x);
-}
 
 // A BRDF-map pixel of an S x S map: a square of half-width 1 / S (Footprint.mapPixel) with LOBES_BOX, else its
 // centre (PixelFilter.POINT); the light from uniforms.
@@ -67,8 +53,7 @@ void setTableCell(float halfWidth) {
 // A surface pixel lit by a light of sigma_a = sigmaRad: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v)
 // derivatives (Footprint.surfacePixel), plus the light's covariance at omega_i.
 void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
-    vec3 pixel = pixelFootprintScale * vec3(dUvDx.x * dUvDx.x + dUvDy.x * dUvDy.x, dUvDx.x * dUvDx.y
-            + dUvDy.x * dUvDy.y, dUvDx.y * dUvDx.y + dUvDy.y * dUvDy.y) / 12.0;
+    vec3 pixel = pixelFootprintScale * pixelCovariance(dUvDx, dUvDy);
     footprintHalfWidth = vec2(0.0);
     footprintGaussian = pixel + lightCovariance(wi, sigmaRad);
     footprintShiftCount = 1;
