@@ -167,12 +167,11 @@ final class ViewerOptions {
     static final class SpeciesConverter implements ITypeConverter<SnakeSpecies> {
         @Override
         public SnakeSpecies convert(String text) {
-            for (SnakeSpecies s : SnakeSpecies.values()) {
-                if (s.sceneName().equalsIgnoreCase(text.trim())) {
-                    return s;
-                }
+            try {
+                return SnakeSpecies.fromSceneName(text.trim());
+            } catch (IllegalArgumentException e) {
+                throw new TypeConversionException("unknown species '" + text + "': use elapheGuttata or xenopeltisUnicolor");
             }
-            throw new TypeConversionException("unknown species '" + text + "': use elapheGuttata or xenopeltisUnicolor");
         }
     }
 

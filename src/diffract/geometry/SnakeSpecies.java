@@ -39,9 +39,10 @@ public enum SnakeSpecies {
                 : new SkinPattern.XenopeltisUnicolor(lattice, seed);
     }
 
+    /** The species by its scene-file spelling, in any case (scene files check the exact spelling first). */
     public static SnakeSpecies fromSceneName(String name) {
         for (SnakeSpecies s : values()) {
-            if (s.sceneName.equals(name)) {
+            if (s.sceneName.equalsIgnoreCase(name)) {
                 return s;
             }
         }

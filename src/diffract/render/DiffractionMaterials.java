@@ -19,6 +19,7 @@ import diffract.optics.Variant;
 import diffract.util.Reporter;
 
 import java.util.Locale;
+import java.util.Optional;
 
 /**
  * {@link Material}s of the diffraction shaders: program, textures and the uniforms that mirror
@@ -71,14 +72,12 @@ public final class DiffractionMaterials {
      */
     static Material staged(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
                            float diffuseWeight, Stage stage, Reporter reporter) {
-        java.util.Optional<BakedTable> table = DiffractionShaders.environmentTableNeeded(settings, stage)
-                ? textures.lobesTable(reporter) : java.util.Optional.empty();
+        Optional<BakedTable> table = DiffractionShaders.environmentTableNeeded(settings, stage)
+                ? textures.lobesTable(reporter) : Optional.empty();
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
                 stage, table.isPresent()));
         common(m, textures, settings).setFloat("exposure", exposure);
-        table.ifPresent(t -> m.setTexture("bakedLayers", t.texture())
-                .setVec2("bakedSamples", t.grid().uvSamples(), t.grid().wSamples())
-                .setFloat("tableLightSigmaRad", (float) settings.illumination().light().sigmaRad()));
+        table.ifPresent(t -> filteredTable(m, t, settings));
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }
@@ -165,11 +164,26 @@ public final class DiffractionMaterials {
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
                 .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
                 .setFloat("lobeReachSigmas", (float) q.reachSigmas())
-                .setFloat("pixelFootprintScale", settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f)
+                .setFloat("pixelFootprintScale", pixelFootprintScale(settings))
                 .setFloat("lightSigmaRad", (float) light.sigmaRad())
                 .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
                 .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
         setLobesLight(m, light.uvCovariance(Direction.fromSphericalDeg(0, 0)), q);
+    }
+
+    /** 1 where surface pixels average over their footprint (PixelFilter.BOX), 0 where they take its centre. */
+    private static float pixelFootprintScale(BrdfSettings settings) {
+        return settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f;
+    }
+
+    /**
+     * The lobes method's filtered table as {@code baked_table.glsl} reads it: its mip-mapped layers, its grid and the
+     * light it holds (the settings' light).
+     */
+    private static Material filteredTable(Material m, BakedTable table, BrdfSettings settings) {
+        return m.setTexture("bakedLayers", table.texture())
+                .setVec2("bakedSamples", table.grid().uvSamples(), table.grid().wSamples())
+                .setFloat("tableLightSigmaRad", (float) settings.illumination().light().sigmaRad());
     }
 
     /**
@@ -187,12 +201,13 @@ public final class DiffractionMaterials {
         CoherenceWindow window = settings.coherenceWindow();
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
-            BakedGrid grid = textures.baked().grid();
-            m.setTexture(textures.baked().filtered() ? "bakedLayers" : "bakedXyz", textures.bakedTexture())
-                    .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
             if (textures.baked().filtered()) {
-                m.setFloat("pixelFootprintScale", settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f)
-                        .setFloat("tableLightSigmaRad", (float) settings.illumination().light().sigmaRad());
+                filteredTable(m, textures.baked(), settings)
+                        .setFloat("pixelFootprintScale", pixelFootprintScale(settings));
+            } else {
+                BakedGrid grid = textures.baked().grid();
+                m.setTexture("bakedXyz", textures.bakedTexture()).setVec2("bakedSamples", grid.uvSamples(),
+                        grid.wSamples());
             }
         } else {
             m.setTexture("taylorTerms", textures.terms());

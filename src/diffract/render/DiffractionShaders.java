@@ -137,10 +137,6 @@ public final class DiffractionShaders {
     }
 
     /**
-     * The surface program on a {@link Stage}: the same BRDF, evaluated per fragment in each scale's frame for the key
-     * and environment lights, tone mapped ({@code surface_stage.glsl}, switched on by the stage's defines).
-     */
-    /**
      * sigma_a of the widest light the lobes method sums on a staged surface (LightSource's largest diameter, where
      * it is measured against the reference): a wider environment light reaches thousands of lobes per fragment (on
      * llvmpipe past the 65535 loop iterations one shader invocation may run, after which its loops stop silently), and
@@ -158,6 +154,11 @@ public final class DiffractionShaders {
         return variant == Variant.LOBES && LightSource.sigmaRadOf(widestEnvironmentLightDeg) > TABLE_BEYOND_SIGMA_RAD;
     }
 
+    /**
+     * The surface program on a {@link Stage}: the same BRDF, evaluated per fragment in each scale's frame for the key
+     * and environment lights, tone mapped ({@code surface_stage.glsl}, switched on by the stage's defines);
+     * with {@code environmentTable} the lobes method's wide environment lights read its table (ENVIRONMENT_TABLE).
+     */
     public static ShaderProgram stagedSurfaceProgram(BrdfSettings settings, DiffractionTextures textures,
                                                      boolean pigmentation, Stage stage, boolean environmentTable) {
         Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);

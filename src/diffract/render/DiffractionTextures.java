@@ -25,6 +25,7 @@ import diffract.util.Reporter;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Optional;
 
 /**
  * The data every diffraction material reads, made once per patch and settings and uploaded once (on first use):
@@ -299,17 +300,16 @@ public final class DiffractionTextures {
     }
 
     /**
-     * The baked table of the lobes method for the settings these textures were made for (cached by {@link BakedTables}, baked on the
-     * first request with progress on {@code reporter}): what environment lights wider than the lobes method takes
-     * read (surface_stage.glsl); empty on the phase-centred path, which has no table, and where the settings do not
-     * filter (the table would be FLSS's).
+     * The baked table of the lobes method for the settings these textures were made for (cached by
+     * {@link BakedTables}, baked on the first request with progress on {@code reporter}): what environment lights
+     * wider than the lobes method takes read (surface_stage.glsl); empty on the phase-centred path, which has no
+     * table, and where the settings do not filter (the table would be FLSS's).
      */
-    public java.util.Optional<BakedTable> lobesTable(Reporter reporter) {
+    public Optional<BakedTable> lobesTable(Reporter reporter) {
         if (lobesTableSource == null) {
-            return java.util.Optional.empty();
+            return Optional.empty();
         }
-        BakedTable table = lobesTableSource.apply(reporter);
-        return table.filtered() ? java.util.Optional.of(table) : java.util.Optional.empty();
+        return Optional.of(lobesTableSource.apply(reporter)).filter(BakedTable::filtered);
     }
 
     /** The baked table (BAKED only), else null. */

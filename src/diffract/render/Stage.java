@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.colour.ToneMapping;
 import diffract.lighting.Environment;
+import diffract.lighting.ExtendedLight;
 
 import java.util.Map;
 import java.util.TreeMap;
@@ -60,7 +61,7 @@ public record Stage(ScaleFrames scaleFrames, Environment environment, Ground gro
     /** The angular diameter of the environment's widest extended light, degrees (0 without an environment). */
     public double widestEnvironmentLightDeg() {
         return environment == null ? 0 : environment.lights().stream()
-                .mapToDouble(diffract.lighting.ExtendedLight::angularDiameterDeg).max().orElse(0);
+                .mapToDouble(ExtendedLight::angularDiameterDeg).max().orElse(0);
     }
 
     /** The compile-time switches of surface_stage.glsl and the ground shader. */
