@@ -13,7 +13,9 @@
 
 uniform float lambdaMinNm;
 uniform float lambdaMaxNm;
-// Entry i = (S xbar, S ybar, S zbar, 0) at spectralTableFirstNm + i nm, 1 nm apart (D65 x CIE 1931 2 degrees).
+// Entry i = (f S xbar, f S ybar, f S zbar, S ybar) at spectralTableFirstNm + i nm, 1 nm apart (D65 x CIE 1931 2
+// degrees; f the mirror's normalisation factor, MirrorNormalisation: 1 or (lambda_0 / lambda)^2; the normaliser sums
+// S ybar without it).
 uniform sampler1D spectralTable;
 uniform float spectralTableFirstNm;
 
@@ -21,17 +23,18 @@ uniform float spectralTableFirstNm;
 // resolves about 3e-5 nm at 500 nm, so coincident u- and v-nodes are merged with this wider tolerance).
 const float NMM_MERGE_NM = 1e-3;
 
-// D65 x CMF at any wavelength, linearly interpolated in the 1 nm table, 0 outside it (as SpectralTable.at is).
-vec3 d65TimesCmf(float lambdaNm) {
+// The table's entry at any wavelength, linearly interpolated in the 1 nm table, 0 outside it (as SpectralTable.at
+// is).
+vec4 d65TimesCmf(float lambdaNm) {
     int size = textureSize(spectralTable, 0);
     float t = lambdaNm - spectralTableFirstNm;
     if (!(t >= 0.0) || t > float(size - 1)) {
-        return vec3(0.0);
+        return vec4(0.0);
     }
     int i = min(int(t), size - 2);
     float f = t - float(i);
-    vec3 a = texelFetch(spectralTable, i, 0).rgb;
-    vec3 b = texelFetch(spectralTable, i + 1, 0).rgb;
+    vec4 a = texelFetch(spectralTable, i, 0);
+    vec4 b = texelFetch(spectralTable, i + 1, 0);
     return a + f * (b - a);
 }
 
@@ -77,9 +80,9 @@ int mOfNextNode(Crossings c, int m) {
 // Adds one trapezoid node: weight w = (next - previous) / 2 (Trapezoid.weights), numerator sum of w S cmf |P|^2
 // and the normaliser sum of w S ybar (SpectralIntegrator.xyzWeights), both per fragment.
 void addNode(vec3 uvw, float lambdaNm, float weightNm, inout vec3 numerator, inout float normaliser) {
-    vec3 sCmf = d65TimesCmf(lambdaNm);
-    numerator += weightNm * patchPower(uvw, lambdaNm) * sCmf;
-    normaliser += weightNm * sCmf.y;
+    vec4 sCmf = d65TimesCmf(lambdaNm);
+    numerator += weightNm * patchPower(uvw, lambdaNm) * sCmf.xyz;
+    normaliser += weightNm * sCmf.w;
 }
 
 // XYZ on the merged node sequence lambda_min, (u- and v-crossings in increasing order), lambda_max, streamed:

@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.colour.MirrorNormalisation;
 import diffract.optics.BrdfSettings;
 import diffract.optics.FresnelModel;
 import diffract.optics.IlluminationSettings;
@@ -90,6 +91,12 @@ final class BrdfOptions {
 
         @Option(names = "--lambda-step", paramLabel = "NM", description = "Step of flss and pq, nmm's fallback step (default 5).")
         Double stepNm;
+
+        @Option(names = "--normalisation", paramLabel = "M", completionCandidates = OptionTypes.NormalisationNames.class,
+                description = "${COMPLETION-CANDIDATES}: a flat mirror's point-sampled peak is D65 white (default, the "
+                        + "thesis; the light its lobe reflects then grows as lambda^2) or the light it reflects is "
+                        + "(Stam's k^2, what radiometric scenes use).")
+        MirrorNormalisation normalisation;
     }
 
     /** {@link IlluminationSettings}. */
@@ -194,9 +201,11 @@ final class BrdfOptions {
             b.pqReplicas(window.pqReplicas);
         }
         SpectralSettings s = base.spectral();
-        if (spectral.minNm != null || spectral.maxNm != null || spectral.stepNm != null) {
+        if (spectral.minNm != null || spectral.maxNm != null || spectral.stepNm != null
+                || spectral.normalisation != null) {
             b.spectral(new SpectralSettings(or(spectral.minNm, s.lambdaMinNm()), or(spectral.maxNm, s.lambdaMaxNm()),
-                    or(spectral.stepNm, s.lambdaStepNm())));
+                    or(spectral.stepNm, s.lambdaStepNm()), spectral.normalisation != null ? spectral.normalisation
+                    : s.normalisation()));
         }
         IlluminationSettings i = base.illumination();
         if (illumination.coherenceLengthUm != null || illumination.refractiveIndex != null) {

@@ -171,6 +171,15 @@ final class OptionTypes {
     }
 
     /** physical, thesis. */
+    /** peak, energy. */
+    static final class NormalisationNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return java.util.Arrays.stream(diffract.colour.MirrorNormalisation.values())
+                    .map(diffract.colour.MirrorNormalisation::key).iterator();
+        }
+    }
+
     static final class FresnelNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {

@@ -13,6 +13,9 @@ package diffract.colour;
  * f (its kinks every nanometre) and for any g that is linear between the nodes, and exactly D65 white with Y = 1
  * for g = 1 (the hats of a grid starting at lambda_min sum to 1 on the band). For node spacings below 1 nm the
  * weight is h f(lambda_j). The GPU receives the same table (level 0 = f, level l = f_{2^(l-1)}).
+ *
+ * <p>With {@link MirrorNormalisation#ENERGY} f carries the mirror's factor (lambda_0 / lambda)^2 (N does not), taken
+ * at whole nanometres like S and the CMFs; white then means a flat mirror's lobe integrated over its directions.
  */
 public final class HatFilteredSpectrum {
     /** Hat half-widths 2^0 .. 2^(LEVELS - 2) nm: 1, 2, 4, 8, 16. */
@@ -26,8 +29,15 @@ public final class HatFilteredSpectrum {
     /** [level][position][channel], normalised by N. */
     private final double[][][] table;
     private final double normaliser;
+    private final MirrorNormalisation normalisation;
 
+    /** The thesis' weighting ({@link MirrorNormalisation#PEAK}). */
     public HatFilteredSpectrum(double lambdaMinNm, double lambdaMaxNm) {
+        this(lambdaMinNm, lambdaMaxNm, MirrorNormalisation.PEAK);
+    }
+
+    public HatFilteredSpectrum(double lambdaMinNm, double lambdaMaxNm, MirrorNormalisation normalisation) {
+        this.normalisation = normalisation;
         if (!(lambdaMinNm > 0) || !(lambdaMaxNm > lambdaMinNm)) {
             throw new IllegalArgumentException("need 0 < lambda_min < lambda_max, got " + lambdaMinNm + ", " + lambdaMaxNm);
         }
@@ -38,7 +48,7 @@ public final class HatFilteredSpectrum {
         double n = 0;
         for (double lo = lambdaMinNm; lo < lambdaMaxNm; ) {
             double hi = Math.min(lambdaMaxNm, Math.floor(lo) + 1);
-            n += 0.5 * (hi - lo) * (product(lo)[1] + product(hi)[1]); // linear between whole nm: exact
+            n += 0.5 * (hi - lo) * (luminance(lo) + luminance(hi)); // linear between whole nm: exact
             lo = hi;
         }
         if (!(n > 0)) {
@@ -62,8 +72,23 @@ public final class HatFilteredSpectrum {
         }
     }
 
-    /** S (xbar, ybar, zbar) with S and each CMF at whole nanometres, multiplied there, linear in between. */
-    private static double[] product(double lambdaNm) {
+    /** S ybar at whole nanometres, linear in between: the normaliser's integrand, without the mirror's factor. */
+    private static double luminance(double lambdaNm) {
+        double lo = Math.floor(lambdaNm);
+        double t = lambdaNm - lo;
+        double a = D65.relativePower(lo) * Cie1931.yBar(lo);
+        if (t == 0) {
+            return a;
+        }
+        double b = D65.relativePower(lo + 1) * Cie1931.yBar(lo + 1);
+        return a + t * (b - a);
+    }
+
+    /**
+     * S (xbar, ybar, zbar) times the mirror's factor, each at whole nanometres and multiplied there, linear in
+     * between.
+     */
+    private double[] product(double lambdaNm) {
         double lo = Math.floor(lambdaNm);
         double t = lambdaNm - lo;
         double[] a = atWholeNm(lo);
@@ -74,8 +99,8 @@ public final class HatFilteredSpectrum {
         return new double[] {a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])};
     }
 
-    private static double[] atWholeNm(double lambdaNm) {
-        double s = D65.relativePower(lambdaNm);
+    private double[] atWholeNm(double lambdaNm) {
+        double s = D65.relativePower(lambdaNm) * normalisation.factor(lambdaNm);
         return new double[] {s * Cie1931.xBar(lambdaNm), s * Cie1931.yBar(lambdaNm), s * Cie1931.zBar(lambdaNm)};
     }
 

@@ -7,13 +7,21 @@ package diffract.colour;
  * CMFs are interpolated linearly between their 1 nm nodes ({@link D65}, {@link Cie1931}), so f is a quadratic between
  * whole nanometres and N is integrated exactly (Simpson's rule per nanometre). This is the continuous integral that
  * {@link SpectralIntegrator}'s quadratures approximate; the filtered reference integrates against it directly.
+ * With {@link MirrorNormalisation#ENERGY} f carries the mirror's factor (lambda_0 / lambda)^2 (N does not).
  */
 public final class SpectralDensity {
     private final double lambdaMinNm;
     private final double lambdaMaxNm;
     private final double normaliser;
+    private final MirrorNormalisation normalisation;
 
+    /** The thesis' weighting ({@link MirrorNormalisation#PEAK}). */
     public SpectralDensity(double lambdaMinNm, double lambdaMaxNm) {
+        this(lambdaMinNm, lambdaMaxNm, MirrorNormalisation.PEAK);
+    }
+
+    public SpectralDensity(double lambdaMinNm, double lambdaMaxNm, MirrorNormalisation normalisation) {
+        this.normalisation = normalisation;
         if (!(lambdaMinNm > 0) || !(lambdaMaxNm > lambdaMinNm)) {
             throw new IllegalArgumentException("need 0 < lambda_min < lambda_max, got " + lambdaMinNm + ", " + lambdaMaxNm);
         }
@@ -46,7 +54,7 @@ public final class SpectralDensity {
             out[2] = 0;
             return;
         }
-        double s = D65.relativePower(lambdaNm) / normaliser;
+        double s = D65.relativePower(lambdaNm) * normalisation.factor(lambdaNm) / normaliser;
         out[0] = s * Cie1931.xBar(lambdaNm);
         out[1] = s * Cie1931.yBar(lambdaNm);
         out[2] = s * Cie1931.zBar(lambdaNm);

@@ -28,6 +28,15 @@ public final class SpectralIntegrator {
      *         300..780 nm where both D65 and ybar are nonzero)
      */
     public static double[][] xyzWeights(double[] nodesNm, double[] quadratureWeights) {
+        return xyzWeights(nodesNm, quadratureWeights, MirrorNormalisation.PEAK);
+    }
+
+    /**
+     * As above with the mirror's spectrum of {@code normalisation}: each weight times its factor
+     * ({@link MirrorNormalisation#factor}), the normaliser N unchanged.
+     */
+    public static double[][] xyzWeights(double[] nodesNm, double[] quadratureWeights,
+                                        MirrorNormalisation normalisation) {
         if (nodesNm.length != quadratureWeights.length) {
             throw new IllegalArgumentException(nodesNm.length + " nodes but " + quadratureWeights.length + " weights");
         }
@@ -40,6 +49,10 @@ public final class SpectralIntegrator {
                 power * Cie1931.xBar(lambda), power * Cie1931.yBar(lambda), power * Cie1931.zBar(lambda),
             };
             normaliser += w[j][1];
+            double factor = normalisation.factor(lambda);
+            w[j][0] *= factor;
+            w[j][1] *= factor;
+            w[j][2] *= factor;
         }
         if (!(normaliser > 0) || !Double.isFinite(normaliser)) {
             throw new IllegalArgumentException("the nodes see no D65 luminance (sum w S ybar = " + normaliser + ")");

@@ -98,11 +98,12 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
 
         /** The wavelength range [min, max] in nm. */
         public Builder lambdaRangeNm(double minNm, double maxNm) {
-            return spectral(new SpectralSettings(minNm, maxNm, spectral.lambdaStepNm()));
+            return spectral(new SpectralSettings(minNm, maxNm, spectral.lambdaStepNm(), spectral.normalisation()));
         }
 
         public Builder lambdaStepNm(double stepNm) {
-            return spectral(new SpectralSettings(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), stepNm));
+            return spectral(new SpectralSettings(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), stepNm,
+                    spectral.normalisation()));
         }
 
         /** The Taylor approximation as a whole. */

@@ -43,6 +43,16 @@ public final class CoherenceWindow {
         return sigmaFrequencyPerUm() * extentUm;
     }
 
+    /**
+     * The projected solid angle of a flat mirror's lobe at {@code lambdaNm}: the window on the complex spectrum makes
+     * |P|^2 = exp(-f^2 / sigma_f^2) at spatial frequency f = (u, v) / lambda, and (u, v) are direction cosines, so
+     * integral |P|^2 du dv = pi (lambda sigma_f)^2 (du dv = cos theta_r d omega_r at fixed omega_i).
+     */
+    public double mirrorLobeProjectedSolidAngleSr(double lambdaNm) {
+        double s = lambdaNm * 1e-3 * sigmaFrequencyPerUm();
+        return Math.PI * s * s;
+    }
+
     /** exp(-d^2 / (2 sigma^2)) for an offset of d texels. */
     public static double weight(double offsetTexels, double sigmaTexels) {
         double q = offsetTexels / sigmaTexels;

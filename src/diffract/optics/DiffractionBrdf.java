@@ -56,18 +56,18 @@ public final class DiffractionBrdf {
             ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
             SpectralSettings spectral = settings.spectral();
             FilteredReference filtered = illumination.filters() ? new FilteredReference(exact,
-                    settings.coherenceWindow(), spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
-                    illumination.refractiveIndex(), illumination.fresnel()) : null;
+                    settings.coherenceWindow(), spectral, illumination.refractiveIndex(), illumination.fresnel())
+                    : null;
             return new DiffractionBrdf(exact, WavelengthSampling.uniform(spectral.lambdaMinNm(),
-                    spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM), illumination, filtered, null);
+                    spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM, spectral.normalisation()),
+                    illumination, filtered, null);
         }
         if (settings.variant() == Variant.BAKED) {
             throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
         }
         if (settings.variant() == Variant.LOBES) {
             return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.taylor().highestOrder(),
-                    settings.coherenceWindow(), settings.spectral().lambdaMinNm(), settings.spectral().lambdaMaxNm(),
-                    settings.lobes()));
+                    settings.coherenceWindow(), settings.spectral(), settings.lobes()));
         }
         requirePointLight(settings);
         return withSampling(settings, taylorSpectrum(settings, terms, settings.taylor().highestOrder()));
@@ -83,8 +83,8 @@ public final class DiffractionBrdf {
             throw new IllegalArgumentException("the reference needs no Taylor expansion");
         }
         if (settings.variant() == Variant.LOBES) {
-            return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(),
-                    settings.spectral().lambdaMinNm(), settings.spectral().lambdaMaxNm(), settings.lobes()));
+            return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(), settings.spectral(),
+                    settings.lobes()));
         }
         requirePointLight(settings);
         int orders = terms.centres().highestOrder();
@@ -155,8 +155,9 @@ public final class DiffractionBrdf {
         double min = spectral.lambdaMinNm();
         double max = spectral.lambdaMaxNm();
         WavelengthSampling sampling = settings.variant() == Variant.NMM
-                ? WavelengthSampling.nmm(min, max, spectral.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES)
-                : WavelengthSampling.uniform(min, max, spectral.lambdaStepNm());
+                ? WavelengthSampling.nmm(min, max, spectral.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES,
+                        spectral.normalisation())
+                : WavelengthSampling.uniform(min, max, spectral.lambdaStepNm(), spectral.normalisation());
         return new DiffractionBrdf(s, sampling, settings.illumination(), null, null);
     }
 

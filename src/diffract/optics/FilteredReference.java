@@ -50,10 +50,11 @@ public final class FilteredReference {
     private final double refractiveIndex;
     private final FresnelModel fresnel;
 
-    public FilteredReference(ExactSpectrum spectrum, CoherenceWindow window, double lambdaMinNm, double lambdaMaxNm,
+    /** Over the band and with the mirror's normalisation of {@code spectral}. */
+    public FilteredReference(ExactSpectrum spectrum, CoherenceWindow window, SpectralSettings spectral,
                              double refractiveIndex, FresnelModel fresnel) {
         this.lobes = new GaussianLobes(spectrum, spectrum.sigmaTexelsX(), spectrum.sigmaTexelsY(), PAIR_THRESHOLD);
-        this.density = new SpectralDensity(lambdaMinNm, lambdaMaxNm);
+        this.density = new SpectralDensity(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.normalisation());
         this.extentXUm = spectrum.extentXUm();
         this.extentYUm = spectrum.extentYUm();
         this.sigmaFPerUm = window.sigmaFrequencyPerUm();

@@ -1,6 +1,7 @@
 package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
+import diffract.colour.MirrorNormalisation;
 
 /**
  * The lobes method: the windowed spectrum's Gaussian lobes ({@link GaussianLobes}), each widened by the pixel's
@@ -50,11 +51,20 @@ public final class LobeSpectrum {
      */
     LobeSpectrum(TexelCoefficients coefficients, CoherenceWindow window, double lambdaMinNm, double lambdaMaxNm,
                  LobeQuadrature quadrature, boolean fastErf) {
+        this(coefficients, window, new SpectralSettings(lambdaMinNm, lambdaMaxNm, SpectralSettings.REFERENCE_STEP_NM),
+                quadrature, fastErf);
+    }
+
+    /** Over the band and with the mirror's normalisation of {@code spectral} (its step is the quadrature's). */
+    LobeSpectrum(TexelCoefficients coefficients, CoherenceWindow window, SpectralSettings spectral,
+                 LobeQuadrature quadrature, boolean fastErf) {
+        double lambdaMinNm = spectral.lambdaMinNm();
+        double lambdaMaxNm = spectral.lambdaMaxNm();
         this.extentXUm = coefficients.extentXUm();
         this.extentYUm = coefficients.extentYUm();
         this.lobes = new GaussianLobes(coefficients, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm),
                 quadrature.pairThreshold());
-        this.spectral = new HatFilteredSpectrum(lambdaMinNm, lambdaMaxNm);
+        this.spectral = new HatFilteredSpectrum(lambdaMinNm, lambdaMaxNm, spectral.normalisation());
         this.quadrature = quadrature;
         this.sigmaFPerUm = window.sigmaFrequencyPerUm();
         this.lambdaMinNm = lambdaMinNm;
@@ -102,16 +112,15 @@ public final class LobeSpectrum {
     }
 
     /** Over the float32 Taylor terms, the plain series to {@code highestOrder}: what the shader reads. */
-    public static LobeSpectrum ofTerms(TaylorTerms terms, int highestOrder, CoherenceWindow window, double lambdaMinNm,
-                                       double lambdaMaxNm, LobeQuadrature quadrature) {
-        return new LobeSpectrum(new TaylorTexels(terms, highestOrder), window, lambdaMinNm, lambdaMaxNm, quadrature,
-                true);
+    public static LobeSpectrum ofTerms(TaylorTerms terms, int highestOrder, CoherenceWindow window,
+                                       SpectralSettings spectral, LobeQuadrature quadrature) {
+        return new LobeSpectrum(new TaylorTexels(terms, highestOrder), window, spectral, quadrature, true);
     }
 
     /** Over the float32 terms of the phase-centred expansion. */
-    public static LobeSpectrum ofTerms(PhaseCentredTerms terms, CoherenceWindow window, double lambdaMinNm,
-                                       double lambdaMaxNm, LobeQuadrature quadrature) {
-        return new LobeSpectrum(new TaylorTexels(terms), window, lambdaMinNm, lambdaMaxNm, quadrature, true);
+    public static LobeSpectrum ofTerms(PhaseCentredTerms terms, CoherenceWindow window, SpectralSettings spectral,
+                                       LobeQuadrature quadrature) {
+        return new LobeSpectrum(new TaylorTexels(terms), window, spectral, quadrature, true);
     }
 
     /** Texel pairs kept per axis (0: whole texels only, what the shader sums). */

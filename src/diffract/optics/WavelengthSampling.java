@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.colour.MirrorNormalisation;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
 
@@ -17,14 +18,21 @@ public abstract class WavelengthSampling {
 
     /** Nodes (nm) and per-node XYZ weights {wx, wy, wz}: XYZ = sum_j reflectance_j * weights_j. */
     public record Quadrature(double[] lambdasNm, double[][] xyzWeights) {
-        static Quadrature trapezoid(double[] nodesNm) {
-            return new Quadrature(nodesNm, SpectralIntegrator.xyzWeights(nodesNm, Trapezoid.weights(nodesNm)));
+        static Quadrature trapezoid(double[] nodesNm, MirrorNormalisation normalisation) {
+            return new Quadrature(nodesNm, SpectralIntegrator.xyzWeights(nodesNm, Trapezoid.weights(nodesNm),
+                    normalisation));
         }
     }
 
     /** FLSS, PQ and the reference: lambda_min, lambda_min + step, ..., lambda_max, trapezoid rule (003 sec. 1.3.2). */
     public static WavelengthSampling uniform(double lambdaMinNm, double lambdaMaxNm, double stepNm) {
-        Quadrature q = Quadrature.trapezoid(Trapezoid.uniformNodes(lambdaMinNm, lambdaMaxNm, stepNm));
+        return uniform(lambdaMinNm, lambdaMaxNm, stepNm, MirrorNormalisation.PEAK);
+    }
+
+    /** As above with the mirror's normalisation. */
+    public static WavelengthSampling uniform(double lambdaMinNm, double lambdaMaxNm, double stepNm,
+                                             MirrorNormalisation normalisation) {
+        Quadrature q = Quadrature.trapezoid(Trapezoid.uniformNodes(lambdaMinNm, lambdaMaxNm, stepNm), normalisation);
         return new WavelengthSampling() {
             @Override
             public Quadrature quadratureFor(double u, double v) {
@@ -44,8 +52,9 @@ public abstract class WavelengthSampling {
      * returned white there).
      */
     public static WavelengthSampling nmm(double lambdaMinNm, double lambdaMaxNm, double fallbackStepNm,
-                                         double extentXUm, double extentYUm, int maxNodes) {
-        WavelengthSampling fallback = uniform(lambdaMinNm, lambdaMaxNm, fallbackStepNm);
+                                         double extentXUm, double extentYUm, int maxNodes,
+                                         MirrorNormalisation normalisation) {
+        WavelengthSampling fallback = uniform(lambdaMinNm, lambdaMaxNm, fallbackStepNm, normalisation);
         return new WavelengthSampling() {
             @Override
             public Quadrature quadratureFor(double u, double v) {
@@ -54,7 +63,7 @@ public abstract class WavelengthSampling {
                 if (nodes == null) {
                     return fallback.quadratureFor(u, v);
                 }
-                return Quadrature.trapezoid(nodes);
+                return Quadrature.trapezoid(nodes, normalisation);
             }
         };
     }

@@ -3,6 +3,7 @@ package diffract.render;
 import diffract.colour.Cie1931;
 import diffract.colour.D65;
 import diffract.colour.HatFilteredSpectrum;
+import diffract.colour.MirrorNormalisation;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
 import diffract.jrtr.FloatTexture1D;
@@ -37,7 +38,8 @@ import java.util.Optional;
  *       the thesis' [0, 1]-normalised bytes of {@link NormalisedTerms}, de-normalised with {@code termExtrema});</li>
  *   <li>{@code uniformNodeTable}: per node of the uniform grid (FLSS, PQ, NMM's fallback) the normalised weights
  *       of {@link SpectralIntegrator#xyzWeights} and the node, (wx, wy, wz, lambda_nm);</li>
- *   <li>{@code spectralTable}: D65 x CIE 1931 at 1 nm over the CMF table's 360..830 nm, (S xbar, S ybar, S zbar, 0),
+ *   <li>{@code spectralTable}: D65 x CIE 1931 at 1 nm over the CMF table's 360..830 nm, (f S xbar, f S ybar,
+ *       f S zbar, S ybar) with the mirror's factor f ({@link MirrorNormalisation}; the normaliser sums S ybar),
  *       for NMM's arbitrary wavelengths (interpolated linearly in the shader; the CPU interpolates S and the CMF
  *       separately and multiplies, which differs by less than 1e-4 relative at 1 nm spacing);</li>
  *   <li>{@code bakedXyz} (BAKED only): the FLSS table XYZ(u, v, w) of {@link BakedTable}, baked once per patch and
@@ -125,7 +127,8 @@ public final class DiffractionTextures {
         BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
         DiffractionTextures textures = new DiffractionTextures(termTexture, normalised
                 ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
-                buildSpectralTable(), Cie1931.firstNm(), terms, settings, highestOrder, baked, null);
+                buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), terms, settings, highestOrder,
+                baked, null);
         int lobeOrder = highestOrder;
         textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lobeOrder, lambdaMinNm,
                 tolerance);
@@ -152,7 +155,8 @@ public final class DiffractionTextures {
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
         DiffractionTextures textures = new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()),
-                buildSpectralTable(), Cie1931.firstNm(), first, settings, terms.centres().highestOrder(), null,
+                buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), first, settings,
+                terms.centres().highestOrder(), null,
                 terms.centres());
         textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lambdaMinNm, tolerance);
         return textures;
@@ -163,13 +167,15 @@ public final class DiffractionTextures {
      * three weights are all 0 (outside the CMF or D65 tables): the shader's loop runs over the rest only.
      */
     static FloatTexture1D buildUniformNodeTable(SpectralSettings spectral) {
-        return buildUniformNodeTable(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.lambdaStepNm());
+        return buildUniformNodeTable(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.lambdaStepNm(),
+                spectral.normalisation());
     }
 
     /** As above for any grid (wavelengths outside the colour tables included). */
-    static FloatTexture1D buildUniformNodeTable(double lambdaMinNm, double lambdaMaxNm, double lambdaStepNm) {
+    static FloatTexture1D buildUniformNodeTable(double lambdaMinNm, double lambdaMaxNm, double lambdaStepNm,
+                                                MirrorNormalisation normalisation) {
         double[] nodes = Trapezoid.uniformNodes(lambdaMinNm, lambdaMaxNm, lambdaStepNm);
-        double[][] weights = SpectralIntegrator.xyzWeights(nodes, Trapezoid.weights(nodes));
+        double[][] weights = SpectralIntegrator.xyzWeights(nodes, Trapezoid.weights(nodes), normalisation);
         float[] rgba = new float[4 * nodes.length];
         int kept = 0;
         for (int j = 0; j < nodes.length; j++) {
@@ -189,17 +195,21 @@ public final class DiffractionTextures {
         return new FloatTexture1D(java.util.Arrays.copyOf(rgba, 4 * kept));
     }
 
-    /** D65 x CMF at every nm of the CMF table (outside it the CMFs are 0, as on the CPU). */
-    static FloatTexture1D buildSpectralTable() {
+    /**
+     * D65 x CMF times the mirror's factor ({@link MirrorNormalisation#factor}) at every nm of the CMF table (outside
+     * it the CMFs are 0, as on the CPU).
+     */
+    static FloatTexture1D buildSpectralTable(MirrorNormalisation normalisation) {
         int first = (int) Math.round(Cie1931.firstNm());
         int last = (int) Math.round(Cie1931.lastNm());
         float[] rgba = new float[4 * (last - first + 1)];
         for (int lambda = first; lambda <= last; lambda++) {
-            double s = D65.relativePower(lambda);
+            double s = D65.relativePower(lambda) * normalisation.factor(lambda);
             int i = 4 * (lambda - first);
             rgba[i] = (float) (s * Cie1931.xBar(lambda));
             rgba[i + 1] = (float) (s * Cie1931.yBar(lambda));
             rgba[i + 2] = (float) (s * Cie1931.zBar(lambda));
+            rgba[i + 3] = (float) (D65.relativePower(lambda) * Cie1931.yBar(lambda)); // the normaliser's integrand
         }
         return new FloatTexture1D(rgba);
     }
@@ -236,7 +246,8 @@ public final class DiffractionTextures {
      */
     public synchronized FloatTexture1D lobeSpectralTable(SpectralSettings spectral) {
         if (lobeSpectralTable == null) {
-            lobeSpectrum = new HatFilteredSpectrum(spectral.lambdaMinNm(), spectral.lambdaMaxNm());
+            lobeSpectrum = new HatFilteredSpectrum(spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
+                    spectral.normalisation());
             lobeSpectralTable = new FloatTexture1D(lobeSpectrum.rgba());
         }
         return lobeSpectralTable;

@@ -1,5 +1,6 @@
 package diffract.scene;
 
+import diffract.colour.MirrorNormalisation;
 import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
@@ -15,6 +16,7 @@ import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.Quantity;
+import diffract.optics.RadiometricGain;
 import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TaylorSettings;
@@ -47,6 +49,10 @@ public final class SceneFile {
     static final List<String> TERM_FORMATS = List.of("rg32f", "rg16f", "rg8");
     static final List<String> MODES = List.of("surface", "brdfMap");
     static final List<String> FRESNEL_MODELS = List.of("physical", "thesis");
+    static final List<String> NORMALISATIONS = Arrays.stream(MirrorNormalisation.values())
+            .map(MirrorNormalisation::key).toList();
+    /** {@code material.exposure}'s word for {@link RadiometricGain}. */
+    static final String RADIOMETRIC = "radiometric";
     static final List<String> PIXEL_FILTERS = List.of("box", "point");
     /** The catalogue's names and their camelCase spellings. */
     static final List<String> PROCEDURAL_NAMES = proceduralNames();
@@ -290,8 +296,16 @@ public final class SceneFile {
                         "lambdaMaxNm must be greater than lambdaMinNm, got " + SceneObject.format(lambdaMin) + " and "
                                 + SceneObject.format(lambdaMax));
             }
+            boolean radiometric = radiometric(material);
+            MirrorNormalisation normalisation = MirrorNormalisation.valueOf(material.choice("normalisation",
+                    NORMALISATIONS, radiometric ? "energy" : "peak").toUpperCase(Locale.ROOT));
+            if (radiometric && normalisation != MirrorNormalisation.ENERGY) {
+                throw material.problem("normalisation", "must be \"energy\" with \"exposure\": \"radiometric\" (under"
+                        + " \"peak\" a mirror's lobes carry light that grows as lambda^2, and no single gain is"
+                        + " radiometric)");
+            }
             b.spectral(new SpectralSettings(lambdaMin, lambdaMax, material.number("lambdaStepNm",
-                    SceneObject.Range.above(0, SpectralSettings.MAX_STEP_NM), 5)));
+                    SceneObject.Range.above(0, SpectralSettings.MAX_STEP_NM), 5), normalisation));
             windowRadius(material, b);
             b.pqReplicas(material.integer("pqReplicas", SceneObject.Range.closed(0, WindowSettings.MAX_PQ_REPLICAS), 0));
             b.illumination(illumination(material).withLight(new LightSource(lightSizeDeg))
@@ -311,9 +325,26 @@ public final class SceneFile {
                     + "\"pigmentation\": \"procedural\" or {\"file\": \"IMAGE\"}");
         }
         double diffuseWeight = material.number("diffuseWeight", SceneObject.Range.closed(0, 1), 0.2);
-        double exposure = material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
+        BrdfSettings settings = b.build();
+        double exposure = radiometric(material) ? RadiometricGain.of(settings)
+                : material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
         material.finish();
-        return new Scene.MaterialSpec(patch, b.build(), tolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);
+        return new Scene.MaterialSpec(patch, settings, tolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);
+    }
+
+    /**
+     * Whether {@code material.exposure} is "radiometric": the gain of {@link RadiometricGain} (pi R_0 / Omega),
+     * which puts the structural colour in the pigment's units; any other word is refused.
+     */
+    private static boolean radiometric(SceneObject material) {
+        if (material.has("exposure") && material.raw("exposure").value() instanceof String text) {
+            if (!text.equals(RADIOMETRIC)) {
+                throw material.problem("exposure", "must be a number above 0 or \"" + RADIOMETRIC + "\", got \""
+                        + text + "\"");
+            }
+            return true;
+        }
+        return false;
     }
 
     /** A whole number of texels, or "auto" (the radius per axis from sigma_f). */

@@ -45,7 +45,7 @@ class FilteredReferenceTest {
     }
 
     static FilteredReference reference(HeightField patch) {
-        return new FilteredReference(new ExactSpectrum(patch, WINDOW), WINDOW, 380, 780, 1.5, FresnelModel.PHYSICAL);
+        return new FilteredReference(new ExactSpectrum(patch, WINDOW), WINDOW, new SpectralSettings(380, 780, 5), 1.5, FresnelModel.PHYSICAL);
     }
 
     @ParameterizedTest

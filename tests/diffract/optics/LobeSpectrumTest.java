@@ -120,8 +120,8 @@ class LobeSpectrumTest {
             int radius = (int) Math.ceil(8 * window.sigmaTexels(patch.widthUm())) + 1;
             DiffractionBrdf flss = new DiffractionBrdf(new TaylorGaussianSpectrum(terms, 30, radius, window),
                     WavelengthSampling.uniform(380, 780, 0.01), 1.5);
-            LobeSpectrum fine = LobeSpectrum.ofTerms(terms, 30, window, 380, 780, FINE);
-            LobeSpectrum standard = LobeSpectrum.ofTerms(terms, 30, window, 380, 780, LobeQuadrature.DEFAULT);
+            LobeSpectrum fine = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), FINE);
+            LobeSpectrum standard = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), LobeQuadrature.DEFAULT);
             Direction wi = Direction.fromSphericalDeg(30, 90);
             int lit = 0;
             for (int k = 0; k < 24; k++) {

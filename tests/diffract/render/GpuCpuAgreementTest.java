@@ -1,5 +1,6 @@
 package diffract.render;
 
+import diffract.colour.MirrorNormalisation;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
@@ -101,29 +102,38 @@ class GpuCpuAgreementTest {
      * boxes, a point light and a 2-degree light in the plane of the period, and the 2-degree light tilted 30 degrees
      * off it (its Gauss-Hermite shifts), on 64 x 64 maps (orders narrower than a pixel light fewer pixels): both
      * patches with float32 terms, the Elaphe-like patch with every stored format (which the lobes method does not
-     * read) and the phase-centred expansion.
+     * read) and the phase-centred expansion; once with the mirror's energy normalisation.
      */
     static Stream<Arguments> lobesCases() {
         List<Arguments> cases = new ArrayList<>();
         for (double[] light : new double[][] {{0, 0}, {2, 0}, {2, 30}}) {
-            cases.add(Arguments.of("blazed", TaylorExpansion.PLAIN, TermFormat.RG32F, light[0], light[1]));
-            cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG32F, light[0], light[1]));
+            cases.add(Arguments.of("blazed", TaylorExpansion.PLAIN, TermFormat.RG32F, light[0], light[1],
+                    MirrorNormalisation.PEAK));
+            cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG32F, light[0], light[1],
+                    MirrorNormalisation.PEAK));
         }
-        cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG16F, 2.0, 0.0));
-        cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG8, 2.0, 0.0));
-        cases.add(Arguments.of("elaphe-like", TaylorExpansion.CENTRED, TermFormat.RG32F, 2.0, 0.0));
-        cases.add(Arguments.of("elaphe-like", TaylorExpansion.CENTRED, TermFormat.RG16F, 0.0, 0.0));
+        cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG16F, 2.0, 0.0,
+                MirrorNormalisation.PEAK));
+        cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG8, 2.0, 0.0,
+                MirrorNormalisation.PEAK));
+        cases.add(Arguments.of("elaphe-like", TaylorExpansion.CENTRED, TermFormat.RG32F, 2.0, 0.0,
+                MirrorNormalisation.PEAK));
+        cases.add(Arguments.of("elaphe-like", TaylorExpansion.CENTRED, TermFormat.RG16F, 0.0, 0.0,
+                MirrorNormalisation.PEAK));
+        cases.add(Arguments.of("elaphe-like", TaylorExpansion.PLAIN, TermFormat.RG32F, 2.0, 0.0,
+                MirrorNormalisation.ENERGY));
         return cases.stream();
     }
 
-    @ParameterizedTest(name = "lobes {0} {1} {2} light {3} deg at phi + {4}")
+    @ParameterizedTest(name = "lobes {0} {1} {2} light {3} deg at phi + {4}, {5}")
     @MethodSource("lobesCases")
     void lobesGpuEqualsCpuOnTheLitPixels(String patchName, TaylorExpansion expansion, TermFormat format,
-                                         double lightDeg, double lightPhiDeg) {
+                                         double lightDeg, double lightPhiDeg, MirrorNormalisation normalisation) {
         GlTestSupport.assumeOffscreenGl();
         HeightField patch = patchName.equals("blazed") ? RenderTestSupport.BLAZED : RenderTestSupport.ELAPHE_LIKE;
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.termFormat(format)
-                .pixelFilter(PixelFilter.BOX).lightSizeDeg(lightDeg));
+        BrdfSettings base = BrdfSettings.thesis(Variant.LOBES);
+        BrdfSettings settings = base.with(b -> b.termFormat(format).pixelFilter(PixelFilter.BOX).lightSizeDeg(lightDeg)
+                .spectral(base.spectral().withNormalisation(normalisation)));
         int size = 64;
         TaylorEvaluation gpuPath;
         DiffractionBrdf cpu;
@@ -146,12 +156,31 @@ class GpuCpuAgreementTest {
                 BrdfMapDifference c = RenderTestSupport.difference(BrdfMap.xyz(cpu, wi, size, Reporter.SILENT),
                         gpu.xyz(wi, size), size, wi);
                 String where = "lobes " + expansion + " " + format + " " + patchName + " light " + lightDeg
-                        + " deg at phi + " + lightPhiDeg + ", theta_i " + thetaI + ": " + c.summary();
+                        + " deg at phi + " + lightPhiDeg + ", " + normalisation + ", theta_i " + thetaI + ": "
+                        + c.summary();
                 TestReport.line(GpuCpuAgreementTest.class, where);
                 assertTrue(c.litPixels() >= 20, where + ": too few lit pixels for a meaningful comparison");
                 assertTrue(c.lit().mean() <= MAX_LIT_MEAN && c.lit().p99() <= MAX_LIT_P99, where);
             }
         }
+    }
+
+    /**
+     * The mirror's energy normalisation reaches each variant's spectral weights on the GPU (FLSS and PQ: the uniform
+     * node table; NMM: its 1 nm table, whose normaliser leaves the factor out): GPU = CPU under it, and the GPU's
+     * energy-normalised map against the CPU's peak-normalised one fails the limits (the factor (555 / lambda)^2
+     * moves the colours by more than float32 does).
+     */
+    @ParameterizedTest(name = "{0} energy")
+    @MethodSource("variants")
+    void gpuEqualsCpuUnderTheEnergyNormalisation(Variant variant) {
+        GlTestSupport.assumeOffscreenGl();
+        BrdfSettings peak = settings(variant, TermFormat.RG32F, false);
+        BrdfSettings energy = peak.with(b -> b.spectral(peak.spectral().withNormalisation(MirrorNormalisation.ENERGY)));
+        assertAgreement(RenderTestSupport.ELAPHE_LIKE, energy, TaylorExpansion.PLAIN, variant + " energy",
+                UnaryOperator.identity(), true);
+        assertAgreement(RenderTestSupport.ELAPHE_LIKE, energy, TaylorExpansion.PLAIN, variant + " energy against peak",
+                s -> peak, false);
     }
 
     /**

@@ -31,7 +31,7 @@ class UniformNodeTableTest {
                 inside++;
             }
         }
-        FloatTexture1D table = DiffractionTextures.buildUniformNodeTable(300, 900, 10);
+        FloatTexture1D table = DiffractionTextures.buildUniformNodeTable(300, 900, 10, diffract.colour.MirrorNormalisation.PEAK);
         TestReport.printf(UniformNodeTableTest.class, "300-900 nm at 10 nm: %d of %d nodes carry weight (tables %.0f-%.0f nm)%n",
                 table.size(), nodes.length, first, last);
         assertEquals(inside, table.size());
