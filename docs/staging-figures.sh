@@ -2,7 +2,7 @@
 # Regenerates the staged snake pictures (README, docs/staging.md) and their measurements: each default snake scene
 # at its own size, a camera turntable and a light turntable, and `measure` of both scenes into
 # docs/staging-measurements.md. Needs OpenGL 3.3 (headless EGL will do, no X server). On llvmpipe with 2 cores it
-# takes about 20 minutes: every extended light is a full BRDF evaluation per fragment.
+# takes about 5 minutes: every extended light is a full BRDF evaluation per fragment.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"

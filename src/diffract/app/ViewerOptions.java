@@ -2,12 +2,14 @@ package diffract.app;
 
 import diffract.bench.AutoChoice;
 import diffract.bench.AutoVariant;
+import diffract.colour.MirrorNormalisation;
 import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
+import diffract.optics.RadiometricGain;
 import diffract.optics.Variant;
 import diffract.render.DiffractionShaders;
 import diffract.scene.DisplayMode;
@@ -111,8 +113,8 @@ final class ViewerOptions {
         double distance = 3.5;
 
         @Option(names = "--exposure", defaultValue = "400", paramLabel = "E", description = "Multiplies linear XYZ before "
-                + "display (default ${DEFAULT-VALUE}, " + SNAKE_EXPOSURE + " for --shape snake: at 65 um the thesis' gain factor keeps a "
-                + "mirror's peak, not its energy, at white).")
+                + "display (default ${DEFAULT-VALUE}; for --shape snake the radiometric gain, the structural colour in "
+                + "the pigment's units with the energy normalisation, as the demo scene).")
         double exposure = 10;
 
         @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
@@ -128,10 +130,9 @@ final class ViewerOptions {
     static final double SNAKE_DISTANCE = 2.4;
     static final double SNAKE_ELEVATION_DEG = 40;
     /**
-     * The snake's exposure and diffuse weight, the demo scene's: the scales' glints are thin at 65 um, and the pigment
-     * is lit by Algorithm 4's transmitted light alone.
+     * The snake's diffuse weight, the demo scene's: the pigment is lit by Algorithm 4's transmitted light alone (its
+     * exposure is the demo's too, {@link RadiometricGain}).
      */
-    static final double SNAKE_EXPOSURE = 8000;
     static final double SNAKE_DIFFUSE_WEIGHT = 0;
 
     /** The patch a command line without --patch or --synthetic shows. */
@@ -257,9 +258,13 @@ final class ViewerOptions {
                 : scaled ? Scene.PigmentationSpec.ofSpecies(surface.species)
                 : surface.shape == Scene.ShapeKind.SNAKE ? Scene.PigmentationSpec.proceduralPattern()
                 : Scene.PigmentationSpec.none();
-        double exposure = snake && !given("--exposure") ? SNAKE_EXPOSURE : view.exposure;
+        // the snake, as the demo scene, is radiometric unless an exposure is given
+        boolean radiometric = snake && !given("--exposure");
+        BrdfSettings settings = radiometric ? defaults().with(b -> b.spectral(
+                defaults().spectral().withNormalisation(MirrorNormalisation.ENERGY))) : defaults();
+        double exposure = radiometric ? RadiometricGain.of(settings) : view.exposure;
         double diffuseWeight = snake && !given("--diffuse-weight") ? SNAKE_DIFFUSE_WEIGHT : surface.diffuseWeight;
-        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null, pigment,
+        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), settings, null, pigment,
                 pigment.present() && !surface.noPigmentation, diffuseWeight, exposure);
         return new Scene(null, size, camera, light, shapeSpec, material,
                 view.brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, StageSpec.none());

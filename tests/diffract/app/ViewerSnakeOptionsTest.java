@@ -39,7 +39,9 @@ class ViewerSnakeOptionsTest {
         assertEquals(SnakeSpecies.ELAPHE_GUTTATA, s.material().pigmentation().species());
         assertEquals(SnakeMesh.Pose.COILED, s.shape().pose());
         assertEquals(ViewerOptions.SNAKE_DISTANCE, distance(s), 1e-9);
-        assertEquals(ViewerOptions.SNAKE_EXPOSURE, s.material().exposure(), 0);
+        assertEquals(diffract.colour.MirrorNormalisation.ENERGY, s.material().settings().spectral().normalisation());
+        assertEquals(diffract.optics.RadiometricGain.of(s.material().settings()), s.material().exposure(), 0,
+                "the demo scene's radiometric gain");
         assertEquals(ViewerOptions.SNAKE_DIFFUSE_WEIGHT, s.material().diffuseWeight(), 0);
 
         Scene x = scene("--shape", "snake", "--species", "xenopeltisUnicolor", "--exposure", "100",
@@ -47,6 +49,8 @@ class ViewerSnakeOptionsTest {
         assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, x.shape().scales().species());
         assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, x.material().pigmentation().species());
         assertEquals(100, x.material().exposure(), 0, "an exposure given wins over the snake's");
+        assertEquals(diffract.colour.MirrorNormalisation.PEAK, x.material().settings().spectral().normalisation(),
+                "a gain of one's own is against the thesis' normalisation, as in a scene file");
         assertEquals(3, distance(x), 1e-9, "a distance given wins over the snake's");
     }
 

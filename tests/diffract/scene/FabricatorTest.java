@@ -5,7 +5,6 @@ import diffract.jrtr.VertexAttribute;
 import diffract.lighting.ExtendedLight;
 import diffract.lighting.LatLongMap;
 import diffract.lighting.RadianceHdr;
-import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.render.Stage;
@@ -41,13 +40,14 @@ class FabricatorTest {
         assertEquals(20, s.settings().taylor().highestOrder());
         assertEquals(65 / 4.0, s.settings().illumination().sigmaSpatialUm());
         assertEquals(65, s.settings().illumination().coherenceLengthUm());
-        assertEquals(LightSource.SUN_DEG, s.settings().illumination().light().angularDiameterDeg());
+        assertEquals(15, s.settings().illumination().light().angularDiameterDeg(), "a soft light beside the camera");
         assertEquals(PixelFilter.BOX, s.settings().illumination().pixelFilter());
-        assertEquals(8000, s.exposure());
-        // eye - lookAt = (0.3, 1.47, 1.68): the orbit camera's distance and azimuth
+        assertEquals(diffract.colour.MirrorNormalisation.ENERGY, s.settings().spectral().normalisation());
+        assertEquals(diffract.optics.RadiometricGain.of(s.settings()), s.exposure(), 0, "radiometric");
+        // eye - lookAt = (0.07, 2.22, 0.38): the orbit camera's distance and azimuth, from above
         OrbitCamera c = s.camera();
-        assertEquals(Math.sqrt(0.3 * 0.3 + 1.47 * 1.47 + 1.68 * 1.68), c.distance(), 1e-9);
-        assertEquals(Math.toDegrees(Math.atan2(0.3, 1.68)), c.azimuthDeg(), 1e-9);
+        assertEquals(Math.sqrt(0.07 * 0.07 + 2.22 * 2.22 + 0.38 * 0.38), c.distance(), 1e-9);
+        assertEquals(Math.toDegrees(Math.atan2(0.07, 0.38)), c.azimuthDeg(), 1e-9);
         assertEquals(-0.12, c.targetY(), 1e-12);
         assertEquals(45, s.verticalFovDeg());
         // the corn snake's own pattern, painted on its scales, shown from the start

@@ -66,6 +66,39 @@ class SceneFileTest {
         assertTrue(m.startsWith("7: material.exposre: unknown key (did you mean \"exposure\"?)"), m);
     }
 
+    /**
+     * {@code "exposure": "radiometric"} takes the radiometric gain of the material's coherence length and refractive
+     * index and the energy normalisation; a number keeps the thesis' peak normalisation unless told otherwise.
+     */
+    @Test
+    void radiometricExposureTakesTheGainAndTheEnergyNormalisation() throws IOException {
+        Path file = dir.resolve("radiometric.json");
+        Files.writeString(file, valid(",\n    \"coherenceLengthUm\": 65, \"exposure\": \"radiometric\""));
+        Scene.MaterialSpec m = SceneFile.load(file).material();
+        assertEquals(diffract.colour.MirrorNormalisation.ENERGY, m.settings().spectral().normalisation());
+        assertEquals(diffract.optics.RadiometricGain.of(m.settings()), m.exposure(), 0);
+        assertEquals(1354, m.exposure(), 1);
+        Files.writeString(file, valid(",\n    \"coherenceLengthUm\": 130, \"exposure\": \"radiometric\""));
+        assertEquals(4 * 1354, SceneFile.load(file).material().exposure(), 4, "the gain grows as the coherence length "
+                + "squared");
+        Files.writeString(file, valid(",\n    \"exposure\": 3"));
+        assertEquals(diffract.colour.MirrorNormalisation.PEAK,
+                SceneFile.load(file).material().settings().spectral().normalisation());
+        Files.writeString(file, valid(",\n    \"exposure\": 3, \"normalisation\": \"energy\""));
+        assertEquals(diffract.colour.MirrorNormalisation.ENERGY,
+                SceneFile.load(file).material().settings().spectral().normalisation());
+    }
+
+    @Test
+    void radiometricExposureRefusesThePeakNormalisationAndOtherWords() throws IOException {
+        String m = message(valid(",\n    \"exposure\": \"radiometric\", \"normalisation\": \"peak\""));
+        assertTrue(m.startsWith("7: material.normalisation: must be \"energy\" with \"exposure\": \"radiometric\""),
+                m);
+        m = message(valid(",\n    \"exposure\": \"bright\""));
+        assertTrue(m.startsWith("7: material.exposure: must be a number above 0 or \"radiometric\", got \"bright\""),
+                m);
+    }
+
     /** A key with an escaped newline (found by SceneFuzzTest) is quoted with the escape: the message stays one line. */
     @Test
     void controlCharactersInKeysAreEscapedInTheMessage() throws IOException {
