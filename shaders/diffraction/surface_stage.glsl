@@ -74,6 +74,24 @@ SurfaceFrame surfaceFrame() {
     return f;
 }
 
+// A scale tilted away from the view at a silhouette would show its back (omega_r below its horizon: no reflection
+// and no light let out, a black pixel); its normal is turned towards the view until the view is 1 degree above
+// its horizon, the axis kept in the new tangent plane.
+const float MIN_VIEW_COS = 0.0175;
+
+SurfaceFrame facingView(SurfaceFrame f, vec3 towardsCamera) {
+    float c = dot(f.n, towardsCamera);
+    if (c >= MIN_VIEW_COS) {
+        return f;
+    }
+    // n' = cos(a) v_perp + sin(a) v in the plane of n and v, with sin(a) = MIN_VIEW_COS
+    vec3 across = safeNormalize(f.n - c * towardsCamera);
+    f.n = safeNormalize(sqrt(1.0 - MIN_VIEW_COS * MIN_VIEW_COS) * across + MIN_VIEW_COS * towardsCamera);
+    f.t = safeNormalize(f.t - dot(f.t, f.n) * f.n);
+    f.b = cross(f.n, f.t);
+    return f;
+}
+
 vec3 toFrame(SurfaceFrame f, vec3 v) {
     return vec3(dot(v, f.t), dot(v, f.b), dot(v, f.n));
 }
@@ -126,12 +144,12 @@ vec4 uvDerivatives(SurfaceFrame f, vec3 towardsWorld, vec3 towardsCamera) {
 }
 
 vec3 stagedSurfaceLinear() {
-    SurfaceFrame f = surfaceFrame();
     vec3 towardsCamera = safeNormalize(cameraPosition - surfaceWorldPosition);
+    SurfaceFrame f = facingView(surfaceFrame(), towardsCamera);
     vec3 wr = toFrame(f, towardsCamera);
     vec3 structural = vec3(0.0);
     vec3 diffuse = vec3(0.0);
-    float visible = keyLightVisibility(surfaceWorldPosition, f.base);
+    float visible = keyLightVisibility(surfaceWorldPosition, f.base, lightDirection[0]);
     vec4 keyDerivatives = uvDerivatives(f, lightDirection[0], towardsCamera);
     if (visible > 0.0) {
         addLight(f, lightDirection[0], vec3(visible), wr, true, keyDerivatives, keyLightSigmaRad(), structural,

@@ -21,28 +21,94 @@ vec3 environmentIrradiance(vec3 n) {
 #endif
 
 #ifdef SHADOW_MAP
-// diffract.jrtr.ShadowMap: world -> [0, 1]^3 of the key light's depth map; the texture unit compares depths.
-uniform sampler2DShadow shadowMap;
+// diffract.jrtr.ShadowMap: world -> [0, 1]^3 of the key light's depth map, raw depths compared here.
+uniform sampler2D shadowMap;
 uniform mat4 shadowMatrix;
-uniform float shadowNormalOffset; // world units: the lookup starts this far out along the normal (against acne)
+uniform float shadowNormalOffset;     // world units: the lookup starts this far out along the normal (against acne)
+uniform float shadowTexelWorld;       // world units across a texel of the map
+uniform float shadowDepthRangeWorld;  // world units along the light per unit of stored depth
+uniform float keyLightTanHalfAngle;   // tan of half the key light's angular diameter (0: a point light)
 
-// The fraction of the key light reaching a point: 5 percentage-closer taps of 2 x 2 each, a texel apart.
-float keyLightVisibility(vec3 worldPosition, vec3 worldNormal) {
+// Percentage-closer soft shadows (R. Fernando, "Percentage-Closer Soft Shadows", SIGGRAPH 2005 sketch) for a
+// directional light of angular diameter D: a blocker edge a distance d above the receiver (along the light) hides
+// the light's disc over a penumbra of radius d tan(D / 2) around the geometric edge, and the fraction of the disc
+// left visible at a point is the fraction of a disc of that radius around it that no blocker covers. So: the
+// blockers' mean depth within the cone towards the light, then percentage-closer filtering over that disc.
+const int SHADOW_BLOCKER_TAPS = 16;
+const int SHADOW_FILTER_TAPS = 48;
+// The widest disc searched and filtered, texels: beyond it a penumbra is cut to this radius. The taps' count stays
+// fixed, so a wide disc's taps lie several texels apart: the visibility then steps by 1 / SHADOW_FILTER_TAPS, finer
+// than a display's 8 bits resolve along the gradient.
+const float SHADOW_MAX_RADIUS_TEXELS = 256.0;
+const float GOLDEN_ANGLE = 2.39996323;
+
+// Vogel's spiral: tap i of n, spread evenly over the unit disc.
+vec2 vogelDisc(int i, int n) {
+    float r = sqrt((float(i) + 0.5) / float(n));
+    float a = float(i) * GOLDEN_ANGLE;
+    return r * vec2(cos(a), sin(a));
+}
+
+// The stored depth of a texel; beyond the map nothing blocks (depth 1).
+float storedDepth(ivec2 texel) {
+    ivec2 size = textureSize(shadowMap, 0);
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) {
+        return 1.0;
+    }
+    return texelFetch(shadowMap, texel, 0).r;
+}
+
+// 1 where the receiver at `depth` is in front of what the map stores (GL_LEQUAL), bilinear over the four texels
+// around st: the comparison a sampler2DShadow's linear filter makes.
+float litFraction(vec2 st, float depth) {
+    vec2 f = st * vec2(textureSize(shadowMap, 0)) - 0.5;
+    ivec2 i = ivec2(floor(f));
+    vec2 w = f - floor(f);
+    float a = step(depth, storedDepth(i));
+    float b = step(depth, storedDepth(i + ivec2(1, 0)));
+    float c = step(depth, storedDepth(i + ivec2(0, 1)));
+    float e = step(depth, storedDepth(i + ivec2(1, 1)));
+    return mix(mix(a, b, w.x), mix(c, e, w.x), w.y);
+}
+
+// The fraction of the key light reaching a point with normal worldNormal, the light towards towardsLight.
+float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight) {
     vec4 p = shadowMatrix * vec4(worldPosition + shadowNormalOffset * worldNormal, 1.0);
     vec3 s = p.xyz / p.w;
     if (s.z >= 1.0) {
         return 1.0;
     }
-    vec2 texel = 1.0 / vec2(textureSize(shadowMap, 0));
-    float sum = texture(shadowMap, s);
-    sum += texture(shadowMap, s + vec3(texel.x, texel.y, 0.0));
-    sum += texture(shadowMap, s + vec3(-texel.x, texel.y, 0.0));
-    sum += texture(shadowMap, s + vec3(texel.x, -texel.y, 0.0));
-    sum += texture(shadowMap, s + vec3(-texel.x, -texel.y, 0.0));
-    return sum / 5.0;
+    vec2 size = vec2(textureSize(shadowMap, 0));
+    // a receiver tilted by theta against the light lies r tan(theta) deeper r world units away: each tap's
+    // comparison moves by that much (in stored depth per texel), so a wide disc does not shadow its own surface
+    float c = clamp(dot(normalize(worldNormal), normalize(towardsLight)), 0.1, 1.0);
+    float slopePerTexel = sqrt(1.0 - c * c) / c * shadowTexelWorld / shadowDepthRangeWorld;
+    float texelsPerDepth = shadowDepthRangeWorld * keyLightTanHalfAngle / shadowTexelWorld;
+    // blockers: anywhere between the light's side of the map and the receiver, within the cone towards the light
+    float searchTexels = clamp(s.z * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
+    float blockerSum = 0.0;
+    int blockers = 0;
+    for (int i = 0; i < SHADOW_BLOCKER_TAPS; i++) {
+        vec2 o = vogelDisc(i, SHADOW_BLOCKER_TAPS) * searchTexels;
+        float d = storedDepth(ivec2(floor(s.xy * size + o)));
+        if (d < s.z - slopePerTexel * length(o)) {
+            blockerSum += d;
+            blockers++;
+        }
+    }
+    if (blockers == 0) {
+        return 1.0;
+    }
+    float radiusTexels = clamp((s.z - blockerSum / float(blockers)) * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
+    float sum = 0.0;
+    for (int i = 0; i < SHADOW_FILTER_TAPS; i++) {
+        vec2 o = vogelDisc(i, SHADOW_FILTER_TAPS) * radiusTexels;
+        sum += litFraction(s.xy + o / size, s.z - slopePerTexel * length(o));
+    }
+    return sum / float(SHADOW_FILTER_TAPS);
 }
 #else
-float keyLightVisibility(vec3 worldPosition, vec3 worldNormal) {
+float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight) {
     return 1.0;
 }
 #endif

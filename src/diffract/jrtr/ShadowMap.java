@@ -12,9 +12,10 @@ import java.util.Map;
 /**
  * A shadow map for a directional light (L. Williams, "Casting Curved Shadows on Curved Surfaces", SIGGRAPH 1978):
  * the depth of the scene seen from the light through an orthographic box around a bounding sphere, kept in a
- * depth texture that materials sample as a {@code sampler2DShadow} (depth comparison in the texture unit, linear
- * filtering = 2 x 2 percentage-closer filtering). {@link #lightMatrix()} maps world points to the map's [0, 1]^3
- * (s, t, depth). The depth pass uses its own tiny program ({@code engine/shadow_depth.*}) and a slope-scaled polygon
+ * depth texture of raw depths that materials read with {@code texelFetch} and compare themselves (a light of
+ * finite size needs the blockers' depths, not only the comparison: {@code lighting/environment.glsl}).
+ * {@link #lightMatrix()} maps world points to the map's [0, 1]^3 (s, t, depth); {@link #texelWorld()} and
+ * {@link #depthRangeWorld()} turn texels and depths back into world units. The depth pass uses its own tiny program ({@code engine/shadow_depth.*}) and a slope-scaled polygon
  * offset against self-shadowing; it leaves the framebuffer binding and viewport as it found them.
  */
 public final class ShadowMap extends Texture {
@@ -24,6 +25,8 @@ public final class ShadowMap extends Texture {
             "engine/shadow_depth.frag", Map.of());
     private final Matrix4f view = new Matrix4f();
     private final Matrix4f projection = new Matrix4f();
+    private float boxHalfWidth = 1;
+    private float depthRange = 1;
 
     public ShadowMap(int sizePx) {
         if (sizePx < 16 || sizePx > 8192) {
@@ -47,13 +50,12 @@ public final class ShadowMap extends Texture {
     protected void fill(GL3 gl) {
         gl.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL2ES3.GL_DEPTH_COMPONENT32F, sizePx, sizePx, 0,
                 GL2ES2.GL_DEPTH_COMPONENT, GL.GL_FLOAT, null);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_NEAREST);
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_NEAREST);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_S, GL3.GL_CLAMP_TO_BORDER);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_T, GL3.GL_CLAMP_TO_BORDER);
         gl.glTexParameterfv(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BORDER_COLOR, new float[] {1, 1, 1, 1}, 0);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_MODE, GL2ES2.GL_COMPARE_REF_TO_TEXTURE);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_FUNC, GL.GL_LEQUAL);
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_MODE, GL.GL_NONE);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BASE_LEVEL, 0);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_MAX_LEVEL, 0);
     }
@@ -88,9 +90,10 @@ public final class ShadowMap extends Texture {
 
     /**
      * Aims the map: the light looks along -towardsLight at the sphere (centre, radius), which the orthographic box
-     * encloses with a margin.
+     * encloses with a margin, widened by {@code penumbraPerDepth} (tan of half a light's angular diameter) times the
+     * sphere's diameter: a penumbra reaches that far beyond the shadow of the sphere's edge.
      */
-    public void aim(Vector3f towardsLight, Vector3f centre, float radius) {
+    public void aim(Vector3f towardsLight, Vector3f centre, float radius, float penumbraPerDepth) {
         Vector3f d = new Vector3f(towardsLight);
         d.normalize();
         Vector3f up = Math.abs(d.y) > 0.99f ? new Vector3f(1, 0, 0) : new Vector3f(0, 1, 0);
@@ -107,14 +110,26 @@ public final class ShadowMap extends Texture {
         view.setRow(0, x.x, x.y, x.z, -x.dot(eye));
         view.setRow(1, y.x, y.y, y.z, -y.dot(eye));
         view.setRow(2, z.x, z.y, z.z, -z.dot(eye));
-        float r = radius * 1.05f;
+        float r = radius * (1.05f + 2 * Math.max(0, penumbraPerDepth));
         float near = radius * 0.5f;
         float far = radius * 3.5f;
+        boxHalfWidth = r;
+        depthRange = far - near;
         projection.setIdentity();
         projection.setRow(0, 1 / r, 0, 0, 0);
         projection.setRow(1, 0, 1 / r, 0, 0);
         projection.setRow(2, 0, 0, -2 / (far - near), -(far + near) / (far - near));
         projection.setRow(3, 0, 0, 0, 1);
+    }
+
+    /** World units across one texel of the map (after {@link #aim}). */
+    public float texelWorld() {
+        return 2 * boxHalfWidth / sizePx;
+    }
+
+    /** World units along the light per unit of stored depth (after {@link #aim}). */
+    public float depthRangeWorld() {
+        return depthRange;
     }
 
     /** World to the map's [0, 1]^3: bias x projection x view. */

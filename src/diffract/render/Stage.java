@@ -30,8 +30,11 @@ public record Stage(ScaleFrames scaleFrames, Environment environment, Ground gro
      * @param mottle       relative amplitude of the albedo's noise, 0..1
      * @param shadows      whether the key light casts shadows (on the ground and the shape)
      * @param shadowMapPx  side of the shadow map, texels
+     * @param keyLightDiameterDeg the key light's angular diameter as the scene gives it, whatever a variant that
+     *                     samples the light at its centre draws the BRDF with: the shadow's penumbra
      */
-    public record Ground(double[] albedoLinear, double mottle, boolean shadows, int shadowMapPx) {
+    public record Ground(double[] albedoLinear, double mottle, boolean shadows, int shadowMapPx,
+                         double keyLightDiameterDeg) {
     }
 
     public Stage {

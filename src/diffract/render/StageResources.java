@@ -90,17 +90,20 @@ public final class StageResources {
     /**
      * Before drawing a frame: renders the shadow map of {@code casters} from the key light and sets the per-frame
      * uniforms on the surface and ground materials; the environment turns about the world y axis by
-     * {@code turnDeg} (the key light's direction is given already turned).
+     * {@code turnDeg} (the key light's direction is given already turned); the key light's size softens the
+     * shadow's edges ({@link Stage.Ground#keyLightDiameterDeg}).
      */
     public void beforeFrame(GLRenderContext context, RenderList casters, Vector3f towardsKey, double turnDeg,
                             Material surface) {
+        double diameterDeg = stage.ground() == null ? 0 : stage.ground().keyLightDiameterDeg();
+        float tanHalf = (float) Math.tan(Math.toRadians(diameterDeg) / 2);
         if (shadowMap != null) {
-            shadowMap.aim(towardsKey, centre, radius);
+            shadowMap.aim(towardsKey, centre, radius, tanHalf);
             shadowMap.render(context, casters);
         }
-        setFrameUniforms(surface, turnDeg, true);
+        setFrameUniforms(surface, turnDeg, tanHalf, true);
         if (groundNode != null) {
-            setFrameUniforms(groundNode.material(), turnDeg, false);
+            setFrameUniforms(groundNode.material(), turnDeg, tanHalf, false);
         }
     }
 
@@ -108,11 +111,14 @@ public final class StageResources {
      * Tone mapping, shadow and environment uniforms; the extended lights only with {@code extendedLights} (the
      * diffraction surface evaluates the BRDF per light; the Lambertian ground needs only the SH irradiance).
      */
-    private void setFrameUniforms(Material m, double turnDeg, boolean extendedLights) {
+    private void setFrameUniforms(Material m, double turnDeg, float keyLightTanHalfAngle, boolean extendedLights) {
         m.setFloat("toneExposureScale", (float) stage.toneMapping().exposureScale())
                 .setFloat("toneWhiteLuminance", (float) stage.toneMapping().whiteLuminance());
         if (shadowMap != null) {
-            m.setMatrix("shadowMatrix", shadowMap.lightMatrix()).setFloat("shadowNormalOffset", radius * 2e-3f);
+            m.setMatrix("shadowMatrix", shadowMap.lightMatrix()).setFloat("shadowNormalOffset", radius * 2e-3f)
+                    .setFloat("shadowTexelWorld", shadowMap.texelWorld())
+                    .setFloat("shadowDepthRangeWorld", shadowMap.depthRangeWorld())
+                    .setFloat("keyLightTanHalfAngle", keyLightTanHalfAngle);
         }
         Environment environment = environment(turnDeg);
         if (environment != null) {

@@ -56,7 +56,8 @@ final class StageManager {
             environment = new Environment(map, Integer.numberOfTrailingZeros(e.lights()));
         }
         Stage.Ground ground = spec.ground() == null ? null
-                : new Stage.Ground(groundLinear, spec.ground().mottle(), spec.ground().shadows(), 2048);
+                : new Stage.Ground(groundLinear, spec.ground().mottle(), spec.ground().shadows(), 2048,
+                        scene.material().settings().illumination().light().angularDiameterDeg());
         return new Stage(frames, environment, ground, spec.toneMapping());
     }
 

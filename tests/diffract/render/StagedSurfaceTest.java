@@ -73,4 +73,28 @@ class StagedSurfaceTest {
         assertTrue(differing <= 0.005 * reference.length, differing + " channel values differ with flat scales");
         assertTrue(moved > 100, "a tilt of the scales moves the orders: " + moved + " values changed");
     }
+
+    /**
+     * At a silhouette a scale tilted away from the view would show its back: no reflection and no light let out of
+     * the skin, a black pixel among lit ones. The staged Elaphe scene (its sky lights every surface, so no pixel of
+     * it is black) at 320 x 200 had 3 (39 at 640 x 400); the normal turned towards the view leaves none.
+     */
+    @Test
+    void noScaleAtASilhouetteTurnsItsBackToTheView() {
+        GlTestSupport.assumeOffscreenGl();
+        SceneSetup scene = Fabricator.fabricate(Path.of("assets", "scenes", "snake-elaphe.json"), Reporter.SILENT);
+        SceneSetup baked = scene.withSettings(scene.settings().with(b -> b.variant(diffract.optics.Variant.BAKED)));
+        float[] rgb;
+        ViewerModel model = ViewerModel.load(baked, Reporter.SILENT);
+        try (OffscreenTarget target = new OffscreenTarget(new ViewerRenderer(model))) {
+            rgb = target.renderRgb(320, 200);
+        }
+        int black = 0;
+        for (int p = 0; p < rgb.length / 3; p++) {
+            if (Math.max(rgb[3 * p], Math.max(rgb[3 * p + 1], rgb[3 * p + 2])) <= 0f) {
+                black++;
+            }
+        }
+        assertTrue(black == 0, black + " black pixels");
+    }
 }
