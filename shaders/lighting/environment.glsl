@@ -49,9 +49,8 @@ vec2 vogelDisc(int i, int n) {
     return r * vec2(cos(a), sin(a));
 }
 
-// The stored depth of a texel; beyond the map nothing blocks (depth 1).
-float storedDepth(ivec2 texel) {
-    ivec2 size = textureSize(shadowMap, 0);
+// The stored depth of a texel of a map of `size` texels; beyond the map nothing blocks (depth 1).
+float storedDepth(ivec2 texel, ivec2 size) {
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) {
         return 1.0;
     }
@@ -60,14 +59,14 @@ float storedDepth(ivec2 texel) {
 
 // 1 where the receiver at `depth` is in front of what the map stores (GL_LEQUAL), bilinear over the four texels
 // around st: the comparison a sampler2DShadow's linear filter makes.
-float litFraction(vec2 st, float depth) {
-    vec2 f = st * vec2(textureSize(shadowMap, 0)) - 0.5;
+float litFraction(vec2 st, float depth, ivec2 size) {
+    vec2 f = st * vec2(size) - 0.5;
     ivec2 i = ivec2(floor(f));
     vec2 w = f - floor(f);
-    float a = step(depth, storedDepth(i));
-    float b = step(depth, storedDepth(i + ivec2(1, 0)));
-    float c = step(depth, storedDepth(i + ivec2(0, 1)));
-    float e = step(depth, storedDepth(i + ivec2(1, 1)));
+    float a = step(depth, storedDepth(i, size));
+    float b = step(depth, storedDepth(i + ivec2(1, 0), size));
+    float c = step(depth, storedDepth(i + ivec2(0, 1), size));
+    float e = step(depth, storedDepth(i + ivec2(1, 1), size));
     return mix(mix(a, b, w.x), mix(c, e, w.x), w.y);
 }
 
@@ -78,7 +77,8 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     if (s.z >= 1.0) {
         return 1.0;
     }
-    vec2 size = vec2(textureSize(shadowMap, 0));
+    ivec2 texels = textureSize(shadowMap, 0);
+    vec2 size = vec2(texels);
     // a receiver tilted by theta against the light lies r tan(theta) deeper r world units away: each tap's
     // comparison moves by that much (in stored depth per texel), so a wide disc does not shadow its own surface
     float c = clamp(dot(normalize(worldNormal), normalize(towardsLight)), 0.1, 1.0);
@@ -90,7 +90,7 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     int blockers = 0;
     for (int i = 0; i < SHADOW_BLOCKER_TAPS; i++) {
         vec2 o = vogelDisc(i, SHADOW_BLOCKER_TAPS) * searchTexels;
-        float d = storedDepth(ivec2(floor(s.xy * size + o)));
+        float d = storedDepth(ivec2(floor(s.xy * size + o)), texels);
         if (d < s.z - slopePerTexel * length(o)) {
             blockerSum += d;
             blockers++;
@@ -99,11 +99,14 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     if (blockers == 0) {
         return 1.0;
     }
+    if (blockers == SHADOW_BLOCKER_TAPS) {
+        return 0.0; // the search disc, wider than the penumbra's, is covered: the umbra
+    }
     float radiusTexels = clamp((s.z - blockerSum / float(blockers)) * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
     float sum = 0.0;
     for (int i = 0; i < SHADOW_FILTER_TAPS; i++) {
         vec2 o = vogelDisc(i, SHADOW_FILTER_TAPS) * radiusTexels;
-        sum += litFraction(s.xy + o / size, s.z - slopePerTexel * length(o));
+        sum += litFraction(s.xy + o / size, s.z - slopePerTexel * length(o), texels);
     }
     return sum / float(SHADOW_FILTER_TAPS);
 }
