@@ -36,7 +36,8 @@ void main() {
     float noise = 0.6 * valueNoise(p) + 0.3 * valueNoise(p * 3.1) + 0.1 * valueNoise(p * 9.7);
     vec3 albedo = albedoLinear * (1.0 + mottle * (2.0 * noise - 1.0));
     float cosKey = max(dot(normalize(lightDirection[0]), n), 0.0);
-    vec3 irradiance = vec3(cosKey * keyLightVisibility(groundWorldPosition, n, lightDirection[0])) + environmentIrradiance(n);
+    vec3 irradiance = vec3(cosKey * keyLightVisibility(groundWorldPosition, n, lightDirection[0]))
+            + environmentIrradiance(n);
     vec3 c = toneMap(albedo * irradiance);
     fragColor = vec4(srgbEncodeChannel(c.r), srgbEncodeChannel(c.g), srgbEncodeChannel(c.b), 1.0);
 }

@@ -170,7 +170,6 @@ final class OptionTypes {
         }
     }
 
-    /** physical, thesis. */
     /** peak, energy. */
     static final class NormalisationNames implements Iterable<String> {
         @Override
@@ -180,6 +179,7 @@ final class OptionTypes {
         }
     }
 
+    /** physical, thesis. */
     static final class FresnelNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {

@@ -260,8 +260,9 @@ final class ViewerOptions {
                 : Scene.PigmentationSpec.none();
         // the snake, as the demo scene, is radiometric unless an exposure is given
         boolean radiometric = snake && !given("--exposure");
-        BrdfSettings settings = radiometric ? defaults().with(b -> b.spectral(
-                defaults().spectral().withNormalisation(MirrorNormalisation.ENERGY))) : defaults();
+        BrdfSettings base = defaults();
+        BrdfSettings settings = radiometric ? base.with(b -> b.spectral(
+                base.spectral().withNormalisation(MirrorNormalisation.ENERGY))) : base;
         double exposure = radiometric ? RadiometricGain.of(settings) : view.exposure;
         double diffuseWeight = snake && !given("--diffuse-weight") ? SNAKE_DIFFUSE_WEIGHT : surface.diffuseWeight;
         Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), settings, null, pigment,

@@ -15,8 +15,9 @@ import java.util.Map;
  * depth texture of raw depths that materials read with {@code texelFetch} and compare themselves (a light of
  * finite size needs the blockers' depths, not only the comparison: {@code lighting/environment.glsl}).
  * {@link #lightMatrix()} maps world points to the map's [0, 1]^3 (s, t, depth); {@link #texelWorld()} and
- * {@link #depthRangeWorld()} turn texels and depths back into world units. The depth pass uses its own tiny program ({@code engine/shadow_depth.*}) and a slope-scaled polygon
- * offset against self-shadowing; it leaves the framebuffer binding and viewport as it found them.
+ * {@link #depthRangeWorld()} turn texels and depths back into world units. The depth pass uses its own tiny program
+ * ({@code engine/shadow_depth.*}) and a slope-scaled polygon offset against self-shadowing; it leaves the framebuffer
+ * binding and viewport as it found them.
  */
 public final class ShadowMap extends Texture {
     private final int sizePx;

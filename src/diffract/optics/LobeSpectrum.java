@@ -47,15 +47,10 @@ public final class LobeSpectrum {
     private final LobeWeightTable table;
 
     /**
+     * Over the band and with the mirror's normalisation of {@code spectral} (its step is the quadrature's).
+     *
      * @param fastErf the shader's erf (Abramowitz and Stegun 7.1.26) instead of the accurate one
      */
-    LobeSpectrum(TexelCoefficients coefficients, CoherenceWindow window, double lambdaMinNm, double lambdaMaxNm,
-                 LobeQuadrature quadrature, boolean fastErf) {
-        this(coefficients, window, new SpectralSettings(lambdaMinNm, lambdaMaxNm, SpectralSettings.REFERENCE_STEP_NM),
-                quadrature, fastErf);
-    }
-
-    /** Over the band and with the mirror's normalisation of {@code spectral} (its step is the quadrature's). */
     LobeSpectrum(TexelCoefficients coefficients, CoherenceWindow window, SpectralSettings spectral,
                  LobeQuadrature quadrature, boolean fastErf) {
         double lambdaMinNm = spectral.lambdaMinNm();

@@ -274,6 +274,7 @@ public final class SceneFile {
     private static Scene.MaterialSpec material(SceneObject material, double lightSizeDeg) {
         Scene.PatchSpec patch = patch(material.object("patch"));
         BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", VARIANTS, "lobes")));
+        boolean radiometric = radiometric(material);
         Double tolerance = null;
         try {
             if (material.has("tolerance")) {
@@ -296,7 +297,6 @@ public final class SceneFile {
                         "lambdaMaxNm must be greater than lambdaMinNm, got " + SceneObject.format(lambdaMin) + " and "
                                 + SceneObject.format(lambdaMax));
             }
-            boolean radiometric = radiometric(material);
             MirrorNormalisation normalisation = MirrorNormalisation.valueOf(material.choice("normalisation",
                     NORMALISATIONS, radiometric ? "energy" : "peak").toUpperCase(Locale.ROOT));
             if (radiometric && normalisation != MirrorNormalisation.ENERGY) {
@@ -326,7 +326,7 @@ public final class SceneFile {
         }
         double diffuseWeight = material.number("diffuseWeight", SceneObject.Range.closed(0, 1), 0.2);
         BrdfSettings settings = b.build();
-        double exposure = radiometric(material) ? RadiometricGain.of(settings)
+        double exposure = radiometric ? RadiometricGain.of(settings)
                 : material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
         material.finish();
         return new Scene.MaterialSpec(patch, settings, tolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);

@@ -71,9 +71,10 @@ class LobeSpectrumTest {
         double[] direction = {3 * 0.52 / patch.widthUm(), (1 + 0.3 * 0.8 * sigmaX) * 0.52 / patch.heightExtentUm()};
         double w = -1.7;
         double expected = uniformSteps(single, window, direction[0], direction[1], w, 0.01);
-        double fine = new LobeSpectrum(single, window, 380, 780, FINE, false).xyz(direction[0], direction[1], w,
+        SpectralSettings band = new SpectralSettings(380, 780, 5);
+        double fine = new LobeSpectrum(single, window, band, FINE, false).xyz(direction[0], direction[1], w,
                 Footprint.POINT)[1];
-        double standard = new LobeSpectrum(single, window, 380, 780, LobeQuadrature.DEFAULT, true).xyz(direction[0],
+        double standard = new LobeSpectrum(single, window, band, LobeQuadrature.DEFAULT, true).xyz(direction[0],
                 direction[1], w, Footprint.POINT)[1];
         assertTrue(expected > 1e-6, "the lobe is lit: " + expected);
         assertEquals(expected, fine, 1e-6 * expected, "fine quadrature at sigma_f = " + sigmaX);
