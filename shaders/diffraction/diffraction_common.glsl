@@ -17,6 +17,9 @@
 //                         then the last order per centre
 //   TERMS_UNORM8          terms stored [0, 1]-normalised as 8-bit bytes (003 eq. 1.1; NormalisedTerms)
 //   FRESNEL_THESIS        the gain factor squares Schlick's reflectance as eq. cfact prints it (FresnelModel.THESIS)
+//   WINDOW_FIXED          one coherence window at the DFT's origin: texels add as complex amplitudes, squared after
+//                         (the thesis); without it the window is averaged over its position and texels add as powers
+//                         (WindowPlacement)
 #if defined(TERMS_UNORM8) && defined(PHASE_CENTRED)
 #error "8-bit terms hold the thesis' series around 0 only (DiffractionTextures.ofPhaseCentred refuses them)"
 #endif
@@ -273,10 +276,11 @@ vec2 normalisedTaylorSumAt(ivec2 m, NormalisedWeights w, int lastOrder) {
 // (PQ). Defined by spectrum_gaussian.glsl or spectrum_sinc.glsl.
 float windowWeight(float offsetTexels, int axis);
 
-// P = sum_{m in window} K(s - m) sum_n c_n DFT_n(m) over the (2R_x+1)(2R_y+1) texels around the nearest texel
-// floor(s + 0.5) (TaylorGaussianSpectrum.power / TaylorSincSpectrum.power before |.|^2; 003 Algorithm 3
-// lines 9-24 with the loops exchanged, which changes nothing but the order of the float sums).
-vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
+// The window's sum over the (2R_x+1)(2R_y+1) texels around the nearest texel floor(s + 0.5) of T_m = sum_n c_n DFT_n(m)
+// weighted by K(s - m) (WindowedTaylorSum.power; 003 Algorithm 3 lines 9-24 with the loops exchanged, which changes
+// nothing but the order of the float sums): |sum_m K T_m|^2 with WINDOW_FIXED, else sum_m K^2 |T_m|^2, the window
+// averaged over its position.
+float windowedTaylorPower(vec3 uvw, float lambdaNm) {
     vec2 s = lookupTexels(uvw.xy, lambdaNm);
     float c[TERM_COUNT];
     float kw = waveNumberPerUm(lambdaNm) * uvw.z;
@@ -288,6 +292,7 @@ vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
     NormalisedWeights normalised = normalisedWeights(c, lastOrder);
 #endif
     vec2 p = vec2(0.0);
+    float power = 0.0;
     for (int j = -WINDOW_RADIUS_Y; j <= WINDOW_RADIUS_Y; j++) {
         int my = anchor.y + j;
         float weightY = windowWeight(float(my) - s.y, 1);
@@ -298,10 +303,19 @@ vec2 windowedTaylorSum(vec3 uvw, float lambdaNm) {
 #else
             vec2 sum = taylorSumAt(ivec2(mx, my), c, layerBase, lastOrder);
 #endif
-            p += weightY * windowWeight(float(mx) - s.x, 0) * sum;
+            float weight = weightY * windowWeight(float(mx) - s.x, 0);
+#ifdef WINDOW_FIXED
+            p += weight * sum;
+#else
+            power += weight * weight * dot(sum, sum);
+#endif
         }
     }
-    return p;
+#ifdef WINDOW_FIXED
+    return dot(p, p);
+#else
+    return power;
+#endif
 }
 
 // ---------------------------------------------------------------------------------------------------------

@@ -15,8 +15,7 @@ float windowWeight(float offsetTexels, int axis) {
 
 // |P(lambda)|^2 (TaylorGaussianSpectrum.power).
 float patchPower(vec3 uvw, float lambdaNm) {
-    vec2 p = windowedTaylorSum(uvw, lambdaNm);
-    return dot(p, p);
+    return windowedTaylorPower(uvw, lambdaNm);
 }
 
 #endif

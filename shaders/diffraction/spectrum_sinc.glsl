@@ -40,13 +40,14 @@ float normalisedDirichlet(float s, float replicas) {
 
 // |P|^2 |p1 + i q1|^2 |p2 + i q2|^2 / (R_x R_y)^2: the 2-D factor is the complex product
 // (p1 + i q1)(p2 + i q2) = (p1 p2 - q1 q2) + i (p1 q2 + q1 p2), whose modulus is the product of the per-axis
-// moduli (the thesis' eq. pqsubst2 writes q = p1 p2 + q1 q2, a slip).
+// moduli (the thesis' eq. pqsubst2 writes q = p1 p2 + q1 q2, a slip). Averaged over the replicas' position the
+// window's texels add as powers (TaylorSincSpectrum), and the factor multiplies their sum as well.
 float patchPower(vec3 uvw, float lambdaNm) {
-    vec2 p = windowedTaylorSum(uvw, lambdaNm);
+    float power = windowedTaylorPower(uvw, lambdaNm);
     vec2 s = lookupTexels(uvw.xy, lambdaNm);
     float dx = normalisedDirichlet(s.x, pqReplicas.x);
     float dy = normalisedDirichlet(s.y, pqReplicas.y);
-    return dot(p, p) * dx * dx * dy * dy;
+    return power * dx * dx * dy * dy;
 }
 
 #endif

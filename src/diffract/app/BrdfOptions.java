@@ -10,6 +10,7 @@ import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.optics.WindowPlacement;
 import diffract.util.UserInputException;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Option;
@@ -79,6 +80,12 @@ final class BrdfOptions {
 
         @Option(names = "--pq-replicas", paramLabel = "R", description = "PQ replicas per axis; 0 spans the coherence length (default 0).")
         Integer pqReplicas;
+
+        @Option(names = "--window", paramLabel = "W", completionCandidates = OptionTypes.WindowPlacementNames.class,
+                description = "${COMPLETION-CANDIDATES}: the BRDF averaged over where the coherence window sits on "
+                        + "the surface (default: what a pixel or a light wider than a coherence area sees; texels add "
+                        + "as powers) or one window at the DFT's origin, as the thesis (for comparisons).")
+        WindowPlacement placement;
     }
 
     /** {@link SpectralSettings}. */
@@ -199,6 +206,9 @@ final class BrdfOptions {
         }
         if (window.pqReplicas != null) {
             b.pqReplicas(window.pqReplicas);
+        }
+        if (window.placement != null) {
+            b.windowPlacement(window.placement);
         }
         SpectralSettings s = base.spectral();
         if (spectral.minNm != null || spectral.maxNm != null || spectral.stepNm != null

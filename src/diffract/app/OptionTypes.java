@@ -5,6 +5,7 @@ import diffract.optics.LobeQuadrature;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
+import diffract.optics.WindowPlacement;
 import diffract.precompute.ThesisFormat;
 import diffract.scene.Scene;
 import diffract.util.UserInputException;
@@ -188,6 +189,13 @@ final class OptionTypes {
     }
 
     /** box, point. */
+    static final class WindowPlacementNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return List.of(WindowPlacement.AVERAGED.label(), WindowPlacement.FIXED.label()).iterator();
+        }
+    }
+
     static final class PixelFilterNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {

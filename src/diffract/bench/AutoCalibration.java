@@ -83,6 +83,7 @@ public final class AutoCalibration {
     static String key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
         String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
                 Csv.number(base.spectral().lambdaMinNm()), Csv.number(base.spectral().lambdaMaxNm()),
+                base.spectral().normalisation().key(), base.window().placement().label(),
                 Csv.illuminationKey(base.illumination()), Integer.toString(base.window().pqReplicas()), plan.toString());
         try {
             byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));

@@ -30,9 +30,10 @@ public final class ReferenceMaps {
     /** XYZ of the reference map (3 floats per pixel, rows from the top), from the cache or computed and cached. */
     public float[] xyz(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
         BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
-        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-%s.pfm",
+        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-%s-%s-%s.pfm",
                 patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
                 sizePx, Csv.number(reference.spectral().lambdaMinNm()), Csv.number(reference.spectral().lambdaMaxNm()),
+                reference.spectral().normalisation().key(), reference.window().placement().label(),
                 Csv.illuminationKey(reference.illumination())));
         if (Files.isRegularFile(file)) {
             try {

@@ -47,9 +47,9 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
         return b.build();
     }
 
-    /** The coherence window of the illumination. */
+    /** The coherence window of the illumination, placed as the window settings say. */
     public CoherenceWindow coherenceWindow() {
-        return illumination.coherenceWindow();
+        return new CoherenceWindow(illumination.sigmaSpatialUm(), window.placement());
     }
 
     /** The window radii per axis for a patch of this extent (fixed, or automatic from sigma_f). */
@@ -134,16 +134,21 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
 
         /** A fixed window radius R (the automatic radius off). */
         public Builder windowRadius(int r) {
-            return window(new WindowSettings(r, false, window.pqReplicas()));
+            return window(new WindowSettings(r, false, window.pqReplicas(), window.placement()));
         }
 
         /** The window radius per axis from sigma_f (true), or the fixed radius (false). */
         public Builder automaticWindowRadius(boolean automatic) {
-            return window(new WindowSettings(window.radius(), automatic, window.pqReplicas()));
+            return window(new WindowSettings(window.radius(), automatic, window.pqReplicas(), window.placement()));
+        }
+
+        /** Where the coherence window sits: averaged over its position, or fixed at the DFT's origin. */
+        public Builder windowPlacement(WindowPlacement placement) {
+            return window(new WindowSettings(window.radius(), window.automatic(), window.pqReplicas(), placement));
         }
 
         public Builder pqReplicas(int replicas) {
-            return window(new WindowSettings(window.radius(), window.automatic(), replicas));
+            return window(new WindowSettings(window.radius(), window.automatic(), replicas, window.placement()));
         }
 
         /** The illumination as a whole. */

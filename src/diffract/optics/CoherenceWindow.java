@@ -10,27 +10,54 @@ package diffract.optics;
  * extent L = N dH, the frequency spacing is 1 / L, so sigma in texels is sigma_f * L = L / (2 pi sigma_s).
  * The weight's peak is 1, so a flat patch at the exact specular direction has |P|^2 = 1. (004's {@code gaussweight}
  * writes an extra factor pi; the thesis' shader had none, and with it a flat mirror would not be white.)
+ *
+ * <p>The window's {@link WindowPlacement}: averaged over its position on the patch (every texel's power summed,
+ * sum_m G^2 |T_m|^2), or fixed at the DFT's origin (complex amplitudes summed, |sum_m G T_m|^2, the thesis').
  */
 public final class CoherenceWindow {
     /** 4 sigma_s = 65 um (004, "Spatial Coherence and Windowing", after Mandel and Wolf pp. 153-154). */
     public static final double COHERENCE_LENGTH_UM = 65.0;
 
     private final double sigmaSpatialUm;
+    private final WindowPlacement placement;
 
+    /** Averaged over its position. */
     public CoherenceWindow(double sigmaSpatialUm) {
+        this(sigmaSpatialUm, WindowPlacement.AVERAGED);
+    }
+
+    public CoherenceWindow(double sigmaSpatialUm, WindowPlacement placement) {
         if (!(sigmaSpatialUm > 0) || !Double.isFinite(sigmaSpatialUm)) {
             throw new IllegalArgumentException("sigma_s must be a positive number of micrometres, got " + sigmaSpatialUm);
         }
+        if (placement == null) {
+            throw new NullPointerException("the window's placement is required");
+        }
         this.sigmaSpatialUm = sigmaSpatialUm;
+        this.placement = placement;
     }
 
-    /** The thesis' window: sigma_s = 65 um / 4. */
+    /** The thesis' window, sigma_s = 65 um / 4, averaged over its position. */
     public static CoherenceWindow thesis() {
         return new CoherenceWindow(COHERENCE_LENGTH_UM / 4.0);
     }
 
+    /** This window placed as {@code p}. */
+    public CoherenceWindow placed(WindowPlacement p) {
+        return new CoherenceWindow(sigmaSpatialUm, p);
+    }
+
     public double sigmaSpatialUm() {
         return sigmaSpatialUm;
+    }
+
+    public WindowPlacement placement() {
+        return placement;
+    }
+
+    /** Whether texels add as powers (the window averaged over its position) rather than as amplitudes. */
+    public boolean averaged() {
+        return placement == WindowPlacement.AVERAGED;
     }
 
     /** sigma_f = 1 / (2 pi sigma_s), in cycles per micrometre. */

@@ -140,7 +140,8 @@ public final class DiffractionBrdf {
                 double extentX = terms.cols() * terms.pixelSizeXUm();
                 double extentY = terms.rows() * terms.pixelSizeYUm();
                 return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance,
-                        settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
+                        settings.window().replicas(window, extentX), settings.window().replicas(window, extentY),
+                        window.placement());
             }
             case BAKED:
                 throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);

@@ -18,7 +18,8 @@ import java.util.concurrent.ConcurrentMap;
  * so nothing cancels, and 16 terms leave a remainder below (1/2)^16 / 16! = 7e-19: exact to double precision.
  * (Tests compare it with a direct, naive DFT of exp(i a h) to 1e-12.)
  *
- * <p>The Gaussian window is summed over every texel whose weight is at least 1e-12.
+ * <p>The Gaussian window is summed over every texel whose weight is at least 1e-12: as complex amplitudes (the window
+ * fixed at the DFT's origin) or, averaged over the window's position, as powers G^2 |T_m|^2 ({@link WindowPlacement}).
  */
 public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
     /** Terms per centre: (1/2)^16 / 16! < 1e-18. */
@@ -33,6 +34,7 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
     private final double sigmaTexelsY;
     private final int radiusX;
     private final int radiusY;
+    private final boolean averaged;
     private final ConcurrentMap<Integer, double[][]> expansions = new ConcurrentHashMap<>();
 
     /**
@@ -73,6 +75,7 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
         double sigmas = CoherenceWindow.sigmasForCutoff(WINDOW_CUTOFF);
         this.radiusX = (int) Math.ceil(sigmas * sigmaTexelsX) + 1;
         this.radiusY = (int) Math.ceil(sigmas * sigmaTexelsY) + 1;
+        this.averaged = window.averaged();
     }
 
     @Override
@@ -87,12 +90,25 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
 
     @Override
     public double power(double u, double v, double w, double lambdaUm) {
+        if (averaged) {
+            return windowSum(u, v, w, lambdaUm, true)[0];
+        }
         double[] p = transformAt(u, v, w, lambdaUm);
         return p[0] * p[0] + p[1] * p[1];
     }
 
-    /** The windowed complex P (Re, Im) at the lookup of (u, v) for a = 2 pi w / lambda. */
+    /** Whether the window is averaged over its position (texels add as powers). */
+    boolean averaged() {
+        return averaged;
+    }
+
+    /** The complex P (Re, Im) of the window at the DFT's origin, at the lookup of (u, v) for a = 2 pi w / lambda. */
     double[] transformAt(double u, double v, double w, double lambdaUm) {
+        return windowSum(u, v, w, lambdaUm, false);
+    }
+
+    /** The window's sum of the texels' powers G^2 |T_m|^2 ({power, 0}), or of their amplitudes G T_m ({Re, Im}). */
+    private double[] windowSum(double u, double v, double w, double lambdaUm, boolean powers) {
         double sx = u * extentXUm() / lambdaUm;
         double sy = v * extentYUm() / lambdaUm;
         double a = 2.0 * Math.PI / lambdaUm * w;
@@ -131,8 +147,12 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
                     sumRe += coefficients[n] * e[n][index];
                     sumIm += coefficients[n] * e[n][index + 1];
                 }
-                re += weight * sumRe;
-                im += weight * sumIm;
+                if (powers) {
+                    re += weight * weight * (sumRe * sumRe + sumIm * sumIm);
+                } else {
+                    re += weight * sumRe;
+                    im += weight * sumIm;
+                }
             }
         }
         return new double[] {re, im};

@@ -12,7 +12,8 @@ import java.util.function.DoubleFunction;
  * <pre>
  *   XYZ = sum_c integral d lambda f(lambda) average over the footprint of [C S W_c(k w) lobe_c],
  * </pre>
- * with the lobes W_c of {@link GaussianLobes} (pairs down to weight {@link #PAIR_THRESHOLD}), f the normalised
+ * with the lobes W_c of {@link GaussianLobes} (with the window averaged over its position, one lobe per texel,
+ * W_m = |T_m|^2, exactly; fixed at the DFT's origin, pairs down to weight {@link #PAIR_THRESHOLD}), f the normalised
  * D65 x CMF density ({@link SpectralDensity}) and each lobe averaged over the footprint analytically: per axis a
  * Gaussian of variance (lambda sigma_f)^2 / 2 plus the light's variance, averaged over the box by a difference of
  * erf; a light covariance that is not axis-aligned is split into a diagonal part and a rank-one part
@@ -53,7 +54,8 @@ public final class FilteredReference {
     /** Over the band and with the mirror's normalisation of {@code spectral}. */
     public FilteredReference(ExactSpectrum spectrum, CoherenceWindow window, SpectralSettings spectral,
                              double refractiveIndex, FresnelModel fresnel) {
-        this.lobes = new GaussianLobes(spectrum, spectrum.sigmaTexelsX(), spectrum.sigmaTexelsY(), PAIR_THRESHOLD);
+        this.lobes = new GaussianLobes(spectrum, spectrum.sigmaTexelsX(), spectrum.sigmaTexelsY(),
+                window.averaged() ? GaussianLobes.WHOLE_TEXELS : PAIR_THRESHOLD);
         this.density = new SpectralDensity(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.normalisation());
         this.extentXUm = spectrum.extentXUm();
         this.extentYUm = spectrum.extentYUm();

@@ -21,8 +21,14 @@ import java.util.List;
  * product of their coefficients): the pair radius per axis is K_i = floor(2 sigma_i sqrt(ln(1 / threshold))). For
  * sigma_f &lt;&lt; 1 texel (65 um coherence and patches below about 30 um: sigma &lt; 0.3) only m = m' survives a
  * threshold of 1e-4 and each lobe is |T_m|^2 on its own texel.
+ *
+ * <p>With the window averaged over its position ({@link WindowPlacement#AVERAGED}) every pair's phase averages to
+ * zero and exactly the whole-texel lobes remain, at any sigma: the threshold {@link #WHOLE_TEXELS}.
  */
 final class GaussianLobes {
+    /** The pair threshold that keeps only m = m': the window averaged over its position. */
+    static final double WHOLE_TEXELS = 1.0;
+
     private final TexelCoefficients coefficients;
     private final double sigmaX;
     private final double sigmaY;

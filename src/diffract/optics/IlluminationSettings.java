@@ -54,10 +54,6 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
         return 4 * sigmaSpatialUm;
     }
 
-    public CoherenceWindow coherenceWindow() {
-        return new CoherenceWindow(sigmaSpatialUm);
-    }
-
     /** Whether a pixel averages anything (its square or an extended light) rather than point-sampling. */
     public boolean filters() {
         return pixelFilter == PixelFilter.BOX || !light.isPoint();

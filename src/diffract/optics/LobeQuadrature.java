@@ -85,19 +85,21 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
 
     /**
      * Why a shader that sums whole texels (lobes.frag) cannot draw a patch of this extent under these settings: the
-     * window keeps pairs of texels above the pair threshold (sigma_f too wide); empty when it can.
+     * window, fixed at the DFT's origin, keeps pairs of texels above the pair threshold (sigma_f too wide); empty when
+     * it can (always with the window averaged over its position, which keeps no pair).
      */
     public static java.util.Optional<String> wholeTexelsRefusal(BrdfSettings settings, double extentXUm,
                                                                 double extentYUm) {
         CoherenceWindow window = settings.coherenceWindow();
         LobeQuadrature q = settings.lobes();
-        if (pairRadius(window.sigmaTexels(extentXUm), q.pairThreshold()) == 0
+        if (window.averaged() || pairRadius(window.sigmaTexels(extentXUm), q.pairThreshold()) == 0
                 && pairRadius(window.sigmaTexels(extentYUm), q.pairThreshold()) == 0) {
             return java.util.Optional.empty();
         }
         return java.util.Optional.of(String.format(java.util.Locale.ROOT, "the lobes shader sums whole texels, but "
-                + "this %.1f x %.1f um patch at a %s um coherence length has sigma_f = %.2f texels: texel pairs weigh "
-                + "more than the pair threshold %.0e", extentXUm, extentYUm,
+                + "this %.1f x %.1f um patch at a %s um coherence length has sigma_f = %.2f texels: with the window "
+                + "fixed at the DFT's origin texel pairs weigh more than the pair threshold %.0e (the window averaged "
+                + "over its position, the default, keeps no pairs)", extentXUm, extentYUm,
                 InvalidSettingException.number(settings.illumination().coherenceLengthUm()),
                 window.sigmaTexels(Math.max(extentXUm, extentYUm)), q.pairThreshold()));
     }

@@ -58,7 +58,7 @@ public final class LobeSpectrum {
         this.extentXUm = coefficients.extentXUm();
         this.extentYUm = coefficients.extentYUm();
         this.lobes = new GaussianLobes(coefficients, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm),
-                quadrature.pairThreshold());
+                window.averaged() ? GaussianLobes.WHOLE_TEXELS : quadrature.pairThreshold());
         this.spectral = new HatFilteredSpectrum(lambdaMinNm, lambdaMaxNm, spectral.normalisation());
         this.quadrature = quadrature;
         this.sigmaFPerUm = window.sigmaFrequencyPerUm();

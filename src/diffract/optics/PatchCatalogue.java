@@ -38,6 +38,10 @@ public final class PatchCatalogue {
             // one (10 um) coherence length wide, as the snake patches: a wider grating needs a wider window
             new Entry("blazed-10um", "sawtooth grating, d = 2.5 um, 0.2 um high, 10 x 2 um",
                     grating(ProceduralPatches.Kind.BLAZED, 4, 20), 0),
+            // a scan as the microscope takes it: 52 um, as wide as the coherence window, its edges not matching
+            new Entry("elaphe-scan", "the Elaphe-like skin scanned at AFM size, 528 x 512 samples, 52 x 51 um",
+                    new ProceduralPatches.Spec(ProceduralPatches.Kind.ELAPHE_SCAN, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM,
+                            0.3, 50, 16, 512, 512, 0.01, 1L), 90),
             // x = k |w| max|h| reaches ~17: the thesis' series of 30 float32 terms no longer converges
             new Entry("tall", "the Elaphe-like profile 1 um high, 4.6 um square",
                     new ProceduralPatches.Spec(ProceduralPatches.Kind.ELAPHE_LIKE, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM,

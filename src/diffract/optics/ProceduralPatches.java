@@ -20,7 +20,7 @@ public final class ProceduralPatches {
 
     /** The profiles. Gratings have grooves along the rows; the snake patches have ridges along the columns. */
     public enum Kind {
-        BLAZED, SINUSOID, ELAPHE_LIKE, XENOPELTIS_LIKE;
+        BLAZED, SINUSOID, ELAPHE_LIKE, XENOPELTIS_LIKE, ELAPHE_SCAN;
 
         /** 1-D gratings: sized by samples per period and rows; the snake patches by a square size in pixels. */
         public boolean isGrating() {
@@ -56,6 +56,8 @@ public final class ProceduralPatches {
                     return SyntheticPatches.blazed(periodUm, heightUm, samplesPerPeriod, periods, rows);
                 case SINUSOID:
                     return SyntheticPatches.sinusoid(periodUm, heightUm, samplesPerPeriod, periods, rows);
+                case ELAPHE_SCAN:
+                    return SyntheticPatches.elapheScan(sizePx, periods, periodUm, heightUm, seed);
                 default:
                     return SyntheticPatches.elapheLike(sizePx, periods, periodUm, heightUm, seed);
             }

@@ -12,6 +12,7 @@ public enum Quantity {
     TAYLOR_TOLERANCE("the per-lookup Taylor tolerance"),
     EXPANSION("the Taylor expansion"),
     WINDOW_RADIUS("the window radius R"),
+    WINDOW_PLACEMENT("the coherence window's placement"),
     PQ_REPLICAS("the PQ replicas per axis"),
     LAMBDA_MIN("the shortest wavelength"),
     LAMBDA_MAX("the longest wavelength"),

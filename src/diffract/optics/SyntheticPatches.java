@@ -106,6 +106,33 @@ public final class SyntheticPatches {
         return HeightField.of(size, size, h, pixelUm);
     }
 
+    /**
+     * The Elaphe-like skin as an atomic force microscope scans it: a window of {@code rows} x (rows + rows / 32)
+     * samples cut out of an {@link #elapheLike} field of (rows + rows / 8) pixels and {@code ridges} ridges, so that
+     * neither the ridges nor the meander fit a whole number of times: the scan's opposite edges do not match, and the
+     * DFT's periodic patch has a seam, as a real scan's has. 512 rows and 50 ridges of 1.144 um: 528 x 512 samples of
+     * 0.0993 um, 52.4 x 50.8 um, as wide as the 65 um coherence window.
+     *
+     * @param rows   scan lines, a multiple of 32
+     * @param ridges whole ridges over the field the scan is cut from
+     */
+    public static HeightField elapheScan(int rows, int ridges, double periodUm, double heightUm, long seed) {
+        if (rows < 32 || rows % 32 != 0) {
+            throw new UserInputException("an Elaphe scan needs a number of scan lines that is a multiple of 32, got "
+                    + rows);
+        }
+        int fieldSize = rows + rows / 8;
+        HeightField field = elapheLike(fieldSize, ridges, periodUm, heightUm, seed);
+        int cols = rows + rows / 32;
+        double[] h = new double[rows * cols];
+        for (int r = 0; r < rows; r++) {
+            for (int c = 0; c < cols; c++) {
+                h[r * cols + c] = field.heightUm(r, c);
+            }
+        }
+        return HeightField.of(rows, cols, h, field.pixelSizeXUm(), field.pixelSizeYUm());
+    }
+
     /** The asymmetric ridge profile of {@link #elapheLike}: 0 at t = 0 and 1, peak 1 at t = 0.7, smooth. */
     static double fingerProfile(double t) {
         if (t < 0.7) {

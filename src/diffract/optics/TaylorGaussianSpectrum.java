@@ -2,7 +2,8 @@ package diffract.optics;
 
 /**
  * The thesis' Taylor-series spectrum with a Gaussian window, exactly as 003 Algorithm 3 computes it (and as the
- * FLSS and NMM shaders must): P = sum_{texels m in window} G(s - m) sum_{n=0}^{N} (k w)^n / n! DFT_n(m), then |P|^2.
+ * FLSS and NMM shaders must): P = sum_{texels m in window} G(s - m) sum_{n=0}^{N} (k w)^n / n! DFT_n(m), then |P|^2;
+ * with the window averaged over its position ({@link WindowPlacement}), sum_m G(s - m)^2 |T_m|^2 over the same texels.
  *
  * <p>Lookup (003 eq. 1.8): s = (u L_x / lambda, v L_y / lambda) in texels from the centre texel, L = N dH the
  * patch extent. The window is the (2R+1)^2 texels around the nearest texel, round(s); the thesis anchored at
@@ -34,7 +35,7 @@ public final class TaylorGaussianSpectrum extends WindowedTaylorSpectrum {
         double sigmaX = window.sigmaTexels(terms.cols() * terms.pixelSizeXUm());
         double sigmaY = window.sigmaTexels(terms.rows() * terms.pixelSizeYUm());
         return new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance,
-                d -> CoherenceWindow.weight(d, sigmaX), d -> CoherenceWindow.weight(d, sigmaY));
+                d -> CoherenceWindow.weight(d, sigmaX), d -> CoherenceWindow.weight(d, sigmaY), window.placement());
     }
 
     /** P = (Re, Im) before |.|^2 (tests of the early stop's bound). */

@@ -12,20 +12,25 @@ package diffract.optics;
  * q = p1 p2 + q1 q2, a slip). We divide by R per axis so that a flat mirror stays exactly 1 (the relative
  * BRDF); the default R spans the coherence length 65 um, the same physics the Gaussian window models.
  * At integer s the kernel's 0/0 is replaced by its limit cos(R pi s) / cos(pi s), never divided.
+ *
+ * <p>sinc(s - m) D_R(s) = +-sinc(R (s - m)): the R replicas under the sinc are one box window R L wide. Averaged over
+ * the box's position ({@link WindowPlacement#AVERAGED}) every pair of texels drops out as for the Gaussian window, and
+ * |P|^2 = D_R(s)^2 sum_m sinc(s - m)^2 |T_m|^2 = sum_m sinc(R (s - m))^2 |T_m|^2 over the window's texels.
  */
 public final class TaylorSincSpectrum extends WindowedTaylorSpectrum {
     private final int replicasX;
     private final int replicasY;
 
-    public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, int windowRadius, int replicasX, int replicasY) {
-        this(terms, highestOrder, new WindowRadii(windowRadius, windowRadius), 0.0, replicasX, replicasY);
+    public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, int windowRadius, int replicasX, int replicasY,
+                              WindowPlacement placement) {
+        this(terms, highestOrder, new WindowRadii(windowRadius, windowRadius), 0.0, replicasX, replicasY, placement);
     }
 
     /** With per-axis window radii and the early-stop tolerance of {@link TaylorBound#stopOrder} (0 = fixed N). */
     public TaylorSincSpectrum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
-                              int replicasX, int replicasY) {
+                              int replicasX, int replicasY, WindowPlacement placement) {
         super(new WindowedTaylorSum(terms, highestOrder, radii, taylorTolerance, TaylorSincSpectrum::sinc,
-                TaylorSincSpectrum::sinc));
+                TaylorSincSpectrum::sinc, placement));
         if (replicasX < 1 || replicasY < 1) {
             throw new IllegalArgumentException("need replicas >= 1");
         }

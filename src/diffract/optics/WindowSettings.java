@@ -2,13 +2,16 @@ package diffract.optics;
 
 /**
  * How P is read between the DFT texels (003 eq. 1.9 and sec. 1.5.3): the Gaussian coherence window's
- * neighbourhood (FLSS, NMM, and the baked table's FLSS), or PQ's periodic replication.
+ * neighbourhood (FLSS, NMM, and the baked table's FLSS), or PQ's periodic replication, and where the window sits on
+ * the patch ({@link WindowPlacement}: averaged over its position, or fixed at the DFT's origin as the thesis).
  *
  * @param radius     R texels: a (2R + 1)^2 neighbourhood, when not {@code automatic}
  * @param automatic  the radius per axis follows sigma_f in texels ({@link WindowRadii#automatic}) instead
  * @param pqReplicas PQ's replicas per axis; 0 = enough to span the coherence length
+ * @param placement  the BRDF averaged over the window's position (every method sums texels' powers), or one window
+ *                   at the DFT's origin (every method sums complex amplitudes, then squares)
  */
-public record WindowSettings(int radius, boolean automatic, int pqReplicas) {
+public record WindowSettings(int radius, boolean automatic, int pqReplicas, WindowPlacement placement) {
     /**
      * The largest fixed radius, a 33 x 33 window: sigma_f grows with the patch (2 texels for a 200 um patch at the
      * thesis' coherence), and the automatic radius stops at {@link WindowRadii#MAX_AUTOMATIC} for cost.
@@ -25,11 +28,18 @@ public record WindowSettings(int radius, boolean automatic, int pqReplicas) {
             throw new InvalidSettingException(Quantity.PQ_REPLICAS, Quantity.PQ_REPLICAS.words()
                     + " must be in 0.." + MAX_PQ_REPLICAS + " (0 = span the coherence length), got " + pqReplicas);
         }
+        if (placement == null) {
+            throw new NullPointerException("the window's placement is required");
+        }
     }
 
-    /** The thesis' 3 x 3 window and automatic PQ replicas. */
+    /**
+     * The thesis' 3 x 3 window and automatic PQ replicas, averaged over the window's position (the thesis' own model,
+     * one window at the DFT's origin, is {@link WindowPlacement#FIXED}; the two agree for patches narrower than the
+     * window).
+     */
     public static WindowSettings thesis() {
-        return new WindowSettings(1, false, 0);
+        return new WindowSettings(1, false, 0, WindowPlacement.AVERAGED);
     }
 
     /** The radii per axis for a patch of this extent under this coherence window. */

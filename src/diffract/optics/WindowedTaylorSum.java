@@ -8,6 +8,9 @@ import java.util.function.DoubleUnaryOperator;
  * sum_{n=0}^{N} c_n DFT_n(m), with c_n = (k w)^n / n!, over the float32 terms. Texels outside the stored band
  * contribute nothing. The variants differ only in the window's weight (Gaussian for FLSS/NMM, sinc for PQ).
  *
+ * <p>With the window averaged over its position ({@link WindowPlacement#AVERAGED}) the texels add as powers,
+ * sum_m weightX^2 weightY^2 |sum_n c_n DFT_n(m)|^2, over the same texels; fixed, as complex amplitudes, squared after.
+ *
  * <p>Two settings do less work: the window's half-widths per axis ({@link WindowRadii}, e.g. from
  * sigma_f), and a tolerance at which the Taylor loop stops early ({@link TaylorBound#stopOrder} with this lookup's
  * x = |k w| max|h|); tolerance 0 keeps the fixed N and the very same arithmetic.
@@ -19,9 +22,10 @@ final class WindowedTaylorSum {
     private final double taylorTolerance;
     private final DoubleUnaryOperator weightX;
     private final DoubleUnaryOperator weightY;
+    private final boolean averaged;
 
     WindowedTaylorSum(TaylorTerms terms, int highestOrder, WindowRadii radii, double taylorTolerance,
-                      DoubleUnaryOperator weightX, DoubleUnaryOperator weightY) {
+                      DoubleUnaryOperator weightX, DoubleUnaryOperator weightY, WindowPlacement placement) {
         if (highestOrder < 0 || highestOrder > terms.highestOrder()) {
             throw new IllegalArgumentException("Taylor order " + highestOrder + " requested, the terms hold 0.."
                     + terms.highestOrder());
@@ -35,6 +39,7 @@ final class WindowedTaylorSum {
         this.taylorTolerance = taylorTolerance;
         this.weightX = weightX;
         this.weightY = weightY;
+        this.averaged = placement == WindowPlacement.AVERAGED;
     }
 
     double extentXUm() {
@@ -46,11 +51,12 @@ final class WindowedTaylorSum {
     }
 
     /**
-     * |P|^2 at the lookup s = (sx, sy) texels from the centre (eq. 1.8) for the phase factor a = k w.
+     * |P|^2 at the lookup s = (sx, sy) texels from the centre (eq. 1.8) for the phase factor a = k w: averaged over
+     * the window's position, or of the one window at the origin.
      */
     double power(double sx, double sy, double a) {
-        double[] p = amplitude(sx, sy, a);
-        return p[0] * p[0] + p[1] * p[1];
+        double[] p = sum(sx, sy, a, averaged);
+        return averaged ? p[0] : p[0] * p[0] + p[1] * p[1];
     }
 
     /** The order this lookup's loop stops at: N, or earlier where the remainder bound meets the tolerance. */
@@ -58,8 +64,13 @@ final class WindowedTaylorSum {
         return TaylorBound.stopOrder(Math.abs(a) * terms.maxAbsHeightUm(), taylorTolerance, highestOrder);
     }
 
-    /** P = (Re, Im) before |.|^2. */
+    /** P = (Re, Im) of the window at the origin, before |.|^2. */
     double[] amplitude(double sx, double sy, double a) {
+        return sum(sx, sy, a, false);
+    }
+
+    /** The window's sum: of the texels' powers ({power, 0}), or of their complex amplitudes ({Re, Im}). */
+    private double[] sum(double sx, double sy, double a, boolean powers) {
         double[] coefficients = TaylorCoefficients.of(a, highestOrder);
         int lastOrder = stopOrder(a);
         int anchorX = (int) Math.floor(sx + 0.5);
@@ -88,8 +99,12 @@ final class WindowedTaylorSum {
                     sumRe += coefficients[n] * term[index];
                     sumIm += coefficients[n] * term[index + 1];
                 }
-                re += weight * sumRe;
-                im += weight * sumIm;
+                if (powers) {
+                    re += weight * weight * (sumRe * sumRe + sumIm * sumIm);
+                } else {
+                    re += weight * sumRe;
+                    im += weight * sumIm;
+                }
             }
         }
         return new double[] {re, im};

@@ -4,6 +4,7 @@ import diffract.colour.Srgb;
 import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
+import diffract.optics.WindowPlacement;
 import diffract.optics.FresnelModel;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LightSource;
@@ -98,6 +99,9 @@ public final class DiffractionShaders {
         defines.put("WINDOW_RADIUS", Integer.toString(Math.max(radii.x(), radii.y())));
         defines.put("WINDOW_RADIUS_X", Integer.toString(radii.x()));
         defines.put("WINDOW_RADIUS_Y", Integer.toString(radii.y()));
+        if (settings.window().placement() == WindowPlacement.FIXED) {
+            defines.put("WINDOW_FIXED", "1");
+        }
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");

@@ -22,6 +22,7 @@ import diffract.optics.TaylorExpansion;
 import diffract.optics.TaylorSettings;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.optics.WindowPlacement;
 import diffract.optics.WindowSettings;
 import diffract.util.UserInputException;
 
@@ -54,6 +55,7 @@ public final class SceneFile {
     /** {@code material.exposure}'s word for {@link RadiometricGain}. */
     static final String RADIOMETRIC = "radiometric";
     static final List<String> PIXEL_FILTERS = List.of("box", "point");
+    static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed");
     /** The catalogue's names and their camelCase spellings. */
     static final List<String> PROCEDURAL_NAMES = proceduralNames();
 
@@ -265,6 +267,7 @@ public final class SceneFile {
             Map.entry(Quantity.HIGHEST_ORDER, "taylorTerms"), Map.entry(Quantity.ORDER_TOLERANCE, "tolerance"),
             Map.entry(Quantity.TAYLOR_TOLERANCE, "taylorTolerance"), Map.entry(Quantity.EXPANSION, "expansion"),
             Map.entry(Quantity.WINDOW_RADIUS, "windowRadius"), Map.entry(Quantity.PQ_REPLICAS, "pqReplicas"),
+            Map.entry(Quantity.WINDOW_PLACEMENT, "window"),
             Map.entry(Quantity.LAMBDA_MIN, "lambdaMinNm"), Map.entry(Quantity.LAMBDA_MAX, "lambdaMaxNm"),
             Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
             Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
@@ -308,6 +311,7 @@ public final class SceneFile {
                     SceneObject.Range.above(0, SpectralSettings.MAX_STEP_NM), 5), normalisation));
             windowRadius(material, b);
             b.pqReplicas(material.integer("pqReplicas", SceneObject.Range.closed(0, WindowSettings.MAX_PQ_REPLICAS), 0));
+            b.windowPlacement(WindowPlacement.parse(material.choice("window", WINDOW_PLACEMENTS, "averaged")));
             b.illumination(illumination(material).withLight(new LightSource(lightSizeDeg))
                     .withFresnel(FresnelModel.parse(material.choice("fresnel", FRESNEL_MODELS, "physical")))
                     .withPixelFilter(PixelFilter.parse(material.choice("pixelFilter", PIXEL_FILTERS, "box"))));

@@ -70,7 +70,7 @@ class BrdfSettingsTest {
         assertEquals(30, thesis.taylor().highestOrder());
         assertEquals(0, thesis.taylor().tolerance());
         assertEquals(TaylorExpansion.AUTO, thesis.taylor().expansion());
-        assertEquals(new WindowSettings(1, false, 0), thesis.window());
+        assertEquals(new WindowSettings(1, false, 0, WindowPlacement.AVERAGED), thesis.window());
         assertEquals(new SpectralSettings(380, 780, 5), thesis.spectral());
         assertEquals(65, thesis.illumination().coherenceLengthUm(), 1e-12);
         assertEquals(1.5, thesis.illumination().refractiveIndex());
@@ -84,8 +84,8 @@ class BrdfSettingsTest {
                 Map.entry(Quantity.HIGHEST_ORDER, () -> new TaylorSettings(TaylorSettings.MAX_HIGHEST_ORDER + 1, 0,
                         TaylorExpansion.AUTO)),
                 Map.entry(Quantity.TAYLOR_TOLERANCE, () -> new TaylorSettings(30, 1, TaylorExpansion.AUTO)),
-                Map.entry(Quantity.WINDOW_RADIUS, () -> new WindowSettings(WindowSettings.MAX_RADIUS + 1, false, 0)),
-                Map.entry(Quantity.PQ_REPLICAS, () -> new WindowSettings(1, false, -1)),
+                Map.entry(Quantity.WINDOW_RADIUS, () -> new WindowSettings(WindowSettings.MAX_RADIUS + 1, false, 0, WindowPlacement.AVERAGED)),
+                Map.entry(Quantity.PQ_REPLICAS, () -> new WindowSettings(1, false, -1, WindowPlacement.AVERAGED)),
                 Map.entry(Quantity.LAMBDA_MIN, () -> new SpectralSettings(300, 780, 5)),
                 Map.entry(Quantity.LAMBDA_MAX, () -> new SpectralSettings(500, 450, 5)),
                 Map.entry(Quantity.LAMBDA_STEP, () -> new SpectralSettings(380, 780, 0)),
@@ -106,7 +106,7 @@ class BrdfSettingsTest {
     void theEdgesOfEachRangeAreAccepted() {
         new TaylorSettings(TaylorSettings.MAX_HIGHEST_ORDER, 0, TaylorExpansion.AUTO);
         new TaylorSettings(0, 0, TaylorExpansion.AUTO);
-        new WindowSettings(WindowSettings.MAX_RADIUS, false, WindowSettings.MAX_PQ_REPLICAS);
+        new WindowSettings(WindowSettings.MAX_RADIUS, false, WindowSettings.MAX_PQ_REPLICAS, WindowPlacement.AVERAGED);
         new SpectralSettings(SpectralSettings.LOWEST_NM, SpectralSettings.HIGHEST_NM, SpectralSettings.MAX_STEP_NM);
         new IlluminationSettings(IlluminationSettings.MAX_COHERENCE_LENGTH_UM / 4, IlluminationSettings.MAX_REFRACTIVE_INDEX);
         new GpuTableSettings(TermFormat.RG8, BakedGrid.MAX_SAMPLES, 2);

@@ -15,7 +15,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class EarlyStopAndWindowTest {
     private static final HeightField PATCH = SyntheticPatches.elapheLike(32, 4, 0.6, 0.3, 7).meanSubtracted();
     private static final TaylorTerms TERMS = TaylorTermComputer.compute(PATCH, 30, Reporter.SILENT);
-    private static final CoherenceWindow WINDOW = new CoherenceWindow(2.5);
+    /** The thesis' window, fixed at the DFT's origin, as Algorithm 3 sums it (AveragedWindowTest holds the average). */
+    private static final CoherenceWindow WINDOW = new CoherenceWindow(2.5, WindowPlacement.FIXED);
 
     /**
      * Tolerance 0 is the thesis' fixed N, to the last bit: the sum equals a literal restatement of 003 Algorithm 3

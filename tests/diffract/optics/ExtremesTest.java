@@ -140,7 +140,7 @@ class ExtremesTest {
     void pqAtIntegerLookupsWhereOneMinusCosVanishes() {
         HeightField patch = NaiveDft.randomPatch(10, 10, 0.2, 0.1, 9);
         TaylorTerms terms = TaylorTermComputer.compute(patch, 20, Reporter.SILENT);
-        TaylorSincSpectrum pq = new TaylorSincSpectrum(terms, 20, 1, 7, 7);
+        TaylorSincSpectrum pq = new TaylorSincSpectrum(terms, 20, 1, 7, 7, WindowPlacement.FIXED);
         double lambdaUm = 0.5;
         for (int m = -4; m <= 4; m++) {
             for (double eps : new double[] {0, 1e-12, 1e-9, 1e-7, 1e-6, 1e-3}) {

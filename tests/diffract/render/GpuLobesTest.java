@@ -12,6 +12,7 @@ import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.optics.WindowPlacement;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
@@ -24,7 +25,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * The lobes shader on surfaces: point-sampled pixels show the CPU's BRDF (LobeSpectrum) in the tangent frame, pixel
  * footprints and the sun's size spread the orders over more fragments and stay finite; a patch that needs texel pairs
- * is refused in one line. GpuCpuAgreementTest holds the lobes' BRDF maps to the CPU.
+ * (the window fixed at the DFT's origin) is refused in one line. GpuCpuAgreementTest holds the lobes' BRDF maps to the
+ * CPU.
  */
 @Tag("gl")
 class GpuLobesTest {
@@ -67,16 +69,30 @@ class GpuLobesTest {
         assertTrue(litFiltered > litPoint, "footprints spread the orders: " + litFiltered + " vs " + litPoint);
     }
 
+    /**
+     * At 10 um coherence the 9.2 um patch has sigma_f = 0.58 texels: with the window fixed at the DFT's origin, pairs
+     * up to 3 texels apart weigh more than 1e-4 and the shader, which sums whole texels, refuses in one line; averaged
+     * over its position the window keeps no pairs and the same patch draws.
+     */
     @Test
-    void aPatchThatNeedsTexelPairsIsRefusedWithOneLine() {
+    void aPatchThatNeedsTexelPairsIsRefusedWithOneLineOnlyUnderTheFixedWindow() {
         GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        // 10 um coherence: sigma_f = 0.58 texels, pairs up to 3 texels apart weigh more than 1e-4
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.coherenceLengthUm(10));
+        BrdfSettings averaged = BrdfSettings.thesis(Variant.LOBES).with(b -> b.coherenceLengthUm(10));
+        BrdfSettings fixed = averaged.with(b -> b.windowPlacement(WindowPlacement.FIXED));
         InvalidSettingException e = assertThrows(InvalidSettingException.class,
-                () -> new GpuBrdfMap(terms, settings).close());
+                () -> new GpuBrdfMap(terms, fixed).close());
         assertFalse(e.getMessage().contains("\n"), e.getMessage());
         assertTrue(e.getMessage().contains("lobes variant on the CPU"), e.getMessage());
+        assertTrue(e.getMessage().contains("averaged"), e.getMessage());
+        try (GpuBrdfMap map = new GpuBrdfMap(terms, averaged)) {
+            float[] xyz = map.xyz(RenderTestSupport.light(patch, 30), 32);
+            double brightest = 0;
+            for (int p = 0; p < xyz.length / 3; p++) {
+                brightest = Math.max(brightest, xyz[3 * p + 1]);
+            }
+            assertTrue(brightest > 1e-4, "the averaged window draws the patch: " + brightest);
+        }
     }
 }

@@ -23,6 +23,9 @@ final class RenderTestSupport {
     /** The procedural Elaphe-like patch: 128 x 128 pixels of 0.0715 um, ridges along x, period 1.144 um along y. */
     static final HeightField ELAPHE_LIKE = SyntheticPatches.elapheLike().meanSubtracted();
 
+    /** A scan as wide as three quarters of the 65 um coherence length: 128 x 128 pixels of 0.375 um, ridges along x. */
+    static final HeightField WIDE = diffract.optics.WideScan.of(128, 0.375);
+
     private static final Map<HeightField, TaylorTerms> TERMS = new ConcurrentHashMap<>();
 
     private RenderTestSupport() {
@@ -48,7 +51,7 @@ final class RenderTestSupport {
 
     /** Light in the plane of the period: along x for the grating, along y for the Elaphe-like ridges. */
     static Direction light(HeightField patch, double thetaIDeg) {
-        return Direction.fromSphericalDeg(thetaIDeg, patch == ELAPHE_LIKE ? 90 : 0);
+        return Direction.fromSphericalDeg(thetaIDeg, patch == ELAPHE_LIKE || patch == WIDE ? 90 : 0);
     }
 
     /**
@@ -65,6 +68,6 @@ final class RenderTestSupport {
     }
 
     static String name(HeightField patch) {
-        return patch == ELAPHE_LIKE ? "elaphe-like" : "blazed";
+        return patch == ELAPHE_LIKE ? "elaphe-like" : patch == WIDE ? "48 um scan" : "blazed";
     }
 }
