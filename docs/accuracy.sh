@@ -7,8 +7,8 @@ out=out/accuracy
 mkdir -p "$out"
 ./diffract patch blazed --period 2.5 --height 0.2 --samples-per-period 25 --periods 26 --rows 16 -o "$out/blazed.gsf" >/dev/null
 patches=("blazed|--patch $out/blazed.gsf|0|15")
-ELAPHE=../shared/data/patches/elaphe-100px.png
-[ -f "$ELAPHE" ] && patches+=("elaphe|--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686|90|25")
+ELAPHE=assets/patches/elaphe-100px.png
+patches+=("elaphe|--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686|90|25")
 echo "| patch | theta_i | variant | seconds | CIEDE2000 to reference: unit disk; lit pixels (exposure) |"
 echo "|---|---|---|---|---|"
 for entry in "${patches[@]}"; do

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Regenerates the BRDF-map pictures of README.md and docs/accuracy.md from the repository root: bash docs/figures.sh
-# The Elaphe pictures need the measured patch in ../shared/data (skipped without it). They are drawn at a 10 um
+# The Elaphe pictures show the measured patch of assets/patches. They are drawn at a 10 um
 # coherence, where the thesis' point-sampling approximations are valid, with pixels sampled at their centres as the
 # thesis' maps are (docs/filtering.md has the 65 um pictures, pixels averaged).
 set -euo pipefail
@@ -18,14 +18,10 @@ run brdfmap --patch out/figures/blazed.gsf --theta-i 75 --coherence-length 10 --
 run brdfmap --patch out/figures/blazed.gsf --theta-i 30 --coherence-length 10 --pixel-filter point --lambda 550 --variant reference --exposure auto --size 256 \
     -o docs/images/blazed-reference-30-550nm.png
 
-ELAPHE=../shared/data/patches/elaphe-100px.png
-if [ -f "$ELAPHE" ]; then
-    for variant in reference flss nmm pq; do
-        run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 30 --phi-i 90 --coherence-length 10 --pixel-filter point \
-            --variant "$variant" --exposure 25 --size 256 -o "docs/images/elaphe-$variant-30.png"
-    done
-    run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 75 --phi-i 90 --coherence-length 10 --pixel-filter point \
-        --variant reference --exposure auto --size 256 -o docs/images/elaphe-reference-75.png
-else
-    echo "no $ELAPHE: Elaphe pictures skipped" >&2
-fi
+ELAPHE=assets/patches/elaphe-100px.png
+for variant in reference flss nmm pq; do
+    run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 30 --phi-i 90 --coherence-length 10 --pixel-filter point \
+        --variant "$variant" --exposure 25 --size 256 -o "docs/images/elaphe-$variant-30.png"
+done
+run brdfmap --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --theta-i 75 --phi-i 90 --coherence-length 10 --pixel-filter point \
+    --variant reference --exposure auto --size 256 -o docs/images/elaphe-reference-75.png

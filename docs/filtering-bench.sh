@@ -1,15 +1,13 @@
 #!/usr/bin/env bash
 # Regenerates docs/bench/filtering.md and filtering.csv (the filtering targets of docs/filtering.md) from the
 # repository root: bash docs/filtering-bench.sh
-# At the thesis' 65 um coherence, per bench patch and the measured Elaphe patch (when ../shared/data has it), for a
+# At the thesis' 65 um coherence, per bench patch and the measured Elaphe patch (assets/patches), for a
 # point light and a 2-degree light: the lobes method, FLSS in the thesis' configuration and the baked table against
 # the filtered reference, and their GPU times on one context. About 10 minutes on 2 cores with llvmpipe; reference
 # maps are cached in out/filtering/reference-maps.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-ELAPHE=../shared/data/patches/elaphe-100px.png
-extra=()
-[ -f "$ELAPHE" ] && extra=(--patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --phi-i 90)
-./diffract bench --filtering -o out/filtering "${extra[@]}"
+ELAPHE=assets/patches/elaphe-100px.png
+./diffract bench --filtering -o out/filtering --patch "$ELAPHE" --max-height 0.375 --pixel-size 0.0686 --phi-i 90
 mkdir -p docs/bench
 cp out/filtering/filtering.md out/filtering/filtering.csv docs/bench/

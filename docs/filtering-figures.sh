@@ -11,8 +11,8 @@ tmp=out/filtering-figures
 mkdir -p "$tmp" "$out"
 ./diffract patch elaphe-like -o "$tmp/elaphe-like.gsf" >/dev/null
 patches=("elaphe-like|--patch $tmp/elaphe-like.gsf")
-ELAPHE=../shared/data/patches/elaphe-100px.png
-[ -f "$ELAPHE" ] && patches+=("elaphe-100px|--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686")
+ELAPHE=assets/patches/elaphe-100px.png
+patches+=("elaphe-100px|--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686")
 for entry in "${patches[@]}"; do
     IFS='|' read -r name args <<<"$entry"
     common="$args --theta-i 30 --phi-i 90"
@@ -31,13 +31,11 @@ for entry in "${patches[@]}"; do
     ./diffract brdfmap $common --variant reference --light-size-deg 2 --size 64 --exposure "$exposure" \
         -o "$out/filtering-$name-reference-2deg-64.png"
 done
-if [ -f "$ELAPHE" ]; then
-    P="--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686 --theta-i 30 --phi-i 90 --size 128"
+P="--patch $ELAPHE --max-height 0.375 --pixel-size 0.0686 --theta-i 30 --phi-i 90 --size 128"
+# shellcheck disable=SC2086
+exposure=$(./diffract brdfmap $P --exposure auto -o "$out/filtering-elaphe-100px-reference-128.png" 2>&1 \
+    | sed -n 's/.*auto exposure \([0-9.e+-]*\).*/\1/p')
+for variant in flss lobes; do
     # shellcheck disable=SC2086
-    exposure=$(./diffract brdfmap $P --exposure auto -o "$out/filtering-elaphe-100px-reference-128.png" 2>&1 \
-        | sed -n 's/.*auto exposure \([0-9.e+-]*\).*/\1/p')
-    for variant in flss lobes; do
-        # shellcheck disable=SC2086
-        ./diffract brdfmap $P --variant $variant --exposure "$exposure" -o "$out/filtering-elaphe-100px-$variant-128.png"
-    done
-fi
+    ./diffract brdfmap $P --variant $variant --exposure "$exposure" -o "$out/filtering-elaphe-100px-$variant-128.png"
+done

@@ -15,6 +15,7 @@ import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
+import diffract.optics.Levelling;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
@@ -131,6 +132,15 @@ final class BenchCommand implements Callable<Integer> {
     @Option(names = "--pixel-size", paramLabel = "UM", description = "--patch: pixel size dH in micrometres.")
     Double pixelSizeUm;
 
+    @Option(names = "--channel", paramLabel = "NAME|INDEX",
+            description = "--patch: the channel of a .gwy or .ibw file (default: the first in a length unit).")
+    String channel;
+
+    @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
+            converter = OptionTypes.LevellingNames.Converter.class,
+            description = "--patch: levelling before use, plane (the default), rows or none.")
+    Levelling level;
+
     @Option(names = "--phi-i", defaultValue = "90", paramLabel = "DEG",
             description = "--patch: the light's azimuth, in the plane of its period (default ${DEFAULT-VALUE}: "
                     + "ridges along x, as a snake patch scanned along its scale).")
@@ -236,7 +246,8 @@ final class BenchCommand implements Callable<Integer> {
         List<BenchPatch> list = new ArrayList<>(BenchPatch.named(patches));
         Reporter reporter = quiet.reporter();
         if (patchFile != null) {
-            HeightField field = HeightFieldReader.load(patchFile, maxHeightUm, pixelSizeUm, reporter).meanSubtracted();
+            HeightField field = HeightFieldReader.load(patchFile, maxHeightUm, pixelSizeUm, channel,
+                    level != null ? level : Levelling.DEFAULT, reporter).meanSubtracted();
             list.add(new BenchPatch(patchFile.getFileName().toString().replaceFirst("\\.[^.]*$", ""), field,
                     patchPhiDeg));
         }

@@ -17,8 +17,8 @@ import picocli.CommandLine;
 @Command(name = "diffract", mixinStandardHelpOptions = true, version = "diffract " + Version.VERSION,
         description = "Structural colour from natural diffraction gratings (Single 2014, after Stam 1999).",
         subcommands = {DemoCommand.class, PrecomputeCommand.class, BrdfMapCommand.class, CompareCommand.class,
-                ConvertTermsCommand.class, PatchCommand.class, ViewCommand.class, RenderCommand.class,
-                MeasureCommand.class, WarmUpCommand.class, BenchCommand.class,
+                ConvertTermsCommand.class, PatchCommand.class, ChannelsCommand.class, ViewCommand.class,
+                RenderCommand.class, MeasureCommand.class, WarmUpCommand.class, BenchCommand.class,
                 CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
     /** Exit code for bad usage or bad input. */

@@ -36,6 +36,7 @@ final class OptionNames {
         FLAGS.put(Quantity.BAKED_SAMPLES, "--baked-samples");
         FLAGS.put(Quantity.MAX_HEIGHT, "--max-height");
         FLAGS.put(Quantity.PIXEL_SIZE, "--pixel-size");
+        FLAGS.put(Quantity.CHANNEL, "--channel");
         FLAGS.put(Quantity.TERMS_HEIGHT_UNIT, "--terms-height-unit");
     }
 

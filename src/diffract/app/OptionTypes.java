@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.optics.FresnelModel;
+import diffract.optics.Levelling;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
@@ -200,6 +201,25 @@ final class OptionTypes {
         @Override
         public Iterator<String> iterator() {
             return List.of(PixelFilter.BOX.label(), PixelFilter.POINT.label()).iterator();
+        }
+    }
+
+    /** {@code --level plane|rows|none}. */
+    static final class LevellingNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return java.util.Arrays.stream(Levelling.values()).map(Levelling::label).iterator();
+        }
+
+        static final class Converter implements ITypeConverter<Levelling> {
+            @Override
+            public Levelling convert(String text) {
+                Levelling levelling = Levelling.fromLabel(text.trim());
+                if (levelling == null) {
+                    throw new TypeConversionException("must be plane, rows or none, got '" + text + "'");
+                }
+                return levelling;
+            }
         }
     }
 

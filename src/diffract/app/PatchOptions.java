@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.optics.HeightField;
+import diffract.optics.Levelling;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.io.HeightFieldReader;
@@ -18,8 +19,8 @@ import java.nio.file.Path;
  */
 final class PatchOptions {
     @Option(names = "--patch", paramLabel = "FILE",
-            description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix (.txt/.csv, heights in um) or "
-                    + "Gwyddion .gsf.")
+            description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix (.txt/.csv, heights in um), "
+                    + "Gwyddion .gsf or .gwy, or Igor .ibw (Asylum Research).")
     Path file;
 
     @Option(names = "--synthetic", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
@@ -38,9 +39,20 @@ final class PatchOptions {
             description = "Pixel size dH in micrometres (images and text; overrides a .gsf's XReal/XRes).")
     Double pixelSizeUm;
 
+    @Option(names = "--channel", paramLabel = "NAME|INDEX",
+            description = "The channel of a .gwy or .ibw --patch, by title or index (default: the first in a length "
+                    + "unit; diffract channels FILE lists them).")
+    String channel;
+
+    @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
+            converter = OptionTypes.LevellingNames.Converter.class,
+            description = "Levelling of a --patch before use: plane (the least-squares plane, the default), rows "
+                    + "(each scan line's mean) or none.")
+    Levelling level;
+
     /** The options a scene file says by itself. */
-    static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size", "--period", "--height",
-        "--periods", "--samples-per-period", "--rows", "--seed"};
+    static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size", "--channel", "--level",
+        "--period", "--height", "--periods", "--samples-per-period", "--rows", "--seed"};
 
     boolean given() {
         return file != null || synthetic != null;
@@ -61,6 +73,12 @@ final class PatchOptions {
                 throw new diffract.util.UserInputException("--max-height and --pixel-size size a --patch FILE; "
                         + "a --synthetic patch has its own");
             }
+            if (channel != null || level != null) {
+                throw new diffract.util.UserInputException("--channel and --level read a --patch FILE; a --synthetic "
+                        + "patch is made level");
+            }
+        } else if (file == null && (channel != null || level != null)) {
+            throw new diffract.util.UserInputException("--channel and --level read a --patch FILE: add --patch");
         }
     }
 
@@ -75,7 +93,7 @@ final class PatchOptions {
     /** The height field, mean-subtracted, with its name ({@code fallback} when none was given). */
     NamedPatch load(String fallback, Reporter reporter) {
         if (file != null) {
-            HeightField field = HeightFieldReader.load(file, maxHeightUm, pixelSizeUm, reporter);
+            HeightField field = HeightFieldReader.load(file, maxHeightUm, pixelSizeUm, channel, levelling(), reporter);
             return new NamedPatch(file.getFileName().toString(), field.meanSubtracted(), maxHeightUm);
         }
         PatchCatalogue.Entry entry = PatchCatalogue.named(synthetic != null ? synthetic : fallback);
@@ -87,10 +105,14 @@ final class PatchOptions {
     /** As a scene's patch ({@code fallback} when none was given). */
     Scene.PatchSpec spec(String fallback) {
         if (file != null) {
-            return new Scene.FilePatch(file, maxHeightUm, pixelSizeUm);
+            return new Scene.FilePatch(file, maxHeightUm, pixelSizeUm, channel, levelling());
         }
         PatchCatalogue.Entry entry = PatchCatalogue.named(synthetic != null ? synthetic : fallback);
         return new Scene.ProceduralPatch(entry.name(), parameters.spec(entry));
+    }
+
+    private Levelling levelling() {
+        return level != null ? level : Levelling.DEFAULT;
     }
 
     /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */

@@ -28,6 +28,7 @@ public enum Quantity {
     BAKED_SAMPLES("the baked table's samples"),
     MAX_HEIGHT("the height of the brightest grey value"),
     PIXEL_SIZE("the pixel size"),
+    CHANNEL("the channel"),
     TERMS_HEIGHT_UNIT("the height unit of thesis-format terms");
 
     private final String words;

@@ -42,7 +42,7 @@ public final class SyntheticPatches {
         return HeightField.of(rows, cols, h, periodUm / samplesPerPeriod);
     }
 
-    /** Ridge period of the Elaphe patch along its rows: the measured 1.144 um (../shared/data, ElaphePatchTest). */
+    /** Ridge period of the Elaphe patch along its rows: the measured 1.144 um (assets/patches, ElaphePatchTest). */
     public static final double ELAPHE_RIDGE_PERIOD_UM = 1.144;
 
     /**

@@ -37,7 +37,8 @@ final class MaterialManager {
         this.spec = spec;
         NamedPatch patch;
         if (spec.patch() instanceof Scene.FilePatch file) {
-            HeightField field = HeightFieldReader.load(file.file(), file.maxHeightUm(), file.pixelSizeUm(), reporter);
+            HeightField field = HeightFieldReader.load(file.file(), file.maxHeightUm(), file.pixelSizeUm(),
+                    file.channel(), file.levelling(), reporter);
             patch = new NamedPatch(file.file().getFileName().toString(), field.meanSubtracted(), file.maxHeightUm());
         } else {
             Scene.ProceduralPatch procedural = (Scene.ProceduralPatch) spec.patch();

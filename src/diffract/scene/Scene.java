@@ -4,6 +4,7 @@ import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
+import diffract.optics.Levelling;
 import diffract.optics.ProceduralPatches;
 
 import java.nio.file.Path;
@@ -66,8 +67,12 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     public sealed interface PatchSpec {
     }
 
-    /** A height-field file (PNG/BMP/TIFF, text matrix, .gsf) with the sizes images and text need. */
-    public record FilePatch(Path file, Double maxHeightUm, Double pixelSizeUm) implements PatchSpec {
+    /**
+     * A height-field file (PNG/BMP/TIFF, text matrix, .gsf, .gwy, .ibw) with the sizes images and text need, the
+     * channel of a multi-channel file (null: the first in a length unit) and the levelling before use.
+     */
+    public record FilePatch(Path file, Double maxHeightUm, Double pixelSizeUm, String channel, Levelling levelling)
+            implements PatchSpec {
     }
 
     /**

@@ -11,6 +11,7 @@ import diffract.optics.FresnelModel;
 import diffract.optics.GainFactor;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.Levelling;
 import diffract.optics.LightSource;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
@@ -58,6 +59,7 @@ public final class SceneFile {
     static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed");
     /** The catalogue's names and their camelCase spellings. */
     static final List<String> PROCEDURAL_NAMES = proceduralNames();
+    static final List<String> LEVELLING_NAMES = Arrays.stream(Levelling.values()).map(Levelling::label).toList();
 
     private SceneFile() {
     }
@@ -413,6 +415,19 @@ public final class SceneFile {
                 + node.typeName());
     }
 
+    /** A multi-channel file's channel: its title (a string) or its index (a whole number). */
+    private static String channel(SceneObject patch) {
+        JsonTree.Located node = patch.raw("channel");
+        if (node.value() instanceof String title && !title.isBlank()) {
+            return title;
+        }
+        if (node.value() instanceof Double index && index >= 0 && index == Math.rint(index) && index < 1e9) {
+            return Long.toString(index.longValue());
+        }
+        throw patch.problem("channel", "must be a channel's title (a string) or its index (a whole number >= 0), got "
+                + (node.value() instanceof Double d ? SceneObject.format(d) : node.typeName()));
+    }
+
     private static Scene.PatchSpec patch(SceneObject patch) {
         if (patch.has("file")) {
             Path file = patch.existingFile("file");
@@ -421,8 +436,11 @@ public final class SceneFile {
             }
             Double maxHeight = patch.has("maxHeightUm") ? patch.number("maxHeightUm", SceneObject.Range.positive()) : null;
             Double pixelSize = patch.has("pixelSizeUm") ? patch.number("pixelSizeUm", SceneObject.Range.positive()) : null;
+            String channel = patch.has("channel") ? channel(patch) : null;
+            Levelling levelling = Levelling.fromLabel(patch.choice("level", LEVELLING_NAMES,
+                    Levelling.DEFAULT.label()));
             patch.finish();
-            return new Scene.FilePatch(file, maxHeight, pixelSize);
+            return new Scene.FilePatch(file, maxHeight, pixelSize, channel, levelling);
         }
         if (!patch.has("procedural")) {
             throw SceneObject.problem(patch.source(), patch.line(), patch.keyPath("procedural"), "missing; add "

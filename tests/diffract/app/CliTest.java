@@ -5,6 +5,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
+import diffract.optics.Levelling;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.Variant;
@@ -110,7 +111,8 @@ class CliTest {
         int[] whc = new int[3];
         float[] rho = ImageFiles.readPfm(pfm, whc);
         assertEquals(1, whc[2]);
-        HeightField patch = HeightFieldReader.load(grating, null, null, Reporter.SILENT);
+        // the field as brdfmap reads it by default: levelled
+        HeightField patch = HeightFieldReader.load(grating, null, null, null, Levelling.DEFAULT, Reporter.SILENT);
         BrdfSettings settings = BrdfSettings.builder(Variant.REFERENCE).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 0.5).refractiveIndex(1.5).pqReplicas(0).build();
         DiffractionBrdf brdf = DiffractionBrdf.create(settings, patch, null);
         Direction wi = Direction.fromSphericalDeg(20, 0);

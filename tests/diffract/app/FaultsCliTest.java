@@ -50,8 +50,10 @@ class FaultsCliTest {
 
     @BeforeAll
     static void writeGrating() throws IOException {
-        grating = shared.resolve("blazed.gsf"); // 0.05 um pixels: no aliasing warning beside what a test expects
-        GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.13, 50, 4, 4));
+        // 0.05 um pixels: no aliasing warning beside what a test expects; 8 rows: 0.4 um, wider than the shortest
+        // wavelength, as a readable scan must be
+        grating = shared.resolve("blazed.gsf");
+        GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.13, 50, 4, 8));
     }
 
     @BeforeEach
@@ -430,7 +432,7 @@ class FaultsCliTest {
         String[] map = {"brdfmap", "--patch", fine.toString(), "--theta-i", "30", "--variant", "flss",
                 "--terms", "5", "--size", "16", "--coherence-length", "2", "--exposure", "auto", "-o",
                 dir.resolve("m.png").toString()};
-        assertTrue(err(run(map)).contains("flss, 200x4 patch"), "the notes a map prints without --quiet");
+        assertTrue(err(run(map)).contains("flss, 200x8 patch"), "the notes a map prints without --quiet");
         String[] quietMap = java.util.Arrays.copyOf(map, map.length + 1);
         quietMap[map.length] = "-q";
         Object[] mapResult = run(quietMap);
@@ -438,7 +440,7 @@ class FaultsCliTest {
         assertTrue(out(mapResult).startsWith("wrote "), out(mapResult));
         assertEquals("", err(mapResult));
         for (String command : new String[] {"demo", "precompute", "brdfmap", "compare", "convert-terms", "patch",
-                "view", "render", "bench"}) {
+                "channels", "view", "render", "bench"}) {
             assertTrue(out(run(command, "--help")).contains("--quiet"), command + " has --quiet");
         }
     }
@@ -484,7 +486,7 @@ class FaultsCliTest {
         Object[] none = run();
         assertEquals(2, none[0]);
         assertEquals(List.of("diffract: missing command: one of demo, precompute, brdfmap, compare, convert-terms,"
-                + " patch, view, render, measure, bench; try 'diffract --help'"), err(none).lines().toList());
+                + " patch, channels, view, render, measure, bench; try 'diffract --help'"), err(none).lines().toList());
     }
 
     /**
@@ -517,7 +519,7 @@ class FaultsCliTest {
     @Test
     void thePlainSeriesWarningNamesTheCentredExpansion() throws IOException {
         Path tall = dir.resolve("tall.gsf");
-        GsfWriter.write(tall, SyntheticPatches.blazed(2.5, 2.0, 50, 4, 4));
+        GsfWriter.write(tall, SyntheticPatches.blazed(2.5, 2.0, 50, 4, 8));
         Object[] plain = run("brdfmap", "--patch", tall.toString(), "--theta-i", "30", "--variant", "flss",
                 "--expansion", "plain", "--size", "8", "-o", dir.resolve("m.png").toString());
         assertEquals(0, plain[0], err(plain));

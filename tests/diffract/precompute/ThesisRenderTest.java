@@ -7,10 +7,12 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
+import diffract.optics.Levelling;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.io.GsfWriter;
+import diffract.optics.io.HeightFieldReader;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -82,7 +84,9 @@ class ThesisRenderTest {
         Path back = tmp.resolve("back");
         assertEquals(0, Main.execute("convert-terms", "--from", nativeDir.toString(), "--to", back.toString(),
                 "--format", "thesis"));
-        TaylorTerms direct = TaylorTermComputer.compute(field.meanSubtracted(), 6, Reporter.SILENT);
+        // the field as precompute reads it by default: levelled
+        HeightField levelled = HeightFieldReader.load(patch, null, null, null, Levelling.DEFAULT, Reporter.SILENT);
+        TaylorTerms direct = TaylorTermComputer.compute(levelled, 6, Reporter.SILENT);
         for (Path dir : new Path[] {thesis, nativeDir, back}) {
             TaylorTerms read = TermFolders.read(dir, Reporter.SILENT);
             for (int n = 0; n <= 6; n++) {

@@ -140,6 +140,32 @@ class SceneFileTest {
     }
 
     @Test
+    void aFilePatchNamesItsChannelAndLevelling() throws IOException {
+        Files.writeString(dir.resolve("scan.gwy"), "read later, by the material");
+        Path file = dir.resolve("scan.json");
+        Files.writeString(file, valid("").replace("{\"procedural\": \"blazed\"}",
+                "{\"file\": \"scan.gwy\", \"channel\": \"ZSensor\", \"level\": \"rows\"}"));
+        Scene.FilePatch patch = (Scene.FilePatch) SceneFile.load(file).material().patch();
+        assertEquals(new Scene.FilePatch(dir.resolve("scan.gwy"), null, null, "ZSensor",
+                diffract.optics.Levelling.ROWS), patch);
+
+        Files.writeString(file, valid("").replace("{\"procedural\": \"blazed\"}",
+                "{\"file\": \"scan.gwy\", \"channel\": 3}"));
+        patch = (Scene.FilePatch) SceneFile.load(file).material().patch();
+        assertEquals("3", patch.channel());
+        assertEquals(diffract.optics.Levelling.PLANE, patch.levelling(), "plane by default");
+
+        String m = message(valid("").replace("{\"procedural\": \"blazed\"}",
+                "{\"file\": \"scan.gwy\", \"channel\": 1.5}"));
+        assertTrue(m.startsWith("5: material.patch.channel: must be a channel's title (a string) or its index (a whole"
+                + " number >= 0), got 1.5"), m);
+        m = message(valid("").replace("{\"procedural\": \"blazed\"}",
+                "{\"file\": \"scan.gwy\", \"level\": \"flat\"}"));
+        assertTrue(m.startsWith("5: material.patch.level: unknown value \"flat\""), m);
+        assertTrue(m.contains("use one of \"plane\", \"rows\", \"none\""), m);
+    }
+
+    @Test
     void malformedJsonGivesJacksonsLine() throws IOException {
         String m = message(valid("").replace("\"shape\": {", "\"shape\" {"));
         assertTrue(m.startsWith("4: (json): malformed JSON: Unexpected character"), m);

@@ -12,6 +12,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.OptionalDouble;
+
+import static diffract.optics.io.ReaderSupport.printable;
 
 /**
  * Gwyddion Simple Field (.gsf, http://gwyddion.net/documentation/user-guide-en/gsf.html): the magic line
@@ -153,22 +156,13 @@ final class GsfReader {
         if (unit == null || unit.isEmpty()) {
             return 1e6; // metres, the GSF convention
         }
-        switch (unit) {
-            case "m":
-                return 1e6;
-            case "mm":
-                return 1e3;
-            case "um":
-            case "\u00B5m": // micro sign
-            case "\u03BCm": // Greek small mu
-                return 1.0;
-            case "nm":
-                return 1e-3;
-            default:
-                throw new UserInputException(file + ": GSF " + key + " = '" + printable(unit) + "' is not a length"
-                        + " unit for the " + what + " (supported: m, mm, um, \u00B5m, nm); a height map is needed,"
-                        + " not another channel");
+        OptionalDouble factor = LengthUnit.micrometres(unit);
+        if (factor.isEmpty()) {
+            throw new UserInputException(file + ": GSF " + key + " = '" + printable(unit) + "' is not a length"
+                    + " unit for the " + what + " (supported: " + LengthUnit.KNOWN + "); a height map is needed,"
+                    + " not another channel");
         }
+        return factor.getAsDouble();
     }
 
     /** {x, y} pixel sizes in micrometres. */
@@ -226,10 +220,5 @@ final class GsfReader {
             }
         }
         return -1;
-    }
-
-    private static String printable(String s) {
-        String clipped = s.length() > 40 ? s.substring(0, 40) + "..." : s;
-        return clipped.replaceAll("\\p{Cntrl}", "?");
     }
 }

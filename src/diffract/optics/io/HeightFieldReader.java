@@ -2,29 +2,38 @@ package diffract.optics.io;
 
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.Levelling;
 import diffract.optics.Quantity;
+import diffract.optics.SpectralSettings;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Locale;
 
 /**
- * Loads a nanostructure height field from a file and returns it mean-subtracted, as the thesis' precompute
- * uses it. Formats, chosen by content (PNG, BMP, TIFF and GSF signatures) and otherwise by extension:
+ * Loads a nanostructure height field from a file, levels it and returns it mean-subtracted, as the thesis'
+ * precompute uses it. Formats, chosen by content (PNG, BMP, TIFF, GSF, GWY and Igor signatures) and otherwise by
+ * extension (docs/formats.md describes each):
  * <ul>
  *   <li>grey images (.png, .bmp, .tif, .tiff; 8 or 16 bits, colour via luminance): grey 0..max maps linearly
  *       to 0..{@code maxHeightUm}; needs {@code maxHeightUm} and {@code pixelSizeUm};</li>
  *   <li>text matrices (.txt, .csv, .asc, .dat): heights in micrometres, one row per line; needs
  *       {@code pixelSizeUm};</li>
  *   <li>Gwyddion Simple Field (.gsf): heights and pixel sizes from the file (metres by default), converted to
- *       micrometres; {@code pixelSizeUm}, if given, overrides the file's.</li>
+ *       micrometres; {@code pixelSizeUm}, if given, overrides the file's;</li>
+ *   <li>Gwyddion files (.gwy) and Igor binary waves (.ibw, Asylum Research AFMs): one of their channels (by
+ *       default the first in a length unit, {@link ChannelChoice}), heights and pixel sizes from the file as for
+ *       .gsf.</li>
  * </ul>
- * For text and GSF a given {@code maxHeightUm} rescales the heights so that max - min equals it. Every problem
- * with the input is a one-line {@link UserInputException} naming the file; implausible values (a pixel size
- * or height that looks like it is in the wrong unit, a flat field) are warnings on the {@link Reporter}.
+ * For every format but images a given {@code maxHeightUm} rescales the levelled heights so that max - min equals
+ * it. A scan with fewer than 2 samples along an axis, or narrower than the shortest visible wavelength, is refused:
+ * it diffracts nothing. Every problem with the input is a one-line {@link UserInputException} naming the file;
+ * implausible values (a pixel size or height that looks like it is in the wrong unit, a flat field) are warnings on
+ * the {@link Reporter}.
  */
 public final class HeightFieldReader {
     /** Plausible lateral sampling of an AFM patch: 1 nm to 10 um per pixel. */
@@ -33,31 +42,66 @@ public final class HeightFieldReader {
     /** Plausible peak-to-valley height of a diffracting nanostructure: 1 nm to 20 um. */
     static final double MIN_PLAUSIBLE_HEIGHT_UM = 0.001;
     static final double MAX_PLAUSIBLE_HEIGHT_UM = 20.0;
+    /**
+     * The shortest wavelength of the visible band: a scan narrower than it has its first diffraction order
+     * (sin theta = lambda / width) beyond the horizon for light from above.
+     */
+    static final double MIN_EXTENT_UM = SpectralSettings.LAMBDA_MIN_NM / 1000.0;
 
-    static final String SUPPORTED = ".png, .bmp, .tif, .tiff (grey images), .txt, .csv, .asc, .dat (text matrices),"
-            + " .gsf (Gwyddion Simple Field)";
+    static final String SUPPORTED = ".png, .bmp, .tif, .tiff (grey images), .txt, .csv, .asc, .dat (text"
+            + " matrices), .gsf (Gwyddion Simple Field), .gwy (Gwyddion), .ibw (Igor binary wave, Asylum Research)";
 
-    private enum Format { IMAGE, TEXT, GSF }
+    private enum Format {
+        IMAGE("a grey image"), TEXT("a text matrix"), GSF("a Gwyddion Simple Field"), GWY("a Gwyddion file"),
+        IBW("an Igor binary wave");
+
+        final String words;
+
+        Format(String words) {
+            this.words = words;
+        }
+
+        boolean hasChannels() {
+            return this == GWY || this == IBW;
+        }
+    }
 
     private HeightFieldReader() {
     }
 
     /**
-     * @param file        the height-field file
-     * @param maxHeightUm the height of the brightest grey value (images, required), or the peak-to-valley height
-     *                    to rescale to (text, GSF, optional); null when not given
-     * @param pixelSizeUm the sample spacing in micrometres (images and text, required; GSF, optional override);
-     *                    null when not given
-     * @param reporter    receives plausibility warnings and notes
-     * @return the field with its mean subtracted
-     * @throws UserInputException for any problem with the file or the options
+     * The heights as read (no levelling; the default channel of a multi-channel file), mean-subtracted: what a
+     * reader's own tests compare with the file's numbers.
+     *
+     * @see #load(Path, Double, Double, String, Levelling, Reporter)
      */
     public static HeightField load(Path file, Double maxHeightUm, Double pixelSizeUm, Reporter reporter) {
+        return load(file, maxHeightUm, pixelSizeUm, null, Levelling.NONE, reporter);
+    }
+
+    /**
+     * @param file        the height-field file
+     * @param maxHeightUm the height of the brightest grey value (images, required), or the peak-to-valley height
+     *                    to rescale to (every other format, optional); null when not given
+     * @param pixelSizeUm the sample spacing in micrometres (images and text, required; .gsf, .gwy, .ibw: optional
+     *                    override); null when not given
+     * @param channel     a multi-channel file's channel, by title or index; null for the default
+     * @param levelling   what is removed before use ({@link Levelling#DEFAULT} for what a user gets by default)
+     * @param reporter    receives plausibility warnings and notes
+     * @return the levelled field with its mean subtracted
+     * @throws UserInputException for any problem with the file or the options
+     */
+    public static HeightField load(Path file, Double maxHeightUm, Double pixelSizeUm, String channel,
+                                   Levelling levelling, Reporter reporter) {
         checkOption(file, Quantity.MAX_HEIGHT, maxHeightUm,
                 "the peak-to-valley height of the structure in micrometres");
         checkOption(file, Quantity.PIXEL_SIZE, pixelSizeUm, "the sample spacing in micrometres");
         byte[] bytes = readBytes(file);
         Format format = detect(file, bytes);
+        if (channel != null && !format.hasChannels()) {
+            throw new InvalidSettingException(Quantity.CHANNEL, file + ": " + format.words + " holds one height field,"
+                    + " no channels to choose from (only .gwy and .ibw files have channels); leave the channel out");
+        }
 
         HeightField raw;
         switch (format) {
@@ -75,30 +119,86 @@ public final class HeightFieldReader {
             case GSF:
                 raw = GsfReader.read(file, bytes, pixelSizeUm, reporter);
                 break;
+            case GWY:
+                raw = GwyReader.read(file, bytes, channel, pixelSizeUm, reporter);
+                break;
+            case IBW:
+                raw = IbwReader.read(file, bytes, channel, pixelSizeUm, reporter);
+                break;
             default:
                 throw new IllegalStateException("unhandled format " + format);
         }
 
-        warnAboutPixelSize(file, raw, pixelSizeUm, reporter);
-        double rangeUm = raw.maxHeightUm() - raw.minHeightUm();
+        // the warning first: a pixel size in the wrong unit is the likely reason for a scan too small to use
+        warnAboutPixelSize(file, format, raw, pixelSizeUm, reporter);
+        requireResolvingSize(file, raw);
         if (maxHeightUm != null) {
             ReaderSupport.warnIfImplausible(file, "maximum height", maxHeightUm, "", MIN_PLAUSIBLE_HEIGHT_UM,
                     MAX_PLAUSIBLE_HEIGHT_UM, "the given maximum height", reporter);
         }
-        if (rangeUm == 0) {
+        double rawRangeUm = raw.maxHeightUm() - raw.minHeightUm();
+        HeightField levelled = levelling.apply(raw);
+        double rangeUm = levelled.maxHeightUm() - levelled.minHeightUm();
+        if (rawRangeUm == 0) {
             reporter.warn(file + ": the height field is flat (every sample is " + ReaderSupport.num(raw.minHeightUm())
                     + " um): it only reflects specularly and shows no diffraction colours");
+        } else if (rangeUm <= 1e-9 * rawRangeUm) {
+            reporter.warn(file + ": levelling (" + levelling.label() + ") leaves the height field flat: it is "
+                    + (levelling == Levelling.ROWS ? "constant along every row" : "a tilted plane") + " without"
+                    + " structure, which only reflects specularly and shows no diffraction colours");
         } else if (format != Format.IMAGE) {
             if (maxHeightUm != null) {
-                raw = rescaled(file, raw, rangeUm, maxHeightUm, reporter);
+                levelled = rescaled(file, levelled, rangeUm, maxHeightUm, reporter);
             } else {
                 // Heights came from the file: a wrong unit shows up as an implausible peak-to-valley height.
                 ReaderSupport.warnIfImplausible(file, "peak-to-valley height", rangeUm, "", MIN_PLAUSIBLE_HEIGHT_UM,
-                        MAX_PLAUSIBLE_HEIGHT_UM, format == Format.GSF ? "the file's heights and ZUnits"
-                                : "the file's heights, read as micrometres", reporter);
+                        MAX_PLAUSIBLE_HEIGHT_UM, switch (format) {
+                            case GSF -> "the file's heights and ZUnits";
+                            case GWY, IBW -> "the channel's heights and unit";
+                            default -> "the file's heights, read as micrometres";
+                        }, reporter);
             }
         }
-        return raw.meanSubtracted();
+        return levelled.meanSubtracted();
+    }
+
+    /**
+     * The channels of a .gwy or .ibw file (each with its index, title, unit and size); empty for the formats that
+     * hold one height field.
+     *
+     * @throws UserInputException for a file that cannot be read
+     */
+    public static List<ScanChannel> channels(Path file, Reporter reporter) {
+        byte[] bytes = readBytes(file);
+        return switch (detect(file, bytes)) {
+            case GWY -> GwyReader.channels(file, bytes, reporter);
+            case IBW -> IbwReader.channels(file, bytes);
+            default -> List.of();
+        };
+    }
+
+    /**
+     * The DFT of a field with fewer than 2 samples along an axis holds only its mean there, and a scan narrower
+     * than the shortest visible wavelength has its first order beyond the horizon at normal incidence: neither
+     * shows anything but the mirror reflection.
+     */
+    private static void requireResolvingSize(Path file, HeightField field) {
+        String size = field.cols() + " x " + field.rows() + " samples (columns x rows)";
+        if (field.rows() < 2 || field.cols() < 2) {
+            throw new UserInputException(file + ": the scan is " + size + "; its transform needs at least 2 samples"
+                    + " along each axis to hold any spatial frequency beside the mean, so it diffracts nothing; use a"
+                    + " larger scan");
+        }
+        double widthUm = field.widthUm();
+        double heightUm = field.heightExtentUm();
+        if (widthUm < MIN_EXTENT_UM || heightUm < MIN_EXTENT_UM) {
+            throw new UserInputException(file + ": the scan is " + ReaderSupport.num(widthUm) + " x "
+                    + ReaderSupport.num(heightUm) + " um (" + size + " of " + ReaderSupport.num(field.pixelSizeXUm())
+                    + " x " + ReaderSupport.num(field.pixelSizeYUm()) + " um), narrower than the shortest visible"
+                    + " wavelength " + ReaderSupport.num(MIN_EXTENT_UM) + " um along " + (widthUm < MIN_EXTENT_UM
+                    ? "x" : "y") + ": its first diffraction order (sin theta = lambda / width > 1) lies beyond the"
+                    + " horizon, so it shows only the mirror reflection; use a larger scan, or check the pixel size");
+        }
     }
 
     private static void checkOption(Path file, Quantity quantity, Double valueUm, String meaning) {
@@ -147,9 +247,15 @@ public final class HeightFieldReader {
         if (GsfReader.looksLikeGsf(bytes)) {
             return Format.GSF;
         }
+        if (GwyReader.looksLikeGwy(bytes)) {
+            return Format.GWY;
+        }
         if (startsWith(bytes, 0x89, 'P', 'N', 'G') || startsWith(bytes, 'B', 'M')
                 || startsWith(bytes, 'I', 'I', 42, 0) || startsWith(bytes, 'M', 'M', 0, 42)) {
             return Format.IMAGE;
+        }
+        if (IbwReader.looksLikeIbw(bytes)) {
+            return Format.IBW;
         }
         String name = file.getFileName() == null ? "" : file.getFileName().toString();
         int dot = name.lastIndexOf('.');
@@ -167,6 +273,10 @@ public final class HeightFieldReader {
                 return Format.TEXT;
             case "gsf":
                 return Format.GSF; // GsfReader explains what the first line should be
+            case "gwy":
+                return Format.GWY; // and GwyReader the magic
+            case "ibw":
+                return Format.IBW; // and IbwReader the version and checksum
             default:
                 throw new UserInputException(file + ": unsupported file type"
                         + (extension.isEmpty() ? " (no extension)" : " '." + extension + "'")
@@ -186,8 +296,13 @@ public final class HeightFieldReader {
         return true;
     }
 
-    private static void warnAboutPixelSize(Path file, HeightField field, Double pixelSizeUm, Reporter reporter) {
-        String source = pixelSizeUm != null ? "the given pixel size" : "XReal/XRes, YReal/YRes in the header";
+    private static void warnAboutPixelSize(Path file, Format format, HeightField field, Double pixelSizeUm,
+                                           Reporter reporter) {
+        String source = pixelSizeUm != null ? "the given pixel size" : switch (format) {
+            case GWY -> "xreal/xres, yreal/yres of the data field";
+            case IBW -> "the wave's step per point (sfA)";
+            default -> "XReal/XRes, YReal/YRes in the header";
+        };
         boolean square = field.pixelSizeYUm() == field.pixelSizeXUm();
         ReaderSupport.warnIfImplausible(file, square ? "pixel size" : "pixel size along x", field.pixelSizeXUm(),
                 "per pixel", MIN_PLAUSIBLE_PIXEL_UM, MAX_PLAUSIBLE_PIXEL_UM, source, reporter);

@@ -24,6 +24,12 @@ final class ReaderSupport {
         return new BigDecimal(value).round(new MathContext(4)).stripTrailingZeros().toPlainString();
     }
 
+    /** A value from a file, fit for a one-line message: at most 40 characters, control characters as '?'. */
+    static String printable(String s) {
+        String clipped = s.length() > 40 ? s.substring(0, 40) + "..." : s;
+        return clipped.replaceAll("\\p{Cntrl}", "?");
+    }
+
     /**
      * Wraps {@link HeightField#of} so that its (file-agnostic) complaints name the file: the readers check
      * non-finite values themselves, so this is the last line of defence.
@@ -68,12 +74,16 @@ final class ReaderSupport {
                 + num(lowUm) + " to " + num(highUm) + " um for a nanostructure; check its unit");
     }
 
+    /** The fix for missing samples, in the menus of the program that most AFM users have. */
+    static final String FILL_MISSING = "fill them in Gwyddion (Data Process > Correct Data > Remove Data Under Mask)"
+            + " or crop them";
+
     /** Thrown for missing samples: AFM software marks them with NaN, so say how many and where the first is. */
     static UserInputException nonFinite(Path file, int count, int firstRow, int firstCol, double firstValue) {
         String where = "row " + firstRow + ", column " + firstCol + " (counting from 0)";
         return new UserInputException(file + ": " + (count == 1
                 ? "1 sample is NaN or infinite (missing data), at " + where + ": " + firstValue
                 : count + " samples are NaN or infinite (missing data), the first at " + where + ": " + firstValue)
-                + "; interpolate or crop the missing data (e.g. in Gwyddion) and export again");
+                + "; " + FILL_MISSING);
     }
 }

@@ -35,13 +35,56 @@ class ReaderFuzzTest {
                                     @ForAll @IntRange(min = 0, max = 200) int flipAt,
                                     @ForAll @IntRange(min = 0, max = 255) int flipMask,
                                     @ForAll("headerLines") String extraHeader) throws Exception {
-        byte[] good = gsf(4, 3, extraHeader);
+        byte[] good = gsf(8, 6, extraHeader);
         int length = Math.max(0, good.length - cut);
         byte[] damaged = java.util.Arrays.copyOf(good, length);
         if (flipAt < damaged.length) {
             damaged[flipAt] ^= (byte) flipMask;
         }
         loadExpectingOnlyUserErrors(damaged, ".gsf");
+    }
+
+    @Property(tries = 300)
+    void damagedGwyFilesFailCleanly(@ForAll @IntRange(min = 0, max = 60) int cut,
+                                    @ForAll @IntRange(min = 0, max = 700) int flipAt,
+                                    @ForAll @IntRange(min = 0, max = 255) int flipMask) throws Exception {
+        double[] metres = new double[48];
+        java.util.Arrays.setAll(metres, i -> (i % 8) * 1e-8);
+        byte[] good = GwyTestWriter.container(
+                GwyTestWriter.channel(0, "Phase", GwyTestWriter.dataField(8, 6, 8e-7, 6e-7, "m", "deg", metres)),
+                GwyTestWriter.channel(1, "Height", GwyTestWriter.dataField(8, 6, 8e-7, 6e-7, "m", "m", metres)));
+        byte[] damaged = java.util.Arrays.copyOf(good, Math.max(0, good.length - cut));
+        if (flipAt < damaged.length) {
+            damaged[flipAt] ^= (byte) flipMask;
+        }
+        loadExpectingOnlyUserErrors(damaged, ".gwy");
+    }
+
+    /** Damage anywhere, the header's included: the checksum is made to add up again, so the reader goes on. */
+    @Property(tries = 300)
+    void damagedIbwFilesFailCleanly(@ForAll @IntRange(min = 0, max = 200) int cut,
+                                    @ForAll @IntRange(min = 0, max = 1300) int flipAt,
+                                    @ForAll @IntRange(min = 0, max = 255) int flipMask,
+                                    @ForAll boolean bigEndian) throws Exception {
+        double[] values = new double[8 * 6 * 2];
+        java.util.Arrays.setAll(values, i -> (i % 8) * 1e-8);
+        ByteOrder order = bigEndian ? ByteOrder.BIG_ENDIAN : ByteOrder.LITTLE_ENDIAN;
+        byte[] good = IbwTestWriter.wave(8, 6, 2, values).order(order).step(1e-7, 1e-7, "m")
+                .layers("HeightRetrace", "PhaseRetrace").note("ScanSize: 8e-07\r").bytes();
+        byte[] damaged = java.util.Arrays.copyOf(good, Math.max(0, good.length - cut));
+        if (flipAt < damaged.length) {
+            damaged[flipAt] ^= (byte) flipMask;
+            if (flipAt >= 4 && flipAt < 384 && damaged.length >= 384) {
+                ByteBuffer header = ByteBuffer.wrap(damaged, 0, 384).order(order);
+                header.putShort(2, (short) 0);
+                int sum = 0;
+                for (int i = 0; i < 384; i += 2) {
+                    sum += header.getShort(i) & 0xFFFF;
+                }
+                header.putShort(2, (short) -sum);
+            }
+        }
+        loadExpectingOnlyUserErrors(damaged, ".ibw");
     }
 
     @Property(tries = 200)
@@ -65,7 +108,8 @@ class ReaderFuzzTest {
 
     @Provide
     Arbitrary<String> extensions() {
-        return Arbitraries.of(".png", ".bmp", ".tif", ".tiff", ".gsf", ".txt", ".csv", ".asc", ".dat", ".xyz", "");
+        return Arbitraries.of(".png", ".bmp", ".tif", ".tiff", ".gsf", ".gwy", ".ibw", ".txt", ".csv", ".asc", ".dat",
+                ".xyz", "");
     }
 
     @Provide
@@ -75,7 +119,10 @@ class ReaderFuzzTest {
         Arbitrary<byte[]> gsfLike = random.map(tail -> concat("Gwyddion Simple Field 1.0\nXRes = 2\nYRes = 2\n"
                 .getBytes(StandardCharsets.US_ASCII), tail));
         Arbitrary<byte[]> bmpLike = random.map(tail -> concat(new byte[] {'B', 'M'}, tail));
-        return Arbitraries.oneOf(random, pngLike, gsfLike, bmpLike);
+        Arbitrary<byte[]> gwyLike = random.map(tail -> concat("GWYPGwyContainer\0".getBytes(StandardCharsets.US_ASCII),
+                tail));
+        Arbitrary<byte[]> ibwLike = random.map(tail -> concat(new byte[] {5, 0}, tail));
+        return Arbitraries.oneOf(random, pngLike, gsfLike, bmpLike, gwyLike, ibwLike);
     }
 
     @Provide

@@ -34,12 +34,12 @@ class TextMatrixReaderTest {
                 + "-0.7 8e-1 +.9\n");
         Reporter.Collecting reporter = new Reporter.Collecting();
 
-        HeightField field = HeightFieldReader.load(file, null, 0.05, reporter);
+        HeightField field = HeightFieldReader.load(file, null, 0.15, reporter);
 
         assertEquals(3, field.rows());
         assertEquals(3, field.cols());
-        assertEquals(0.05, field.pixelSizeXUm());
-        assertEquals(0.05, field.pixelSizeYUm());
+        assertEquals(0.15, field.pixelSizeXUm());
+        assertEquals(0.15, field.pixelSizeYUm());
         assertMeanSubtracted(new double[] {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, -0.7, 0.8, 0.9}, field);
         assertEquals(0, reporter.warnings().size(), reporter.warnings().toString());
     }
@@ -47,7 +47,7 @@ class TextMatrixReaderTest {
     @Test
     void nonSquareMatrixKeepsRowsAsLines() throws IOException {
         Path file = write("wide.txt", "1 2 3 4 5\n6 7 8 9 10\n11 12 13 14 15\n");
-        HeightField field = HeightFieldReader.load(file, null, 0.1, Reporter.SILENT);
+        HeightField field = HeightFieldReader.load(file, null, 0.15, Reporter.SILENT);
         assertEquals(3, field.rows());
         assertEquals(5, field.cols());
         assertEquals(4 - 8.0, field.heightUm(0, 3), 1e-12);
@@ -59,7 +59,7 @@ class TextMatrixReaderTest {
         Path file = write("rescale.dat", "0 1\n2 4\n");
         Reporter.Collecting reporter = new Reporter.Collecting();
 
-        HeightField field = HeightFieldReader.load(file, 0.5, 0.1, reporter);
+        HeightField field = HeightFieldReader.load(file, 0.5, 0.2, reporter);
 
         assertMeanSubtracted(new double[] {0, 0.125, 0.25, 0.5}, field);
         assertEquals(0.5, field.maxHeightUm() - field.minHeightUm(), 1e-15);
@@ -105,7 +105,7 @@ class TextMatrixReaderTest {
     void heightsThatLookLikeNanometresAreWarned() throws IOException {
         Path file = write("nm.txt", "0 350\n120 40\n");
         Reporter.Collecting reporter = new Reporter.Collecting();
-        HeightFieldReader.load(file, null, 0.1, reporter);
+        HeightFieldReader.load(file, null, 0.2, reporter);
         assertTrue(reporter.warnings().stream().anyMatch(w -> w.contains("looks like nanometres")
                 && w.contains("did you mean 0.35")), reporter.warnings().toString());
     }
