@@ -138,7 +138,8 @@ final class BenchCommand implements Callable<Integer> {
 
     @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
             converter = OptionTypes.LevellingNames.Converter.class,
-            description = "--patch: levelling before use, plane (the default), rows or none.")
+            description = "--patch: levelling before use, plane, rows or none (default: plane for .gwy and .ibw, "
+                    + "none for exports).")
     Levelling level;
 
     @Option(names = "--phi-i", defaultValue = "90", paramLabel = "DEG",
@@ -247,7 +248,7 @@ final class BenchCommand implements Callable<Integer> {
         Reporter reporter = quiet.reporter();
         if (patchFile != null) {
             HeightField field = HeightFieldReader.load(patchFile, maxHeightUm, pixelSizeUm, channel,
-                    level != null ? level : Levelling.DEFAULT, reporter).meanSubtracted();
+                    level, reporter).meanSubtracted();
             list.add(new BenchPatch(patchFile.getFileName().toString().replaceFirst("\\.[^.]*$", ""), field,
                     patchPhiDeg));
         }

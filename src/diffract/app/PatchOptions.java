@@ -46,13 +46,14 @@ final class PatchOptions {
 
     @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
             converter = OptionTypes.LevellingNames.Converter.class,
-            description = "Levelling of a --patch before use: plane (the least-squares plane, the default), rows "
-                    + "(each scan line's mean) or none.")
+            description = "Levelling of a --patch before use: plane (the least-squares plane; the default for .gwy "
+                    + "and .ibw, which hold the scan as measured), rows (each scan line's mean) or none (the default "
+                    + "for images, text and .gsf, exported level).")
     Levelling level;
 
     /** The options a scene file says by itself. */
     static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size", "--channel", "--level",
-        "--period", "--height", "--periods", "--samples-per-period", "--rows", "--seed"};
+        "--period", "--height", "--periods", "--samples-per-period", "--rows", "--seed", "--size-px"};
 
     boolean given() {
         return file != null || synthetic != null;
@@ -64,8 +65,8 @@ final class PatchOptions {
             throw new diffract.util.UserInputException("give --patch FILE or --synthetic NAME, not both");
         }
         if (synthetic == null && parameters.given()) {
-            throw new diffract.util.UserInputException("--period, --height, --periods, --samples-per-period, --rows "
-                    + "and --seed change a patch made by code: add --synthetic NAME");
+            throw new diffract.util.UserInputException("--period, --height, --periods, --samples-per-period, --rows, "
+                    + "--seed and --size-px change a patch made by code: add --synthetic NAME");
         }
         if (synthetic != null) {
             parameters.spec(PatchCatalogue.named(synthetic));
@@ -111,8 +112,9 @@ final class PatchOptions {
         return new Scene.ProceduralPatch(entry.name(), parameters.spec(entry));
     }
 
+    /** The levelling asked for, or null: the file format's default ({@link Levelling#defaultFor}). */
     private Levelling levelling() {
-        return level != null ? level : Levelling.DEFAULT;
+        return level;
     }
 
     /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */

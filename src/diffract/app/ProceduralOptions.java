@@ -29,10 +29,17 @@ final class ProceduralOptions {
     @Option(names = "--seed", paramLabel = "S", description = "Snake patches: the noise seed (scene: seed).")
     Long seed;
 
+    @Option(names = "--size-px", paramLabel = "N", description = "Snake patches: pixels per side, a multiple of 16 "
+            + "(elaphe-scan: scan lines, a multiple of 32), up to " + MAX_SIZE_PX + " (scene: sizePx).")
+    Integer sizePx;
+
+    /** The largest snake patch made by code: an AFM scan's 2048 lines. */
+    static final int MAX_SIZE_PX = 2048;
+
     /** Whether any parameter was given. */
     boolean given() {
         return periodUm != null || heightUm != null || periods != null || samplesPerPeriod != null || rows != null
-                || seed != null;
+                || seed != null || sizePx != null;
     }
 
     /** The named patch with the parameters given in place of its own. */
@@ -43,12 +50,16 @@ final class ProceduralOptions {
             throw new UserInputException("--samples-per-period and --rows size a grating; " + entry.name()
                     + " is " + d.sizePx() + " x " + d.sizePx() + " pixels");
         }
-        if (grating && seed != null) {
-            throw new UserInputException("--seed is the noise of the snake patches; a grating has none");
+        if (grating && (seed != null || sizePx != null)) {
+            throw new UserInputException("--seed and --size-px make the snake patches; a grating is sized by "
+                    + "--periods, --samples-per-period and --rows");
+        }
+        if (sizePx != null && (sizePx < 16 || sizePx > MAX_SIZE_PX || sizePx % 16 != 0)) {
+            throw new UserInputException("--size-px must be a multiple of 16 in 16.." + MAX_SIZE_PX + ", got " + sizePx);
         }
         ProceduralPatches.Spec spec = new ProceduralPatches.Spec(d.kind(), or(periodUm, d.periodUm()),
                 or(heightUm, d.heightUm()), or(periods, d.periods()), or(samplesPerPeriod, d.samplesPerPeriod()),
-                or(rows, d.rows()), d.sizePx(), d.roughnessUm(), seed != null ? seed : d.seed());
+                or(rows, d.rows()), or(sizePx, d.sizePx()), d.roughnessUm(), seed != null ? seed : d.seed());
         if (grating) {
             checkGrating(spec);
         }

@@ -45,7 +45,7 @@ public final class FilteringTargets {
     /** One patch under one light: errors against the reference and GPU times (NaN where not measured). */
     public record Row(String patch, double lightDeg, int litPixels, double lobesMean, double lobesP95,
                       double flssMean, double flssP95, double bakedMean, double bakedP95, double lobesMs,
-                      double flssMs, double speedUp, double bakedMs) {
+                      double flssMs, double speedUp, double bakedMs, double referenceSeconds, double bakeSeconds) {
         public boolean meetsTargets() {
             return lobesMean <= MAX_DELTA_E && speedUp >= MIN_SPEED_UP;
         }
@@ -84,7 +84,8 @@ public final class FilteringTargets {
     public Row measure(BenchPatch patch, DiffractionPipeline pipeline, double lightDeg) {
         BrdfSettings lobesHere = lobes.with(b -> b.lightSizeDeg(lightDeg));
         Direction wi = Direction.fromSphericalDeg(THETA_I_DEG, patch.phiIDeg());
-        float[] reference = references.xyz(patch, THETA_I_DEG, sizePx, lobesHere);
+        ReferenceMaps.Timed timed = references.timed(patch, THETA_I_DEG, sizePx, lobesHere);
+        float[] reference = timed.xyz();
         float[] luminance = new float[sizePx * sizePx];
         for (int p = 0; p < luminance.length; p++) {
             luminance[p] = reference[3 * p + 1];
@@ -94,9 +95,13 @@ public final class FilteringTargets {
         double bakedMean = Double.NaN;
         double bakedP95 = Double.NaN;
         double bakedMs = Double.NaN;
+        double bakeSeconds = Double.NaN;
         if (bakedSamples > 0) {
             BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, 0));
+            pipeline.terms(lobesHere.taylor().highestOrder(), reporter); // the terms before the bake's clock starts
+            long bakeStart = System.nanoTime();
             try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
+                bakeSeconds = (System.nanoTime() - bakeStart) * 1e-9;
                 BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, sizePx), sizePx, exposure);
                 if (d.lit() != null) {
                     bakedMean = d.lit().mean();
@@ -121,7 +126,7 @@ public final class FilteringTargets {
                 ratio[r] = flssMs[r] / lobesMs[r];
             }
             return new Row(patch.name(), lightDeg, l.litPixels(), mean(l), p95(l), mean(f), p95(f), bakedMean, bakedP95,
-                    median(lobesMs), median(flssMs), median(ratio), bakedMs);
+                    median(lobesMs), median(flssMs), median(ratio), bakedMs, timed.seconds(), bakeSeconds);
         }
     }
 
@@ -153,12 +158,13 @@ public final class FilteringTargets {
 
     public static String csv(List<Row> rows, GLInfo gl) {
         StringBuilder s = new StringBuilder("patch,light_deg,lit_px,lobes_mean,lobes_p95,flss_mean,flss_p95,"
-                + "baked_mean,baked_p95,lobes_ms,flss_ms,speed_up,baked_ms,meets_targets,gl_renderer\n");
+                + "baked_mean,baked_p95,lobes_ms,flss_ms,speed_up,baked_ms,reference_s,bake_s,meets_targets,gl_renderer\n");
         for (Row r : rows) {
-            s.append(String.format(Locale.ROOT, "%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.2f,%.3f,%s,%s%n",
+            s.append(String.format(Locale.ROOT,
+                    "%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.2f,%.3f,%.1f,%.1f,%s,%s%n",
                     r.patch(), Csv.number(r.lightDeg()), r.litPixels(), r.lobesMean(), r.lobesP95(), r.flssMean(),
                     r.flssP95(), r.bakedMean(), r.bakedP95(), r.lobesMs(), r.flssMs(), r.speedUp(), r.bakedMs(),
-                    r.meetsTargets(), gl == null ? "" : '"' + gl.renderer() + '"'));
+                    r.referenceSeconds(), r.bakeSeconds(), r.meetsTargets(), gl == null ? "" : '"' + gl.renderer() + '"'));
         }
         return s.toString();
     }
@@ -169,17 +175,22 @@ public final class FilteringTargets {
                         + "coherence length %s um; CIEDE2000 mean / p95 over lit pixels against the filtered reference\n\n",
                 sizePx, sizePx, THETA_I_DEG, Csv.number(lobes.illumination().coherenceLengthUm())));
         s.append("| patch | light | lit px | lobes | FLSS (thesis) | baked ").append(bakedSamples)
-                .append(" | lobes ms | FLSS ms | FLSS / lobes | baked ms | <= ").append(Csv.number(MAX_DELTA_E))
-                .append(" and >= ").append(Csv.number(MIN_SPEED_UP)).append("x |\n");
-        s.append("|---|---|---|---|---|---|---|---|---|---|---|\n");
+                .append(" | lobes ms | FLSS ms | FLSS / lobes | baked ms | bake s | reference s | <= ")
+                .append(Csv.number(MAX_DELTA_E)).append(" and >= ").append(Csv.number(MIN_SPEED_UP)).append("x |\n");
+        s.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (Row r : rows) {
-            s.append(String.format(Locale.ROOT, "| %s | %s deg | %d | %s | %s | %s | %.1f | %.1f | %.1f | %s | %s |%n",
+            s.append(String.format(Locale.ROOT,
+                    "| %s | %s deg | %d | %s | %s | %s | %.1f | %.1f | %.1f | %s | %s | %s | %s |%n",
                     r.patch(), Csv.number(r.lightDeg()), r.litPixels(), pair(r.lobesMean(), r.lobesP95()),
                     pair(r.flssMean(), r.flssP95()), pair(r.bakedMean(), r.bakedP95()), r.lobesMs(), r.flssMs(),
                     r.speedUp(), Double.isNaN(r.bakedMs()) ? "-" : String.format(Locale.ROOT, "%.2f", r.bakedMs()),
-                    r.meetsTargets() ? "yes" : "**no**"));
+                    seconds(r.bakeSeconds()), seconds(r.referenceSeconds()), r.meetsTargets() ? "yes" : "**no**"));
         }
         return s.toString();
+    }
+
+    private static String seconds(double s) {
+        return Double.isNaN(s) ? "-" : String.format(Locale.ROOT, "%.0f", s);
     }
 
     private static String pair(double mean, double p95) {

@@ -31,14 +31,12 @@ public final class BrdfMap {
     /** CIE XYZ per pixel, 3 floats per pixel, rows from the top. */
     public static float[] xyz(DiffractionBrdf brdf, Direction wi, int size, Reporter reporter) {
         float[] out = new float[size * size * 3];
-        forEachRow(size, reporter, "BRDF map " + size + "x" + size, j -> {
-            for (int i = 0; i < size; i++) {
-                Xyz c = brdf.mapPixel(wi, i, j, size);
-                int p = 3 * (j * size + i);
-                out[p] = (float) c.x();
-                out[p + 1] = (float) c.y();
-                out[p + 2] = (float) c.z();
-            }
+        forEachPixel(size, reporter, "BRDF map " + size + "x" + size, (i, j) -> {
+            Xyz c = brdf.mapPixel(wi, i, j, size);
+            int p = 3 * (j * size + i);
+            out[p] = (float) c.x();
+            out[p + 1] = (float) c.y();
+            out[p + 2] = (float) c.z();
         });
         return out;
     }
@@ -46,27 +44,41 @@ public final class BrdfMap {
     /** The monochromatic relative BRDF per pixel, 1 float per pixel. */
     public static float[] monochromatic(DiffractionBrdf brdf, Direction wi, double lambdaNm, int size, Reporter reporter) {
         float[] out = new float[size * size];
-        forEachRow(size, reporter, "BRDF map " + size + "x" + size + " at " + lambdaNm + " nm", j -> {
-            for (int i = 0; i < size; i++) {
-                double x = xOf(i, size);
-                double y = yOf(j, size);
-                if (x * x + y * y >= 1.0) {
-                    continue;
-                }
+        forEachPixel(size, reporter, "BRDF map " + size + "x" + size + " at " + lambdaNm + " nm", (i, j) -> {
+            double x = xOf(i, size);
+            double y = yOf(j, size);
+            if (x * x + y * y < 1.0) {
                 out[j * size + i] = (float) brdf.relative(wi, Direction.fromProjected(x, y), lambdaNm);
             }
         });
         return out;
     }
 
-    private static void forEachRow(int size, Reporter reporter, String task, java.util.function.IntConsumer row) {
+    /** Pixel (column, row) of the map. */
+    private interface PixelTask {
+        void run(int column, int row);
+    }
+
+    /**
+     * Every pixel, handed out one at a time to as many workers as there are processors: pixels differ in cost by
+     * orders of magnitude (the orders and the mirror against the dark), so a fixed split would leave workers idle.
+     */
+    private static void forEachPixel(int size, Reporter reporter, String task, PixelTask pixel) {
         if (size < 1) {
             throw new IllegalArgumentException("map size must be >= 1, got " + size);
         }
+        int total = size * size;
+        AtomicInteger next = new AtomicInteger();
         AtomicInteger done = new AtomicInteger();
-        IntStream.range(0, size).parallel().forEach(j -> {
-            row.accept(j);
-            reporter.progress(task, done.incrementAndGet() / (double) size);
+        int workers = Math.max(1, Math.min(total, Runtime.getRuntime().availableProcessors()));
+        IntStream.range(0, workers).parallel().forEach(w -> {
+            for (int p = next.getAndIncrement(); p < total; p = next.getAndIncrement()) {
+                pixel.run(p % size, p / size);
+                int finished = done.incrementAndGet();
+                if (finished % size == 0 || finished == total) {
+                    reporter.progress(task, finished / (double) total);
+                }
+            }
         });
     }
 }

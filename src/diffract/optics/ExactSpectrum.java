@@ -36,12 +36,15 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
     private final int radiusY;
     private final boolean averaged;
     private final ConcurrentMap<Integer, double[][]> expansions = new ConcurrentHashMap<>();
+    /** Per phase centre, per texel: the largest |T_m(a)| within half a centre spacing of it. */
+    private final ConcurrentMap<Integer, double[]> bounds = new ConcurrentHashMap<>();
 
     /**
      * The heap the spectrum holds after looking up every direction of a BRDF map lit from theta_i, over the
      * wavelengths [lambdaMinNm, lambdaMaxNm]: the expansions of every centre a_j between the map's extreme phases
      * a = k w (w = -(cos theta_i + cos theta_r) from -(1 + cos theta_i) to -cos theta_i), each
-     * ORDERS_PER_CENTRE + 1 double complex transforms of the patch (256 bytes per sample), kept for the whole map;
+     * ORDERS_PER_CENTRE + 1 double complex transforms of the patch and a bound per texel (264 bytes per sample), kept
+     * for the whole map;
      * and the work arrays of the expansions computed at once (one per thread: the centre field, the transform and
      * its shifted copy, 48 bytes per sample).
      */
@@ -57,7 +60,7 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
         }
         long samples = (long) meanSubtracted.rows() * meanSubtracted.cols();
         long threads = Math.min(centres, Runtime.getRuntime().availableProcessors());
-        long perCentre = 16L * (ORDERS_PER_CENTRE + 1) * samples;
+        long perCentre = (16L * (ORDERS_PER_CENTRE + 1) + 8) * samples;
         return MemoryEstimate.of(String.format(Locale.ROOT, "exact spectrum: %d phase centres x %d transforms of %dx%d",
                         centres, ORDERS_PER_CENTRE + 1, meanSubtracted.cols(), meanSubtracted.rows()),
                         perCentre > Long.MAX_VALUE / centres ? Long.MAX_VALUE : centres * perCentre)
@@ -229,6 +232,45 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
                 }
             }
         };
+    }
+
+    /**
+     * An upper bound on |T_m(a)|^2 for texel (mx, my) over phases a in [aLo, aHi]: around each phase centre a_j the
+     * expansion gives |T_m(a_j + delta)| &lt;= sum_n |delta|^n / n! |E_{j,n}(m)| with |delta| at most half the centre
+     * spacing (plus the series' remainder, below 1e-18). 0 outside the stored band.
+     */
+    double texelBound(int mx, int my, double aLo, double aHi) {
+        int cols = field.cols();
+        int rows = field.rows();
+        if (!TexelCoefficients.inBand(mx, my, rows, cols)) {
+            return 0;
+        }
+        int index = (my + rows / 2) * cols + mx + cols / 2;
+        int first = Double.isInfinite(centreSpacing) ? 0 : (int) Math.rint(aLo / centreSpacing);
+        int last = Double.isInfinite(centreSpacing) ? 0 : (int) Math.rint(aHi / centreSpacing);
+        double max = 0;
+        for (int centre = first; centre <= last; centre++) {
+            max = Math.max(max, bounds.computeIfAbsent(centre, this::bounds)[index]);
+        }
+        return max * max;
+    }
+
+    /** Per texel, sum_n r^n / n! |E_{j,n}| with r half the centre spacing, rounded up by 1e-12 of itself. */
+    private double[] bounds(int centre) {
+        double[][] e = expansions.computeIfAbsent(centre, this::expand);
+        double r = Double.isInfinite(centreSpacing) ? 0 : 0.5 * centreSpacing;
+        int texels = field.rows() * field.cols();
+        double[] out = new double[texels];
+        for (int t = 0; t < texels; t++) {
+            double c = 1;
+            double sum = 0;
+            for (int n = 0; n <= ORDERS_PER_CENTRE; n++) {
+                sum += c * Math.hypot(e[n][2 * t], e[n][2 * t + 1]);
+                c *= r / (n + 1);
+            }
+            out[t] = sum * (1 + 1e-12) + 1e-18;
+        }
+        return out;
     }
 
     /** E_{j,n} = fftshift(ifft2(exp(i a_j h) (i h)^n)), n = 0..ORDERS_PER_CENTRE (PhaseCentres' arithmetic). */

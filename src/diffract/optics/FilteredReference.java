@@ -24,7 +24,10 @@ import java.util.function.DoubleFunction;
  * <p>The gain factor C, the shadowing S and w (in T_m(k w)) vary slowly over a pixel: within a (sub-)box the product
  * C S W_c is taken to first order about the box's centre (its value there, its gradient from the box's edges, and
  * dW_c / dw exactly), integrated against the lobe's first moments over the box (also exact). The box is split into
- * k x k sub-boxes, k = 1, 2, 4, ..., until the pixel changes by less than {@link #PIXEL_TOLERANCE}. The light's
+ * quarters, and each quarter again where splitting it changes its value by more than {@link #PIXEL_TOLERANCE} of the
+ * pixel's largest value (adaptive: only where an order or a fast change of W crosses), to 16 x 16 at most. With the
+ * window averaged over its position each box sums its whole-texel lobes from the largest bound down and leaves out
+ * those whose bounds add up to less than {@link #SKIP_TOLERANCE} of it. The light's
  * directions leave C, S and w at the light's centre (the definition of {@link LightSource}).
  *
  * <p>Tolerance: every tristimulus value of a pixel to about {@link #PIXEL_TOLERANCE} relative (plus {@link #FLOOR}
@@ -36,15 +39,24 @@ public final class FilteredReference {
     /** Absolute floor of a pixel's tolerance, as a fraction of D65 white (Y = 1). */
     public static final double FLOOR = 1e-10;
     /** Each lobe's wavelength integral, relative to the lobe (bounding the 7-point rule's error, |K15 - G7|). */
-    static final double LOBE_TOLERANCE = 1e-5;
+    static final double LOBE_TOLERANCE = 1e-4;
     /** Pairs of texels are kept down to this weight (relative to the product of their coefficients). */
     static final double PAIR_THRESHOLD = 1e-8;
     /** A lobe reaches as far as this many standard deviations (the tail beyond holds 1e-9 of it). */
     static final double REACH_SIGMAS = 6.0;
     private static final int MAX_SUBDIVISION = 16;
+    /**
+     * Whole-texel lobes are integrated from the largest bound down; the rest are left out once their bounds add up to
+     * less than this fraction of the pixel's largest value so far (100 times below {@link #PIXEL_TOLERANCE}).
+     */
+    static final double SKIP_TOLERANCE = 1e-6;
 
     private final GaussianLobes lobes;
+    private final ExactSpectrum exact;
+    private final double maxAbsHeightUm;
     private final SpectralDensity density;
+    /** Per nanometre cell of the band from floor(lambda_min): an upper bound on f_X + f_Y + f_Z over the cell. */
+    private final double[] densityBound;
     private final double extentXUm;
     private final double extentYUm;
     private final double sigmaFPerUm;
@@ -56,7 +68,10 @@ public final class FilteredReference {
                              double refractiveIndex, FresnelModel fresnel) {
         this.lobes = new GaussianLobes(spectrum, spectrum.sigmaTexelsX(), spectrum.sigmaTexelsY(),
                 window.averaged() ? GaussianLobes.WHOLE_TEXELS : PAIR_THRESHOLD);
+        this.exact = spectrum;
+        this.maxAbsHeightUm = spectrum.maxAbsHeightUm();
         this.density = new SpectralDensity(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.normalisation());
+        this.densityBound = densityBound(density);
         this.extentXUm = spectrum.extentXUm();
         this.extentYUm = spectrum.extentYUm();
         this.sigmaFPerUm = window.sigmaFrequencyPerUm();
@@ -77,43 +92,72 @@ public final class FilteredReference {
             return new Xyz(0, 0, 0);
         }
         double half = 1.0 / size;
-        double[] previous = subdivided(wi, light, x, y, half, 1);
-        for (int k = 2; k <= MAX_SUBDIVISION; k *= 2) {
-            double[] current = subdivided(wi, light, x, y, half, k);
-            double scale = Math.max(Math.abs(current[0]), Math.max(Math.abs(current[1]), Math.abs(current[2])));
-            boolean converged = true;
-            for (int i = 0; i < 3; i++) {
-                converged &= Math.abs(current[i] - previous[i]) <= PIXEL_TOLERANCE * scale + FLOOR;
-            }
-            previous = current;
-            if (converged) {
-                break;
-            }
-        }
-        return new Xyz(previous[0], previous[1], previous[2]);
+        double[] whole = boxInDisk(wi, light, x, y, half);
+        double[] children = new double[3];
+        double[][] quarters = quarters(wi, light, x, y, half, children);
+        double scale = Math.max(Math.abs(children[0]), Math.max(Math.abs(children[1]), Math.abs(children[2])));
+        double tolerance = PIXEL_TOLERANCE * scale + FLOOR;
+        double[] v = converged(whole, children, tolerance) ? children
+                : refined(wi, light, x, y, half / 2, quarters, tolerance, 2);
+        return new Xyz(v[0], v[1], v[2]);
     }
 
-    /** The pixel's box split into k x k sub-boxes, each averaged with C S W to first order about its centre. */
-    private double[] subdivided(Direction wi, Covariance2 light, double x, double y, double half, int k) {
+    /**
+     * The box about (x, y) of half-width {@code half}, split into its four quarters until each quarter's split
+     * changes its value by at most the pixel's tolerance (adaptive: only the quarters an order crosses are split
+     * further), down to {@link #MAX_SUBDIVISION} quarters per side of the pixel. The quarters' values are given.
+     */
+    private double[] refined(Direction wi, Covariance2 light, double x, double y, double half, double[][] quarterValues,
+                             double tolerance, int level) {
         double[] sum = new double[3];
-        double sub = half / k;
-        for (int a = 0; a < k; a++) {
-            for (int b = 0; b < k; b++) {
-                double sx = x - half + (2 * a + 1) * sub;
-                double sy = y - half + (2 * b + 1) * sub;
-                if (sx * sx + sy * sy >= 1) {
-                    continue;
+        int q = 0;
+        for (int a = -1; a <= 1; a += 2) {
+            for (int b = -1; b <= 1; b += 2) {
+                double cx = x + a * half;
+                double cy = y + b * half;
+                double[] value = quarterValues[q++];
+                if (level < MAX_SUBDIVISION) {
+                    double[] children = new double[3];
+                    double[][] next = quarters(wi, light, cx, cy, half, children);
+                    value = converged(value, children, tolerance) ? children
+                            : refined(wi, light, cx, cy, half / 2, next, tolerance, 2 * level);
                 }
-                double[] v = box(wi, sx, sy, sub, light);
                 for (int i = 0; i < 3; i++) {
-                    sum[i] += v[i];
+                    sum[i] += 0.25 * value[i];
                 }
             }
         }
-        for (int i = 0; i < 3; i++) {
-            sum[i] /= (double) k * k;
-        }
         return sum;
+    }
+
+    /** The four quarters of the box about (x, y) of half-width {@code half}: their values, and their mean into mean. */
+    private double[][] quarters(Direction wi, Covariance2 light, double x, double y, double half, double[] mean) {
+        double[][] out = new double[4][];
+        int q = 0;
+        for (int a = -1; a <= 1; a += 2) {
+            for (int b = -1; b <= 1; b += 2) {
+                out[q] = boxInDisk(wi, light, x + a * half / 2, y + b * half / 2, half / 2);
+                for (int i = 0; i < 3; i++) {
+                    mean[i] += 0.25 * out[q][i];
+                }
+                q++;
+            }
+        }
+        return out;
+    }
+
+    private static boolean converged(double[] coarse, double[] fine, double tolerance) {
+        for (int i = 0; i < 3; i++) {
+            if (Math.abs(fine[i] - coarse[i]) > tolerance) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** The box with C S W to first order about its centre; 0 where its centre lies outside the unit disk. */
+    private double[] boxInDisk(Direction wi, Covariance2 light, double x, double y, double half) {
+        return x * x + y * y >= 1 ? new double[3] : box(wi, x, y, half, light);
     }
 
     /** The average over the square of half-width h about (x, y) in the projected plane of omega_r. */
@@ -226,10 +270,13 @@ public final class FilteredReference {
         double reachU = hx + REACH_SIGMAS * Math.sqrt(lobeVariance + g.xx());
         double reachV = hy + REACH_SIGMAS * Math.sqrt(lobeVariance + g.yy());
         int[] range = LobeGeometry.candidateRange(u, v, reachU, reachV, extentXUm, extentYUm, lambdaMin, lambdaMax);
-        int step = lobes.hasPairs() ? 1 : 2;
+        if (!lobes.hasPairs()) {
+            return wholeTexelSum(u, v, w, hx, hy, g, linear, range, reachU, reachV);
+        }
+        int step = 1;
         double[] total = new double[3];
-        for (int tx = step == 2 ? evenAtOrAbove(range[0]) : range[0]; tx <= range[1]; tx += step) {
-            for (int ty = step == 2 ? evenAtOrAbove(range[2]) : range[2]; ty <= range[3]; ty += step) {
+        for (int tx = range[0]; tx <= range[1]; tx += step) {
+            for (int ty = range[2]; ty <= range[3]; ty += step) {
                 double cx = 0.5 * tx / extentXUm; // per um: mu = lambda_um (cx, cy)
                 double cy = 0.5 * ty / extentYUm;
                 double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, reachU, reachV, lambdaMin, lambdaMax);
@@ -240,7 +287,8 @@ public final class FilteredReference {
                 if (lobe == null) {
                     continue;
                 }
-                double[] value = lobeIntegral(lobe, cx, cy, u, v, w, hx, hy, g, linear, interval[0], interval[1]);
+                double[] value = lobeIntegral(lobe, cx, cy, u, v, w, hx, hy, g, linear, interval[0], interval[1],
+                        1e-3 * FLOOR);
                 for (int i = 0; i < 3; i++) {
                     total[i] += value[i];
                 }
@@ -249,13 +297,149 @@ public final class FilteredReference {
         return total;
     }
 
+    /**
+     * f_X + f_Y + f_Z is a quadratic between whole nanometres (linear D65 times linear CMFs): sampled at 9 points of
+     * each cell, its largest value times 1.05 bounds it there.
+     */
+    private static double[] densityBound(SpectralDensity density) {
+        double first = Math.floor(density.lambdaMinNm());
+        int cells = (int) Math.ceil(density.lambdaMaxNm() - first) + 1;
+        double[] out = new double[cells];
+        double[] f = new double[3];
+        for (int i = 0; i < cells; i++) {
+            double max = 0;
+            for (int k = 0; k <= 8; k++) {
+                density.at(Math.min(density.lambdaMaxNm(), Math.max(density.lambdaMinNm(), first + i + k / 8.0)), f);
+                max = Math.max(max, f[0] + f[1] + f[2]);
+            }
+            out[i] = 1.05 * max;
+        }
+        return out;
+    }
+
+    /** An upper bound on the integral of f_X + f_Y + f_Z over [from, to] nm. */
+    private double densityIntegralBound(double from, double to) {
+        double first = Math.floor(density.lambdaMinNm());
+        double sum = 0;
+        for (int i = (int) Math.floor(from - first); i < densityBound.length && first + i < to; i++) {
+            double lo = Math.max(from, first + i);
+            double hi = Math.min(to, first + i + 1);
+            if (hi > lo && i >= 0) {
+                sum += densityBound[i] * (hi - lo);
+            }
+        }
+        return sum;
+    }
+
+    /**
+     * An upper bound on what the whole-texel lobe of texel (mx, my) over [from, to] nm adds to X + Y + Z: the
+     * texel's largest |T_m|^2 over the phases k w the box reaches, the largest box average of a lobe of peak 1 (per
+     * axis the box's sqrt(pi) sigma_uv / 2h and the widened peak, at the longest wavelength), the gain's largest value
+     * over the box, a factor for the first-order change of W across it (Bernstein: |dW / da| stays within about
+     * 2 max|h| W), and the density's integral.
+     */
+    private double lobeBound(int mx, int my, double cx, double cy, double u, double v, double w, double hx, double hy,
+                             Covariance2 g, Linear linear, double from, double to) {
+        double dw = Math.abs(linear.wU()) * hx + Math.abs(linear.wV()) * hy;
+        double kLo = 2 * Math.PI / (to * 1e-3);
+        double kHi = 2 * Math.PI / (from * 1e-3);
+        double a1 = kLo * (w - dw);
+        double a2 = kHi * (w - dw);
+        double a3 = kLo * (w + dw);
+        double a4 = kHi * (w + dw);
+        double aLo = Math.min(Math.min(a1, a2), Math.min(a3, a4));
+        double aHi = Math.max(Math.max(a1, a2), Math.max(a3, a4));
+        double weight = exact.texelBound(mx, my, aLo, aHi);
+        if (weight == 0) {
+            return 0;
+        }
+        double sigmaUv = to * 1e-3 * sigmaFPerUm;
+        double lobeVariance = 0.5 * sigmaUv * sigmaUv;
+        // the lobe's centre lambda c passes the box at a distance of at least gap_i along each axis
+        double gapU = gap(u, hx, cx * from * 1e-3, cx * to * 1e-3);
+        double gapV = gap(v, hy, cy * from * 1e-3, cy * to * 1e-3);
+        double distance = Math.exp(-0.5 * (gapU * gapU / (lobeVariance + g.xx()) + gapV * gapV / (lobeVariance + g.yy())));
+        double area = axisPeak(sigmaUv, hx, g.xx()) * axisPeak(sigmaUv, hy, g.yy()) * distance;
+        double gain = Math.abs(linear.gain()) + Math.abs(linear.gainU()) * hx + Math.abs(linear.gainV()) * hy;
+        double slope = 1 + 2 * kHi * dw * maxAbsHeightUm;
+        return gain * slope * weight * area * densityIntegralBound(from, to);
+    }
+
+    /** The distance between [u - h, u + h] and the interval between a and b (0 where they overlap). */
+    private static double gap(double u, double h, double a, double b) {
+        double lo = Math.min(a, b);
+        double hi = Math.max(a, b);
+        return Math.max(0, Math.max(lo - (u + h), (u - h) - hi));
+    }
+
+    /** The largest average over [u - h, u + h] of a lobe of peak 1 and spread sigmaUv widened by a variance. */
+    private static double axisPeak(double sigmaUv, double h, double variance) {
+        double peak = sigmaUv / Math.sqrt(sigmaUv * sigmaUv + 2 * variance);
+        return h > 0 ? Math.min(peak, Math.sqrt(Math.PI) * sigmaUv / (2 * h)) : peak;
+    }
+
     private static int evenAtOrAbove(int n) {
         return n % 2 == 0 ? n : n + 1;
     }
 
-    /** The integral over [from, to] nm of f C S W A for one lobe. */
+    /**
+     * The lobes of whole texels (the window averaged over its position): every lobe the footprint can reach, each with
+     * an upper bound on what it adds, integrated from the largest bound down until the bounds of those left add up to
+     * less than {@link #SKIP_TOLERANCE} of the pixel's largest value so far.
+     */
+    private double[] wholeTexelSum(double u, double v, double w, double hx, double hy, Covariance2 g, Linear linear,
+                                   int[] range, double reachU, double reachV) {
+        double lambdaMin = density.lambdaMinNm();
+        double lambdaMax = density.lambdaMaxNm();
+        java.util.List<double[]> candidates = new java.util.ArrayList<>();
+        for (int tx = evenAtOrAbove(range[0]); tx <= range[1]; tx += 2) {
+            for (int ty = evenAtOrAbove(range[2]); ty <= range[3]; ty += 2) {
+                double cx = 0.5 * tx / extentXUm;
+                double cy = 0.5 * ty / extentYUm;
+                double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, reachU, reachV, lambdaMin, lambdaMax);
+                if (interval == null) {
+                    continue;
+                }
+                double bound = lobeBound(tx / 2, ty / 2, cx, cy, u, v, w, hx, hy, g, linear, interval[0], interval[1]);
+                if (bound > 0) {
+                    candidates.add(new double[] {bound, tx, ty, interval[0], interval[1]});
+                }
+            }
+        }
+        candidates.sort((a, b) -> Double.compare(b[0], a[0]));
+        double[] rest = new double[candidates.size() + 1];
+        for (int i = candidates.size() - 1; i >= 0; i--) {
+            rest[i] = rest[i + 1] + candidates.get(i)[0];
+        }
+        double[] total = new double[3];
+        for (int i = 0; i < candidates.size(); i++) {
+            double largest = Math.max(total[0], Math.max(total[1], total[2]));
+            if (rest[i] <= SKIP_TOLERANCE * largest + 1e-3 * FLOOR) {
+                break;
+            }
+            double[] c = candidates.get(i);
+            int tx = (int) c[1];
+            int ty = (int) c[2];
+            GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+            if (lobe == null) {
+                continue;
+            }
+            // each lobe's integral to LOBE_TOLERANCE of itself, or to 1e-5 of the pixel shared among the lobes:
+            // together the small ones err by at most 1e-5 of the pixel
+            double absolute = Math.max(1e-3 * FLOOR, 1e-5 * largest / candidates.size());
+            double[] value = lobeIntegral(lobe, 0.5 * tx / extentXUm, 0.5 * ty / extentYUm, u, v, w, hx, hy, g,
+                    linear, c[3], c[4], absolute);
+            for (int k = 0; k < 3; k++) {
+                total[k] += value[k];
+            }
+        }
+        return total;
+    }
+
+    /** The integral over [from, to] nm of f C S W A for one lobe, to LOBE_TOLERANCE of itself or {@code absolute}. */
     private double[] lobeIntegral(GaussianLobes.Lobe lobe, double cx, double cy, double u, double v, double w,
-                                  double hx, double hy, Covariance2 g, Linear linear, double from, double to) {
+                                  double hx, double hy, Covariance2 g, Linear linear, double from, double to,
+                                  double absolute) {
         boolean box = hx > 0 || hy > 0;
         double[] moments = new double[3];
         double[] weight = new double[2];
@@ -282,7 +466,7 @@ public final class FilteredReference {
             f[2] *= scale;
             return f;
         };
-        return GaussKronrod.integrate(integrand, 3, from, to, LOBE_TOLERANCE, 1e-3 * FLOOR);
+        return GaussKronrod.integrate(integrand, 3, from, to, LOBE_TOLERANCE, absolute);
     }
 
     private static double square(double x) {

@@ -19,8 +19,15 @@ public enum Levelling {
     /** The heights as read. */
     NONE;
 
-    /** What a command line or a scene file gets without asking. */
-    public static final Levelling DEFAULT = PLANE;
+    /**
+     * What a file gets without asking: {@link #PLANE} for the instruments' own files (.gwy, .ibw), which hold the scan
+     * as measured, tilt and all; {@link #NONE} for exports (grey images, text matrices, .gsf), which AFM software
+     * writes after levelling and which a plane fit would change again: on a patch of k whole periods the fitted tilt
+     * takes about 6 / (pi k) of the profile's amplitude with it.
+     */
+    public static Levelling defaultFor(boolean instrumentFile) {
+        return instrumentFile ? PLANE : NONE;
+    }
 
     /** The spelling on the command line and in scene files: {@code plane}, {@code rows}, {@code none}. */
     public String label() {

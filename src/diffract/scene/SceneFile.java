@@ -437,8 +437,8 @@ public final class SceneFile {
             Double maxHeight = patch.has("maxHeightUm") ? patch.number("maxHeightUm", SceneObject.Range.positive()) : null;
             Double pixelSize = patch.has("pixelSizeUm") ? patch.number("pixelSizeUm", SceneObject.Range.positive()) : null;
             String channel = patch.has("channel") ? channel(patch) : null;
-            Levelling levelling = Levelling.fromLabel(patch.choice("level", LEVELLING_NAMES,
-                    Levelling.DEFAULT.label()));
+            Levelling levelling = patch.has("level") ? Levelling.fromLabel(patch.choice("level", LEVELLING_NAMES))
+                    : null; // the file format's default
             patch.finish();
             return new Scene.FilePatch(file, maxHeight, pixelSize, channel, levelling);
         }
@@ -467,7 +467,7 @@ public final class SceneFile {
                         + "must be at most 4096 columns, got " + samplesPerPeriod * periods);
             }
         } else {
-            size = patch.integer("sizePx", SceneObject.Range.closed(16, 1024), size);
+            size = patch.integer("sizePx", SceneObject.Range.closed(16, 2048), size);
             if (size % 16 != 0) {
                 throw patch.problem("sizePx", "must be a multiple of 16, got " + size);
             }

@@ -111,8 +111,8 @@ class CliTest {
         int[] whc = new int[3];
         float[] rho = ImageFiles.readPfm(pfm, whc);
         assertEquals(1, whc[2]);
-        // the field as brdfmap reads it by default: levelled
-        HeightField patch = HeightFieldReader.load(grating, null, null, null, Levelling.DEFAULT, Reporter.SILENT);
+        // the field as brdfmap reads it by default (the format's levelling)
+        HeightField patch = HeightFieldReader.load(grating, null, null, null, null, Reporter.SILENT);
         BrdfSettings settings = BrdfSettings.builder(Variant.REFERENCE).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 0.5).refractiveIndex(1.5).pqReplicas(0).build();
         DiffractionBrdf brdf = DiffractionBrdf.create(settings, patch, null);
         Direction wi = Direction.fromSphericalDeg(20, 0);
@@ -210,14 +210,18 @@ class CliTest {
             assertEquals(expected.rows(), read.rows(), kind);
             assertEquals(expected.cols(), read.cols(), kind);
             assertEquals(expected.pixelSizeXUm(), read.pixelSizeXUm(), 1e-9, kind);
-            for (int i = 0; i < expected.sampleCount(); i++) {
+            double[] want = expected.heightsUm();
+            double[] got = read.heightsUm();
+            for (int i = 0; i < want.length; i++) {
                 // float32 in metres: a relative rounding of 2^-24 on heights below 1 um
-                assertEquals(expected.heightsUm()[i], read.heightsUm()[i], 1e-7, kind + " sample " + i);
+                if (Math.abs(want[i] - got[i]) > 1e-7) {
+                    assertEquals(want[i], got[i], 1e-7, kind + " sample " + i);
+                }
             }
         }
         Object[] unknown = run("patch", "zebra", "-o", dir.resolve("z.gsf").toString());
         assertEquals(2, unknown[0]);
-        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like, xenopeltis-like, blazed-10um, tall"),
+        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like, xenopeltis-like, blazed-10um, elaphe-scan, tall"),
                 (String) unknown[2]);
     }
 

@@ -122,7 +122,8 @@ class LevellingTest {
         assertEquals(Levelling.ROWS, Levelling.fromLabel("rows"));
         assertEquals(Levelling.NONE, Levelling.fromLabel("none"));
         assertNull(Levelling.fromLabel("Plane"));
-        assertEquals(Levelling.PLANE, Levelling.DEFAULT);
+        assertEquals(Levelling.PLANE, Levelling.defaultFor(true));
+        assertEquals(Levelling.NONE, Levelling.defaultFor(false));
     }
 
     @Test

@@ -84,8 +84,8 @@ class ThesisRenderTest {
         Path back = tmp.resolve("back");
         assertEquals(0, Main.execute("convert-terms", "--from", nativeDir.toString(), "--to", back.toString(),
                 "--format", "thesis"));
-        // the field as precompute reads it by default: levelled
-        HeightField levelled = HeightFieldReader.load(patch, null, null, null, Levelling.DEFAULT, Reporter.SILENT);
+        // the field as precompute reads it by default (the format's levelling)
+        HeightField levelled = HeightFieldReader.load(patch, null, null, null, null, Reporter.SILENT);
         TaylorTerms direct = TaylorTermComputer.compute(levelled, 6, Reporter.SILENT);
         for (Path dir : new Path[] {thesis, nativeDir, back}) {
             TaylorTerms read = TermFolders.read(dir, Reporter.SILENT);

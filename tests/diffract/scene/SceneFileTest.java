@@ -153,7 +153,7 @@ class SceneFileTest {
                 "{\"file\": \"scan.gwy\", \"channel\": 3}"));
         patch = (Scene.FilePatch) SceneFile.load(file).material().patch();
         assertEquals("3", patch.channel());
-        assertEquals(diffract.optics.Levelling.PLANE, patch.levelling(), "plane by default");
+        assertEquals(null, patch.levelling(), "the file format's levelling by default");
 
         String m = message(valid("").replace("{\"procedural\": \"blazed\"}",
                 "{\"file\": \"scan.gwy\", \"channel\": 1.5}"));

@@ -64,6 +64,11 @@ public final class HeightFieldReader {
         boolean hasChannels() {
             return this == GWY || this == IBW;
         }
+
+        /** The instruments' own files, which hold a scan as measured (levelled by default). */
+        boolean isInstrumentFile() {
+            return this == GWY || this == IBW;
+        }
     }
 
     private HeightFieldReader() {
@@ -86,7 +91,8 @@ public final class HeightFieldReader {
      * @param pixelSizeUm the sample spacing in micrometres (images and text, required; .gsf, .gwy, .ibw: optional
      *                    override); null when not given
      * @param channel     a multi-channel file's channel, by title or index; null for the default
-     * @param levelling   what is removed before use ({@link Levelling#DEFAULT} for what a user gets by default)
+     * @param levelling   what is removed before use; null for the format's default ({@link Levelling#defaultFor}:
+     *                    a plane for .gwy and .ibw, nothing for exports)
      * @param reporter    receives plausibility warnings and notes
      * @return the levelled field with its mean subtracted
      * @throws UserInputException for any problem with the file or the options
@@ -137,6 +143,13 @@ public final class HeightFieldReader {
                     MAX_PLAUSIBLE_HEIGHT_UM, "the given maximum height", reporter);
         }
         double rawRangeUm = raw.maxHeightUm() - raw.minHeightUm();
+        if (levelling == null) {
+            levelling = Levelling.defaultFor(format.isInstrumentFile());
+            if (levelling != Levelling.NONE) {
+                reporter.info(file + ": " + levelling.label() + " levelled (the default for " + format.words
+                        + "; --level none keeps the heights as read)");
+            }
+        }
         HeightField levelled = levelling.apply(raw);
         double rangeUm = levelled.maxHeightUm() - levelled.minHeightUm();
         if (rawRangeUm == 0) {
@@ -184,21 +197,48 @@ public final class HeightFieldReader {
      */
     private static void requireResolvingSize(Path file, HeightField field) {
         String size = field.cols() + " x " + field.rows() + " samples (columns x rows)";
-        if (field.rows() < 2 || field.cols() < 2) {
+        // an axis along which the field does not change (a 1-D grating's grooves) needs no extent: its transform is
+        // the mean there, whatever its size; an axis with structure needs two samples and a wavelength's width
+        boolean alongX = tooSmall(field.cols(), field.widthUm()) && (varies(field, true) || !fits(field, false));
+        boolean alongY = tooSmall(field.rows(), field.heightExtentUm()) && (varies(field, false) || !fits(field, true));
+        if (!alongX && !alongY) {
+            return;
+        }
+        if (field.rows() < 2 && field.cols() < 2 || (alongX ? field.cols() : field.rows()) < 2) {
             throw new UserInputException(file + ": the scan is " + size + "; its transform needs at least 2 samples"
-                    + " along each axis to hold any spatial frequency beside the mean, so it diffracts nothing; use a"
-                    + " larger scan");
+                    + " along an axis with structure to hold any spatial frequency beside the mean, so it diffracts"
+                    + " nothing; use a larger scan");
         }
         double widthUm = field.widthUm();
         double heightUm = field.heightExtentUm();
-        if (widthUm < MIN_EXTENT_UM || heightUm < MIN_EXTENT_UM) {
-            throw new UserInputException(file + ": the scan is " + ReaderSupport.num(widthUm) + " x "
-                    + ReaderSupport.num(heightUm) + " um (" + size + " of " + ReaderSupport.num(field.pixelSizeXUm())
-                    + " x " + ReaderSupport.num(field.pixelSizeYUm()) + " um), narrower than the shortest visible"
-                    + " wavelength " + ReaderSupport.num(MIN_EXTENT_UM) + " um along " + (widthUm < MIN_EXTENT_UM
-                    ? "x" : "y") + ": its first diffraction order (sin theta = lambda / width > 1) lies beyond the"
-                    + " horizon, so it shows only the mirror reflection; use a larger scan, or check the pixel size");
+        throw new UserInputException(file + ": the scan is " + ReaderSupport.num(widthUm) + " x "
+                + ReaderSupport.num(heightUm) + " um (" + size + " of " + ReaderSupport.num(field.pixelSizeXUm())
+                + " x " + ReaderSupport.num(field.pixelSizeYUm()) + " um), narrower than the shortest visible"
+                + " wavelength " + ReaderSupport.num(MIN_EXTENT_UM) + " um along " + (alongX ? "x" : "y")
+                + ": its first diffraction order (sin theta = lambda / width > 1) lies beyond the horizon, so it shows"
+                + " only the mirror reflection; use a larger scan, or check the pixel size");
+    }
+
+    private static boolean tooSmall(int samples, double extentUm) {
+        return samples < 2 || extentUm < MIN_EXTENT_UM;
+    }
+
+    /** Whether the other axis holds the structure: enough samples and extent along it. */
+    private static boolean fits(HeightField field, boolean alongX) {
+        return alongX ? !tooSmall(field.cols(), field.widthUm()) : !tooSmall(field.rows(), field.heightExtentUm());
+    }
+
+    /** Whether the heights change along x (within some row) or along y (within some column). */
+    private static boolean varies(HeightField field, boolean alongX) {
+        for (int r = 0; r < field.rows(); r++) {
+            for (int c = 0; c < field.cols(); c++) {
+                double neighbour = alongX ? field.heightUm(r, 0) : field.heightUm(0, c);
+                if (field.heightUm(r, c) != neighbour) {
+                    return true;
+                }
+            }
         }
+        return false;
     }
 
     private static void checkOption(Path file, Quantity quantity, Double valueUm, String meaning) {

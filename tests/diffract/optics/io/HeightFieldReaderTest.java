@@ -110,10 +110,17 @@ class HeightFieldReaderTest {
         Path single = dir.resolve("single.txt");
         Files.writeString(single, "0.1\n");
         assertUserError(single, () -> HeightFieldReader.load(single, null, 5.0, Reporter.SILENT), "the scan is 1 x 1"
-                + " samples (columns x rows); its transform needs at least 2 samples along each axis");
+                + " samples (columns x rows); its transform needs at least 2 samples along an axis with structure");
+        // one scan line is a 1-D profile (a grating's grooves along y): nothing along y to resolve
         Path line = dir.resolve("line.txt");
         Files.writeString(line, "0 0.1 0.2 0.1 0 0.1\n");
-        assertUserError(line, () -> HeightFieldReader.load(line, null, 1.0, Reporter.SILENT), "the scan is 6 x 1");
+        assertEquals(6, HeightFieldReader.load(line, null, 1.0, Reporter.SILENT).sampleCount());
+        // the same profile on three rows 0.1 um apart is too: constant along y; too short along x, refused
+        Path grooves = dir.resolve("grooves.txt");
+        Files.writeString(grooves, "0 0.1 0.2\n0 0.1 0.2\n0 0.1 0.2\n");
+        assertEquals(9, HeightFieldReader.load(grooves, null, 0.2, Reporter.SILENT).sampleCount());
+        assertUserError(grooves, () -> HeightFieldReader.load(grooves, null, 0.1, Reporter.SILENT),
+                "the scan is 0.3 x 0.3 um", "along x");
 
         // 3 x 3 samples of 0.1 um: 0.3 um, below the shortest visible wavelength
         Path small = dir.resolve("small.txt");
