@@ -333,7 +333,7 @@ class FaultsCliTest {
         Object[] result = run("brdfmap", "--patch", png.toString(), "--max-height", "0.3", "--pixel-size", "0.05",
                 "--theta-i", "30", "--size", "64", "-o", dir.resolve("m.png").toString());
         assertOneLineRefusal(result, "the reference map of a 2048x2048 patch needs about");
-        assertTrue(err(result).contains("exact spectrum: 5 phase centres x 16 transforms of 2048x2048 5.4 GB"),
+        assertTrue(err(result).contains("exact spectrum: 5 phase centres x 16 transforms of 2048x2048 5.5 GB"),
                 err(result));
         assertTrue(err(result).contains("--variant flss (its 31 terms take 1.0 GB)"), err(result));
         assertTrue(err(result).contains("-Xmx") || err(result).contains("more than this machine's"), err(result));

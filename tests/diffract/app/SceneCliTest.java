@@ -14,6 +14,7 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** Scene files through the CLI: an OBJ mesh end to end, options that override the scene, a broken OBJ. */
@@ -109,6 +110,36 @@ class SceneCliTest {
         BufferedImage image = ImageIO.read(png.toFile());
         assertEquals(48, image.getWidth());
         assertEquals(32, image.getHeight());
+    }
+
+    /**
+     * A snake whose scales wear a scan as wide as the coherence window (the 52 um elaphe-scan, sigma_f = 0.5 texels)
+     * renders with the lobes method under the scene's sun: no notice that it falls back to another method or a
+     * point light, and the snake shows structural colour (a lit pixel's channels differ).
+     */
+    @Test
+    @Tag("gl")
+    void aScanAsWideAsTheWindowRendersWithTheLobesMethod() throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        Path png = dir.resolve("scan.png");
+        Object[] result = CliTest.run("render", "assets/scenes/viewer-snake-scan.json", "--variant", "lobes",
+                "--size", "80x60", "-o", png.toString());
+        String err = (String) result[2];
+        assertEquals(0, result[0], err);
+        assertFalse(err.contains("instead") || err.contains("as a point light"), err);
+        assertTrue(((String) result[1]).contains("lobes"), (String) result[1]);
+        BufferedImage image = ImageIO.read(png.toFile());
+        int coloured = 0;
+        for (int y = 0; y < image.getHeight(); y++) {
+            for (int x = 0; x < image.getWidth(); x++) {
+                int rgb = image.getRGB(x, y);
+                int r = rgb >> 16 & 255;
+                int g = rgb >> 8 & 255;
+                int b = rgb & 255;
+                coloured += Math.max(r, Math.max(g, b)) - Math.min(r, Math.min(g, b)) > 40 ? 1 : 0;
+            }
+        }
+        assertTrue(coloured > 20, "the snake shows colour: " + coloured + " pixels");
     }
 
     @Test

@@ -26,7 +26,8 @@ class SceneFileTest {
     Path dir;
 
     @ParameterizedTest
-    @ValueSource(strings = {"snake-elaphe", "snake-xenopeltis", "blazed-grating-plane", "brdfmap-elaphe"})
+    @ValueSource(strings = {"snake-elaphe", "snake-xenopeltis", "blazed-grating-plane", "brdfmap-elaphe",
+        "viewer-snake", "viewer-sphere", "viewer-snake-scan"})
     void everyDefaultSceneParses(String name) {
         Scene scene = SceneFile.load(SCENES.resolve(name + ".json"));
         assertTrue(scene.image().width() >= 16, name);

@@ -147,7 +147,7 @@ public final class HeightFieldReader {
             levelling = Levelling.defaultFor(format.isInstrumentFile());
             if (levelling != Levelling.NONE) {
                 reporter.info(file + ": " + levelling.label() + " levelled (the default for " + format.words
-                        + "; --level none keeps the heights as read)");
+                        + "; a levelling of none keeps the heights as read)");
             }
         }
         HeightField levelled = levelling.apply(raw);
