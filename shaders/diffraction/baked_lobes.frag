@@ -23,5 +23,6 @@ void main() {
         return;
     }
     setTableCell(2.0 / (bakedSamples.x - 1.0));
-    fragColor = vec4(spectralXyz(uvw), 1.0);
+    vec3 xyz = spectralXyz(uvw);
+    fragColor = vec4(xyz, spectrumTruncated() ? 0.0 : 1.0); // alpha 0: lobes left out (BakedTable counts them)
 }

@@ -70,7 +70,12 @@ void main() {
 #elif defined(DISPLAY_SRGB)
     fragColor = vec4(srgbEncode(max(linearSrgbFromXyz(exposure * diffractionXyz(omegaI, wr)), vec3(0.0))), 1.0);
 #else
-    fragColor = vec4(diffractionXyz(omegaI, wr), 1.0);
+    vec3 xyz = diffractionXyz(omegaI, wr);
+#ifdef SPECTRUM_REPORTS_TRUNCATION
+    fragColor = vec4(xyz, spectrumTruncated() ? 0.0 : 1.0); // alpha 0: lobes left out (GpuBrdfMap counts them)
+#else
+    fragColor = vec4(xyz, 1.0);
+#endif
 #endif
 }
 #endif

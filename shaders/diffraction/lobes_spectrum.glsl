@@ -26,6 +26,16 @@ uniform float lobeMaxStepNm;
 uniform float lobeReachSigmas;
 
 const int MAX_NODES = 512;   // nodes per lobe below 1 nm spacing (LobeSpectrum.MAX_NODES is a looser guard)
+// Whether this fragment's loops ended before their work did. Mesa's llvmpipe ends a shader invocation's loops after
+// 65535 iterations of its SIMD group, silently, and a fragment that reaches many lobes then leaves some out: the march
+// and the node loops record that they finished, and what did not finish is reported (the BRDF map's alpha).
+bool lobesLeftOut = false;
+#define SPECTRUM_REPORTS_TRUNCATION 1
+
+// Whether this fragment's spectrum left lobes out because its loops were ended early.
+bool spectrumTruncated() {
+    return lobesLeftOut;
+}
 const int MAX_MARCH = 4096;  // texels along the major axis (a guard: 2 x 2048 texels)
 const int MAX_LOBES = 1 << 16;        // lobes integrated per fragment (a guard)
 const int MAX_MARCH_STEPS = 1 << 20;  // march steps between two lobes (a guard)
@@ -192,13 +202,16 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
     int levelBase = spectralLevelBase(spacing);
     float sigmaF = sigmaFPerUm();
     vec3 xyz = vec3(0.0);
+    int reached = j0 - 1;
     for (int j = j0; j <= j1; j++) {
+        reached = j;
         float lambdaNm = lambdaMinNm + float(j) * spacing;
         float lambdaUm = lambdaNm * 1e-3;
         float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * uvw.z);
         xyz += weight * averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy)
                 * spectralWeight(lambdaNm, spacing, levelBase);
     }
+    lobesLeftOut = lobesLeftOut || reached < j1;
     return xyz;
 }
 
@@ -234,6 +247,7 @@ vec3 spectralXyz(vec3 uvw) {
     int k = 0;
     int kLast = -1;
     vec3 xyz = vec3(0.0);
+    bool marched = false; // the march passed its last major index
     for (int lobe = 0; lobe < MAX_LOBES; lobe++) {
         ivec2 m = ivec2(0);
         vec2 interval = vec2(1.0, 0.0);
@@ -243,6 +257,7 @@ vec3 spectralXyz(vec3 uvw) {
                 // the next major index: the minor texels its lobes can reach
                 i++;
                 if (i > last) {
+                    marched = true;
                     break;
                 }
                 vec2 along = lambdaInterval(majorAxis * float(i) / patchExtentUm, uv * majorAxis, reachMajor);
@@ -268,6 +283,7 @@ vec3 spectralXyz(vec3 uvw) {
         }
         xyz += integrateLobe(m, vec2(m) / patchExtentUm, uvw, interval.x, interval.y);
     }
+    lobesLeftOut = lobesLeftOut || !marched;
     return xyz;
 }
 

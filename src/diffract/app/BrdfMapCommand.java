@@ -238,6 +238,13 @@ final class BrdfMapCommand implements Callable<Integer> {
             // the bake's own note says what it baked and how long it took
             float[] values = light.lambdaNm != null ? map.monochromatic(wi, light.lambdaNm, picture.size)
                     : map.xyz(wi, picture.size);
+            if (map.truncatedPixels() > 0) {
+                reporter.warn(String.format(Locale.ROOT, "%d of the map's pixels reach more lobes than %s let one "
+                        + "fragment sum (its loops were ended early; Mesa's llvmpipe ends them after 65535 iterations): "
+                        + "they miss lobes and are too dark; draw the map with --engine cpu, at a larger --size "
+                        + "(smaller pixels reach fewer lobes), or with --variant baked", map.truncatedPixels(),
+                        map.info().renderer()));
+            }
             if (engines.time) {
                 double ms = light.lambdaNm != null ? map.medianMsPerFrameMonochromatic(wi, light.lambdaNm, picture.size, 2, 10)
                         : map.medianMsPerFrame(wi, picture.size, 2, 10);

@@ -4,6 +4,7 @@ import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.ExactSpectrum;
 import diffract.optics.HeightField;
+import diffract.optics.LobeWeightTable;
 import diffract.optics.Variant;
 import diffract.util.MemoryEstimate;
 
@@ -40,6 +41,11 @@ final class MemoryCheck {
         } else {
             estimate.plus(termCount + " Taylor terms", 8L * samples * termCount);
             wayOut = "use fewer --terms or crop the patch";
+            if (settings.variant() == Variant.LOBES || settings.variant() == Variant.BAKED) {
+                // the lobes method's weights per texel over the phase (the baked table bakes the lobes method)
+                estimate.plus("the lobes' weight table", LobeWeightTable.bytes(field.rows(), field.cols(),
+                        field.maxAbsHeightUm(), settings.spectral().lambdaMinNm(), settings.lobes().weightTolerance()));
+            }
             if (settings.variant() == Variant.BAKED) {
                 BakedGrid grid = BakedGrid.of(settings, field.maxAbsHeightUm());
                 estimate.plus(String.format(Locale.ROOT, "baked table %d x %d x %d", grid.uvSamples(),

@@ -116,6 +116,10 @@ public final class FilteringTargets {
              GpuBrdfMap flssMap = pipeline.gpuMap(flss(), lambdaMin, reporter)) {
             glInfo = lobesMap.info();
             BrdfMapDifference l = BrdfMapDifference.of(reference, lobesMap.xyz(wi, sizePx), sizePx, exposure);
+            if (lobesMap.truncatedPixels() > 0) {
+                reporter.warn(patch.name() + ": " + lobesMap.truncatedPixels() + " pixels of the lobes method's map "
+                        + "reach more lobes than this GL lets a fragment sum; they miss lobes (the error counts them)");
+            }
             BrdfMapDifference f = BrdfMapDifference.of(reference, flssMap.xyz(wi, sizePx), sizePx, exposure);
             double[] lobesMs = new double[rounds];
             double[] flssMs = new double[rounds];

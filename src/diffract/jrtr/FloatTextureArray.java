@@ -36,6 +36,11 @@ public final class FloatTextureArray extends Texture {
         public int internalFormat() {
             return internalFormat;
         }
+
+        /** Bytes per texel of the two channels. */
+        public int bytesPerTexel() {
+            return this == FLOAT32 ? 8 : this == FLOAT16 ? 4 : 2;
+        }
     }
 
     private final int width;
@@ -91,8 +96,19 @@ public final class FloatTextureArray extends Texture {
                     + maxLayers[0]);
         }
         // allocate once, then copy layer by layer, so no buffer of the whole array is ever needed
+        GLErrors.check(gl, "before allocating " + this);
         gl.glTexImage3D(target, 0, precision.internalFormat(), width, height, layers.size(), 0,
                 GL2ES2.GL_RG, GL.GL_FLOAT, null);
+        int error = gl.glGetError();
+        if (error != GL.GL_NO_ERROR) {
+            // a driver may cap one texture's size (Mesa's llvmpipe at 1 GiB): a texture it did not allocate would
+            // read as zeros or garbage, so the draw stops here
+            throw new diffract.util.UserInputException(String.format(java.util.Locale.ROOT, "the GPU refused a %d x %d"
+                    + " x %d texture of %s (%s): the data is too large for this GL; use a smaller or coarser height "
+                    + "field, fewer layers or half precision", width, height, layers.size(),
+                    diffract.util.MemoryEstimate.size((long) width * height * layers.size() * precision.bytesPerTexel()),
+                    GLErrors.name(error)));
+        }
         if (precision == Precision.UNORM8) {
             fillBytes(gl, target);
         } else {

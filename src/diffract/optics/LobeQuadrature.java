@@ -6,9 +6,10 @@ import diffract.colour.HatFilteredSpectrum;
  * The accuracy knobs of the lobes method ({@link LobeSpectrum}, {@code lobes.frag}), a group of {@link BrdfSettings};
  * docs/filtering.md measures each. Every knob has one range, checked here ({@link Quantity#LOBE_QUADRATURE}).
  *
- * @param pairThreshold  texel pairs m != m' are summed while their window weight exp(-|m - m'|^2_sigma / 4) is at
- *                       least this (relative to the product of their coefficients); in (0, 1]. The GPU sums whole
- *                       texels only: it needs a threshold that keeps no pair for the patch
+ * @param pairThreshold  with the window fixed at the DFT's origin, texel pairs m != m' are summed while their window
+ *                       weight exp(-|m - m'|^2_sigma / 4) is at least this (relative to the product of their
+ *                       coefficients); in (0, 1]. The GPU sums whole texels only: it needs a threshold that keeps no
+ *                       pair for the patch. The window averaged over its position keeps no pair whatever this says
  * @param nodesPerSigma  wavelength nodes per standard deviation of a lobe's passage through the footprint (the
  *                       width, in nm, of its erf edges or Gaussian profile); &gt; 0
  * @param maxStepNm      the widest node spacing: 1, 2, 4, 8 or 16 nm (the hat-filtered spectral weights), or any

@@ -47,6 +47,17 @@ public final class LobeWeightTable {
         return new LobeWeightTable(new TaylorTexels(terms), lambdaMinNm, tolerance);
     }
 
+    /**
+     * The heap a table of a rows x cols term grid takes (its K samples, from the patch's max|h| and the tolerance as
+     * the constructor chooses them, and its bounds, as float32 pairs), for the estimates made before the work.
+     */
+    public static long bytes(int rows, int cols, double maxAbsHeightUm, double lambdaMinNm, double tolerance) {
+        double maxPhase = maxPhasePerUm(lambdaMinNm);
+        double wanted = maxAbsHeightUm > 0 ? Math.pow(384 * tolerance, 0.25) / (2 * maxAbsHeightUm) : maxPhase;
+        long samples = Math.max(2, (long) Math.ceil(maxPhase / wanted - 1e-9) + 1);
+        return 8L * rows * cols * (samples + BINS / 2);
+    }
+
     /** p_max = 2 k_max = 4 pi / lambda_min, um^-1 (|w| &lt;= 2). */
     static double maxPhasePerUm(double lambdaMinNm) {
         return TaylorBound.MAX_ABS_W * 2 * Math.PI / (lambdaMinNm * 1e-3);

@@ -86,6 +86,7 @@ public final class BakedTable {
                     + " one array can (2^31 floats); use fewer samples", n, n, grid.wSamples()));
         }
         float[] rgb = new float[(int) (3 * grid.texels())];
+        long shortCells = 0;
         ShapeNode quad = new ShapeNode(Shapes.fullScreenQuad(), material);
         String task = String.format(Locale.ROOT, "baking the %d x %d x %d table", n, n, grid.wSamples());
         reporter.progress(task, 0);
@@ -102,12 +103,21 @@ public final class BakedTable {
                         rgb[to] = rgba[from];
                         rgb[to + 1] = rgba[from + 1];
                         rgb[to + 2] = rgba[from + 2];
+                        if (lobes && rgba[from + 3] == 0) {
+                            shortCells++; // the lobes shader's loops were ended early (lobes_spectrum.glsl)
+                        }
                     }
                 }
                 reporter.progress(task, (k + 1.0) / grid.wSamples());
             }
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
+        if (shortCells > 0) {
+            reporter.warn(String.format(Locale.ROOT, "%d of the table's %d cells reach more lobes than this GL lets a "
+                    + "fragment sum (its loops were ended early; Mesa's llvmpipe ends them after 65535 iterations): "
+                    + "they miss lobes and are too dark; a patch of fewer texels, or a GPU, bakes them whole",
+                    shortCells, grid.texels()));
+        }
         BakedTable table = new BakedTable(grid, rgb, precision, seconds, lobes);
         reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
         return table;

@@ -9,6 +9,7 @@ import diffract.jrtr.OffscreenTarget;
 import diffract.jrtr.Renderer;
 import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
+import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
@@ -35,6 +36,8 @@ public final class GpuBrdfMap implements AutoCloseable {
     private final OffscreenTarget target;
     private Material xyzMaterial;
     private Material monochromaticMaterial;
+    private int truncatedPixels;
+    private boolean[] truncated = new boolean[0];
 
     /**
      * The map of the thesis' series over these terms, stored in the settings' term format.
@@ -84,12 +87,33 @@ public final class GpuBrdfMap implements AutoCloseable {
         use(xyzMaterial, wi, size);
         float[] rgba = target.renderRgba(size, size);
         float[] xyz = new float[size * size * 3];
+        truncatedPixels = 0;
+        truncated = new boolean[size * size];
         for (int p = 0; p < size * size; p++) {
             xyz[3 * p] = rgba[4 * p];
             xyz[3 * p + 1] = rgba[4 * p + 1];
             xyz[3 * p + 2] = rgba[4 * p + 2];
+            double x = BrdfMap.xOf(p % size, size);
+            double y = BrdfMap.yOf(p / size, size);
+            if (rgba[4 * p + 3] == 0 && x * x + y * y < 1) {
+                truncatedPixels++; // the lobes shader's loops were ended early here (lobes_spectrum.glsl)
+                truncated[p] = true;
+            }
         }
         return xyz;
+    }
+
+    /**
+     * Pixels of the last {@link #xyz} map where the GL ended the lobes shader's loops early and lobes were left out
+     * (Mesa's llvmpipe ends a SIMD group's loops after 65535 iterations; the shader notices its loops did not finish).
+     */
+    public int truncatedPixels() {
+        return truncatedPixels;
+    }
+
+    /** Whether pixel p (row-major from the top) of the last {@link #xyz} map was left short. */
+    public boolean truncatedAt(int p) {
+        return truncated[p];
     }
 
     /** The relative BRDF at {@code lambdaNm} per pixel, as BrdfMap.monochromatic. */

@@ -3,6 +3,9 @@ package diffract.render;
 import diffract.jrtr.GlTestSupport;
 import diffract.jrtr.Material;
 import diffract.jrtr.Shapes;
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfMapDifference;
+import diffract.optics.SyntheticPatches;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
@@ -13,11 +16,15 @@ import diffract.optics.PixelFilter;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.WindowPlacement;
+import diffract.precompute.TaylorTermComputer;
+import diffract.util.Reporter;
+import diffract.util.TestReport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 import javax.vecmath.Vector3f;
 
+import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -67,6 +74,53 @@ class GpuLobesTest {
             litFiltered += footprints[4 * p + 1] > 0.02 ? 1 : 0;
         }
         assertTrue(litFiltered > litPoint, "footprints spread the orders: " + litFiltered + " vs " + litPoint);
+    }
+
+    /**
+     * A map whose pixels reach more lobes than the GL lets one fragment sum (the 52 um scan on a 32 x 32 map: a pixel's
+     * box is 6 texels wide and its segment 60 long) says which pixels its loops left short: every pixel it does not
+     * flag equals the CPU's (lit mean CIEDE2000 0.05, p99 0.5, as GpuCpuAgreementTest), every flagged one is darker
+     * than the CPU's or as bright (lobes left out only take light away). On llvmpipe, which ends a SIMD group's loops after 65535 iterations, some pixels are flagged.
+     */
+    @Test
+    void pixelsWhoseLoopsWereEndedEarlyAreFlaggedAndTheOthersEqualTheCpu() {
+        GlTestSupport.assumeOffscreenGl();
+        HeightField scan = SyntheticPatches.elapheScan(512, 50, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L)
+                .meanSubtracted();
+        TaylorTerms terms = TaylorTermComputer.compute(scan, 20, Reporter.SILENT);
+        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
+                .pixelFilter(PixelFilter.BOX));
+        int size = 32;
+        Direction wi = Direction.fromSphericalDeg(30, 90);
+        float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(settings, scan, terms), wi, size, Reporter.SILENT);
+        float[] unflagged;
+        int flagged = 0;
+        int darker = 0;
+        String renderer;
+        try (GpuBrdfMap map = new GpuBrdfMap(terms, settings)) {
+            float[] gpu = map.xyz(wi, size);
+            renderer = map.info().renderer();
+            unflagged = gpu.clone();
+            for (int p = 0; p < size * size; p++) {
+                if (map.truncatedAt(p)) {
+                    flagged++;
+                    // float32 against double: within 1e-4 of the CPU's value, or below it
+                    darker += gpu[3 * p + 1] <= cpu[3 * p + 1] * (1 + 1e-4) + 1e-9 ? 1 : 0;
+                    System.arraycopy(cpu, 3 * p, unflagged, 3 * p, 3); // left out of the comparison
+                }
+            }
+            assertEquals(flagged, map.truncatedPixels());
+        }
+        BrdfMapDifference d = RenderTestSupport.difference(cpu, unflagged, size, wi);
+        String where = "52 um scan, 32 x 32, " + flagged + " pixels flagged, " + darker + " no brighter than the CPU: "
+                + d.summary();
+        TestReport.line(GpuLobesTest.class, where);
+        assertTrue(d.lit().mean() <= GpuCpuAgreementTest.MAX_LIT_MEAN && d.lit().p99() <= GpuCpuAgreementTest.MAX_LIT_P99,
+                where);
+        assertEquals(flagged, darker, where);
+        if (renderer.contains("llvmpipe")) {
+            assertTrue(flagged > 0, where);
+        }
     }
 
     /**
