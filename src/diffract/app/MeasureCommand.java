@@ -20,11 +20,11 @@ import java.util.concurrent.Callable;
 /**
  * {@code diffract measure SCENE}: renders the scene's mask (where the shape is) and its structural colour alone
  * (pigmentation off), and prints {@link IridescenceStatistics}: the shape's share of the frame, the share of
- * saturated structural colour, its patches and hues.
+ * saturated structural colour (of the frame and of the shape), its patches and hues.
  */
 @Command(name = "measure", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
         description = "Measure a scene's picture: the shape's share of the frame, saturated structural colour's "
-                + "share, its separate patches and hue bins (from a mask and a structural-colour-only render, "
+                + "share of the frame and of the shape, its separate patches and hue bins (from a mask and a structural-colour-only render, "
                 + "offscreen like 'diffract render').")
 final class MeasureCommand implements Callable<Integer> {
     @Mixin

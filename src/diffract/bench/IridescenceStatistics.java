@@ -103,10 +103,15 @@ public record IridescenceStatistics(double maskFraction, double saturatedFractio
         return new IridescenceStatistics((double) inMask / n, (double) count / n, sizes.size(), median, hueBins);
     }
 
+    /** Saturated structural colour's share of the animal (0 when the animal is not in the frame). */
+    public double saturatedShareOfShape() {
+        return maskFraction > 0 ? saturatedFraction / maskFraction : 0;
+    }
+
     @Override
     public String toString() {
         return String.format(Locale.ROOT, "snake %.1f %% of the frame, saturated structural colour %.2f %% of the frame "
-                + "in %d patches (median %d px), %d of 12 hue bins", 100 * maskFraction, 100 * saturatedFraction,
-                patches, medianPatchPx, hueBins);
+                + "(%.1f %% of the snake) in %d patches (median %d px), %d of 12 hue bins", 100 * maskFraction,
+                100 * saturatedFraction, 100 * saturatedShareOfShape(), patches, medianPatchPx, hueBins);
     }
 }

@@ -9,6 +9,9 @@ import org.knowm.xchart.style.markers.Marker;
 import org.knowm.xchart.style.markers.SeriesMarkers;
 
 import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
 
 import java.io.IOException;
 import java.nio.file.Files;
@@ -27,6 +30,10 @@ public final class ParetoPlot {
     /** The smallest error drawn (CIEDE2000 0.001 is a thousandth of a just-noticeable difference). */
     public static final double ERROR_FLOOR = 1e-3;
 
+    static final int WIDTH_PX = 1000;
+    private static final int TITLE_MARGIN_PX = 10;
+    private static final float MIN_TITLE_POINTS = 8f;
+
     /** One colour per patch (points and front), one marker shape per variant. */
     private static final Color[] PATCH_COLOURS = {new Color(0, 90, 200), new Color(200, 60, 0), new Color(0, 150, 60),
             new Color(140, 0, 160), new Color(120, 120, 0), new Color(0, 140, 160)};
@@ -37,9 +44,10 @@ public final class ParetoPlot {
     }
 
     public static void write(Path png, List<BenchResult> results, String title) throws IOException {
-        XYChart chart = new XYChartBuilder().width(1000).height(700).title(title)
+        XYChart chart = new XYChartBuilder().width(WIDTH_PX).height(700).title(title)
                 .xAxisTitle("GPU ms per frame (median, log)").yAxisTitle("mean CIEDE2000 vs CPU reference (lit pixels, log)")
                 .build();
+        chart.getStyler().setChartTitleFont(titleFont(chart.getStyler().getChartTitleFont(), title));
         chart.getStyler().setXAxisLogarithmic(true).setYAxisLogarithmic(true)
                 .setLegendPosition(Styler.LegendPosition.OutsideE)
                 .setChartBackgroundColor(Color.WHITE);
@@ -70,6 +78,24 @@ public final class ParetoPlot {
         String name = png.toString();
         BitmapEncoder.saveBitmap(chart, name.toLowerCase(Locale.ROOT).endsWith(".png")
                 ? name.substring(0, name.length() - 4) : name, BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    /**
+     * XChart draws its title on one line, centred, and cuts both ends of a title wider than the chart (a long GL
+     * renderer's name does that): the font shrinks until the title fits, down to {@link #MIN_TITLE_POINTS}.
+     */
+    static Font titleFont(Font font, String title) {
+        Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
+        try {
+            Font fitted = font;
+            while (fitted.getSize2D() > MIN_TITLE_POINTS
+                    && g.getFontMetrics(fitted).stringWidth(title) > WIDTH_PX - 2 * TITLE_MARGIN_PX) {
+                fitted = fitted.deriveFont(fitted.getSize2D() - 0.5f);
+            }
+            return fitted;
+        } finally {
+            g.dispose();
+        }
     }
 
     private static List<Double> xs(List<BenchResult> points) {

@@ -105,9 +105,10 @@ public final class Targets {
                     o.nmmVersusFlss1nm().mean(), o.nmmVersusFlss1nm().p95());
             String nmmRef = o.nmm() == null || o.flss1nm() == null ? "-" : String.format(Locale.ROOT, "%.3f, %.3f",
                     o.nmm().deltaEMean(), o.flss1nm().deltaEMean());
-            b.append(String.format(Locale.ROOT, "| %s | %.2f (%.3f) | %s | %s | %.1f | %s | %s | %s | %s |%n",
+            String speedUp = o.autoChoice().isEmpty() ? "-" : String.format(Locale.ROOT, "%.1f", o.speedUp());
+            b.append(String.format(Locale.ROOT, "| %s | %.2f (%.3f) | %s | %s | %s | %s | %s | %s | %s |%n",
                     o.patch(), o.flssThesis().msPerFrame(), o.flssThesis().deltaEMean(), choice, chosenNumbers,
-                    o.speedUp(), o.speedTargetMet() ? "yes" : "**no**", nmm, nmmRef,
+                    speedUp, o.speedTargetMet() ? "yes" : "**no**", nmm, nmmRef,
                     o.nmmVersusFlss1nm() == null ? "-" : o.nmmTargetMet() ? "yes" : "**no**"));
         }
         return b.toString();

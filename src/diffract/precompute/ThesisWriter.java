@@ -30,7 +30,10 @@ final class ThesisWriter {
 
     static void write(Path dir, TaylorTerms terms, ThesisFormat.Provenance provenance, Reporter reporter)
             throws IOException {
-        if (terms.pixelSizeXUm() != terms.pixelSizeYUm()) {
+        // Pixel sizes read from different headers (or computed as width / columns) differ in their last bits
+        // when they are equal: only a real difference is worth a warning.
+        if (Math.abs(terms.pixelSizeXUm() - terms.pixelSizeYUm())
+                > 1e-9 * Math.max(terms.pixelSizeXUm(), terms.pixelSizeYUm())) {
             reporter.warn(String.format(Locale.ROOT, "the thesis format has one pixel size dH; extrema.txt gets x's "
                     + "%.6g um (y is %.6g um, kept in %s only)", terms.pixelSizeXUm(), terms.pixelSizeYUm(),
                     ThesisFormat.EXTRAS_FILE));

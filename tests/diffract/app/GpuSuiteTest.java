@@ -34,6 +34,7 @@ class GpuSuiteTest {
 
     @Test
     @Tag("gl")
+    @Tag(GlTestSupport.LONG_TAG)
     void aTinySuiteWritesOneRowPerConfigurationWithTheRenderer(@TempDir Path dir) throws Exception {
         GlTestSupport.assumeOffscreenGl();
         Object[] result = CliTest.run("bench", "--gpu-suite", "--variants", "flss", "--suite-size", "48x27",

@@ -4,6 +4,7 @@ import diffract.colour.Srgb;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /** The picture statistics on a synthetic frame whose answer is known by construction. */
 class IridescenceStatisticsTest {
@@ -49,5 +50,8 @@ class IridescenceStatisticsTest {
         assertEquals(9, s.medianPatchPx());
         // pink below 30, red 40, yellow 103, green 136, cyan 197, blue 306 degrees of h_ab: six different bins
         assertEquals(6, s.hueBins());
+        // the README asks how much of the shape shows saturated colour: 56 of the animal's 2500 pixels
+        assertEquals(56 / 2500.0, s.saturatedShareOfShape(), 1e-12);
+        assertTrue(s.toString().contains("1.12 % of the frame (2.2 % of the snake)"), s.toString());
     }
 }

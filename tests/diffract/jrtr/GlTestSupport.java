@@ -20,6 +20,11 @@ import java.util.Optional;
 public final class GlTestSupport {
     /** JUnit tag of the tests that need a window, hence an X display. */
     public static final String WINDOW_TAG = "window";
+    /**
+     * JUnit tag of the sweeps and reports that take a minute on a software rasteriser: README's test command leaves
+     * them out (pom.xml's {@code diffract.excludedGroups}) and {@code .ci/run} runs them after it.
+     */
+    public static final String LONG_TAG = "long";
 
     private GlTestSupport() {
     }

@@ -15,10 +15,12 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Locale;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -143,6 +145,31 @@ class ThesisFormatTest {
         Reporter.Collecting asked = new Reporter.Collecting();
         ThesisFormat.read(dir, ThesisFormat.HeightUnit.METRES, asked);
         assertTrue(asked.infos().stream().anyMatch(s -> s.contains("heights taken as metres (as asked")));
+    }
+
+    @Test
+    void onlyPixelSizesThatReallyDifferAreWarnedAbout() throws IOException {
+        TaylorTerms terms = ourTerms(4, 5, 2, 3);
+        // 0.7 um over 7 rows and 0.1 um per column are the same size, computed two ways (last bits differ)
+        double rowStepUm = 0.7 / 7;
+        assertNotEquals(0.1, rowStepUm, 0.0);
+        TaylorTerms sameSize = new TaylorTerms(4, 5, 0.1, rowStepUm, terms.maxAbsHeightUm(), termArrays(terms));
+        Reporter.Collecting same = new Reporter.Collecting();
+        ThesisFormat.write(tmp.resolve("same"), sameSize, new ThesisFormat.Provenance("x", null, null), same);
+        assertEquals(List.of(), same.warnings());
+        TaylorTerms otherSize = new TaylorTerms(4, 5, 0.1, 0.1001, terms.maxAbsHeightUm(), termArrays(terms));
+        Reporter.Collecting other = new Reporter.Collecting();
+        ThesisFormat.write(tmp.resolve("other"), otherSize, new ThesisFormat.Provenance("x", null, null), other);
+        assertEquals(1, other.warnings().size(), other.warnings().toString());
+        assertTrue(other.warnings().get(0).contains("y is 0.100100 um"), other.warnings().get(0));
+    }
+
+    private static float[][] termArrays(TaylorTerms terms) {
+        float[][] data = new float[terms.highestOrder() + 1][];
+        for (int n = 0; n <= terms.highestOrder(); n++) {
+            data[n] = terms.termData(n);
+        }
+        return data;
     }
 
     @Test

@@ -42,6 +42,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * pixels wide).
  */
 @Tag("gl")
+@Tag(GlTestSupport.LONG_TAG)
 class ExtremesReportTest {
     private static final int SIZE = 24;
     private static final double[] THETAS_DEG = {0, 60, 89.9};
