@@ -33,7 +33,9 @@ final class DemoCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
-    @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
+    @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR",
+            description = "The folder for the pictures (demo.png, or demo-brdfmap.png without OpenGL) and, when the "
+                    + "scene is read from the jar, its copy (default ${DEFAULT-VALUE}).")
     Path outputDir;
 
     @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,

@@ -19,10 +19,14 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
-/** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
+/**
+ * {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG, or with
+ * {@code --turntable} many frames into a looping GIF or a PNG sequence.
+ */
 @Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and "
-                + "shaders as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md).")
+        description = "Render one frame of the viewer offscreen and write it as a PNG (with --turntable, frames "
+                + "going round into a looping GIF or a numbered PNG sequence): the same model, renderer and shaders "
+                + "as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md).")
 final class RenderCommand implements Callable<Integer> {
     @Mixin
     GpuOption gpu;
@@ -33,9 +37,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png",
-            description = "PNG to write; with --turntable a .gif (animated, looping) or a .png name for a numbered "
-                    + "sequence.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png|OUT.gif",
+            description = "The PNG to write; with --turntable a .gif (animated, looping), or a .png name for the "
+                    + "numbered sequence OUT-000.png, OUT-001.png, ...")
     Path output;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Turntable:%n")
@@ -61,7 +65,6 @@ final class RenderCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         options.validate();
         Integer frames = turntable.frames;
-        String name = output.getFileName().toString().toLowerCase(Locale.ROOT);
         if (frames == null && turntable.orbitLight) {
             throw new UserInputException("--orbit-light goes with --turntable FRAMES");
         }
@@ -71,11 +74,7 @@ final class RenderCommand implements Callable<Integer> {
         if (!(turntable.frameMs >= 10 && turntable.frameMs <= 10_000)) {
             throw new UserInputException("--frame-ms must be in 10..10000 milliseconds, got " + turntable.frameMs);
         }
-        if (!name.endsWith(".png") && !(frames != null && name.endsWith(".gif"))) {
-            throw new UserInputException(frames == null ? "render writes PNG files; name the output OUT.png"
-                    : "a turntable is written as OUT.gif or as a PNG sequence OUT-000.png, ...: name the output so");
-        }
-        OutputPaths.requireWritableFile(output, "-o", frames == null ? "render.png" : "turntable.gif");
+        OutputPaths.require(outputs(frames));
         long start = System.nanoTime();
         Reporter reporter = quiet.reporter();
         Scene.ImageSize image = options.imageSize(new Scene.ImageSize(512, 512));
@@ -97,5 +96,21 @@ final class RenderCommand implements Callable<Integer> {
                 setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
                 setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /** What the command writes: one PNG, a GIF, or every name of a PNG sequence. */
+    private OutputPaths.Output[] outputs(Integer frames) {
+        if (frames == null) {
+            return new OutputPaths.Output[] {OutputPaths.file("-o", output, "render.png", ".png")};
+        }
+        Path name = output.getFileName();
+        if (name == null || !name.toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+            return new OutputPaths.Output[] {OutputPaths.file("-o", output, "turntable.gif", ".gif", ".png")};
+        }
+        OutputPaths.Output[] sequence = new OutputPaths.Output[frames];
+        for (int k = 0; k < frames; k++) {
+            sequence[k] = OutputPaths.file("-o", Turntable.sequenceName(output, k), "turntable-000.png", ".png");
+        }
+        return sequence;
     }
 }
