@@ -186,8 +186,12 @@ class OutputsCliTest {
         Path exr = dir.resolve("x.exr");
         assertRefused("--pfm " + exr + ": cannot write .exr files; --pfm writes .pfm (e.g. map.pfm)",
                 brdfmap("-o", dir.resolve("m.png").toString(), "--pfm", exr.toString()));
-        assertRefused("-o " + exr + ": cannot write .exr files; -o writes .png (e.g. render.png)",
-                "render", "--synthetic", "blazed", "--size", "16x16", "-o", exr.toString());
+        assertRefused("-o " + jpg + ": cannot write .jpg files; -o writes .png or .exr (e.g. render.png)",
+                "render", "--synthetic", "blazed", "--size", "16x16", "-o", jpg.toString());
+        assertRefused("-o " + exr + ": cannot write .exr files; -o writes .gif or .png (e.g. turntable.gif)",
+                "render", "--synthetic", "blazed", "--size", "16x16", "--turntable", "4", "-o", exr.toString());
+        assertRefused("--exr-half goes with an OpenEXR output: -o OUT.exr", "render", "--synthetic", "blazed",
+                "--size", "16x16", "--exr-half", "-o", dir.resolve("r.png").toString());
         assertRefused("-o " + jpg + ": cannot write .jpg files; -o writes .gif or .png (e.g. turntable.gif)",
                 "render", "--synthetic", "blazed", "--size", "16x16", "--turntable", "4", "-o", jpg.toString());
         Path png = dir.resolve("x.png");
