@@ -140,6 +140,17 @@ class OutputsCliTest {
         assertRefused("-o " + results + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
                 + "results.md", "bench", "--quick", "-o", dir.resolve("bench").toString());
         assertFifo(results);
+
+        // the files of fixed name measure --save and the demo write into their folders
+        Path mask = fifo(dir.resolve("saved").resolve("mask.png"));
+        assertRefused("--save " + mask + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
+                + "mask.png", "measure", "--synthetic", "blazed", "--size", "16x16", "--save",
+                dir.resolve("saved").toString());
+        assertFifo(mask);
+        Path demo = fifo(dir.resolve("demo").resolve("demo.png"));
+        assertRefused("-o " + demo + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
+                + "demo.png", "demo", "-o", dir.resolve("demo").toString());
+        assertFifo(demo);
     }
 
     @Test
