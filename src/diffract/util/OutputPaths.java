@@ -99,11 +99,19 @@ public final class OutputPaths {
     }
 
     private static void requireDistinct(List<Output> outputs) {
-        for (int i = 0; i < outputs.size(); i++) {
-            for (int j = i + 1; j < outputs.size(); j++) {
-                Output a = outputs.get(i);
-                Output b = outputs.get(j);
-                if (same(a.path(), b.path())) {
+        int n = outputs.size();
+        Path[] normalised = new Path[n];
+        boolean[] exists = new boolean[n];
+        for (int i = 0; i < n; i++) {
+            normalised[i] = outputs.get(i).path().toAbsolutePath().normalize();
+            exists[i] = Files.exists(outputs.get(i).path());
+        }
+        for (int i = 0; i < n; i++) {
+            for (int j = i + 1; j < n; j++) {
+                if (normalised[i].equals(normalised[j])
+                        || exists[i] && exists[j] && sameFile(outputs.get(i).path(), outputs.get(j).path())) {
+                    Output a = outputs.get(i);
+                    Output b = outputs.get(j);
                     throw new UserInputException(a.label() + " " + a.path() + " and " + b.label() + " " + b.path()
                             + " are the same file; give each output its own name");
                 }
@@ -111,12 +119,10 @@ public final class OutputPaths {
         }
     }
 
-    private static boolean same(Path a, Path b) {
-        if (a.toAbsolutePath().normalize().equals(b.toAbsolutePath().normalize())) {
-            return true;
-        }
-        try { // links and other spellings of one existing file
-            return Files.exists(a) && Files.exists(b) && Files.isSameFile(a, b);
+    /** Links and other spellings of one existing file. */
+    private static boolean sameFile(Path a, Path b) {
+        try {
+            return Files.isSameFile(a, b);
         } catch (IOException e) {
             return false;
         }

@@ -100,6 +100,15 @@ class OutputPathsTest {
     }
 
     @Test
+    void aLinkToAnotherOutputIsTheSameFile() throws IOException {
+        Path map = Files.writeString(dir.resolve("m.exr"), "x");
+        Path link = Files.createSymbolicLink(dir.resolve("l.exr"), map);
+        assertEquals("-o " + map + " and --exr " + link + " are the same file; give each output its own name",
+                refusal(() -> OutputPaths.require(OutputPaths.file("-o", map, "map.png", ".png", ".exr"),
+                        OutputPaths.file("--exr", link, "map.exr", ".exr"))));
+    }
+
+    @Test
     void anExtensionTheCommandCannotWriteIsRefusedWithTheOnesItCan() {
         Path jpg = dir.resolve("x.jpg");
         assertEquals("-o " + jpg + ": cannot write .jpg files; -o writes .png or .exr (e.g. map.png)",
