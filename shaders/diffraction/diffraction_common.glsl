@@ -76,6 +76,16 @@ vec3 srgbEncode(vec3 linear) {
     return vec3(srgbEncode(linear.r), srgbEncode(linear.g), srgbEncode(linear.b));
 }
 
+// What a frame's pixel stores (FrameOutput): display sRGB, clipped; with LINEAR_OUTPUT the linear value itself,
+// unclipped, for a still kept as floats.
+vec3 frameOutput(vec3 linear) {
+#ifdef LINEAR_OUTPUT
+    return linear;
+#else
+    return srgbEncode(linear);
+#endif
+}
+
 // Srgb.decode: pigmentation textures hold display-encoded bytes; blending happens in linear light.
 float srgbDecode(float encoded) {
     return encoded <= 12.92 * 0.0031308 ? encoded / 12.92 : pow((encoded + 0.055) / 1.055, 2.4);

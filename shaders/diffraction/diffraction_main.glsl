@@ -68,7 +68,7 @@ void main() {
 #ifdef MONOCHROMATIC
     fragColor = vec4(relativeBrdf(omegaI, wr, lambdaNm), 0.0, 0.0, 1.0);
 #elif defined(DISPLAY_SRGB)
-    fragColor = vec4(srgbEncode(max(linearSrgbFromXyz(exposure * diffractionXyz(omegaI, wr)), vec3(0.0))), 1.0);
+    fragColor = vec4(frameOutput(max(linearSrgbFromXyz(exposure * diffractionXyz(omegaI, wr)), vec3(0.0))), 1.0);
 #else
     vec3 xyz = diffractionXyz(omegaI, wr);
 #ifdef SPECTRUM_REPORTS_TRUNCATION
@@ -98,7 +98,7 @@ uniform float diffuseWeight;      // w_d of Algorithm 4
 void main() {
 #ifdef STAGE
     vec3 staged = toneMap(stagedSurfaceLinear());
-    fragColor = vec4(srgbEncode(staged), 1.0);
+    fragColor = vec4(frameOutput(staged), 1.0);
     return;
 #endif
     vec3 wi = safeNormalize(omegaITangent);
@@ -114,7 +114,7 @@ void main() {
     float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
     linear = blendPigmentation(linear, pigment, fresnel, wi.z, diffuseWeight);
 #endif
-    fragColor = vec4(srgbEncode(linear), 1.0);
+    fragColor = vec4(frameOutput(linear), 1.0);
 }
 #endif
 

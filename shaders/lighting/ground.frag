@@ -39,5 +39,9 @@ void main() {
     vec3 irradiance = vec3(cosKey * keyLightVisibility(groundWorldPosition, n, lightDirection[0]))
             + environmentIrradiance(n);
     vec3 c = toneMap(albedo * irradiance);
+#ifdef LINEAR_OUTPUT
+    fragColor = vec4(c, 1.0); // FrameOutput.LINEAR: linear light, as the surface's
+#else
     fragColor = vec4(srgbEncodeChannel(c.r), srgbEncodeChannel(c.g), srgbEncodeChannel(c.b), 1.0);
+#endif
 }

@@ -1,6 +1,7 @@
 // Tone mapping of linear sRGB to displayable [0, 1], the GLSL twin of diffract.colour.ToneMapping (its class
 // comment is the specification). TONE_MAP_OPERATOR: 0 clip, 1 Reinhard (SIGGRAPH 2002 eq. 4, on luminance, hue
-// kept), 2 ACES (Narkowicz 2015 fit, per channel).
+// kept), 2 ACES (Narkowicz 2015 fit, per channel). With LINEAR_OUTPUT (FrameOutput.LINEAR) only the exposure's
+// stops apply: a still kept as floats holds linear light, and whoever shows it tone maps it.
 #ifndef TONE_MAPPING_GLSL
 #define TONE_MAPPING_GLSL
 #ifndef TONE_MAP_OPERATOR
@@ -12,7 +13,9 @@ uniform float toneWhiteLuminance; // Reinhard's Y_white
 
 vec3 toneMap(vec3 linear) {
     vec3 c = max(linear * toneExposureScale, vec3(0.0));
-#if TONE_MAP_OPERATOR == 1
+#if defined(LINEAR_OUTPUT)
+    return c;
+#elif TONE_MAP_OPERATOR == 1
     float y = dot(c, vec3(0.2126, 0.7152, 0.0722));
     if (y <= 0.0) {
         return vec3(0.0);

@@ -169,7 +169,7 @@ final class BenchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        OutputPaths.requireWritableFolder(outputDir, "-o");
+        OutputPaths.require(outputs());
         if (gpuSuite) {
             HeadlessGL.require();
             long start = System.nanoTime();
@@ -280,6 +280,19 @@ final class BenchCommand implements Callable<Integer> {
                 (System.nanoTime() - start) * 1e-9, outputDir.resolve("filtering.csv"),
                 outputDir.resolve("filtering.md"), md);
         return 0;
+    }
+
+    /** The output folder and the files of fixed name the run writes into it. */
+    private OutputPaths.Output[] outputs() {
+        List<String> names = gpuSuite ? List.of("gpu-suite.csv", "gpu-suite.md")
+                : filtering ? List.of("filtering.csv", "filtering.md")
+                : List.of("results.csv", "results.md", "pareto.md", "targets.md", "machine.txt", "pareto.png");
+        List<OutputPaths.Output> outputs = new ArrayList<>();
+        outputs.add(OutputPaths.folder("-o", outputDir));
+        for (String name : names) {
+            outputs.add(OutputPaths.file("-o", outputDir.resolve(name), name, name.substring(name.lastIndexOf('.'))));
+        }
+        return outputs.toArray(OutputPaths.Output[]::new);
     }
 
     private boolean isCustom() {

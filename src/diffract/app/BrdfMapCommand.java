@@ -24,6 +24,7 @@ import diffract.precompute.ThesisFormat;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
 import diffract.util.ImageFiles;
+import diffract.util.OpenExr;
 import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -61,7 +62,9 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
     double thetaIDeg;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png", description = "PNG to write.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png|MAP.exr",
+            description = "The map to write: a PNG (display-encoded at the --exposure), or an OpenEXR file of the "
+                    + "linear values (as --exr).")
     Path output;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Light:%n")
@@ -113,7 +116,8 @@ final class BrdfMapCommand implements Callable<Integer> {
 
         @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto", converter = OptionTypes.Exposure.Converter.class,
                 description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}); auto "
-                        + "maps the brightest diffracted pixel (not the specular highlight) to 1. The PFM is never scaled.")
+                        + "maps the brightest diffracted pixel (not the specular highlight) to 1. PFM and OpenEXR files "
+                        + "are never scaled.")
         OptionTypes.Exposure exposure = new OptionTypes.Exposure(1.0);
 
         @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH",
@@ -123,14 +127,26 @@ final class BrdfMapCommand implements Callable<Integer> {
         @Option(names = "--pfm", paramLabel = "MAP.pfm",
                 description = "Also write floats: linear sRGB (unclipped), or the relative BRDF with --lambda.")
         Path pfm;
+
+        @Option(names = "--exr", paramLabel = "MAP.exr",
+                description = "Also write the floats of --pfm as OpenEXR: R, G, B of linear sRGB with the Rec. 709 "
+                        + "primaries and D65 white in the header, or with --lambda one channel Y.")
+        Path exr;
+
+        @Option(names = "--exr-half",
+                description = "OpenEXR outputs store half floats (11 significant bits, finite up to 65504) instead "
+                        + "of 32-bit floats.")
+        boolean exrHalf;
     }
 
     @Override
     public Integer call() throws IOException {
         Engine where = validate();
-        OutputPaths.requireWritableFile(output, "-o", "map.png");
-        if (picture.pfm != null) {
-            OutputPaths.requireWritableFile(picture.pfm, "--pfm", "map.pfm");
+        OutputPaths.require(OutputPaths.file("-o", output, "map.png", PNG, EXR),
+                OutputPaths.file("--pfm", picture.pfm, "map.pfm", ".pfm"),
+                OutputPaths.file("--exr", picture.exr, "map.exr", EXR));
+        if (picture.exrHalf && picture.exr == null && !outputIsExr()) {
+            throw new UserInputException("--exr-half goes with an OpenEXR output: --exr MAP.exr or -o MAP.exr");
         }
         Reporter reporter = quiet.reporter();
         long start = System.nanoTime();
@@ -159,6 +175,14 @@ final class BrdfMapCommand implements Callable<Integer> {
                 settings.variant().label(), where == Engine.GPU ? ", gpu" : "",
                 light.lambdaNm != null ? ", " + light.lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    private static final String PNG = ".png";
+    private static final String EXR = ".exr";
+
+    private boolean outputIsExr() {
+        return output.getFileName() != null
+                && output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(EXR);
     }
 
     /** Everything that needs no file: bad usage fails before minutes of work. Returns where the map is computed. */
@@ -263,7 +287,10 @@ final class BrdfMapCommand implements Callable<Integer> {
                 : BrdfMap.xyz(cpu, wi, picture.size, reporter);
     }
 
-    /** The PNG (display-encoded at the exposure) and the optional PFM (linear) of a colour or monochromatic map. */
+    /**
+     * The PNG (display-encoded at the exposure) or OpenEXR (linear) of a colour or monochromatic map, and the optional
+     * PFM and OpenEXR (linear, never exposed).
+     */
     private void write(float[] map, Direction wi, BrdfSettings settings, HeightField field, Reporter reporter)
             throws IOException {
         int channels = light.lambdaNm != null ? 1 : 3;
@@ -292,9 +319,20 @@ final class BrdfMapCommand implements Callable<Integer> {
                 linear[p + k] = (float) lin[k];
             }
         }
-        ImageFiles.writePng(output, display, picture.size, picture.size, channels);
+        OpenExr.Precision precision = picture.exrHalf ? OpenExr.Precision.HALF : OpenExr.Precision.FLOAT;
+        String comment = light.lambdaNm != null
+                ? String.format(Locale.ROOT, "diffract BRDF map: the relative BRDF at %s nm", light.lambdaNm)
+                : "diffract BRDF map: linear sRGB, unclipped, not exposed";
+        if (outputIsExr()) {
+            OpenExr.write(output, linear, picture.size, picture.size, channels, precision, comment);
+        } else {
+            ImageFiles.writePng(output, display, picture.size, picture.size, channels);
+        }
         if (picture.pfm != null) {
             ImageFiles.writePfm(picture.pfm, linear, picture.size, picture.size, channels);
+        }
+        if (picture.exr != null) {
+            OpenExr.write(picture.exr, linear, picture.size, picture.size, channels, precision, comment);
         }
     }
 
@@ -305,8 +343,10 @@ final class BrdfMapCommand implements Callable<Integer> {
         for (float value : luminance) {
             brightest = Math.max(brightest, value);
         }
+        // an OpenEXR map is not exposed: no exposure can hide its light, only a map without any is worth a word
+        boolean exposureShowsAll = picture.exposure.automatic() || outputIsExr();
         DarkMapNotice.check(brightest, AutoExposure.brightestDiffracted(luminance, picture.size, -wi.x(), -wi.y()),
-                exposure, picture.exposure.automatic(), settings, field.widthUm(), field.heightExtentUm(),
+                exposure, exposureShowsAll, settings, field.widthUm(), field.heightExtentUm(),
                 picture.size).ifPresent(n -> {
                     if (n.warning()) {
                         reporter.warn(n.text());

@@ -19,7 +19,8 @@ import java.util.concurrent.Callable;
                 + "size. * marks the one --patch reads by default (the first in a length unit); --channel NAME|INDEX "
                 + "chooses another.")
 final class ChannelsCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE")
+    @Parameters(index = "0", paramLabel = "FILE", description = "The scan file (.gwy or .ibw; other height-field "
+            + "files hold one field and no channels).")
     Path file;
 
     @Mixin

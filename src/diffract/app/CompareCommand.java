@@ -23,10 +23,11 @@ import java.util.concurrent.Callable;
                 + "converted to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over "
                 + "the whole disk and over the lit pixels (exposed Y above 1 %% of white in either map).")
 final class CompareCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "A.pfm")
+    @Parameters(index = "0", paramLabel = "A.pfm", description = "A colour map written by brdfmap --pfm.")
     Path first;
 
-    @Parameters(index = "1", paramLabel = "B.pfm")
+    @Parameters(index = "1", paramLabel = "B.pfm",
+            description = "The map to compare it with (e.g. the reference), of the same size.")
     Path second;
 
     @Option(names = "--exposure", defaultValue = "1", paramLabel = "E",

@@ -5,6 +5,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 
+import diffract.util.ImageFiles;
 import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 
@@ -33,7 +34,9 @@ final class DemoCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
-    @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR", description = "Default ${DEFAULT-VALUE}.")
+    @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR",
+            description = "The folder for the pictures (demo.png, or demo-brdfmap.png without OpenGL) and, when the "
+                    + "scene is read from the jar, its copy (default ${DEFAULT-VALUE}).")
     Path outputDir;
 
     @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
@@ -57,6 +60,10 @@ final class DemoCommand implements Callable<Integer> {
      * periodic patch into bands that a 640 x 400 picture resolves (with 65 um they are a fraction of a pixel wide).
      */
     static final String DEFAULT_SCENE = "snake-elaphe.json";
+    /** The offscreen picture of the view, in the output folder. */
+    static final String PICTURE = "demo.png";
+    /** Without OpenGL: the CPU BRDF map, in the output folder. */
+    static final String CPU_MAP = "demo-brdfmap.png";
 
     /**
      * The default scene as a file: the repository's {@code assets/scenes/} when run from its root, else the copy
@@ -71,9 +78,9 @@ final class DemoCommand implements Callable<Integer> {
             if (in == null) {
                 throw new UserInputException("the default scene " + DEFAULT_SCENE + " is missing from the jar; rebuild it");
             }
-            Files.createDirectories(outputDir);
             Path copy = outputDir.resolve(DEFAULT_SCENE);
-            Files.write(copy, in.readAllBytes());
+            byte[] scene = in.readAllBytes();
+            ImageFiles.writeAtomically(copy, out -> out.write(scene));
             return copy;
         }
     }
@@ -84,14 +91,18 @@ final class DemoCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        OutputPaths.requireWritableFolder(outputDir, "-o");
+        // the folder, and what the demo may write there: the scene's copy, the picture, or the CPU map instead
+        OutputPaths.require(OutputPaths.folder("-o", outputDir),
+                OutputPaths.file("-o", outputDir.resolve(DEFAULT_SCENE), DEFAULT_SCENE, ".json"),
+                OutputPaths.file("-o", outputDir.resolve(PICTURE), PICTURE, ".png"),
+                OutputPaths.file("-o", outputDir.resolve(CPU_MAP), CPU_MAP, ".png"));
         boolean screen = ViewCommand.noDisplayProblem(System.getenv(), System.getProperty("os.name", "")).isEmpty();
         boolean gl = HeadlessGL.problem().isEmpty();
         if (screen) {
             return Main.execute(quietly("view", defaultScene(outputDir).toString(), "--size", sizeText()));
         }
         if (gl) {
-            Path png = outputDir.resolve("demo.png");
+            Path png = outputDir.resolve(PICTURE);
             List<String> render = new ArrayList<>(List.of("render", defaultScene(outputDir).toString(), "--size",
                     sizeText(), "-o", png.toString()));
             render.addAll(gpu.arguments());
@@ -102,7 +113,7 @@ final class DemoCommand implements Callable<Integer> {
             return code;
         }
         System.err.println(HeadlessGL.problem().orElse("no OpenGL") + ": CPU BRDF map instead");
-        Path png = outputDir.resolve("demo-brdfmap.png");
+        Path png = outputDir.resolve(CPU_MAP);
         int code = Main.execute(quietly("brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--variant",
                 "reference", "--exposure", "auto", "--size", "256", "-o", png.toString()));
         if (code == 0) {

@@ -36,6 +36,9 @@ final class MeasureCommand implements Callable<Integer> {
     @Mixin
     GpuOption gpu;
 
+    private static final String MASK = "mask.png";
+    private static final String STRUCTURAL = "structural.png";
+
     @Mixin
     QuietOption quiet;
 
@@ -43,7 +46,9 @@ final class MeasureCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         options.validate();
         if (saveDir != null) {
-            OutputPaths.requireWritableFolder(saveDir, "--save");
+            OutputPaths.require(OutputPaths.folder("--save", saveDir),
+                    OutputPaths.file("--save", saveDir.resolve(MASK), MASK, ".png"),
+                    OutputPaths.file("--save", saveDir.resolve(STRUCTURAL), STRUCTURAL, ".png"));
         }
         Reporter reporter = quiet.reporter();
         Scene.ImageSize size = options.imageSize(new Scene.ImageSize(512, 512));
@@ -67,8 +72,8 @@ final class MeasureCommand implements Callable<Integer> {
         }
         if (saveDir != null) {
             Files.createDirectories(saveDir);
-            ImageFiles.writePng(saveDir.resolve("mask.png"), mask, width, height, 3);
-            ImageFiles.writePng(saveDir.resolve("structural.png"), structural, width, height, 3);
+            ImageFiles.writePng(saveDir.resolve(MASK), mask, width, height, 3);
+            ImageFiles.writePng(saveDir.resolve(STRUCTURAL), structural, width, height, 3);
         }
         System.out.println(IridescenceStatistics.of(maskChannel, structural, width, height));
         return 0;

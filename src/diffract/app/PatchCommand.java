@@ -30,7 +30,8 @@ final class PatchCommand implements Callable<Integer> {
     @Mixin
     ProceduralOptions parameters;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf",
+            description = "The Gwyddion Simple Field to write (heights and pixel size in metres).")
     Path output;
 
     @Mixin
@@ -41,10 +42,7 @@ final class PatchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (!output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gsf")) {
-            throw new UserInputException("patch writes Gwyddion .gsf files; name the output FILE.gsf");
-        }
-        OutputPaths.requireWritableFile(output, "-o", "patch.gsf");
+        OutputPaths.requireWritableFile(output, "-o", "patch.gsf", ".gsf");
         ProceduralPatches.Spec spec = parameters.spec(PatchCatalogue.named(name));
         if (spec.kind().isGrating()) {
             checkGratingSize(spec);

@@ -1,9 +1,11 @@
 package diffract.app;
 
 import diffract.jrtr.OffscreenTarget;
+import diffract.render.FrameOutput;
 import diffract.scene.DisplayMode;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
+import diffract.util.OpenExr;
 import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -19,10 +21,15 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
-/** {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG. */
+/**
+ * {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG (or, as linear
+ * light, an OpenEXR file), or with {@code --turntable} many frames into a looping GIF or a PNG sequence.
+ */
 @Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Render one frame of the viewer offscreen and write it as a PNG: the same model, renderer and "
-                + "shaders as 'diffract view', without a window or X server (headless EGL; see docs/headless-gl.md).")
+        description = "Render one frame of the viewer offscreen and write it as a PNG, or as an OpenEXR file of "
+                + "linear light (with --turntable, frames going round into a looping GIF or a numbered PNG "
+                + "sequence): the same model, renderer and shaders as 'diffract view', without a window or X server "
+                + "(headless EGL; see docs/headless-gl.md).")
 final class RenderCommand implements Callable<Integer> {
     @Mixin
     GpuOption gpu;
@@ -33,10 +40,17 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png",
-            description = "PNG to write; with --turntable a .gif (animated, looping) or a .png name for a numbered "
-                    + "sequence.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png|OUT.exr|OUT.gif",
+            description = "The PNG to write (tone mapped, display sRGB), or an OpenEXR file of the frame's linear "
+                    + "light (linear sRGB times the exposure, neither tone mapped nor clipped); with --turntable a "
+                    + ".gif (animated, looping), or a .png name for the numbered sequence OUT-000.png, OUT-001.png, "
+                    + "...")
     Path output;
+
+    @Option(names = "--exr-half",
+            description = "With -o OUT.exr: store half floats (11 significant bits, finite up to 65504) instead of "
+                    + "32-bit floats.")
+    boolean exrHalf;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Turntable:%n")
     TurntableOptions turntable = new TurntableOptions();
@@ -61,7 +75,6 @@ final class RenderCommand implements Callable<Integer> {
     public Integer call() throws IOException {
         options.validate();
         Integer frames = turntable.frames;
-        String name = output.getFileName().toString().toLowerCase(Locale.ROOT);
         if (frames == null && turntable.orbitLight) {
             throw new UserInputException("--orbit-light goes with --turntable FRAMES");
         }
@@ -71,22 +84,26 @@ final class RenderCommand implements Callable<Integer> {
         if (!(turntable.frameMs >= 10 && turntable.frameMs <= 10_000)) {
             throw new UserInputException("--frame-ms must be in 10..10000 milliseconds, got " + turntable.frameMs);
         }
-        if (!name.endsWith(".png") && !(frames != null && name.endsWith(".gif"))) {
-            throw new UserInputException(frames == null ? "render writes PNG files; name the output OUT.png"
-                    : "a turntable is written as OUT.gif or as a PNG sequence OUT-000.png, ...: name the output so");
+        OutputPaths.require(outputs(frames));
+        boolean linear = frames == null && output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".exr");
+        if (exrHalf && !linear) {
+            throw new UserInputException("--exr-half goes with an OpenEXR output: -o OUT.exr");
         }
-        OutputPaths.requireWritableFile(output, "-o", frames == null ? "render.png" : "turntable.gif");
         long start = System.nanoTime();
         Reporter reporter = quiet.reporter();
         Scene.ImageSize image = options.imageSize(new Scene.ImageSize(512, 512));
         SceneSetup setup = options.setup(image, reporter);
         ViewerModel model = ViewerModel.load(setup, reporter);
         model.bakeIfNeeded(reporter);
-        ViewerRenderer renderer = new ViewerRenderer(model);
+        ViewerRenderer renderer = new ViewerRenderer(model, linear ? FrameOutput.LINEAR : FrameOutput.DISPLAY);
         try (OffscreenTarget target = new OffscreenTarget(renderer)) {
             if (frames != null) {
                 Turntable.render(target, renderer, model, frames, turntable.orbitLight, output, image,
                         turntable.frameMs, reporter);
+            } else if (linear) {
+                OpenExr.write(output, target.renderRgb(image.width(), image.height()), image.width(), image.height(),
+                        3, exrHalf ? OpenExr.Precision.HALF : OpenExr.Precision.FLOAT,
+                        "diffract render: linear sRGB times the exposure, not tone mapped, not clipped");
             } else {
                 target.writePng(output, image.width(), image.height());
             }
@@ -97,5 +114,21 @@ final class RenderCommand implements Callable<Integer> {
                 setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
                 setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /** What the command writes: one PNG or OpenEXR file, a GIF, or every name of a PNG sequence. */
+    private OutputPaths.Output[] outputs(Integer frames) {
+        if (frames == null) {
+            return new OutputPaths.Output[] {OutputPaths.file("-o", output, "render.png", ".png", ".exr")};
+        }
+        Path name = output.getFileName();
+        if (name == null || !name.toString().toLowerCase(Locale.ROOT).endsWith(".png")) {
+            return new OutputPaths.Output[] {OutputPaths.file("-o", output, "turntable.gif", ".gif", ".png")};
+        }
+        OutputPaths.Output[] sequence = new OutputPaths.Output[frames];
+        for (int k = 0; k < frames; k++) {
+            sequence[k] = OutputPaths.file("-o", Turntable.sequenceName(output, k), "turntable-000.png", ".png");
+        }
+        return sequence;
     }
 }

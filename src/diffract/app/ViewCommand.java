@@ -4,6 +4,7 @@ import diffract.jrtr.DisplayCheck;
 import diffract.optics.Variant;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
+import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.KeyBindings;
@@ -11,7 +12,9 @@ import diffract.viewer.ViewerModel;
 import diffract.viewer.ViewerWindow;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.nio.file.Path;
 import java.util.Map;
@@ -39,6 +42,9 @@ final class ViewCommand implements Callable<Integer> {
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
     Path screenshotDir;
 
+    @Spec
+    CommandSpec spec;
+
     @Option(names = "--screenshot-when-refined", hidden = true,
             description = "Save one screenshot of the window (as the S key does) once its picture is refined, then "
                     + "quit (docs/viewer-screenshot.sh).")
@@ -49,6 +55,10 @@ final class ViewCommand implements Callable<Integer> {
         // interactive: the baked table of the lobes method (one lookup per pixel, baked behind the preview)
         options.defaultVariant(Variant.BAKED);
         options.validate();
+        if (spec.commandLine().getParseResult().hasMatchedOption("--screenshot-dir")) {
+            // the default folder is made when the first screenshot is saved; a folder named is checked now
+            OutputPaths.requireWritableFolder(screenshotDir, "--screenshot-dir");
+        }
         Optional<String> problem = noDisplayProblem(System.getenv(), System.getProperty("os.name", ""));
         if (problem.isPresent()) {
             throw new UserInputException(problem.get());

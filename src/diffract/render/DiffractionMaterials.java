@@ -46,8 +46,9 @@ public final class DiffractionMaterials {
      * Set {@code omegaI} with {@link #setLight}, {@code mapSizePx}, and {@code mapOriginPx} (the map's lower-left
      * corner in the viewport, to centre it) before drawing.
      */
-    public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure) {
-        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures));
+    public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure,
+                                             FrameOutput output) {
+        Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures, output));
         return common(m, textures, settings).setFloat("exposure", exposure);
     }
 
@@ -57,8 +58,14 @@ public final class DiffractionMaterials {
      */
     public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                    Texture2D pigmentation, float diffuseWeight) {
-        Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.SURFACE,
-                false, pigmentation != null));
+        return surface(textures, settings, exposure, pigmentation, diffuseWeight, FrameOutput.DISPLAY);
+    }
+
+    /** As {@link #surface(DiffractionTextures, BrdfSettings, float, Texture2D, float)}, its pixels {@code output}. */
+    public static Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure,
+                                   Texture2D pigmentation, float diffuseWeight, FrameOutput output) {
+        Material m = new Material(DiffractionShaders.surfaceProgram(settings, textures, pigmentation != null,
+                output));
         common(m, textures, settings).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
@@ -71,11 +78,11 @@ public final class DiffractionMaterials {
      * the same constants as {@link #surface}, the program compiled with the stage's defines.
      */
     static Material staged(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
-                           float diffuseWeight, Stage stage, Reporter reporter) {
+                           float diffuseWeight, Stage stage, FrameOutput output, Reporter reporter) {
         Optional<BakedTable> table = DiffractionShaders.environmentTableNeeded(settings, stage)
                 ? textures.lobesTable(reporter) : Optional.empty();
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
-                stage, table.isPresent()));
+                stage, table.isPresent(), output));
         common(m, textures, settings).setFloat("exposure", exposure);
         table.ifPresent(t -> filteredTable(m, t, settings));
         if (pigmentation != null) {

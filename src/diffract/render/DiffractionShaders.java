@@ -164,9 +164,11 @@ public final class DiffractionShaders {
      * with {@code environmentTable} the lobes method's wide environment lights read its table (ENVIRONMENT_TABLE).
      */
     public static ShaderProgram stagedSurfaceProgram(BrdfSettings settings, DiffractionTextures textures,
-                                                     boolean pigmentation, Stage stage, boolean environmentTable) {
+                                                     boolean pigmentation, Stage stage, boolean environmentTable,
+                                                     FrameOutput output) {
         Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);
         defines.putAll(stage.defines());
+        output.addDefines(defines);
         if (environmentTable) {
             defines.put("ENVIRONMENT_TABLE", "1");
             defines.put("TABLE_BEYOND_SIGMA_RAD", Float.toString((float) TABLE_BEYOND_SIGMA_RAD));
@@ -219,12 +221,25 @@ public final class DiffractionShaders {
     }
 
     /**
-     * The BRDF-map program for a window: display sRGB of {@code exposure} x XYZ (define {@code DISPLAY_SRGB})
-     * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes.
+     * The mesh program for these textures, its pixels display values or linear light ({@link FrameOutput}).
      */
-    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures) {
+    public static ShaderProgram surfaceProgram(BrdfSettings settings, DiffractionTextures textures,
+                                               boolean pigmentation, FrameOutput output) {
+        Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);
+        output.addDefines(defines);
+        return ShaderProgram.fromClasspath(vertexPath(Target.SURFACE), fragmentPath(settings.variant()), defines);
+    }
+
+    /**
+     * The BRDF-map program for a window: display sRGB of {@code exposure} x XYZ (define {@code DISPLAY_SRGB})
+     * instead of the linear XYZ a float target stores, so an 8-bit framebuffer shows what {@code brdfmap} writes;
+     * with {@link FrameOutput#LINEAR} linear sRGB of {@code exposure} x XYZ, unclipped.
+     */
+    public static ShaderProgram displayBrdfMapProgram(BrdfSettings settings, DiffractionTextures textures,
+                                                      FrameOutput output) {
         Map<String, String> defines = definesFor(settings, textures, Target.BRDF_MAP, false, false);
         defines.put("DISPLAY_SRGB", "1");
+        output.addDefines(defines);
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(settings.variant()), defines);
     }
 

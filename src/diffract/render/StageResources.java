@@ -34,6 +34,7 @@ public final class StageResources {
     static final float GROUND_HALF_SIZE_RADII = 12;
 
     private final Stage stage;
+    private final FrameOutput output;
     private final FloatTexture2D scaleFrames;
     private final ShadowMap shadowMap;
     private final ShapeNode groundNode;
@@ -43,7 +44,13 @@ public final class StageResources {
     private double turnedDeg = Double.NaN;
 
     public StageResources(Stage stage, Shape subject) {
+        this(stage, subject, FrameOutput.DISPLAY);
+    }
+
+    /** The stage of {@code subject}, its surface and ground drawn into frames of {@code output}. */
+    public StageResources(Stage stage, Shape subject, FrameOutput output) {
         this.stage = stage;
+        this.output = output;
         Stage.ScaleFrames frames = stage.scaleFrames();
         this.scaleFrames = frames == null ? null : new FloatTexture2D(frames.width(), frames.height(), frames.rgba(), true);
         float[] p = subject.vertexData().attribute(VertexAttribute.POSITION);
@@ -77,7 +84,7 @@ public final class StageResources {
     public Material surface(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
                             float diffuseWeight, Reporter reporter) {
         Material m = DiffractionMaterials.staged(textures, settings, exposure, pigmentation, diffuseWeight, stage,
-                reporter);
+                output, reporter);
         if (scaleFrames != null) {
             m.setTexture("scaleFrames", scaleFrames);
         }
@@ -169,6 +176,7 @@ public final class StageResources {
 
     private Material groundMaterial() {
         Map<String, String> defines = new TreeMap<>(stage.defines());
+        output.addDefines(defines);
         ShaderProgram program = ShaderProgram.fromClasspath("lighting/ground.vert", "lighting/ground.frag", defines);
         Stage.Ground g = stage.ground();
         Material m = new Material(program)

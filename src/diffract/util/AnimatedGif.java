@@ -11,7 +11,6 @@ import javax.imageio.stream.ImageOutputStream;
 import java.awt.image.BufferedImage;
 import java.awt.image.IndexColorModel;
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -49,30 +48,32 @@ public final class AnimatedGif {
             b[i] = (byte) palette[i];
         }
         IndexColorModel model = new IndexColorModel(8, palette.length, r, g, b);
-        ImageWriter writer = ImageIO.getImageWritersByFormatName("gif").next();
-        Files.deleteIfExists(file);
-        try (ImageOutputStream out = ImageIO.createImageOutputStream(file.toFile())) {
-            writer.setOutput(out);
-            writer.prepareWriteSequence(null);
-            java.util.Map<Integer, Integer> nearest = new java.util.HashMap<>();
-            for (int f = 0; f < rgbFrames.size(); f++) {
-                BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_BYTE_INDEXED, model);
-                int[] rgb = rgbFrames.get(f);
-                byte[] indices = new byte[rgb.length];
-                for (int p = 0; p < rgb.length; p++) {
-                    indices[p] = (byte) (int) nearest.computeIfAbsent(rgb[p], c -> nearestIndex(palette, c));
+        // through a temporary file and a rename, as every picture: a special file at the name is left alone
+        ImageFiles.writeAtomically(file, stream -> {
+            ImageWriter writer = ImageIO.getImageWritersByFormatName("gif").next();
+            try (ImageOutputStream out = ImageIO.createImageOutputStream(stream)) {
+                writer.setOutput(out);
+                writer.prepareWriteSequence(null);
+                java.util.Map<Integer, Integer> nearest = new java.util.HashMap<>();
+                for (int f = 0; f < rgbFrames.size(); f++) {
+                    BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_BYTE_INDEXED, model);
+                    int[] rgb = rgbFrames.get(f);
+                    byte[] indices = new byte[rgb.length];
+                    for (int p = 0; p < rgb.length; p++) {
+                        indices[p] = (byte) (int) nearest.computeIfAbsent(rgb[p], c -> nearestIndex(palette, c));
+                    }
+                    image.getRaster().setDataElements(0, 0, width, height, indices);
+                    ImageWriteParam param = writer.getDefaultWriteParam();
+                    IIOMetadata metadata = writer.getDefaultImageMetadata(
+                            ImageTypeSpecifier.createFromRenderedImage(image), param);
+                    configure(metadata, delayMs, f == 0, palette);
+                    writer.writeToSequence(new IIOImage(image, null, metadata), param);
                 }
-                image.getRaster().setDataElements(0, 0, width, height, indices);
-                ImageWriteParam param = writer.getDefaultWriteParam();
-                IIOMetadata metadata = writer.getDefaultImageMetadata(ImageTypeSpecifier.createFromRenderedImage(image),
-                        param);
-                configure(metadata, delayMs, f == 0, palette);
-                writer.writeToSequence(new IIOImage(image, null, metadata), param);
+                writer.endWriteSequence();
+            } finally {
+                writer.dispose();
             }
-            writer.endWriteSequence();
-        } finally {
-            writer.dispose();
-        }
+        });
     }
 
     private static int byteOf(float v) {

@@ -8,7 +8,10 @@ import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
 
@@ -163,22 +166,58 @@ public final class ImageFiles {
         void write(OutputStream out) throws IOException;
     }
 
-    /** Writes to {@code file.tmp-<pid>-<nanos>} in the same folder, then renames it over {@code file}. */
+    /**
+     * Writes to {@code file.tmp-<pid>-<nanos>} in the same folder, then renames it over {@code file}. What exists at
+     * {@code file} and is not a regular file (a device, a pipe, a socket, a folder) is never replaced: a rename would
+     * swap a device node for a picture. Failures name {@code file}, not the temporary name.
+     */
     public static void writeAtomically(Path file, StreamWriter writer) throws IOException {
         Path absolute = file.toAbsolutePath();
+        refuseToReplaceSpecial(file, absolute);
         Path dir = absolute.getParent();
-        if (dir != null) {
-            Files.createDirectories(dir);
-        }
-        Path tmp = absolute.resolveSibling(absolute.getFileName() + ".tmp-" + ProcessHandle.current().pid()
-                + "-" + System.nanoTime());
+        Path tmp = absolute.resolveSibling(absolute.getFileName() + FolderLock.TEMPORARY_MARK
+                + ProcessHandle.current().pid() + "-" + System.nanoTime());
         try {
+            if (dir != null) {
+                Files.createDirectories(dir);
+            }
             try (OutputStream out = new BufferedOutputStream(Files.newOutputStream(tmp))) {
                 writer.write(out);
             }
+            refuseToReplaceSpecial(file, absolute); // something may have appeared there while we wrote
             Files.move(tmp, absolute, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } catch (FileSystemException e) {
+            throw namingTarget(e, file, tmp);
         } finally {
-            Files.deleteIfExists(tmp);
+            removeQuietly(tmp);
         }
+    }
+
+    /** A temporary file's cleanup never hides the failure that left it (or found no folder to make it in). */
+    private static void removeQuietly(Path tmp) {
+        try {
+            Files.deleteIfExists(tmp);
+        } catch (IOException e) {
+            // the failure being thrown, if any, says what went wrong; a leftover carries the temporary mark
+        }
+    }
+
+    private static void refuseToReplaceSpecial(Path file, Path absolute) throws FileSystemException {
+        if (Files.exists(absolute) && !Files.isRegularFile(absolute)) {
+            throw new FileSystemException(file.toString(), null, "it is " + OutputPaths.kind(absolute)
+                    + ", not a regular file, and is left as it is");
+        }
+    }
+
+    /** The same failure, naming the file the user asked for where it named the temporary one. */
+    private static FileSystemException namingTarget(FileSystemException e, Path file, Path tmp) {
+        if (!tmp.toString().equals(e.getFile())) {
+            return e;
+        }
+        FileSystemException named = e instanceof AccessDeniedException ? new AccessDeniedException(file.toString())
+                : e instanceof NoSuchFileException ? new NoSuchFileException(file.toString())
+                : new FileSystemException(file.toString(), null, e.getReason());
+        named.initCause(e);
+        return named;
     }
 }

@@ -9,6 +9,7 @@ import diffract.optics.Variant;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.render.DiffractionMaterials;
 import diffract.render.DiffractionTextures;
+import diffract.render.FrameOutput;
 import diffract.render.StageResources;
 import diffract.scene.DisplayMode;
 import diffract.util.Reporter;
@@ -60,17 +61,22 @@ final class ViewerMaterials {
     private final Texture2D pigmentationTexture;
     private final float diffuseWeight;
     private final DiffractionPipeline pipeline;
+    private final FrameOutput output;
     /** The stage's GPU side when the setup stages the surface (scales, environment, ground), else null. */
     private StageResources stage;
     private final LinkedHashMap<TexturesKey, DiffractionTextures> textures = new LinkedHashMap<>(4, 0.75f, true);
     private final LinkedHashMap<MaterialKey, Material> materials = new LinkedHashMap<>(8, 0.75f, true);
     private int rebuildCount;
 
-    /** @param pipeline the patch's pipeline: it chooses the expansion and keeps the phase-centred terms */
-    ViewerMaterials(Texture2D pigmentation, double diffuseWeight, DiffractionPipeline pipeline) {
+    /**
+     * @param pipeline the patch's pipeline: it chooses the expansion and keeps the phase-centred terms
+     * @param output   what the frames' pixels hold: display values, or linear light for a still kept as floats
+     */
+    ViewerMaterials(Texture2D pigmentation, double diffuseWeight, DiffractionPipeline pipeline, FrameOutput output) {
         this.pigmentationTexture = pigmentation;
         this.diffuseWeight = (float) diffuseWeight;
         this.pipeline = pipeline;
+        this.output = output;
     }
 
     /** Draws surfaces on this stage from now on (materials built later use it). */
@@ -110,14 +116,14 @@ final class ViewerMaterials {
     private Material build(DiffractionTextures t, DisplayMode mode, BrdfSettings settings, boolean pigmentation,
                            double exposure) {
         if (mode == DisplayMode.BRDF_MAP) {
-            return DiffractionMaterials.brdfMapForDisplay(t, settings, (float) exposure);
+            return DiffractionMaterials.brdfMapForDisplay(t, settings, (float) exposure, output);
         }
         if (stage != null) {
             return stage.surface(t, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
                     diffuseWeight, Reporter.STDERR);
         }
         return DiffractionMaterials.surface(t, settings, (float) exposure, pigmentation ? pigmentationTexture : null,
-                diffuseWeight);
+                diffuseWeight, output);
     }
 
     private void dropOldMaterials(GLRenderContext context) {

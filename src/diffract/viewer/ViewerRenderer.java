@@ -1,6 +1,7 @@
 package diffract.viewer;
 
 import com.jogamp.opengl.GLAutoDrawable;
+import diffract.colour.Srgb;
 import diffract.jrtr.Camera;
 import diffract.jrtr.Frustum;
 import diffract.jrtr.Group;
@@ -16,6 +17,7 @@ import diffract.jrtr.Texture2D;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.render.DiffractionMaterials;
+import diffract.render.FrameOutput;
 import diffract.render.StageResources;
 import diffract.scene.DisplayMode;
 import diffract.scene.OrbitCamera;
@@ -49,6 +51,8 @@ public final class ViewerRenderer extends Renderer {
     private final StageResources stage;
     private final Group casters;
     private final Group maskScene;
+    /** The background: {@link #CLEAR_COLOUR}, or its linear value in frames of linear light. */
+    private final float[] clearColour;
     private Material maskMaterial;
     private volatile boolean maskOnly;
     private volatile double lightTurnDeg;
@@ -56,16 +60,27 @@ public final class ViewerRenderer extends Renderer {
     private int heightPx;
 
     public ViewerRenderer(ViewerModel model) {
+        this(model, FrameOutput.DISPLAY);
+    }
+
+    /**
+     * Frames of {@code output}: display values (what a window shows), or linear light for a still kept as floats,
+     * the background then the linear value of the display's grey.
+     */
+    public ViewerRenderer(ViewerModel model, FrameOutput output) {
         super(new Group("viewer"), new Camera(), new Frustum(0.05f, 100f, 1f, (float) model.setup().verticalFovDeg()));
         this.model = model;
         this.pigmentationTexture = model.pigmentationImage().map(Texture2D::new).orElse(null);
-        this.materials = new ViewerMaterials(pigmentationTexture, model.setup().diffuseWeight(), model.pipeline());
+        this.materials = new ViewerMaterials(pigmentationTexture, model.setup().diffuseWeight(), model.pipeline(),
+                output);
+        this.clearColour = output == FrameOutput.LINEAR ? linear(CLEAR_COLOUR) : CLEAR_COLOUR;
         // the nodes get their materials on the render thread, at the first frame
         this.surface = new ShapeNode(model.shape(), null);
         this.surfaceScene = new Group("surface").add(light, surface);
         this.casters = new Group("shadow casters").add(new ShapeNode(model.shape(), null));
         this.maskScene = new Group("mask").add(new ShapeNode(model.shape(), null));
-        this.stage = model.setup().stage().staged() ? new StageResources(model.setup().stage(), model.shape()) : null;
+        this.stage = model.setup().stage().staged() ? new StageResources(model.setup().stage(), model.shape(), output)
+                : null;
         if (stage != null) {
             materials.useStage(stage);
             if (stage.groundNode() != null) {
@@ -74,7 +89,13 @@ public final class ViewerRenderer extends Renderer {
         }
         this.mapQuad = new ShapeNode(Shapes.fullScreenQuad(), null);
         this.mapScene = new Group("brdf map").add(mapQuad);
-        setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+        setClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
+    }
+
+    /** Display-encoded sRGB and alpha to linear sRGB and alpha. */
+    private static float[] linear(float[] displayRgba) {
+        return new float[] {(float) Srgb.decode(displayRgba[0]), (float) Srgb.decode(displayRgba[1]),
+                (float) Srgb.decode(displayRgba[2]), displayRgba[3]};
     }
 
     /**
@@ -174,7 +195,7 @@ public final class ViewerRenderer extends Renderer {
         setRoot(maskScene);
         setClearColor(0, 0, 0, 1);
         super.display(drawable);
-        setClearColor(CLEAR_COLOUR[0], CLEAR_COLOUR[1], CLEAR_COLOUR[2], CLEAR_COLOUR[3]);
+        setClearColor(clearColour[0], clearColour[1], clearColour[2], clearColour[3]);
         context().gl().glFinish();
     }
 

@@ -74,7 +74,7 @@ class ViewerCliTest {
         assertOneLine(CliTest.run("render", "--tangent", "0,0,0", "-o", out), "--tangent");
         assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "unknown patch 'zebra': use blazed, sinusoid");
         assertOneLine(CliTest.run("render", "--patch", "missing.png", "--synthetic", "blazed", "-o", out), "not both");
-        assertOneLine(CliTest.run("render", "-o", dir.resolve("x.jpg").toString()), "PNG");
+        assertOneLine(CliTest.run("render", "-o", dir.resolve("x.jpg").toString()), "-o writes .png or .exr");
         assertOneLine(CliTest.run("view", "--terms", "500"), "--terms: the highest Taylor order N must be in 0..100, got 500");
         Object[] missingOutput = CliTest.run("render");
         assertEquals(2, missingOutput[0]);
