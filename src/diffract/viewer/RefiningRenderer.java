@@ -193,15 +193,20 @@ public final class RefiningRenderer implements GLEventListener {
     @Override
     public void display(GLAutoDrawable drawable) {
         GL3 gl = drawable.getGL().getGL3();
+        // the framebuffer the caller bound for this frame (a window's, or an offscreen target's): plain GL, where
+        // JOGL's getDefaultDrawFramebuffer is unknown to a headless EGL context
+        int[] bound = new int[1];
+        gl.glGetIntegerv(GL.GL_DRAW_FRAMEBUFFER_BINDING, bound, 0);
+        int target = bound[0];
         if (Thread.currentThread() == renderThread && windowWidth > 0 && windowHeight > 0) {
-            step(gl);
-            serveReadBacks(gl, gl.getDefaultReadFramebuffer());
+            step(gl, target);
+            serveReadBacks(gl, target);
         } else {
-            present(gl, gl.getDefaultDrawFramebuffer());
+            present(gl, target);
         }
     }
 
-    private void step(GL3 gl) {
+    private void step(GL3 gl, int target) {
         ViewerState state = model.state();
         if (refinement == null || refinement.mayRestart() && needsRestart(refinement, state)) {
             start(state);
@@ -223,7 +228,7 @@ public final class RefiningRenderer implements GLEventListener {
             model.update(s -> s.withNotice(Notice.forSeconds("drawing failed: " + e.getMessage(), 10)));
             publish(r);
         }
-        present(gl, gl.getDefaultDrawFramebuffer());
+        present(gl, target);
     }
 
     private void start(ViewerState state) {

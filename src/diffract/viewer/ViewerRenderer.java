@@ -154,7 +154,7 @@ public final class ViewerRenderer extends Renderer {
         Material material = materials.materialFor(state, settings, context());
         material.setFloat("exposure", (float) state.view().exposure());
         if (state.view().mode() == DisplayMode.BRDF_MAP) {
-            showBrdfMap(state, material, widthPx, heightPx);
+            showBrdfMap(state, settings, material, widthPx, heightPx);
         } else {
             showSurface(state, material);
         }
@@ -199,10 +199,14 @@ public final class ViewerRenderer extends Renderer {
         context().gl().glFinish();
     }
 
-    /** The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. */
-    private void showBrdfMap(ViewerState state, Material material, int widthPx, int heightPx) {
+    /**
+     * The largest square map that fits, centred: pixel centres map to view directions as in BrdfMap. The light's
+     * uniforms are those of the settings the material was built for (a preview's program declares its own method's
+     * uniforms, not the configured one's).
+     */
+    private void showBrdfMap(ViewerState state, BrdfSettings settings, Material material, int widthPx, int heightPx) {
         int size = Math.max(1, Math.min(widthPx, heightPx));
-        DiffractionMaterials.setLight(material, state.view().light().direction(), state.drawableSettings())
+        DiffractionMaterials.setLight(material, state.view().light().direction(), settings)
                 .setFloat("mapSizePx", size)
                 .setVec2("mapOriginPx", (widthPx - size) / 2, (heightPx - size) / 2);
         mapQuad.setMaterial(material);
