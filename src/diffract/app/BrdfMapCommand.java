@@ -6,11 +6,11 @@ import diffract.bench.AutoVariant;
 import diffract.colour.ColourPath;
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
+import diffract.optics.LightPolicy;
 import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
-import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.LightSource;
@@ -221,10 +221,9 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (!lightSource.isPoint() && light.lambdaNm != null) {
             throw new UserInputException("--lambda maps sample the light at its centre: drop --light-size-deg");
         }
-        if (!lightSource.isPoint() && !brdf.auto() && named != Variant.LOBES && named != Variant.REFERENCE
-                && named != Variant.BAKED) {
-            throw new UserInputException("--light-size-deg: " + DiffractionBrdf.lightNeedsFiltering(named, lightSource)
-                    + " (--variant lobes)");
+        LightPolicy light = LightPolicy.of(settings);
+        if (!brdf.auto() && !light.accepted()) {
+            throw new UserInputException("--light-size-deg: " + light.reason().orElseThrow() + " (--variant lobes)");
         }
         return where;
     }

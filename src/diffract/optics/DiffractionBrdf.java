@@ -111,19 +111,9 @@ public final class DiffractionBrdf {
         return new DiffractionBrdf(point, null, settings.illumination(), null, lobes);
     }
 
-    /** Refuses a light of finite size for a variant that samples the light at its centre. */
+    /** Refuses a light of finite size for a variant that samples the light at its centre ({@link LightPolicy}). */
     static void requirePointLight(BrdfSettings settings) {
-        if (!settings.illumination().light().isPoint()) {
-            throw new InvalidSettingException(Quantity.LIGHT_SIZE, lightNeedsFiltering(settings.variant(),
-                    settings.illumination().light()));
-        }
-    }
-
-    /** Why {@code variant} cannot render a light of finite size, and what can. */
-    public static String lightNeedsFiltering(Variant variant, LightSource light) {
-        return variant.label() + " samples the light at its centre only: a light of "
-                + InvalidSettingException.number(light.angularDiameterDeg()) + " degrees needs the lobes variant, the "
-                + "reference or the baked table (or a point light, 0 degrees)";
+        LightPolicy.of(settings).requireAccepted();
     }
 
     /** The variant's Taylor-series spectrum over float32 terms: Gaussian window (FLSS, NMM) or sinc (PQ). */

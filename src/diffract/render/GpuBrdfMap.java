@@ -9,9 +9,9 @@ import diffract.jrtr.OffscreenTarget;
 import diffract.jrtr.Renderer;
 import diffract.jrtr.ShapeNode;
 import diffract.jrtr.Shapes;
+import diffract.optics.LightPolicy;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
-import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.PhaseCentredTerms;
@@ -66,12 +66,7 @@ public final class GpuBrdfMap implements AutoCloseable {
         if (!settings.variant().runsOnGpu()) {
             throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.REFERENCE_IS_CPU_ONLY);
         }
-        Variant v = settings.variant();
-        if (v != Variant.LOBES && v != Variant.BAKED && !settings.illumination().light().isPoint()) {
-            throw new InvalidSettingException(Quantity.LIGHT_SIZE,
-                    DiffractionBrdf.lightNeedsFiltering(v, settings.illumination().light()));
-        }
-        return settings;
+        return LightPolicy.of(settings).requireAccepted();
     }
 
     private GpuBrdfMap(DiffractionTextures textures, BrdfSettings settings) {

@@ -1,6 +1,7 @@
 package diffract.scene;
 
 import diffract.geometry.PigmentationTexture;
+import diffract.optics.LightPolicy;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;
@@ -66,14 +67,11 @@ final class MaterialManager {
             reporter.warn(refusal.get() + ": drawing it with flss under a point light instead");
             s = s.with(b -> b.variant(Variant.FLSS).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
         }
-        if (!s.variant().filtersLight() && !s.illumination().light().isPoint()) {
-            // a point-sampling variant asked for on a scene lit by an extended light (the sun by default): it samples
-            // the light at its centre, said once
-            reporter.warn(s.variant().label() + " samples the light at its centre: drawing the "
-                    + s.illumination().light().angularDiameterDeg()
-                    + "-degree light as a point light (lobes and baked filter by its size)");
-            s = s.with(b -> b.lightSizeDeg(0));
-        }
+        // a point-sampling variant asked for on a scene lit by an extended light (the sun by default): it samples
+        // the light at its centre, said once
+        LightPolicy light = LightPolicy.of(s);
+        light.notice().ifPresent(reporter::warn);
+        s = light.usable();
         settings = s;
         pipeline = DiffractionPipeline.cached(patch, settings.spectral().lambdaMinNm());
         SamplingCheck.warnAboutAliasing(patch.meanSubtracted(), settings.spectral().lambdaMinNm(),

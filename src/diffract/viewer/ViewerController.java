@@ -5,6 +5,7 @@ import com.jogamp.newt.event.KeyEvent;
 import com.jogamp.newt.event.MouseAdapter;
 import com.jogamp.newt.event.MouseEvent;
 import diffract.optics.BrdfSettings;
+import diffract.optics.LightPolicy;
 import diffract.optics.TaylorSettings;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
@@ -35,6 +36,8 @@ public final class ViewerController implements AutoCloseable {
     static final double LIGHT_DEG_PER_PX = 0.3;
     static final double ZOOM_PER_WHEEL_STEP = 0.9;
     static final double EXPOSURE_STEP = 1.5;
+    /** How long a notice about a key stays in the title. */
+    static final double NOTICE_SECONDS = 6;
 
     /** Takes a screenshot of the real window and returns where it went (run off the input thread). */
     @FunctionalInterface
@@ -85,8 +88,13 @@ public final class ViewerController implements AutoCloseable {
         updateView(v -> v.withLight(v.light().movedBy(deltaThetaDeg, deltaPhiDeg)));
     }
 
+    /** The variant; one that cannot take the scene's light draws it as a point light and says so. */
     public void selectVariant(Variant variant) {
-        model.update(s -> s.withSettings(s.settings().with(b -> b.variant(variant))));
+        model.update(s -> {
+            ViewerState selected = s.withSettings(s.settings().with(b -> b.variant(variant)));
+            return LightPolicy.of(selected.settings()).notice()
+                    .map(text -> selected.withNotice(Notice.forSeconds(text, NOTICE_SECONDS))).orElse(selected);
+        });
     }
 
     /** N + delta within [0, {@link TaylorSettings#MAX_HIGHEST_ORDER}]; more terms than at hand start a background precompute. */

@@ -1,6 +1,7 @@
 package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.LightPolicy;
 import diffract.optics.TaylorTerms;
 import diffract.scene.DisplayMode;
 import diffract.scene.LightDirection;
@@ -50,11 +51,14 @@ public record ViewerState(BrdfSettings settings, View view, TaylorTerms terms, P
 
     /**
      * What the shaders can draw now: the settings asked for, with N lowered to the terms at hand, so the window
-     * keeps drawing with the terms it has while more are precomputed.
+     * keeps drawing with the terms it has while more are precomputed, and a light of finite size drawn as a point
+     * by a method that samples the light at its centre ({@link LightPolicy}: the scene's light comes back with the
+     * lobes method).
      */
     public BrdfSettings drawableSettings() {
-        return settings.taylor().highestOrder() <= terms.highestOrder() ? settings
+        BrdfSettings withTerms = settings.taylor().highestOrder() <= terms.highestOrder() ? settings
                 : settings.with(b -> b.highestOrder(terms.highestOrder()));
+        return LightPolicy.of(withTerms).usable();
     }
 
     /** Whether the settings ask for more terms than are at hand. */

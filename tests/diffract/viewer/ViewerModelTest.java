@@ -88,6 +88,24 @@ class ViewerModelTest {
     }
 
     @Test
+    void aMethodThatSamplesTheLightAtItsCentreDrawsTheScenesLightAsAPointAndSaysSo() throws InterruptedException {
+        ViewerModel model = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
+                .with(b -> b.variant(Variant.LOBES).lightSizeDeg(2))), diffract.util.Reporter.SILENT);
+        try (TermPrecomputer precomputer = new TermPrecomputer(model)) {
+            ViewerController controller = new ViewerController(model, precomputer, () -> null, () -> { });
+            assertEquals(2, model.state().drawableSettings().illumination().light().angularDiameterDeg());
+            press(controller, (short) 0, '1');
+            String expected = diffract.optics.LightPolicy.of(model.state().settings()).notice().orElseThrow();
+            assertEquals(expected, model.state().notice().text());
+            assertEquals(0, model.state().drawableSettings().illumination().light().angularDiameterDeg());
+            assertEquals(2, model.state().settings().illumination().light().angularDiameterDeg(), "the scene's light "
+                    + "is kept");
+            press(controller, (short) 0, '4');
+            assertEquals(2, model.state().drawableSettings().illumination().light().angularDiameterDeg());
+        }
+    }
+
+    @Test
     void keysPressedWhileTheLoopIsBusyWaitInTheQueueAndAllApplyInOrder() throws InterruptedException {
         ViewerModel model = ViewerTestSupport.model(ViewerTestSupport.directTerms());
         try (TermPrecomputer precomputer = new TermPrecomputer(model)) {
