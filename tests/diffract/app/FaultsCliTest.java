@@ -3,9 +3,9 @@ package diffract.app;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.TaylorTerms;
 import diffract.optics.io.GsfWriter;
-import diffract.precompute.Precomputation;
 import diffract.precompute.TermStore;
 import diffract.util.ImageFiles;
+import diffract.util.TestCache;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
@@ -56,14 +56,16 @@ class FaultsCliTest {
         GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.13, 50, 4, 8));
     }
 
+    private TestCache cache;
+
     @BeforeEach
     void privateCache() {
-        System.setProperty(Precomputation.CACHE_PROPERTY, dir.resolve("cache").toString());
+        cache = TestCache.at(dir.resolve("cache"));
     }
 
     @AfterEach
-    void noCache() {
-        System.clearProperty(Precomputation.CACHE_PROPERTY);
+    void backToTheBuildsCache() {
+        cache.close();
     }
 
     private static Object[] run(String... args) {
@@ -214,7 +216,7 @@ class FaultsCliTest {
     void anUnwritableCacheComputesInMemory() throws IOException {
         Path notAFolder = dir.resolve("file");
         Files.writeString(notAFolder, "a file where the cache folder would be");
-        System.setProperty(Precomputation.CACHE_PROPERTY, notAFolder.resolve("cache").toString());
+        System.setProperty(diffract.util.DiskCache.ROOT_PROPERTY, notAFolder.resolve("cache").toString());
         Path png = dir.resolve("m.png");
         Object[] result = run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "flss",
                 "--terms", "6", "--size", "12", "-o", png.toString());
