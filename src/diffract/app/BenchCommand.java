@@ -107,6 +107,9 @@ final class BenchCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/headless-gl.md): the "
             + "default scene at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, "
             + "ms/frame and CIEDE2000; 1/8 of the size on a software rasteriser. Writes gpu-suite.csv, gpu-suite.md "

@@ -33,6 +33,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png",
             description = "PNG to write; with --turntable a .gif (animated, looping) or a .png name for a numbered "
                     + "sequence.")
