@@ -2,7 +2,7 @@
 # Regenerates docs/bench.md's tables and plot from the repository root: bash docs/bench.sh
 # The full sweep (540 configurations, the baked table and the lean rows included) takes about 15-20 minutes on
 # 2 cores with Mesa llvmpipe; OpenGL 3.3 is needed (headless EGL without a display, docs/headless-gl.md).
-# Reference maps are cached in out/bench/reference-maps. On a GPU, `./diffract bench --gpu-suite -o DIR` is the
+# Reference maps are kept in the disk cache (~/.cache/diffract, docs/faults.md). On a GPU, `./diffract bench --gpu-suite -o DIR` is the
 # short table (docs/headless-gl.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -4,7 +4,7 @@
 # At the thesis' 65 um coherence, per bench patch and the measured Elaphe patch (assets/patches), for a
 # point light and a 2-degree light: the lobes method, FLSS in the thesis' configuration and the baked table against
 # the filtered reference, and their GPU times on one context. About 10 minutes on 2 cores with llvmpipe; reference
-# maps are cached in out/filtering/reference-maps.
+# maps and baked tables are kept in the disk cache (~/.cache/diffract, docs/faults.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ELAPHE=assets/patches/elaphe-100px.png

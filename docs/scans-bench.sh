@@ -4,7 +4,7 @@
 # The 52 um elaphe-scan (528 x 512 samples) at the thesis' 65 um coherence, theta_i = 30, a point light: the lobes
 # method on the GPU, FLSS in the thesis' configuration and the baked table against the filtered reference (window
 # averaged over its position), with the reference's and the bake's seconds. The 64 px reference takes about 5 minutes
-# on 2 idle cores, the 256 px one about an hour; reference maps are cached in out/scans-*/reference-maps.
+# on 2 idle cores, the 256 px one about an hour; reference maps are kept in the disk cache (docs/faults.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -p docs/bench

@@ -19,6 +19,7 @@ import diffract.optics.Levelling;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.util.DiskCache;
 import diffract.util.OutputPaths;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -105,6 +106,9 @@ final class BenchCommand implements Callable<Integer> {
 
     @Mixin
     QuietOption quiet;
+
+    @Mixin
+    CacheOption cache;
 
     @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/headless-gl.md): the "
             + "default scene at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, "
@@ -206,7 +210,7 @@ final class BenchCommand implements Callable<Integer> {
         reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
                         + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
                 coherenceLengthUm, outputDir));
-        ReferenceMaps references = new ReferenceMaps(outputDir.resolve("reference-maps"), reporter);
+        ReferenceMaps references = new ReferenceMaps(DiskCache.user(), reporter);
         BenchRunner runner = new BenchRunner(references, reporter).keepMapsOf(Targets::needsMaps);
         Path csv = outputDir.resolve("results.csv");
         List<BenchResult> done = new ArrayList<>();
@@ -256,8 +260,8 @@ final class BenchCommand implements Callable<Integer> {
         Files.createDirectories(outputDir);
         BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
                 .coherenceLengthUm(coherenceLengthUm));
-        FilteringTargets targets = new FilteringTargets(new ReferenceMaps(outputDir.resolve("reference-maps"),
-                reporter), lobes, sizePx, FilteringTargets.ROUNDS, frames, FilteringTargets.BAKED_UV_SAMPLES, reporter);
+        FilteringTargets targets = new FilteringTargets(new ReferenceMaps(DiskCache.user(), reporter), lobes, sizePx,
+                FilteringTargets.ROUNDS, frames, FilteringTargets.BAKED_UV_SAMPLES, reporter);
         int total = list.size() * lightsDeg.size();
         List<FilteringTargets.Row> done = new ArrayList<>();
         long start = System.nanoTime();

@@ -59,6 +59,9 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
     double thetaIDeg;
 

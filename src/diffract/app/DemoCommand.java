@@ -34,6 +34,9 @@ final class DemoCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR",
             description = "The folder for the pictures (demo.png, or demo-brdfmap.png without OpenGL) and, when the "
                     + "scene is read from the jar, its copy (default ${DEFAULT-VALUE}).")
@@ -43,14 +46,14 @@ final class DemoCommand implements Callable<Integer> {
             description = "Picture size (default ${DEFAULT-VALUE}).")
     OptionTypes.ImageSize size;
 
-    /** The arguments of a command the demo runs, with {@code --quiet} when the demo was given it. */
-    private String[] quietly(String... args) {
-        if (!quiet.quiet) {
-            return args;
+    /** The arguments of a command the demo runs, with the demo's {@code --quiet} and {@code --no-cache}. */
+    private String[] withDemoOptions(String... args) {
+        List<String> out = new ArrayList<>(List.of(args));
+        if (quiet.quiet) {
+            out.add("--quiet");
         }
-        String[] out = java.util.Arrays.copyOf(args, args.length + 1);
-        out[args.length] = "--quiet";
-        return out;
+        out.addAll(cache.arguments());
+        return out.toArray(new String[0]);
     }
 
     /**
@@ -99,14 +102,14 @@ final class DemoCommand implements Callable<Integer> {
         boolean screen = ViewCommand.noDisplayProblem(System.getenv(), System.getProperty("os.name", "")).isEmpty();
         boolean gl = HeadlessGL.problem().isEmpty();
         if (screen) {
-            return Main.execute(quietly("view", defaultScene(outputDir).toString(), "--size", sizeText()));
+            return Main.execute(withDemoOptions("view", defaultScene(outputDir).toString(), "--size", sizeText()));
         }
         if (gl) {
             Path png = outputDir.resolve(PICTURE);
             List<String> render = new ArrayList<>(List.of("render", defaultScene(outputDir).toString(), "--size",
                     sizeText(), "-o", png.toString()));
             render.addAll(gpu.arguments());
-            int code = Main.execute(quietly(render.toArray(new String[0])));
+            int code = Main.execute(withDemoOptions(render.toArray(new String[0])));
             if (code == 0) {
                 System.out.println(png.toAbsolutePath());
             }
@@ -114,7 +117,7 @@ final class DemoCommand implements Callable<Integer> {
         }
         System.err.println(HeadlessGL.problem().orElse("no OpenGL") + ": CPU BRDF map instead");
         Path png = outputDir.resolve(CPU_MAP);
-        int code = Main.execute(quietly("brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--variant",
+        int code = Main.execute(withDemoOptions("brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--variant",
                 "reference", "--exposure", "auto", "--size", "256", "-o", png.toString()));
         if (code == 0) {
             System.out.println(png.toAbsolutePath());

@@ -16,6 +16,7 @@ import diffract.optics.Variant;
 import diffract.render.GpuBrdfMap;
 import diffract.scene.Fabricator;
 import diffract.scene.SceneSetup;
+import diffract.util.DiskCache;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -48,7 +49,7 @@ import java.util.Map;
  * </ul>
  * On a software rasteriser (llvmpipe) the suite size is 1/8 of that, 240 x 135, unless {@code --suite-size} says.
  * Writes {@code gpu-suite.csv}, {@code gpu-suite.md} and the scene pictures {@code scene-*.png} into the output
- * folder; the reference maps are cached in {@code reference-maps/} there.
+ * folder; the reference maps are kept in the disk cache ({@link DiskCache}).
  */
 final class GpuSuite {
     static final int FULL_WIDTH = 1920;
@@ -221,7 +222,7 @@ final class GpuSuite {
             return written(rows, gl);
         }
         BenchPatch patch = new BenchPatch("scene-patch", base.patch(), base.light().phiDeg());
-        ReferenceMaps references = new ReferenceMaps(outputDir.resolve("reference-maps"), reporter);
+        ReferenceMaps references = new ReferenceMaps(DiskCache.user(), reporter);
         int mapSize = size[1];
         for (String[] name : names(variants)) {
             BrdfSettings settings = settingsOf(name, base.settings());

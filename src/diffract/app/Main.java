@@ -4,6 +4,7 @@ import diffract.jrtr.GLInfo;
 import diffract.jrtr.HeadlessGL;
 import diffract.optics.InvalidSettingException;
 import diffract.precompute.TaylorTermComputer;
+import diffract.util.DiskCache;
 import diffract.util.UserInputException;
 import diffract.util.Version;
 import picocli.CommandLine.Command;
@@ -59,10 +60,21 @@ public final class Main implements Runnable {
                     + ex.getCommandLine().getCommandSpec().qualifiedName() + " --help'");
             return EXIT_USAGE;
         });
+        cli.setExecutionStrategy(parseResult -> {
+            CommandLine.ParseResult command = parseResult;
+            while (command.hasSubcommand()) {
+                command = command.subcommand();
+            }
+            DiskCache.useDisk(!command.hasMatchedOption(CacheOption.FLAG)); // --no-cache: for this command only
+            return new CommandLine.RunLast().execute(parseResult);
+        });
+        boolean diskBefore = DiskCache.diskInUse();
         try {
             return cli.execute(args);
         } catch (OutOfMemoryError | StackOverflowError e) { // picocli passes errors through: the last line of defence
             return failure(e, debug);
+        } finally {
+            DiskCache.useDisk(diskBefore); // a command run by another one leaves the other's choice as it was
         }
     }
 

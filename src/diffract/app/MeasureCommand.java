@@ -42,6 +42,9 @@ final class MeasureCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Override
     public Integer call() throws Exception {
         options.validate();

@@ -40,6 +40,9 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png|OUT.exr|OUT.gif",
             description = "The PNG to write (tone mapped, display sRGB), or an OpenEXR file of the frame's linear "
                     + "light (linear sRGB times the exposure, neither tone mapped nor clipped); with --turntable a "

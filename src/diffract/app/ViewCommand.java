@@ -38,6 +38,9 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin
     QuietOption quiet;
 
+    @Mixin
+    CacheOption cache;
+
     @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
     Path screenshotDir;

@@ -2,28 +2,25 @@ package diffract.bench;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
-import diffract.precompute.Precomputation;
+import diffract.util.DiskCache;
 import diffract.util.Reporter;
 
-import java.io.IOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
-import java.util.HexFormat;
 import java.util.List;
 import java.util.Map;
 
 /**
  * The {@code auto} variant's calibration: the {@code --quick} sweep ({@link SweepPlan#quick}) restricted to the
- * scene's own patch, with the light at the scene's azimuth, measured once and cached under the user cache
- * ({@code <cache>/calibration/<key>.csv}, key = patch content hash and every setting that changes a
- * measurement: the light's size, the pixel filter and the Fresnel model too), so a second run with the same patch and settings does not recalibrate.
+ * scene's own patch, with the light at the scene's azimuth, measured once and kept in the disk cache
+ * ({@link DiskCache}, kind {@value #KIND}; key = patch content hash and every setting that changes a measurement:
+ * the light's size, the pixel filter and the Fresnel model too, and the plan), so a second run with the same patch
+ * and settings does not recalibrate.
  */
 public final class AutoCalibration {
     /** Map size of the calibration (as {@code bench --quick}): mean errors change little with the size. */
     public static final int SIZE_PX = 64;
+    /** The disk cache's kind of calibrations. */
+    public static final String KIND = "calibration";
     /** Bump when the plan or the measurement changes, so old calibrations are not reused. */
     static final int VERSION = 2;
 
@@ -33,63 +30,44 @@ public final class AutoCalibration {
     /**
      * The measured calibration of a patch, from the cache or measured now (needs OpenGL).
      *
-     * @param base the settings that are not swept (wavelength range, coherence, refractive index, PQ replicas)
+     * @param base  the settings that are not swept (wavelength range, coherence, refractive index, PQ replicas)
+     * @param cache where calibrations and their reference maps are kept ({@link DiskCache#user}; a disabled cache
+     *              measures every time)
      */
-    public static List<BenchResult> of(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, Path cacheRoot,
+    public static List<BenchResult> of(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, DiskCache cache,
                                        Reporter reporter) {
-        return of(meanSubtracted, phiIDeg, base, cacheRoot, reporter, SweepPlan.quick(SIZE_PX));
+        return of(meanSubtracted, phiIDeg, base, cache, reporter, SweepPlan.quick(SIZE_PX));
     }
 
     /** As above with another plan (tests use a small one); the plan is part of the cache key. */
-    static List<BenchResult> of(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, Path cacheRoot,
+    static List<BenchResult> of(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, DiskCache cache,
                                 Reporter reporter, List<SweepPlan.Point> plan) {
         BenchPatch patch = new BenchPatch("patch", meanSubtracted, phiIDeg);
-        Path file = cacheRoot.resolve("calibration").resolve(key(patch, base, plan) + ".csv");
-        if (Files.isRegularFile(file)) {
-            try {
-                List<BenchResult> cached = ResultsTable.readCsv(file, base);
-                reporter.info("auto: calibration of this patch and settings reused from " + file);
-                return cached;
-            } catch (IOException | RuntimeException e) { // a bad number, a short row, another version's header
-                reporter.warn(file + " is damaged (" + firstLine(e) + "): calibrating again");
-            }
+        DiskCache.Key key = key(patch, base, plan);
+        List<BenchResult> cached = cache.load(key, in -> ResultsTable.parseCsv("the cached calibration",
+                new String(in.readAllBytes(), StandardCharsets.UTF_8).lines().toList(), base), reporter,
+                "calibrating again");
+        if (cached != null) {
+            reporter.info("auto: calibration of this patch and settings reused from " + cache.file(key));
+            return cached;
         }
         List<BenchConfig> configs = SweepPlan.configs(List.of(patch.name()), SweepPlan.sweptVariants(true), plan, base);
-        reporter.info("auto: calibrating on this patch (" + configs.size() + " configurations, once; cached in "
-                + file + ")");
-        BenchRunner runner = new BenchRunner(new ReferenceMaps(cacheRoot.resolve("reference-maps"), reporter),
-                reporter).progressOnly("auto: calibrating");
+        reporter.info("auto: calibrating on this patch (" + configs.size() + " configurations, once"
+                + (cache.enabled() ? "; kept in the disk cache " + cache.folder() : "") + ")");
+        BenchRunner runner = new BenchRunner(new ReferenceMaps(cache, reporter), reporter)
+                .progressOnly("auto: calibrating");
         List<BenchResult> results = runner.run(configs, Map.of(patch.name(), patch), base, r -> { });
-        try {
-            Files.createDirectories(file.getParent());
-            ResultsTable.writeCsv(file, results, runner.glInfo());
-        } catch (IOException e) {
-            reporter.info("auto: cannot write the calibration to " + file + " (" + firstLine(e)
-                    + "): it is used now, not kept");
-        }
+        byte[] csv = ResultsTable.csv(results, runner.glInfo()).getBytes(StandardCharsets.UTF_8);
+        cache.store(key, out -> out.write(csv), "the calibration", reporter);
         return results;
     }
 
-    private static String firstLine(Exception e) {
-        String message = e.getMessage();
-        return message == null ? e.getClass().getSimpleName() : message.lines().findFirst().orElse("");
-    }
-
-    /** The user cache's calibration folder root (the precompute cache). */
-    public static Path defaultCacheRoot() {
-        return Precomputation.cacheRoot();
-    }
-
-    static String key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
-        String text = String.join("|", "v" + VERSION, patch.field().contentSha256(), Csv.number(patch.phiIDeg()),
-                Csv.number(base.spectral().lambdaMinNm()), Csv.number(base.spectral().lambdaMaxNm()),
-                base.spectral().normalisation().key(), base.window().placement().label(),
-                Csv.illuminationKey(base.illumination()), Integer.toString(base.window().pqReplicas()), plan.toString());
-        try {
-            byte[] hash = MessageDigest.getInstance("SHA-256").digest(text.getBytes(StandardCharsets.UTF_8));
-            return HexFormat.of().formatHex(hash).substring(0, 32);
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException(e);
-        }
+    /** The key of a calibration: the patch's content, the light's azimuth, every unswept setting and the plan. */
+    static DiskCache.Key key(BenchPatch patch, BrdfSettings base, List<SweepPlan.Point> plan) {
+        return new DiskCache.Key(KIND, String.join("; ", "calibration v" + VERSION,
+                "patch sha256 " + patch.field().contentSha256(), "phi_i " + patch.phiIDeg(),
+                "lambda " + base.spectral().lambdaMinNm() + ".." + base.spectral().lambdaMaxNm(),
+                "normalisation " + base.spectral().normalisation(), "placement " + base.window().placement(),
+                "illumination " + base.illumination(), "pq replicas " + base.window().pqReplicas(), "plan " + plan));
     }
 }

@@ -4,6 +4,7 @@ import diffract.jrtr.HeadlessGL;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorExpansion;
+import diffract.util.DiskCache;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
@@ -27,8 +28,7 @@ public final class AutoVariant {
     public static AutoChoice choose(HeightField meanSubtracted, double phiIDeg, BrdfSettings base, double maxDeltaE,
                                     Reporter reporter) {
         HeadlessGL.require();
-        List<BenchResult> calibration = AutoCalibration.of(meanSubtracted, phiIDeg, base,
-                AutoCalibration.defaultCacheRoot(), reporter);
+        List<BenchResult> calibration = AutoCalibration.of(meanSubtracted, phiIDeg, base, DiskCache.user(), reporter);
         return AutoChoice.choose(calibration, maxDeltaE).orElseThrow(() -> {
             BenchResult best = AutoChoice.mostAccurate(calibration).orElseThrow(
                     () -> new UserInputException("auto: the calibration measured no lit pixel on this patch"));

@@ -98,10 +98,9 @@ public final class FilteringTargets {
         double bakeSeconds = Double.NaN;
         if (bakedSamples > 0) {
             BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, 0));
-            pipeline.terms(lobesHere.taylor().highestOrder(), reporter); // the terms before the bake's clock starts
-            long bakeStart = System.nanoTime();
             try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
-                bakeSeconds = (System.nanoTime() - bakeStart) * 1e-9;
+                // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
+                bakeSeconds = map.bakedTable().bakeSeconds();
                 BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, sizePx), sizePx, exposure);
                 if (d.lit() != null) {
                     bakedMean = d.lit().mean();

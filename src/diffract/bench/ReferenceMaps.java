@@ -5,25 +5,32 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.Variant;
-import diffract.util.ImageFiles;
+import diffract.util.DiskCache;
 import diffract.util.Reporter;
 
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
 import java.io.IOException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.Locale;
 
 /**
- * The CPU reference maps (exact model at 1 nm, {@link Variant#REFERENCE}) the bench measures against, cached as
- * PFM files of XYZ under a folder, named by patch content hash, light, size and the settings that change the
- * reference (wavelength range, coherence, refractive index, light size, pixel filter, Fresnel model), so reruns compute none of them again.
+ * The CPU reference maps (exact model at 1 nm, {@link Variant#REFERENCE}) the bench and the {@code auto} variant
+ * measure against, kept in the disk cache ({@link DiskCache}, kind {@value #KIND}) by patch content hash, light, size
+ * and the settings that change the reference (wavelength range, normalisation, window placement, coherence,
+ * refractive index, light size, pixel filter, Fresnel model), so no run computes one of them twice.
  */
 public final class ReferenceMaps {
-    private final Path dir;
+    /** The disk cache's kind of reference maps. */
+    public static final String KIND = "reference-maps";
+    /** Bump when the reference or this payload changes, so old entries go unused. */
+    static final int FORMAT = 1;
+
+    private final DiskCache cache;
     private final Reporter reporter;
 
-    public ReferenceMaps(Path dir, Reporter reporter) {
-        this.dir = dir;
+    /** @param cache where maps are kept ({@link DiskCache#user}; a disabled cache computes every map) */
+    public ReferenceMaps(DiskCache cache, Reporter reporter) {
+        this.cache = cache;
         this.reporter = reporter;
     }
 
@@ -36,53 +43,48 @@ public final class ReferenceMaps {
         return timed(patch, thetaIDeg, sizePx, base).xyz();
     }
 
-    /** As {@link #xyz}, with the computation's seconds (kept beside the cached map; NaN for a map cached without). */
+    /** As {@link #xyz}, with the computation's seconds (kept in the cache entry). */
     public Timed timed(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
         BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
-        Path file = dir.resolve(String.format(Locale.ROOT, "%s-t%s-p%s-s%d-l%s-%s-%s-%s-%s.pfm",
-                patch.field().contentSha256().substring(0, 16), Csv.number(thetaIDeg), Csv.number(patch.phiIDeg()),
-                sizePx, Csv.number(reference.spectral().lambdaMinNm()), Csv.number(reference.spectral().lambdaMaxNm()),
-                reference.spectral().normalisation().key(), reference.window().placement().label(),
-                Csv.illuminationKey(reference.illumination())));
-        if (Files.isRegularFile(file)) {
-            try {
-                int[] whc = new int[3];
-                float[] xyz = ImageFiles.readPfm(file, whc);
-                if (whc[0] == sizePx && whc[1] == sizePx && whc[2] == 3) {
-                    return new Timed(xyz, cachedSeconds(file));
-                }
-                reporter.warn(file + " holds a map of another size: recomputing it");
-            } catch (IOException e) {
-                reporter.warn(file + " is damaged (" + e.getMessage() + "): recomputing it");
-            }
+        DiskCache.Key key = key(patch, thetaIDeg, sizePx, reference);
+        Timed cached = cache.load(key, in -> read(in, sizePx), reporter, "computing the reference map again");
+        if (cached != null) {
+            return cached;
         }
         long start = System.nanoTime();
         DiffractionBrdf brdf = DiffractionBrdf.create(reference, patch.field(), null);
         float[] xyz = BrdfMap.xyz(brdf, Direction.fromSphericalDeg(thetaIDeg, patch.phiIDeg()), sizePx, reporter);
         double seconds = (System.nanoTime() - start) * 1e-9;
-        String where;
-        try {
-            Files.createDirectories(dir);
-            ImageFiles.writePfm(file, xyz, sizePx, sizePx, 3);
-            Files.writeString(secondsFile(file), String.format(Locale.ROOT, "%.1f%n", seconds));
-            where = "cached in " + file;
-        } catch (IOException e) {
-            where = "not cached: cannot write " + dir + " (" + e.getMessage() + ")";
-        }
+        Timed computed = new Timed(xyz, seconds);
+        String where = cache.store(key, out -> write(out, sizePx, computed), "the reference map", reporter)
+                .map(f -> "cached in " + f).orElse("not cached");
         reporter.info(String.format(Locale.ROOT, "reference map %s, theta_i %s, %dx%d: %.1f s (%s)",
                 patch.name(), Csv.number(thetaIDeg), sizePx, sizePx, seconds, where));
-        return new Timed(xyz, seconds);
+        return computed;
     }
 
-    private static Path secondsFile(Path map) {
-        return map.resolveSibling(map.getFileName() + ".seconds");
+    static DiskCache.Key key(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings reference) {
+        return new DiskCache.Key(KIND, String.join("; ", "reference map format " + FORMAT,
+                "patch sha256 " + patch.field().contentSha256(), "theta_i " + thetaIDeg, "phi_i " + patch.phiIDeg(),
+                "size " + sizePx, "lambda " + reference.spectral().lambdaMinNm() + ".."
+                        + reference.spectral().lambdaMaxNm(), "normalisation " + reference.spectral().normalisation(),
+                "placement " + reference.window().placement(), "illumination " + reference.illumination()));
     }
 
-    private static double cachedSeconds(Path map) {
-        try {
-            return Double.parseDouble(Files.readString(secondsFile(map)).trim());
-        } catch (IOException | NumberFormatException e) {
-            return Double.NaN;
+    private static void write(DataOutputStream out, int sizePx, Timed map) throws IOException {
+        out.writeInt(sizePx);
+        out.writeDouble(map.seconds());
+        DiskCache.writeFloats(out, map.xyz());
+    }
+
+    private static Timed read(DataInputStream in, int sizePx) throws IOException {
+        int size = in.readInt();
+        if (size != sizePx) {
+            throw new IOException("it holds a " + size + " px map, not " + sizePx + " px");
         }
+        double seconds = in.readDouble();
+        float[] xyz = new float[3 * sizePx * sizePx];
+        DiskCache.readFloats(in, xyz);
+        return new Timed(xyz, seconds);
     }
 }

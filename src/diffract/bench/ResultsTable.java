@@ -8,8 +8,6 @@ import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
-import java.io.OutputStreamWriter;
-import java.io.PrintWriter;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -97,23 +95,34 @@ public final class ResultsTable {
 
     /** Writes every row, measured on {@code gl}. */
     public static void writeCsv(Path file, List<BenchResult> results, GLInfo gl) throws IOException {
+        String text = csv(results, gl);
+        ImageFiles.writeAtomically(file, raw -> raw.write(text.getBytes(StandardCharsets.UTF_8)));
+    }
+
+    /** The text of a results.csv: the header and every row, measured on {@code gl}. */
+    public static String csv(List<BenchResult> results, GLInfo gl) {
         List<BenchResult> onFront = onAnyFront(results);
-        ImageFiles.writeAtomically(file, raw -> {
-            PrintWriter out = new PrintWriter(new OutputStreamWriter(raw, StandardCharsets.UTF_8));
-            out.println(csvHeader());
-            for (BenchResult r : results) {
-                out.println(csvRow(r, onFront.contains(r), gl));
-            }
-            out.flush();
-        });
+        StringBuilder out = new StringBuilder(csvHeader()).append(System.lineSeparator());
+        for (BenchResult r : results) {
+            out.append(csvRow(r, onFront.contains(r), gl)).append(System.lineSeparator());
+        }
+        return out.toString();
     }
 
     /** Reads a results.csv written by {@link #writeCsv}; the settings not in the file come from {@code base}. */
     public static List<BenchResult> readCsv(Path file, BrdfSettings base) throws IOException {
-        List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        return parseCsv(file.toString(), Files.readAllLines(file, StandardCharsets.UTF_8), base);
+    }
+
+    /**
+     * The rows of a results.csv's lines ({@code source} names it in the refusal of another version's header).
+     *
+     * @throws RuntimeException when a row does not parse (a bad number, a short row)
+     */
+    public static List<BenchResult> parseCsv(String source, List<String> lines, BrdfSettings base) {
         if (lines.isEmpty() || !(lines.get(0).equals(csvHeader())
                 || lines.get(0).equals(String.join(",", MEASURED_COLUMNS)))) {
-            throw new UserInputException(file + " is not a results.csv of this version (header differs)");
+            throw new UserInputException(source + " is not a results.csv of this version (header differs)");
         }
         List<BenchResult> results = new ArrayList<>();
         for (String line : lines.subList(1, lines.size())) {

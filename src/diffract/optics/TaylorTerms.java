@@ -16,6 +16,8 @@ public final class TaylorTerms {
     private final double pixelSizeYUm;
     private final double maxAbsHeightUm;
     private final float[][] terms;
+    /** {@link #contentSha256()}, once computed (the terms never change). */
+    private volatile String contentSha256;
 
     /**
      * @param terms {@code terms[n]} holds term n, interleaved Re/Im, {@code 2 * rows * cols} floats; not copied:
@@ -111,6 +113,39 @@ public final class TaylorTerms {
             imMax = Math.max(imMax, t[i + 1]);
         }
         return new Extrema(reMin, reMax, imMin, imMax);
+    }
+
+    /**
+     * SHA-256 (hex) of what the terms are: sizes, pixel sizes, max |h| and every float of every term, so equal terms
+     * hash equal wherever they come from (a cache keys what it makes of them by this).
+     */
+    public String contentSha256() {
+        String known = contentSha256;
+        if (known != null) {
+            return known;
+        }
+        try {
+            java.security.MessageDigest digest = java.security.MessageDigest.getInstance("SHA-256");
+            java.nio.ByteBuffer header = java.nio.ByteBuffer.allocate(4 * 3 + 8 * 3).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            header.putInt(rows).putInt(cols).putInt(terms.length).putDouble(pixelSizeXUm).putDouble(pixelSizeYUm)
+                    .putDouble(maxAbsHeightUm);
+            digest.update(header.array());
+            java.nio.ByteBuffer body = java.nio.ByteBuffer.allocate(1 << 16).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            for (float[] term : terms) {
+                for (int i = 0; i < term.length; ) {
+                    body.clear();
+                    int n = Math.min(term.length - i, body.capacity() / 4);
+                    body.asFloatBuffer().put(term, i, n);
+                    digest.update(body.array(), 0, 4 * n);
+                    i += n;
+                }
+            }
+            known = java.util.HexFormat.of().formatHex(digest.digest());
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is part of every Java runtime", e);
+        }
+        contentSha256 = known;
+        return known;
     }
 
     /** Minimum and maximum of Re and Im of one term. */

@@ -7,6 +7,7 @@ import diffract.optics.TaylorBound;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TaylorSettings;
 import diffract.optics.TaylorTerms;
+import diffract.util.DiskCache;
 import diffract.util.FolderLock;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -18,10 +19,9 @@ import java.nio.file.Path;
 import java.util.Locale;
 
 /**
- * Precomputes Taylor terms once per (patch content, N): into a folder the user names, or into the user cache
- * (the system property {@value #CACHE_PROPERTY}, else {@code $DIFFRACT_CACHE}, else {@code $XDG_CACHE_HOME/diffract},
- * else {@code ~/.cache/diffract}). A folder whose sidecar has the same patch hash and N, and whose data pass their
- * checksum, is reused without any FFT; a damaged one is recomputed.
+ * Precomputes Taylor terms once per (patch content, N): into a folder the user names, or into the user's disk cache
+ * ({@link DiskCache}, where they are folder entries of kind {@value #CACHE_KIND}). A folder whose sidecar has the
+ * same patch hash and N, and whose data pass their checksum, is reused without any FFT; a damaged one is recomputed.
  */
 public final class Precomputation {
     private Precomputation() {
@@ -250,39 +250,31 @@ public final class Precomputation {
         return new ThesisResult(n + 1, dir, false);
     }
 
+    /** The disk cache's kind of the Taylor terms: one folder entry per (patch content, N). */
+    public static final String CACHE_KIND = "terms";
+
     /**
-     * Terms from the user cache, computed on first use. A damaged entry is recomputed (with a warning); a cache
-     * that cannot be written means the terms are computed in memory (with a note), not a refusal.
+     * Terms from the user's disk cache ({@link DiskCache#user}), computed on first use. A damaged entry is recomputed
+     * (with a warning); a cache that cannot be written means the terms are computed in memory (with a note), not a
+     * refusal; a disabled cache is neither read nor written.
      */
     public static TaylorTerms cached(Request request, Reporter reporter) {
+        DiskCache cache = DiskCache.user();
+        if (!cache.enabled()) {
+            TermSidecar.Selection selection = select(request, reporter);
+            return compute(request, highestOrderOf(request, selection), reporter);
+        }
         TermSidecar.Selection selection = select(request, Reporter.SILENT);
         int n = highestOrderOf(request, selection);
         String sha = request.meanSubtracted().contentSha256();
-        Path dir = cacheRoot().resolve("terms").resolve(sha.substring(0, 24) + "-n" + n);
+        Path dir = cache.folderEntry(CACHE_KIND, sha.substring(0, 24) + "-n" + n);
         Result result = intoFolder(request, dir, true, true, reporter);
-        if (!result.reused() && result.sidecar() != null) {
+        if (result.reused()) {
+            cache.touch(dir);
+        } else if (result.sidecar() != null && cache.stored(dir, "the Taylor terms", reporter)) {
             reporter.info("cached Taylor terms in " + dir);
         }
         return result.terms();
-    }
-
-    /** The system property that overrides the cache folder (as $DIFFRACT_CACHE does), for programs that embed diffract. */
-    public static final String CACHE_PROPERTY = "diffract.cache";
-
-    public static Path cacheRoot() {
-        String property = System.getProperty(CACHE_PROPERTY);
-        if (property != null && !property.isBlank()) {
-            return Path.of(property);
-        }
-        String explicit = System.getenv("DIFFRACT_CACHE");
-        if (explicit != null && !explicit.isBlank()) {
-            return Path.of(explicit);
-        }
-        String xdg = System.getenv("XDG_CACHE_HOME");
-        if (xdg != null && !xdg.isBlank()) {
-            return Path.of(xdg, "diffract");
-        }
-        return Path.of(System.getProperty("user.home"), ".cache", "diffract");
     }
 
     private static int highestOrderOf(Request request, TermSidecar.Selection selection) {

@@ -36,12 +36,18 @@ public final class BakedTable {
     private final FloatTexture3D.Precision precision;
     private final double bakeSeconds;
     private final boolean filtered;
+    private final long shortCells;
 
     BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds) {
-        this(grid, rgb, precision, bakeSeconds, false);
+        this(grid, rgb, precision, bakeSeconds, false, 0);
     }
 
-    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds, boolean filtered) {
+    /**
+     * @param shortCells the cells whose lobes loops this GL ended early (they miss lobes): such a table is what this GL
+     *                   bakes, not what the settings ask, so the disk cache does not keep it
+     */
+    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds, boolean filtered,
+               long shortCells) {
         if (rgb.length != 3 * grid.texels()) {
             throw new IllegalArgumentException("table of " + grid + " needs " + 3 * grid.texels() + " floats, got "
                     + rgb.length);
@@ -51,6 +57,7 @@ public final class BakedTable {
         this.precision = precision;
         this.bakeSeconds = bakeSeconds;
         this.filtered = filtered;
+        this.shortCells = shortCells;
     }
 
     /**
@@ -118,9 +125,14 @@ public final class BakedTable {
                     + "they miss lobes and are too dark; a patch of fewer texels, or a GPU, bakes them whole",
                     shortCells, grid.texels()));
         }
-        BakedTable table = new BakedTable(grid, rgb, precision, seconds, lobes);
+        BakedTable table = new BakedTable(grid, rgb, precision, seconds, lobes, shortCells);
         reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
         return table;
+    }
+
+    /** The cells whose lobes loops the GL that baked the table ended early (0 for a whole table). */
+    public long shortCells() {
+        return shortCells;
     }
 
     /** Whether the samples are cell and light averages of the lobes method (else FLSS point samples). */

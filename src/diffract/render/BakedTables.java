@@ -1,26 +1,33 @@
 package diffract.render;
 
+import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.FresnelModel;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.TaylorTerms;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.util.DiskCache;
 import diffract.util.Reporter;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
+import java.util.Locale;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionException;
 
 /**
  * Baked tables cached in memory per (patch terms, settings), so a viewer or a benchmark that draws the same patch
- * again never bakes twice. Terms are compared by identity (they are immutable); settings by value, with the
- * variant, the term format and the Fresnel model ignored (the table is FLSS's or the lobes method's on float32
- * terms whatever variant asks, before the gain factor). The least recently used table is dropped beyond
- * {@link #MAX_TABLES}: a table can take hundreds of MB. Thread-safe; a request for a table being baked waits for
- * that bake.
+ * again never bakes twice, and on disk ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table
+ * instead of baking it. In memory, terms are compared by identity (they are immutable); on disk, by their content
+ * hash. Settings are compared by value, with the variant, the term format and the Fresnel model ignored (the table
+ * is FLSS's or the lobes method's on float32 terms whatever variant asks, before the gain factor). The least
+ * recently used table is dropped from memory beyond {@link #MAX_TABLES}: a table can take hundreds of MB.
+ * Thread-safe; a request for a table being baked (or loaded) waits for that bake.
  */
 public final class BakedTables {
     /** Tables kept at once. */
@@ -46,55 +53,186 @@ public final class BakedTables {
     };
     /** Bakes under way: a second caller waits for the first one's table instead of baking it again. */
     private static final Map<Key, CompletableFuture<BakedTable>> BAKING = new HashMap<>();
+    /**
+     * Disk keys already worked out (they preprocess the bake's shaders), by the terms' content hash, settings and
+     * method: not by the terms themselves, which would keep large terms alive.
+     */
+    private static final Map<String, DiskCache.Key> DISK_KEYS = new LinkedHashMap<>(16, 0.75f, true) {
+        @Override
+        protected boolean removeEldestEntry(Map.Entry<String, DiskCache.Key> eldest) {
+            return size() > 16;
+        }
+    };
     private static int bakes;
+    private static int loads;
 
     private BakedTables() {
     }
 
     /**
-     * The table of these terms and settings, baked on the first request: of the lobes method, cell- and
-     * light-averaged, when the illumination filters (a pixel box or a light) and the lobes shader can take the patch
-     * (no texel pairs); else of FLSS. The bake runs outside the cache's lock, so {@link #isBaked} answers at once
-     * while a table bakes.
+     * The table of these terms and settings, loaded from the disk cache or baked on the first request: of the lobes
+     * method, cell- and light-averaged, when the illumination filters (a pixel box or a light) and the lobes shader
+     * can take the patch (no texel pairs); else of FLSS. A baked table is stored in the disk cache. The bake runs
+     * outside the cache's lock, so {@link #isBaked} answers at once while a table bakes.
      */
     public static BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
         Key key = key(terms, settings);
-        CompletableFuture<BakedTable> mine = null;
-        CompletableFuture<BakedTable> pending;
+        while (true) {
+            CompletableFuture<BakedTable> mine = null;
+            CompletableFuture<BakedTable> pending;
+            synchronized (BakedTables.class) {
+                BakedTable table = CACHE.get(key);
+                if (table != null) {
+                    return table;
+                }
+                pending = BAKING.get(key);
+                if (pending == null) {
+                    mine = new CompletableFuture<>();
+                    BAKING.put(key, mine);
+                    pending = mine;
+                }
+            }
+            if (mine != null) {
+                try {
+                    BakedTable table = loadOrBake(terms, settings, key, reporter);
+                    synchronized (BakedTables.class) {
+                        CACHE.put(key, table);
+                        BAKING.remove(key);
+                    }
+                    mine.complete(table);
+                } catch (RuntimeException | Error e) {
+                    synchronized (BakedTables.class) {
+                        BAKING.remove(key);
+                    }
+                    mine.completeExceptionally(e);
+                    throw e;
+                }
+            }
+            try {
+                BakedTable table = pending.join();
+                if (table != null) {
+                    return table;
+                }
+                // null: ofStored found no sound table on disk; this caller bakes it
+            } catch (CompletionException e) {
+                throw e.getCause() instanceof RuntimeException r ? r : e;
+            }
+        }
+    }
+
+    /**
+     * The table of these terms and settings if it is at hand without a bake: in memory, or in the disk cache (then
+     * loaded now, in a fraction of a second); empty when it would have to be baked, or is being baked. The viewer
+     * asks this to draw a table from disk at once instead of previewing while it "bakes".
+     */
+    public static Optional<BakedTable> ofStored(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        Key key = key(terms, settings);
         synchronized (BakedTables.class) {
             BakedTable table = CACHE.get(key);
-            if (table != null) {
-                return table;
-            }
-            pending = BAKING.get(key);
-            if (pending == null) {
-                mine = new CompletableFuture<>();
-                BAKING.put(key, mine);
-                pending = mine;
+            if (table != null || BAKING.containsKey(key)) {
+                return Optional.ofNullable(table);
             }
         }
-        if (mine != null) {
-            try {
-                BakedTable table = bakeOffThisThread(terms, settings, key.lobes(), reporter);
-                synchronized (BakedTables.class) {
-                    CACHE.put(key, table);
-                    bakes++;
-                    BAKING.remove(key);
-                }
-                mine.complete(table);
-            } catch (RuntimeException | Error e) {
-                synchronized (BakedTables.class) {
-                    BAKING.remove(key);
-                }
-                mine.completeExceptionally(e);
-                throw e;
-            }
+        DiskCache cache = DiskCache.user();
+        if (!cache.enabled()) {
+            return Optional.empty();
         }
+        DiskCache.Key diskKey = diskKey(key);
+        if (!Files.isRegularFile(cache.file(diskKey))) {
+            return Optional.empty();
+        }
+        CompletableFuture<BakedTable> mine = new CompletableFuture<>();
+        synchronized (BakedTables.class) {
+            BakedTable table = CACHE.get(key);
+            if (table != null || BAKING.containsKey(key)) {
+                return Optional.ofNullable(table);
+            }
+            BAKING.put(key, mine);
+        }
+        BakedTable table = null;
         try {
-            return pending.join();
-        } catch (CompletionException e) {
-            throw e.getCause() instanceof RuntimeException r ? r : e;
+            table = load(cache, diskKey, key, reporter);
+        } finally {
+            synchronized (BakedTables.class) {
+                if (table != null) {
+                    CACHE.put(key, table);
+                }
+                BAKING.remove(key);
+            }
+            mine.complete(table); // null: a caller of of() that waited bakes the table itself
         }
+        return Optional.ofNullable(table);
+    }
+
+    /** The table from the disk cache, else baked now (and then stored there). */
+    private static BakedTable loadOrBake(TaylorTerms terms, BrdfSettings settings, Key key, Reporter reporter) {
+        DiskCache cache = DiskCache.user();
+        DiskCache.Key diskKey = cache.enabled() ? diskKey(key) : null;
+        if (diskKey != null) {
+            BakedTable stored = load(cache, diskKey, key, reporter);
+            if (stored != null) {
+                return stored;
+            }
+        }
+        BakedTable table = bakeOffThisThread(terms, settings, key.lobes(), reporter);
+        synchronized (BakedTables.class) {
+            bakes++;
+        }
+        if (diskKey == null) {
+            return table;
+        }
+        if (table.shortCells() > 0) {
+            reporter.info("the table is not kept in the disk cache: " + table.shortCells() + " of its cells miss lobes"
+                    + " on this GL, where another GL may bake them whole");
+            return table;
+        }
+        Optional<Path> file = cache.store(diskKey, out -> BakedTableFile.write(table, out), "the baked table",
+                reporter);
+        file.ifPresent(f -> reporter.info(String.format(Locale.ROOT, "stored the table baked in %.1f s in the disk "
+                + "cache: %s (%.1f MB); a later run loads it instead of baking", table.bakeSeconds(), f,
+                sizeMb(f))));
+        return table;
+    }
+
+    /** The table of the disk cache's entry, or null when there is none or it is damaged (then said as a warning). */
+    private static BakedTable load(DiskCache cache, DiskCache.Key diskKey, Key key, Reporter reporter) {
+        long start = System.nanoTime();
+        BakedGrid grid = BakedGrid.of(key.settings(), key.terms().maxAbsHeightUm());
+        BakedTable table = cache.load(diskKey, in -> BakedTableFile.read(in, grid, key.lobes()), reporter,
+                "baking the table again");
+        if (table != null) {
+            synchronized (BakedTables.class) {
+                loads++;
+            }
+            reporter.info(String.format(Locale.ROOT, "loaded the %s from the disk cache in %.1f s (its bake took %.1f s): "
+                    + "%s", table.describe(), (System.nanoTime() - start) * 1e-9, table.bakeSeconds(),
+                    cache.file(diskKey)));
+        }
+        return table;
+    }
+
+    private static double sizeMb(Path file) {
+        try {
+            return Files.size(file) / 1e6;
+        } catch (java.io.IOException e) {
+            return Double.NaN;
+        }
+    }
+
+    /** The disk cache's key of an in-memory key, worked out once. */
+    private static DiskCache.Key diskKey(Key key) {
+        String memo = key.terms().contentSha256() + " " + key.settings() + " " + key.lobes();
+        synchronized (BakedTables.class) {
+            DiskCache.Key known = DISK_KEYS.get(memo);
+            if (known != null) {
+                return known;
+            }
+        }
+        DiskCache.Key computed = BakedTableFile.key(key.terms(), key.settings(), key.lobes());
+        synchronized (BakedTables.class) {
+            DISK_KEYS.put(memo, computed);
+        }
+        return computed;
     }
 
     /** Whether the table of these terms and settings is baked and cached (answers at once, even during a bake). */
@@ -141,5 +279,16 @@ public final class BakedTables {
     /** How many tables were baked so far (tests: the cache bakes once). */
     public static synchronized int bakeCount() {
         return bakes;
+    }
+
+    /** How many tables were loaded from the disk cache so far (tests: a stored table is not baked again). */
+    public static synchronized int loadCount() {
+        return loads;
+    }
+
+    /** Forgets the tables in memory, as a new process starts (tests: the next request reads the disk cache). */
+    public static synchronized void forgetInMemory() {
+        CACHE.clear();
+        DISK_KEYS.clear();
     }
 }

@@ -205,9 +205,7 @@ public final class DiffractionShaders {
      * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
      */
     public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(flssSettings, textures, Target.BRDF_MAP, false, false);
-        defines.put("BAKE", "1");
-        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
+        return bakeProgram(flssSettings, textures.highestOrder(), textures.windowRadii(), false);
     }
 
     /**
@@ -215,9 +213,22 @@ public final class DiffractionShaders {
      * sample's cell and the light.
      */
     public static ShaderProgram bakeLobesProgram(BrdfSettings lobesSettings, DiffractionTextures textures) {
-        Map<String, String> defines = definesFor(lobesSettings, textures, Target.BRDF_MAP, false, false);
-        defines.put("LOBES_BOX", "1"); // every sample averages over its cell
-        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
+        return bakeProgram(lobesSettings, textures.highestOrder(), textures.windowRadii(), true);
+    }
+
+    /**
+     * A bake pass from what decides its code alone: the settings (FLSS's, or with {@code lobes} the lobes method's,
+     * on float32 terms), the terms' order and the window radii. The disk cache keys a table by this program's text
+     * too, so a changed shader never reuses a table baked by the old one.
+     */
+    public static ShaderProgram bakeProgram(BrdfSettings settings, int highestOrder, WindowRadii radii, boolean lobes) {
+        Map<String, String> defines = defines(settings, highestOrder, radii, null, Target.BRDF_MAP, false, false);
+        if (lobes) {
+            defines.put("LOBES_BOX", "1"); // every sample averages over its cell
+            return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
+        }
+        defines.put("BAKE", "1");
+        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
     }
 
     /**

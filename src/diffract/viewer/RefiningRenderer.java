@@ -233,7 +233,9 @@ public final class RefiningRenderer implements GLEventListener {
 
     private void start(ViewerState state) {
         BrdfSettings configured = state.drawableSettings();
-        boolean waiting = configured.variant() == Variant.BAKED && !tableReady(state);
+        // a table in the disk cache loads in a fraction of a second: drawn at once, not previewed while it "bakes"
+        boolean waiting = configured.variant() == Variant.BAKED && !tableReady(state)
+                && !baker.loadStored(state.terms(), configured);
         BrdfSettings preview = PreviewPolicy.settings(configured, !waiting);
         Refinement r = new Refinement(state, waiting);
         for (Pass pass : LADDER) {

@@ -12,7 +12,9 @@ import java.util.concurrent.ExecutorService;
  * Bakes the baked variant's table in the background when the window needs one it has not got (a bake takes
  * minutes on a software rasteriser): the window shows the preview meanwhile, the title the bake's progress. The
  * table goes into {@link BakedTables}' cache, where the render thread finds it. One bake at a time; a request
- * during a bake is dropped, and the window asks again when the bake ends if it still needs another table.
+ * during a bake is dropped, and the window asks again when the bake ends if it still needs another table. A table
+ * in the disk cache is loaded on the asking thread instead ({@link #loadStored}): that takes a fraction of a second,
+ * so the window draws it at full quality at once.
  */
 public final class TableBaker implements AutoCloseable {
     private final ViewerModel model;
@@ -31,6 +33,14 @@ public final class TableBaker implements AutoCloseable {
         busy = true;
         model.update(s -> s.withBake(new BakeProgress(0)));
         executor.execute(() -> bake(terms, settings));
+    }
+
+    /**
+     * Whether the table of these terms and settings is at hand without a bake: in memory, or loaded now from the disk
+     * cache (a damaged entry is said as a notice, and then baked by {@link #ensureBaked}).
+     */
+    public boolean loadStored(TaylorTerms terms, BrdfSettings settings) {
+        return BakedTables.ofStored(terms, settings, new ProgressToModel()).isPresent();
     }
 
     /** Whether a bake is under way. */

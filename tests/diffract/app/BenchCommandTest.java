@@ -1,13 +1,17 @@
 package diffract.app;
 
+import diffract.bench.ReferenceMaps;
 import diffract.bench.ResultsTable;
 import diffract.jrtr.GlTestSupport;
+import diffract.util.DiskCache;
+import diffract.util.TestCache;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.stream.Stream;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -19,10 +23,13 @@ class BenchCommandTest {
     void aTinySweepWritesOneCsvRowPerConfigurationAndThePlot(@TempDir Path dir) throws Exception {
         GlTestSupport.assumeOffscreenGl();
         Path out = dir.resolve("bench");
-        // flss: 2 orders x 2 formats = 4; nmm ignores the step, same 4; 24 px maps keep it to seconds
-        int code = Main.execute("bench", "--patches", "blazed", "--variants", "flss,nmm", "--terms", "4,8",
-                "--lambda-steps", "25", "--window-radii", "1", "--texture-formats", "rg32f,rg8", "--size", "24",
-                "-o", out.toString());
+        int code;
+        try (TestCache ignored = TestCache.at(dir.resolve("cache"))) { // empty: its reference maps are counted
+            // flss: 2 orders x 2 formats = 4; nmm ignores the step, same 4; 24 px maps keep it to seconds
+            code = Main.execute("bench", "--patches", "blazed", "--variants", "flss,nmm", "--terms", "4,8",
+                    "--lambda-steps", "25", "--window-radii", "1", "--texture-formats", "rg32f,rg8", "--size", "24",
+                    "-o", out.toString());
+        }
         assertEquals(0, code);
         List<String> lines = Files.readAllLines(out.resolve("results.csv"));
         List<String> required = List.of("variant", "patch", "terms", "lambda_step_nm", "window_radius",
@@ -49,8 +56,11 @@ class BenchCommandTest {
         assertTrue(Files.readString(out.resolve("pareto.md")).contains("**yes**"));
         assertTrue(Files.readString(out.resolve("results.md")).contains("| blazed | flss | 8 | 25 | 1 | 0 | rg8 | 24 |"));
         assertTrue(Files.readString(out.resolve("machine.txt")).contains("CPU cores"));
-        assertEquals(3, Files.list(out.resolve("reference-maps")).filter(p -> p.toString().endsWith(".pfm")).count(),
-                "one cached reference map per light");
+        try (Stream<Path> maps = Files.list(dir.resolve("cache").resolve(ReferenceMaps.KIND))) {
+            assertEquals(3, maps.filter(p -> p.toString().endsWith(DiskCache.ENTRY_SUFFIX)).count(),
+                    "one reference map per light in the disk cache");
+        }
+        assertFalse(Files.exists(out.resolve("reference-maps")), "none in the output folder");
     }
 
     /** --variant auto needs its target, and the target needs auto: one line, exit code 2, before any work. */

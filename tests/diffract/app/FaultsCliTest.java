@@ -3,9 +3,9 @@ package diffract.app;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.TaylorTerms;
 import diffract.optics.io.GsfWriter;
-import diffract.precompute.Precomputation;
 import diffract.precompute.TermStore;
 import diffract.util.ImageFiles;
+import diffract.util.TestCache;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
@@ -56,14 +56,16 @@ class FaultsCliTest {
         GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.13, 50, 4, 8));
     }
 
+    private TestCache cache;
+
     @BeforeEach
     void privateCache() {
-        System.setProperty(Precomputation.CACHE_PROPERTY, dir.resolve("cache").toString());
+        cache = TestCache.at(dir.resolve("cache"));
     }
 
     @AfterEach
-    void noCache() {
-        System.clearProperty(Precomputation.CACHE_PROPERTY);
+    void backToTheBuildsCache() {
+        cache.close();
     }
 
     private static Object[] run(String... args) {
@@ -214,7 +216,7 @@ class FaultsCliTest {
     void anUnwritableCacheComputesInMemory() throws IOException {
         Path notAFolder = dir.resolve("file");
         Files.writeString(notAFolder, "a file where the cache folder would be");
-        System.setProperty(Precomputation.CACHE_PROPERTY, notAFolder.resolve("cache").toString());
+        System.setProperty(diffract.util.DiskCache.ROOT_PROPERTY, notAFolder.resolve("cache").toString());
         Path png = dir.resolve("m.png");
         Object[] result = run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant", "flss",
                 "--terms", "6", "--size", "12", "-o", png.toString());
@@ -222,6 +224,71 @@ class FaultsCliTest {
         assertTrue(err(result).contains("is not writable") && err(result).contains("computing the terms in memory"),
                 err(result));
         assertEquals(12, ImageIO.read(png.toFile()).getWidth());
+    }
+
+    /**
+     * {@code --no-cache}: nothing is read or written. The first run makes no cache folder; after a run that fills the
+     * cache, another with the flag leaves every file as it was (not even its time of use changes), and does not
+     * repair a damaged entry, which it would have had to read to notice.
+     */
+    @Test
+    void noCacheNeitherReadsNorWritesTheCache() throws IOException {
+        Path cacheDir = dir.resolve("cache");
+        List<String> brdfmap = List.of("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant",
+                "flss", "--terms", "6", "--size", "12", "-o", dir.resolve("m.png").toString());
+        List<String> noCache = new ArrayList<>(brdfmap);
+        noCache.add("--no-cache");
+        Object[] first = run(noCache.toArray(new String[0]));
+        assertEquals(0, first[0], err(first));
+        assertFalse(Files.exists(cacheDir), "no cache folder: " + err(first));
+
+        assertEquals(0, run(brdfmap.toArray(new String[0]))[0]);
+        Path entry;
+        try (Stream<Path> entries = Files.list(cacheDir.resolve("terms"))) {
+            entry = entries.findFirst().orElseThrow();
+        }
+        flipBytes(entry.resolve(TermStore.DATA_FILE), 16);
+        Files.setLastModifiedTime(entry, java.nio.file.attribute.FileTime.fromMillis(1_000_000_000_000L));
+        List<String> before = snapshot(cacheDir);
+        Object[] again = run(noCache.toArray(new String[0]));
+        assertEquals(0, again[0], err(again));
+        assertFalse(err(again).contains("recomputing"), "the damaged entry was not read: " + err(again));
+        assertEquals(before, snapshot(cacheDir), "the cache folder is untouched");
+
+        Object[] repaired = run(brdfmap.toArray(new String[0])); // without the flag the cache is used again
+        assertTrue(err(repaired).contains("fails its checksum") && err(repaired).contains(": recomputing"),
+                err(repaired));
+    }
+
+    /** {@code --no-cache} on a GPU command: the baked table is baked and not stored. */
+    @Test
+    void noCacheStoresNoBakedTable() {
+        diffract.jrtr.GlTestSupport.assumeOffscreenGl();
+        Path cacheDir = dir.resolve("cache");
+        Object[] result = run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--engine", "gpu",
+                "--variant", "baked", "--baked-samples", "9,2", "--terms", "20", "--size", "12", "--no-cache", "-o",
+                dir.resolve("b.png").toString());
+        assertEquals(0, result[0], err(result));
+        assertFalse(Files.exists(cacheDir), "no cache folder: " + err(result));
+        Object[] cached = run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--engine", "gpu",
+                "--variant", "baked", "--baked-samples", "9,2", "--terms", "20", "--size", "12", "-o",
+                dir.resolve("b.png").toString());
+        assertEquals(0, cached[0], err(cached));
+        assertTrue(Files.isDirectory(cacheDir.resolve("baked-tables")), err(cached));
+        assertTrue(diffract.util.DiskCache.diskInUse(), "the flag applies to its command only");
+    }
+
+    /** Every file under {@code dir} with its size, time of modification and content hash. */
+    private static List<String> snapshot(Path dir) throws IOException {
+        try (Stream<Path> files = Files.walk(dir)) {
+            List<String> lines = new ArrayList<>();
+            for (Path p : files.sorted().toList()) {
+                lines.add(dir.relativize(p) + " " + Files.getLastModifiedTime(p).toMillis() + " "
+                        + (Files.isRegularFile(p) ? Files.size(p) + " "
+                        + diffract.util.DiskCache.sha256Hex(Files.readAllBytes(p)) : "folder"));
+            }
+            return lines;
+        }
     }
 
     /** Two precomputes into one folder at once, as threads of this process: one computes, the other reuses. */

@@ -7,6 +7,7 @@ import diffract.optics.HeightField;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.util.DiskCache;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -40,7 +41,7 @@ class AutoCalibrationTest {
     @BeforeAll
     static void calibrate() {
         GlTestSupport.assumeOffscreenGl();
-        calibration = AutoCalibration.of(GRATING, 0, BASE, cache, Reporter.SILENT, PLAN);
+        calibration = AutoCalibration.of(GRATING, 0, BASE, DiskCache.at(cache), Reporter.SILENT, PLAN);
         calibration.forEach(r -> TestReport.printf(AutoCalibrationTest.class, "calibration: %s: %.2f ms, CIEDE2000 %.3f%n",
                 AutoChoice.describe(r), r.msPerFrame(), r.deltaEMean()));
     }
@@ -55,7 +56,7 @@ class AutoCalibrationTest {
     void theChoiceMeetsTheTargetAtHeldOutLights(@TempDir Path references) {
         AutoChoice choice = AutoChoice.choose(calibration, 2.0).orElseThrow();
         TestReport.line(AutoCalibrationTest.class, choice.explanation());
-        BenchRunner heldOut = new BenchRunner(new ReferenceMaps(references, Reporter.SILENT), Reporter.SILENT,
+        BenchRunner heldOut = new BenchRunner(new ReferenceMaps(DiskCache.at(references), Reporter.SILENT), Reporter.SILENT,
                 List.of(30.0, 60.0));
         List<BenchConfig> candidates = calibration.stream().filter(r -> r.deltaEMean() <= 2.0)
                 .map(BenchResult::config).toList();
@@ -103,7 +104,7 @@ class AutoCalibrationTest {
     @Test
     void aSecondRunReusesTheCalibration() {
         Reporter.Collecting reporter = new Reporter.Collecting();
-        List<BenchResult> again = AutoCalibration.of(GRATING, 0, BASE, cache, reporter, PLAN);
+        List<BenchResult> again = AutoCalibration.of(GRATING, 0, BASE, DiskCache.at(cache), reporter, PLAN);
         assertTrue(reporter.infos().stream().anyMatch(s -> s.contains("reused")), reporter.infos().toString());
         assertEquals(calibration.size(), again.size());
         for (int i = 0; i < again.size(); i++) {

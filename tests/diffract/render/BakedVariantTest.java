@@ -17,9 +17,13 @@ import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.WavelengthSampling;
 import diffract.util.Reporter;
+import diffract.util.TestCache;
 import diffract.util.UserInputException;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
@@ -35,6 +39,21 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class BakedVariantTest {
     static final int SIZE = 64;
     static final int UV_SAMPLES = 129;
+
+    @TempDir
+    java.nio.file.Path cacheDir;
+    /** An empty disk cache per test: the tests count bakes, which a table stored by an earlier run would save. */
+    private TestCache cache;
+
+    @BeforeEach
+    void ownCache() {
+        cache = TestCache.at(cacheDir);
+    }
+
+    @AfterEach
+    void backToTheBuildsCache() {
+        cache.close();
+    }
 
     static BrdfSettings baked() {
         return RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(UV_SAMPLES, 0));

@@ -7,6 +7,7 @@ import diffract.optics.Variant;
 import diffract.render.BakedTables;
 import diffract.util.Reporter;
 import diffract.util.ImageFiles;
+import diffract.util.TestCache;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Tag;
@@ -154,19 +155,43 @@ class ViewerResponsivenessTest {
     }
 
     @Test
-    void theBakedVariantShowsThePreviewWhileItsTableBakesThenRefinesWithIt() throws InterruptedException {
-        // N = 20: the thesis' series reaches this patch, which the baked table is made of
-        ViewerModel m = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
-                .with(b -> b.variant(Variant.BAKED).highestOrder(20).bakedSamples(24, 8))), Reporter.SILENT);
-        int bakes = BakedTables.bakeCount();
-        open(m);
-        assertTrue(ViewerTestSupport.awaitRefined(viewer, model), viewer.refinement().toString());
-        assertEquals(bakes + 1, BakedTables.bakeCount(), "the window baked the table once");
-        assertTrue(BakedTables.isBaked(model.state().terms(), model.state().drawableSettings()));
-        assertNull(model.state().bake());
-        assertEquals(Variant.BAKED, viewer.refinement().state().drawableSettings().variant());
-        assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| baked N=20")
-                && viewer.title().contains("| refined |"), 60), viewer.title());
+    void theBakedVariantShowsThePreviewWhileItsTableBakesThenRefinesWithIt(@TempDir Path cacheDir)
+            throws InterruptedException {
+        GlTestSupport.assumeWindow();
+        try (TestCache ignored = TestCache.at(cacheDir)) { // empty: the table must be baked
+            // N = 20: the thesis' series reaches this patch, which the baked table is made of
+            ViewerModel m = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
+                    .with(b -> b.variant(Variant.BAKED).highestOrder(20).bakedSamples(24, 8))), Reporter.SILENT);
+            int bakes = BakedTables.bakeCount();
+            open(m);
+            assertTrue(ViewerTestSupport.awaitRefined(viewer, model), viewer.refinement().toString());
+            assertEquals(bakes + 1, BakedTables.bakeCount(), "the window baked the table once");
+            assertTrue(BakedTables.isBaked(model.state().terms(), model.state().drawableSettings()));
+            assertNull(model.state().bake());
+            assertEquals(Variant.BAKED, viewer.refinement().state().drawableSettings().variant());
+            assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| baked N=20")
+                    && viewer.title().contains("| refined |"), 60), viewer.title());
+        }
+    }
+
+    /** A table in the disk cache is loaded, not baked: the window never waits for a bake. */
+    @Test
+    void theBakedVariantDrawsATableFromTheDiskCacheWithoutABake(@TempDir Path cacheDir) throws InterruptedException {
+        GlTestSupport.assumeWindow();
+        try (TestCache ignored = TestCache.at(cacheDir)) {
+            ViewerModel m = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
+                    .with(b -> b.variant(Variant.BAKED).highestOrder(20).bakedSamples(24, 8))), Reporter.SILENT);
+            BakedTables.of(m.state().terms(), m.state().drawableSettings(), Reporter.SILENT); // an earlier run
+            BakedTables.forgetInMemory();
+            int bakes = BakedTables.bakeCount();
+            int loads = BakedTables.loadCount();
+            open(m);
+            assertTrue(ViewerTestSupport.awaitRefined(viewer, model), viewer.refinement().toString());
+            assertEquals(bakes, BakedTables.bakeCount(), "the window baked nothing");
+            assertEquals(loads + 1, BakedTables.loadCount(), "it loaded the table once");
+            assertNull(model.state().bake(), "no bake was started");
+            assertEquals(Variant.BAKED, viewer.refinement().state().drawableSettings().variant());
+        }
     }
 
     /** Waits until the expensive configured pass has drawn at least one tile. */

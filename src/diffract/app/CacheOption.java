@@ -1,0 +1,26 @@
+package diffract.app;
+
+import diffract.util.DiskCache;
+import picocli.CommandLine.Option;
+
+import java.util.List;
+
+/**
+ * {@code --no-cache}, shared by the commands that use the disk cache ({@link DiskCache}: Taylor terms, baked tables,
+ * calibrations of {@code auto}, reference maps): the command neither reads nor writes it, and computes everything
+ * afresh, in memory. It applies to the one command: {@link Main#execute} switches the cache by whether the command
+ * it runs was given the flag (parsing alone switches nothing), and back when the command ends.
+ */
+final class CacheOption {
+    static final String FLAG = "--no-cache";
+
+    @Option(names = FLAG, description = "Neither read nor write the disk cache (" + DiskCache.ROOT_VARIABLE
+            + ", else ~/.cache/diffract): compute the Taylor terms, baked tables, calibrations and reference maps "
+            + "afresh and keep them in memory only.")
+    boolean noCache;
+
+    /** The option as given, for a command that runs another: {@code --no-cache}, or nothing. */
+    List<String> arguments() {
+        return noCache ? List.of(FLAG) : List.of();
+    }
+}
