@@ -51,10 +51,6 @@ final class PatchOptions {
                     + "for images, text and .gsf, exported level).")
     Levelling level;
 
-    /** The options a scene file says by itself. */
-    static final String[] NAMES = {"--patch", "--synthetic", "--max-height", "--pixel-size", "--channel", "--level",
-        "--period", "--height", "--periods", "--samples-per-period", "--rows", "--seed", "--size-px"};
-
     boolean given() {
         return file != null || synthetic != null;
     }

@@ -144,10 +144,9 @@ final class ViewerOptions {
     /** The scene read by validate(). */
     private Scene parsedScene;
 
+    /** What only a scene file says: its shape and skin (the patch options replace the scene's patch). */
     private static List<String> sceneOnly() {
-        List<String> names = new ArrayList<>(List.of(PatchOptions.NAMES));
-        names.addAll(List.of("--shape", "--tangent", "--pigmentation", "--species", "--smooth-skin"));
-        return List.copyOf(names);
+        return List.of("--shape", "--tangent", "--pigmentation", "--species", "--smooth-skin");
     }
 
     /** Accepts the shapes a command line can build (an OBJ file needs a scene). */
@@ -229,8 +228,9 @@ final class ViewerOptions {
     Scene scene(Scene.ImageSize defaultSize) {
         Scene s = parsedScene != null ? parsedScene : optionsScene(defaultSize);
         Scene.MaterialSpec m = s.material();
-        // --terms replaces a scene's tolerance-chosen N
-        Scene.MaterialSpec material = new Scene.MaterialSpec(m.patch(), brdf.apply(m.settings()),
+        // --terms replaces a scene's tolerance-chosen N; --patch or --synthetic the scene's patch
+        Scene.PatchSpec patchSpec = parsedScene != null && patch.given() ? patch.spec(DEFAULT_PATCH) : m.patch();
+        Scene.MaterialSpec material = new Scene.MaterialSpec(patchSpec, brdf.apply(m.settings()),
                 brdf.highestOrderGiven() ? null : m.orderTolerance(), m.pigmentation(), m.pigmentationOn(),
                 m.diffuseWeight(), m.exposure());
         return s.withMaterial(material);

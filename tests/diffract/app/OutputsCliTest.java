@@ -2,7 +2,7 @@ package diffract.app;
 
 import diffract.optics.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
-import diffract.precompute.Precomputation;
+import diffract.util.DiskCache;
 import diffract.util.ImageFiles;
 import diffract.util.OpenExr;
 import org.junit.jupiter.api.AfterEach;
@@ -48,14 +48,21 @@ class OutputsCliTest {
         GsfWriter.write(grating, SyntheticPatches.blazed(2.5, 0.13, 10, 8, 4));
     }
 
+    private String suiteCache;
+
     @BeforeEach
     void privateCache() {
-        System.setProperty(Precomputation.CACHE_PROPERTY, dir.resolve("cache").toString());
+        suiteCache = System.getProperty(DiskCache.ROOT_PROPERTY);
+        System.setProperty(DiskCache.ROOT_PROPERTY, dir.resolve("cache").toString());
     }
 
     @AfterEach
-    void noCache() {
-        System.clearProperty(Precomputation.CACHE_PROPERTY);
+    void suiteCacheAgain() {
+        if (suiteCache != null) {
+            System.setProperty(DiskCache.ROOT_PROPERTY, suiteCache);
+        } else {
+            System.clearProperty(DiskCache.ROOT_PROPERTY);
+        }
     }
 
     /** Exit code 2, exactly {@code "diffract: " + expected} on standard error, nothing else, no work done. */

@@ -112,6 +112,30 @@ class SceneCliTest {
         assertEquals(32, image.getHeight());
     }
 
+    /** --synthetic (or --patch) beside a scene replaces the scene's patch: the picture is another grating's. */
+    @Test
+    @Tag("gl")
+    void aPatchGivenBesideASceneReplacesItsPatch() throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        Path own = dir.resolve("own.png");
+        Path other = dir.resolve("other.png");
+        Object[] a = CliTest.run("render", "assets/scenes/blazed-grating-plane.json", "--size", "48x32", "-o",
+                own.toString());
+        assertEquals(0, a[0], (String) a[2]);
+        Object[] b = CliTest.run("render", "assets/scenes/blazed-grating-plane.json", "--synthetic", "elaphe-like",
+                "--size", "48x32", "-o", other.toString());
+        assertEquals(0, b[0], (String) b[2]);
+        BufferedImage x = ImageIO.read(own.toFile());
+        BufferedImage y = ImageIO.read(other.toFile());
+        int differing = 0;
+        for (int j = 0; j < 32; j++) {
+            for (int i = 0; i < 48; i++) {
+                differing += x.getRGB(i, j) != y.getRGB(i, j) ? 1 : 0;
+            }
+        }
+        assertTrue(differing > 48, "the Elaphe-like patch's orders are not the blazed grating's: " + differing);
+    }
+
     /**
      * A snake whose scales wear a scan as wide as the coherence window (the 52 um elaphe-scan, sigma_f = 0.5 texels)
      * renders with the lobes method under the scene's sun: no notice that it falls back to another method or a
