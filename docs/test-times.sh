@@ -15,8 +15,10 @@ table() {
     echo "| --- | ---: | ---: |"
     awk '{ printf "| `%s` | %d | %.1f |\n", $3, $2, $1 }'
 }
+rm -rf target/surefire-reports
 start=$(date +%s); mvn -B -ntp -q test > /dev/null; main_s=$(( $(date +%s) - start ))
 main=$(times)
+rm -rf target/surefire-reports
 start=$(date +%s); mvn -B -ntp -q test -Dgroups=long -Ddiffract.excludedGroups=none > /dev/null
 long_s=$(( $(date +%s) - start ))
 long=$(times)
