@@ -13,12 +13,18 @@
 //                       TABLE_BEYOND_SIGMA_RAD): those read the lobes method's baked table over their footprint
 //                       (baked_table.glsl), the key light and narrower ones sum their lobes
 //   IRRADIANCE_SH, SHADOW_MAP (environment.glsl), TONE_MAP_OPERATOR (tone_mapping.glsl)
+//   GGX_ALPHA           the scales as a glossy dielectric (engine/ggx.glsl, this roughness, the patch's refractive
+//                       index) in place of the diffraction BRDF, everything else as staged: what the diffraction
+//                       costs beside a standard material (Stage.withGlossyScales)
 // Every light colour tints the D65 result per channel (the diffraction is integrated under D65): exact for
 // D65-coloured lights, an approximation for coloured ones.
 #ifndef SURFACE_STAGE_GLSL
 #define SURFACE_STAGE_GLSL
 #include "/lighting/environment.glsl"
 #include "/lighting/tone_mapping.glsl"
+#ifdef GGX_ALPHA
+#include "/engine/ggx.glsl"
+#endif
 
 in vec3 surfaceWorldPosition;
 in vec3 surfaceWorldNormal;
@@ -119,8 +125,13 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
 #elif defined(FILTERED)
     setSurfacePixelUnder(uvDerivatives.xy, uvDerivatives.zw, wi, sigmaRad);
 #endif
-    structural += rgb * max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
     float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
+#ifdef GGX_ALPHA
+    // a white dielectric coat: f_r cos theta_i of the light's irradiance
+    structural += rgb * fresnel * ggxSpecularOverFresnel(wi, wr, GGX_ALPHA) * max(wi.z, 0.0);
+#else
+    structural += rgb * max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
+#endif
     if (pigmentToo) {
         diffuse += rgb * (1.0 - clamp(fresnel, 0.0, 1.0)) * max(wi.z, 0.0);
     }

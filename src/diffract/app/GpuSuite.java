@@ -218,6 +218,9 @@ final class GpuSuite {
                     error.pixels(), "gpu " + (settings.variant().filtersLight() ? "lobes" : "flss") + " N="
                     + converged.taylor().highestOrder() + (settings.variant().filtersLight() ? "" : " 1 nm"))));
         }
+        if (base.stage().staged() && base.stage().glossyAlpha() == null && !rows.isEmpty()) {
+            rows.add(log(glossyRow(base, rows.get(0).settings(), size)));
+        }
         if (scenesOnly) {
             return written(rows, gl);
         }
@@ -246,6 +249,28 @@ final class GpuSuite {
                     error.p95(), error.litPixels(), "cpu exact 1 nm")));
         }
         return written(rows, gl);
+    }
+
+    /** The GGX roughness of the glossy material the staged scene's cost is compared with. */
+    static final double GLOSSY_ALPHA = 0.2;
+    static final String GLOSSY_CONFIGURATION = "glossy in place";
+
+    /**
+     * The staged scene with its scales a glossy dielectric (GGX, {@link #GLOSSY_ALPHA}) in place of the diffraction
+     * BRDF of {@code settings}, timed like the other rows: the cost of the diffraction beside a standard material,
+     * all else (lights, ground, shadow, pigment, tone mapping) the same. It is compared with nothing.
+     */
+    private Row glossyRow(SceneSetup base, BrdfSettings settings, int[] size) {
+        SceneSetup glossy = base.withSettings(settings).withStage(base.stage().withGlossyScales(GLOSSY_ALPHA));
+        float[] picture;
+        double ms;
+        try (OffscreenTarget target = sceneTarget(glossy)) {
+            picture = target.renderRgb(size[0], size[1]);
+            ms = target.measureMedianMs(size[0], size[1], 2, frames);
+        }
+        writePng("scene-glossy.png", picture, size);
+        return new Row("scene", GLOSSY_CONFIGURATION, settings, size[0], size[1], ms, size[0], Double.NaN, Double.NaN,
+                0, "none: GGX alpha " + GLOSSY_ALPHA + " in place of the diffraction, for its cost");
     }
 
     /** Writes gpu-suite.csv and gpu-suite.md of the rows; returns them. */
@@ -317,12 +342,28 @@ final class GpuSuite {
         b.append("|---|---|---|---|---|---|---|---|---|---|\n");
         for (Row r : rows) {
             BrdfSettings s = r.settings();
-            b.append(String.format(Locale.ROOT, "| %s | %s | %s | %d | %s | %dx%d | %.2f | %.3f | %.3f | %s at %d px |%n",
+            boolean compared = !Double.isNaN(r.deltaEMean());
+            b.append(String.format(Locale.ROOT, "| %s | %s | %s | %d | %s | %dx%d | %.2f | %s | %s | %s |%n",
                     r.kind(), r.configuration(), s.variant().label(), s.taylor().highestOrder(),
-                    number(s.spectral().lambdaStepNm()),
-                    r.width(), r.height(), r.msPerFrame(), r.deltaEMean(), r.deltaEP95(), r.reference(), r.errorSize()));
+                    number(s.spectral().lambdaStepNm()), r.width(), r.height(), r.msPerFrame(),
+                    compared ? String.format(Locale.ROOT, "%.3f", r.deltaEMean()) : "-",
+                    compared ? String.format(Locale.ROOT, "%.3f", r.deltaEP95()) : "-",
+                    compared ? r.reference() + " at " + r.errorSize() + " px" : r.reference()));
         }
+        glossyRatio(rows).ifPresent(ratio -> b.append(String.format(Locale.ROOT, "%nThe staged scene with the "
+                + "diffraction BRDF takes %.2f times the time of the same scene with a glossy GGX material.%n", ratio)));
         return b.toString();
+    }
+
+    /** The first scene row's time over the glossy row's, when both were run. */
+    static java.util.Optional<Double> glossyRatio(List<Row> rows) {
+        java.util.Optional<Row> glossy = rows.stream().filter(r -> r.configuration().equals(GLOSSY_CONFIGURATION))
+                .findFirst();
+        java.util.Optional<Row> first = rows.stream().filter(r -> r.kind().equals("scene")
+                && !r.configuration().equals(GLOSSY_CONFIGURATION)).findFirst();
+        return glossy.isPresent() && first.isPresent()
+                ? java.util.Optional.of(first.get().msPerFrame() / glossy.get().msPerFrame())
+                : java.util.Optional.empty();
     }
 
     private static String number(double v) {

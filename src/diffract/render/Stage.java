@@ -16,8 +16,12 @@ import java.util.TreeMap;
  * @param environment  extended lights and diffuse irradiance, or null
  * @param ground       the ground under the shape, or null
  * @param toneMapping  from linear light to the display
+ * @param glossyAlpha  null for the diffraction BRDF; else the scales are a glossy dielectric (GGX of this roughness,
+ *                     the patch's refractive index) in its place, all else staged alike: the cost of diffraction
+ *                     beside a standard material ({@link #withGlossyScales})
  */
-public record Stage(ScaleFrames scaleFrames, Environment environment, Ground ground, ToneMapping toneMapping) {
+public record Stage(ScaleFrames scaleFrames, Environment environment, Ground ground, ToneMapping toneMapping,
+                    Double glossyAlpha) {
     /** Most extended lights the surface shader evaluates (each one costs a full BRDF evaluation per fragment). */
     public static final int MAX_ENVIRONMENT_LIGHTS = 16;
 
@@ -47,13 +51,29 @@ public record Stage(ScaleFrames scaleFrames, Environment environment, Ground gro
         }
     }
 
+    /** The diffraction BRDF on this stage. */
+    public Stage(ScaleFrames scaleFrames, Environment environment, Ground ground, ToneMapping toneMapping) {
+        this(scaleFrames, environment, ground, toneMapping, null);
+    }
+
     public static Stage none() {
         return new Stage(null, null, null, ToneMapping.clip());
     }
 
+    /**
+     * The same stage with the scales as a glossy dielectric of GGX roughness {@code alpha} in place of the
+     * diffraction BRDF (Cook-Torrance, engine/ggx.glsl): the lights, the ground, the shadow and the pigment stay.
+     */
+    public Stage withGlossyScales(double alpha) {
+        if (!(alpha > 0 && alpha <= 1)) {
+            throw new IllegalArgumentException("GGX roughness must be in (0, 1], got " + alpha);
+        }
+        return new Stage(scaleFrames, environment, ground, toneMapping, alpha);
+    }
+
     /** Whether anything is staged: otherwise the surface shader is the thesis' own. */
     public boolean staged() {
-        return scaleFrames != null || environment != null || ground != null
+        return scaleFrames != null || environment != null || ground != null || glossyAlpha != null
                 || toneMapping.operator() != ToneMapping.Operator.CLIP || toneMapping.exposureStops() != 0;
     }
 
@@ -83,6 +103,9 @@ public record Stage(ScaleFrames scaleFrames, Environment environment, Ground gro
         }
         if (shadows()) {
             d.put("SHADOW_MAP", "1");
+        }
+        if (glossyAlpha != null) {
+            d.put("GGX_ALPHA", Float.toString(glossyAlpha.floatValue()));
         }
         d.put("TONE_MAP_OPERATOR", Integer.toString(toneMapping.operator().ordinal()));
         return d;

@@ -44,11 +44,17 @@ class GpuSuiteTest {
         List<String> lines = Files.readAllLines(dir.resolve("gpu-suite.csv"));
         List<String> header = List.of(lines.get(0).split(","));
         assertEquals(GpuSuite.COLUMNS, header);
-        // flss with the scene's settings and the thesis' configuration, each as a scene and as a BRDF map
-        assertEquals(1 + 4, lines.size(), String.join("\n", lines));
+        // flss with the scene's settings and the thesis' configuration, each as a scene and as a BRDF map, and the
+        // staged scene with a glossy material in place of the diffraction, for its cost
+        assertEquals(1 + 5, lines.size(), String.join("\n", lines));
         for (String line : lines.subList(1, lines.size())) {
             String[] f = line.split(",", -1);
             assertEquals(header.size(), f.length, line);
+            if (f[1].equals(GpuSuite.GLOSSY_CONFIGURATION)) {
+                assertTrue(Double.parseDouble(f[header.indexOf("ms_per_frame")]) > 0, line);
+                assertEquals("0", f[header.indexOf("compared_pixels")], line);
+                continue;
+            }
             double ms = Double.parseDouble(f[header.indexOf("ms_per_frame")]);
             double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
             assertTrue(ms > 0 && Double.isFinite(ms), line);
@@ -66,6 +72,10 @@ class GpuSuiteTest {
         BufferedImage picture = ImageIO.read(dir.resolve("scene-flss.png").toFile());
         assertEquals(48, picture.getWidth());
         assertEquals(27, picture.getHeight());
-        assertTrue(Files.readString(dir.resolve("gpu-suite.md")).startsWith("GPU suite on OpenGL "));
+        String markdown = Files.readString(dir.resolve("gpu-suite.md"));
+        assertTrue(markdown.startsWith("GPU suite on OpenGL "));
+        assertTrue(markdown.contains("times the time of the same scene with a glossy GGX material"), markdown);
+        BufferedImage glossy = ImageIO.read(dir.resolve("scene-glossy.png").toFile());
+        assertEquals(48, glossy.getWidth());
     }
 }
