@@ -16,15 +16,9 @@
 uniform float bakeW;
 out vec4 fragColor;
 
-// Only |(u, v, w)| = |omega_i + omega_r| <= 2 is reachable (about half of the box): samples farther than one cell
-// diagonal beyond it (never read by a trilinear lookup of a reachable point) are 0 and cost nothing.
 void main() {
-    vec2 ij = floor(gl_FragCoord.xy);
-    vec2 uv = -2.0 + 4.0 * ij / (bakedSamples.x - 1.0);
-    vec3 uvw = vec3(uv, bakeW);
-    float cellDiagonal = length(vec3(4.0 / (bakedSamples.x - 1.0), 4.0 / (bakedSamples.x - 1.0),
-                                     2.0 / (bakedSamples.y - 1.0)));
-    if (length(uvw) > 2.0 + cellDiagonal) {
+    vec3 uvw = bakeSampleUvw(bakeW);
+    if (bakeSampleUnreachable(uvw)) {
         fragColor = vec4(0.0, 0.0, 0.0, 1.0);
         return;
     }

@@ -6,19 +6,15 @@
 // keeps every order's energy at any resolution; baked.frag looks it up with mip levels over a pixel's footprint.
 #define FILTERED 1
 #include "lobes_spectrum.glsl"
+#include "bake_sample.glsl"
 
-uniform vec2 bakedSamples; // samples along u and v (.x) and along w (.y), both ends included (BakedGrid)
 uniform float bakeW;
 out vec4 fragColor;
 
-// Unreachable samples (farther than a cell diagonal beyond |(u, v, w)| = 2) are 0, as in baked.frag.
+// Unreachable samples are 0, as in baked.frag (bakeSampleUnreachable).
 void main() {
-    vec2 ij = floor(gl_FragCoord.xy);
-    vec2 uv = -2.0 + 4.0 * ij / (bakedSamples.x - 1.0);
-    vec3 uvw = vec3(uv, bakeW);
-    float cellDiagonal = length(vec3(4.0 / (bakedSamples.x - 1.0), 4.0 / (bakedSamples.x - 1.0),
-                                     2.0 / (bakedSamples.y - 1.0)));
-    if (length(uvw) > 2.0 + cellDiagonal) {
+    vec3 uvw = bakeSampleUvw(bakeW);
+    if (bakeSampleUnreachable(uvw)) {
         fragColor = vec4(0.0, 0.0, 0.0, 1.0);
         return;
     }

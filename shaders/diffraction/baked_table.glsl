@@ -6,9 +6,7 @@
 #ifndef BAKED_TABLE_GLSL
 #define BAKED_TABLE_GLSL
 
-// Samples of the table along u and along v (.x) and along w (.y): sample i of n sits at -2 + 4 i / (n - 1)
-// (u, v) and -2 + 2 i / (n - 1) (w), both ends included (BakedGrid.uv, BakedGrid.w).
-uniform vec2 bakedSamples;
+#include "bake_sample.glsl"
 
 // Sample index t = (x - x_min) / (x_max - x_min) (n - 1) per axis; texel i's centre is at (i + 0.5) / n.
 vec3 bakedTexcoord(vec3 uvw) {

@@ -66,15 +66,7 @@ vec3 linearSrgbFromXyz(vec3 xyz) {
     return XYZ_TO_LINEAR_SRGB * xyz;
 }
 
-// Srgb.encode for one channel: clip to [0, 1], then 12.92 c below 0.0031308, 1.055 c^(1/2.4) - 0.055 above.
-float srgbEncode(float linear) {
-    float c = clamp(linear, 0.0, 1.0);
-    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
-}
-
-vec3 srgbEncode(vec3 linear) {
-    return vec3(srgbEncode(linear.r), srgbEncode(linear.g), srgbEncode(linear.b));
-}
+#include "/engine/srgb.glsl"
 
 // What a frame's pixel stores (FrameOutput): display sRGB, clipped; with LINEAR_OUTPUT the linear value itself,
 // unclipped, for a still kept as floats.
@@ -84,15 +76,6 @@ vec3 frameOutput(vec3 linear) {
 #else
     return srgbEncode(linear);
 #endif
-}
-
-// Srgb.decode: pigmentation textures hold display-encoded bytes; blending happens in linear light.
-float srgbDecode(float encoded) {
-    return encoded <= 12.92 * 0.0031308 ? encoded / 12.92 : pow((encoded + 0.055) / 1.055, 2.4);
-}
-
-vec3 srgbDecode(vec3 encoded) {
-    return vec3(srgbDecode(encoded.r), srgbDecode(encoded.g), srgbDecode(encoded.b));
 }
 
 // ---------------------------------------------------------------------------------------------------------
@@ -120,6 +103,12 @@ float cosHalfToView(vec3 wi, vec3 wr) {
 
 bool aboveHorizon(vec3 wi, vec3 wr) {
     return wi.z > 0.0 && wr.z > 0.0;
+}
+
+// Schlick's reflectance of the surface between omega_i and omega_r at refractive index n (1 below the horizon:
+// nothing enters the skin there), for the pigment's share of the light (Algorithm 4).
+float surfaceFresnel(vec3 wi, vec3 wr, float n) {
+    return aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(n)) : 1.0;
 }
 
 // The Fresnel factor of C (FresnelModel.factor): Schlick's power reflectance counted once, F / F(0), or with

@@ -111,7 +111,7 @@ void main() {
     vec3 linear = max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
 #ifdef PIGMENTATION
     vec3 pigment = srgbDecode(texture(pigmentation, surfaceTexcoord).rgb);
-    float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
+    float fresnel = surfaceFresnel(wi, wr, refractiveIndex);
     linear = blendPigmentation(linear, pigment, fresnel, wi.z, diffuseWeight);
 #endif
     fragColor = vec4(frameOutput(linear), 1.0);

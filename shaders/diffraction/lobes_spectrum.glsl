@@ -3,11 +3,12 @@
 #ifndef LOBES_SPECTRUM_GLSL
 #define LOBES_SPECTRUM_GLSL
 #include "lobes_footprint.glsl"
+// Outside any #if: the include is expanded once, where it first appears, whatever the conditions around it.
+#include "baked_table.glsl"
 #ifdef ENVIRONMENT_TABLE
 // Lights wider than the lobes method takes (an environment's extended lights: surface_stage.glsl) read the lobes
-// method's own table over their footprint instead: the same physics integrated ahead, where the lobes to sum would
-// be counted in thousands per fragment.
-#include "baked_table.glsl"
+// method's own table over their footprint instead (baked_table.glsl): the same physics integrated ahead, where the
+// lobes to sum would be counted in thousands per fragment.
 bool footprintFromTable = false;
 MipFootprint tableFootprint;
 #endif

@@ -125,7 +125,7 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
 #elif defined(FILTERED)
     setSurfacePixelUnder(uvDerivatives.xy, uvDerivatives.zw, wi, sigmaRad);
 #endif
-    float fresnel = aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(refractiveIndex)) : 1.0;
+    float fresnel = surfaceFresnel(wi, wr, refractiveIndex);
 #ifdef GGX_ALPHA
     // a white dielectric coat: f_r cos theta_i of the light's irradiance
     structural += rgb * fresnel * ggxSpecularOverFresnel(wi, wr, GGX_ALPHA) * max(wi.z, 0.0);

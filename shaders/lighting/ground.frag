@@ -4,6 +4,7 @@
 // tone mapped as the surface is. Radiance = albedo x irradiance, in the units of the diffraction shaders' pigment term.
 #include "environment.glsl"
 #include "tone_mapping.glsl"
+#include "/engine/srgb.glsl"
 
 in vec3 groundWorldPosition;
 
@@ -25,11 +26,6 @@ float valueNoise(vec2 p) {
     return mix(mix(hash2(i), hash2(i + vec2(1.0, 0.0)), f.x), mix(hash2(i + vec2(0.0, 1.0)), hash2(i + vec2(1.0)), f.x), f.y);
 }
 
-float srgbEncodeChannel(float linear) {
-    float c = clamp(linear, 0.0, 1.0);
-    return c <= 0.0031308 ? 12.92 * c : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
-}
-
 void main() {
     vec3 n = vec3(0.0, 1.0, 0.0);
     vec2 p = groundWorldPosition.xz * mottleScale;
@@ -42,6 +38,6 @@ void main() {
 #ifdef LINEAR_OUTPUT
     fragColor = vec4(c, 1.0); // FrameOutput.LINEAR: linear light, as the surface's
 #else
-    fragColor = vec4(srgbEncodeChannel(c.r), srgbEncodeChannel(c.g), srgbEncodeChannel(c.b), 1.0);
+    fragColor = vec4(srgbEncode(c), 1.0);
 #endif
 }
