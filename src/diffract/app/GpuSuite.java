@@ -270,7 +270,7 @@ final class GpuSuite {
         }
         writePng("scene-glossy.png", picture, size);
         return new Row("scene", GLOSSY_CONFIGURATION, settings, size[0], size[1], ms, size[0], Double.NaN, Double.NaN,
-                0, "none: GGX alpha " + GLOSSY_ALPHA + " in place of the diffraction, for its cost");
+                0, "none (GGX alpha " + GLOSSY_ALPHA + " in place of the diffraction: its cost)");
     }
 
     /** Writes gpu-suite.csv and gpu-suite.md of the rows; returns them. */
@@ -330,7 +330,7 @@ final class GpuSuite {
                     Integer.toString(s.taylor().highestOrder()), number(s.spectral().lambdaStepNm()),
                     Integer.toString(s.window().radius()), number(4 * s.illumination().sigmaSpatialUm()), Integer.toString(r.width()), Integer.toString(r.height()),
                     number(r.msPerFrame()), Integer.toString(r.errorSize()), number(r.deltaEMean()),
-                    number(r.deltaEP95()), Integer.toString(r.comparedPixels()), r.reference(), field(gl.vendor()),
+                    number(r.deltaEP95()), Integer.toString(r.comparedPixels()), field(r.reference()), field(gl.vendor()),
                     field(gl.renderer()), field(gl.version()), field(gl.platform()))).append('\n');
         }
         return b.toString();
