@@ -60,6 +60,9 @@ class DiffractBSDF(mi.BSDF):
         scale = props.get("scale", 1.0) if props.has_property("scale") else 1.0
         gain = float(header["radiometric_gain"]) if mode == "absolute" else 1.0
         self.scale = float(scale) * gain / math.pi
+        # saturated orders lie outside the sRGB gamut (negative channels), which Mitsuba's image blocks refuse as
+        # invalid samples: clipped by default; unclipped ("clip": False) the values are brdfmap's PFM values
+        self.clip = bool(props.get("clip", True)) if props.has_property("clip") else True
         flags = mi.BSDFFlags.GlossyReflection | mi.BSDFFlags.FrontSide | mi.BSDFFlags.Anisotropic
         self.m_flags = flags
         self.m_components = [flags]
@@ -98,6 +101,8 @@ class DiffractBSDF(mi.BSDF):
     def eval(self, ctx, si, wo, active=True):
         # Mitsuba's si.wi points to the viewer (the path's previous vertex) and wo to the light: f(wo, wi) cos(wo)
         value = self.relative(wo, si.wi) * (self.scale * dr.maximum(wo.z, 0.0))
+        if self.clip:
+            value = dr.maximum(value, 0.0)
         return dr.select(active, value, mi.Color3f(0.0))
 
     def pdf(self, ctx, si, wo, active=True):

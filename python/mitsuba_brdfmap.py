@@ -40,7 +40,7 @@ def main():
     parser.add_argument("-o", "--output", required=True)
     args = parser.parse_args()
     diffract_mitsuba.register()
-    bsdf = mi.load_dict({"type": "diffract", "filename": args.table, "mode": "relative"})
+    bsdf = mi.load_dict({"type": "diffract", "filename": args.table, "mode": "relative", "clip": False})
     t, p = math.radians(args.theta_i), math.radians(args.phi_i)
     light = mi.Vector3f(math.sin(t) * math.cos(p), math.sin(t) * math.sin(p), math.cos(t))
     ctx = mi.BSDFContext()
