@@ -90,6 +90,7 @@ final class ExportCommand implements Callable<Integer> {
                     + "array can (2^31); give fewer with --baked-samples UV,W", grid.uvSamples(), grid.uvSamples(),
                     grid.wSamples()));
         }
+        MemoryCheck.export(field, settings, grid);
         DiffractionPipeline pipeline = DiffractionPipeline.cached(named, settings.spectral().lambdaMinNm());
         DiffractionBrdf cpu = pipeline.cpuBrdf(settings, settings.spectral().lambdaMinNm(), reporter);
         BrdfTable table = BrdfTable.of(cpu, grid, reporter);

@@ -126,6 +126,8 @@ class BrdfTableTest {
                 lit += expected[1] > 1e-5 ? 1 : 0;
             }
         }
+        System.out.printf(java.util.Locale.ROOT, "table against brdfmap's pixels: largest difference %.3g of the"
+                + " brightest %.3g (%.2f %%), %d lit pixels%n", worst, brightest, 100 * worst / brightest, lit);
         assertTrue(lit > 20, "the map shows too little light to compare: " + lit + " pixels");
         assertTrue(worst <= 0.02 * brightest, "the table's map differs by " + worst + " of " + brightest);
     }
