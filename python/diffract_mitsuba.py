@@ -11,7 +11,7 @@ horizon. Usage (docs/mitsuba.md):
     diffract_mitsuba.register()
     bsdf = mi.load_dict({"type": "diffract", "filename": "table.json"})
 
-Works in every RGB variant: the lookup is a drjit texture and the rest is drjit arithmetic.
+Runs in scalar_rgb and llvm_ad_rgb: the lookup is a drjit texture and the rest is drjit arithmetic.
 """
 import json
 import math
@@ -33,6 +33,15 @@ def _load(filename):
     if list(data.shape) != list(header["shape"]):
         raise ValueError(f"{filename}: the table's shape {data.shape} is not the header's {header['shape']}")
     return header, np.ascontiguousarray(data, dtype=np.float32)
+
+
+def _max(a, b):
+    # a select rather than dr.maximum: some LLVM builds cannot lower the fmaximum that dr.maximum becomes
+    return dr.select(a > b, a, b)
+
+
+def _min(a, b):
+    return dr.select(a < b, a, b)
 
 
 class DiffractBSDF(mi.BSDF):
@@ -83,26 +92,26 @@ class DiffractBSDF(mi.BSDF):
         (local frame, both pointing away from the surface); 0 below the horizon."""
         above = (wl.z > 0) & (wv.z > 0)
         h = wl + wv
-        length = dr.maximum(dr.norm(h), 1e-30)
-        cos_half_view = dr.clip(dr.dot(wv, h) / length, 0.0, 1.0)
+        length = _max(dr.norm(h), 1e-30)
+        cos_half_view = _min(_max(dr.dot(wv, h) / length, 0.0), 1.0)
         m = 1.0 - cos_half_view
         fresnel = self.r0 + (1.0 - self.r0) * m * m * m * m * m
         ratio = fresnel / self.r0
         phi = ratio if self.physical else ratio * ratio
         one_plus_dot = 1.0 + dr.dot(wl, wv)
         wz = wl.z + wv.z
-        gain = phi * one_plus_dot * one_plus_dot / dr.maximum(wz * wz * wv.z, 1e-30)
+        gain = phi * one_plus_dot * one_plus_dot / _max(wz * wz * wv.z, 1e-30)
         n_dot_h = h.z / length
-        v_dot_h = dr.maximum(cos_half_view, 1e-30)
-        shadowing = dr.minimum(1.0, dr.minimum(2.0 * n_dot_h * wv.z / v_dot_h, 2.0 * n_dot_h * wl.z / v_dot_h))
+        v_dot_h = _max(cos_half_view, 1e-30)
+        shadowing = _min(1.0, _min(2.0 * n_dot_h * wv.z / v_dot_h, 2.0 * n_dot_h * wl.z / v_dot_h))
         factor = self.spectral_factor(-h.x, -h.y, -wz)
         return dr.select(above, factor * (gain * shadowing), mi.Color3f(0.0))
 
     def eval(self, ctx, si, wo, active=True):
         # Mitsuba's si.wi points to the viewer (the path's previous vertex) and wo to the light: f(wo, wi) cos(wo)
-        value = self.relative(wo, si.wi) * (self.scale * dr.maximum(wo.z, 0.0))
+        value = self.relative(wo, si.wi) * (self.scale * _max(wo.z, 0.0))
         if self.clip:
-            value = dr.maximum(value, 0.0)
+            value = _max(value, 0.0)
         return dr.select(active, value, mi.Color3f(0.0))
 
     def pdf(self, ctx, si, wo, active=True):
@@ -118,7 +127,7 @@ class DiffractBSDF(mi.BSDF):
         bs.sampled_type = mi.UInt32(+mi.BSDFFlags.GlossyReflection)
         bs.sampled_component = 0
         ok = active & (si.wi.z > 0) & (pdf > 0)
-        value = self.eval(ctx, si, wo, ok) / dr.maximum(pdf, 1e-30)
+        value = self.eval(ctx, si, wo, ok) / _max(pdf, 1e-30)
         return (bs, dr.select(ok, value, mi.Color3f(0.0)))
 
     def eval_pdf(self, ctx, si, wo, active=True):
