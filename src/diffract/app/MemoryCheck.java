@@ -59,4 +59,16 @@ final class MemoryCheck {
         estimate.require(String.format(Locale.ROOT, "the %s map of a %dx%d patch", settings.variant().label(),
                 field.cols(), field.rows()), wayOut);
     }
+
+    /** {@code export --mitsuba}: the table's floats, the Taylor terms and the lobes' weight table. */
+    static void export(HeightField field, BrdfSettings settings, BakedGrid grid) {
+        int termCount = settings.taylor().highestOrder() + 1;
+        MemoryEstimate estimate = MemoryEstimate.of(String.format(Locale.ROOT, "table %d x %d x %d", grid.uvSamples(),
+                grid.uvSamples(), grid.wSamples()), grid.bytes(12))
+                .plus(termCount + " Taylor terms", 8L * field.rows() * field.cols() * termCount)
+                .plus("the lobes' weight table", LobeWeightTable.bytes(field.rows(), field.cols(),
+                        field.maxAbsHeightUm(), settings.spectral().lambdaMinNm(), settings.lobes().weightTolerance()));
+        estimate.require(String.format(Locale.ROOT, "the table of a %dx%d patch", field.cols(), field.rows()),
+                "use fewer --baked-samples, fewer --terms or crop the patch");
+    }
 }
