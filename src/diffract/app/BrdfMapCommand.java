@@ -6,13 +6,13 @@ import diffract.bench.AutoVariant;
 import diffract.colour.ColourPath;
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
-import diffract.optics.LightPolicy;
 import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
+import diffract.optics.LightPolicy;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
@@ -23,6 +23,7 @@ import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
+import diffract.scene.LightDirection;
 import diffract.util.ImageFiles;
 import diffract.util.OpenExr;
 import diffract.util.OutputPaths;
@@ -62,7 +63,9 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Mixin
     CacheOption cache;
 
-    @Option(names = "--theta-i", required = true, paramLabel = "DEG", description = "Polar angle of the light direction.")
+    @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG",
+            description = "Light polar angle from the patch's normal, 0.." + LightDirection.MAX_THETA_DEG_TEXT
+                    + " (default ${DEFAULT-VALUE}).")
     double thetaIDeg;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png|MAP.exr",
@@ -114,7 +117,9 @@ final class BrdfMapCommand implements Callable<Integer> {
 
     /** The map's size and how it is shown. */
     static final class Picture {
-        @Option(names = "--size", defaultValue = "256", paramLabel = "S", description = "Map size in pixels (default ${DEFAULT-VALUE}).")
+        @Option(names = "--size", defaultValue = "256", paramLabel = "S", converter = OptionTypes.ImageSize.Converter.class,
+                description = "Map size in pixels, one side of the square map (S or SxS; default ${DEFAULT-VALUE}).")
+        OptionTypes.ImageSize sizeOption = new OptionTypes.ImageSize(256, 256);
         int size = 256;
 
         @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto", converter = OptionTypes.Exposure.Converter.class,
@@ -192,11 +197,10 @@ final class BrdfMapCommand implements Callable<Integer> {
     private Engine validate() {
         patch.validateRequired();
         brdf.validate();
-        if (picture.size < 1 || picture.size > 8192) {
-            throw new UserInputException("--size must be between 1 and 8192, got " + picture.size);
-        }
-        if (!(thetaIDeg >= 0 && thetaIDeg < 90)) {
-            throw new UserInputException("--theta-i must be in [0, 90) degrees, got " + thetaIDeg);
+        picture.size = picture.sizeOption.squareSide("--size");
+        if (!(thetaIDeg >= 0 && thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
+            throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG_TEXT
+                    + "] degrees, got " + thetaIDeg);
         }
         if (light.lambdaNm != null && !(light.lambdaNm > 0)) {
             throw new UserInputException("--lambda must be > 0 nm, got " + light.lambdaNm);

@@ -97,8 +97,23 @@ final class OptionTypes {
         }
     }
 
-    /** {@code --size WxH} (or {@code S} for a square), 16..4096 pixels per side. */
+    /**
+     * {@code --size WxH} (or {@code S} for a square), {@value #MIN_PX}..{@value #MAX_PX} pixels per side: the one
+     * form and range of every command's picture size (a BRDF map takes squares only, {@link #squareSide}).
+     */
     record ImageSize(int width, int height) {
+        static final int MIN_PX = Scene.ImageSize.MIN_PX;
+        static final int MAX_PX = Scene.ImageSize.MAX_PX;
+
+        /** The side of a square size; a BRDF map, whose pixels are directions over the unit disk, is square. */
+        int squareSide(String option) {
+            if (width != height) {
+                throw new UserInputException(option + " of a BRDF map is one side (S or SxS): the map is square, got "
+                        + width + "x" + height);
+            }
+            return width;
+        }
+
         static final class Converter implements ITypeConverter<ImageSize> {
             @Override
             public ImageSize convert(String text) {
@@ -106,11 +121,12 @@ final class OptionTypes {
                 if (parts.length <= 2) {
                     int w = whole(parts[0], "WxH or S");
                     int h = parts.length == 1 ? w : whole(parts[1], "WxH or S");
-                    if (w >= 16 && h >= 16 && w <= 4096 && h <= 4096) {
+                    if (w >= MIN_PX && h >= MIN_PX && w <= MAX_PX && h <= MAX_PX) {
                         return new ImageSize(w, h);
                     }
                 }
-                throw new TypeConversionException("must be WxH (or S) with 16..4096 pixels per side, got '" + text + "'");
+                throw new TypeConversionException("must be WxH (or S) with " + MIN_PX + ".." + MAX_PX
+                        + " pixels per side, got '" + text + "'");
             }
         }
     }

@@ -95,7 +95,7 @@ final class ViewerOptions {
 
     /** The light, the orbit camera, what is shown and at what size. */
     static final class View {
-        @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis (default ${DEFAULT-VALUE}).")
+        @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis, 0.." + LightDirection.MAX_THETA_DEG_TEXT + " (default ${DEFAULT-VALUE}).")
         double thetaIDeg = 30;
 
         @Option(names = "--phi-i", paramLabel = "DEG",
@@ -198,8 +198,8 @@ final class ViewerOptions {
                     + OrbitCamera.MAX_DISTANCE + "], got " + view.distance);
         }
         if (!(view.thetaIDeg >= 0 && view.thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
-            throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG + "] degrees, got "
-                    + view.thetaIDeg);
+            throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG_TEXT
+                    + "] degrees, got " + view.thetaIDeg);
         }
         if (!Double.isFinite(view.azimuthDeg) || !Double.isFinite(view.elevationDeg)
                 || (view.phiIDeg != null && !Double.isFinite(view.phiIDeg))) {

@@ -11,6 +11,8 @@ import diffract.optics.Direction;
 public record LightDirection(double thetaDeg, double phiDeg) {
     /** Grazing light gives a zero gain factor; stop just short of the horizon. */
     public static final double MAX_THETA_DEG = 89.0;
+    /** {@link #MAX_THETA_DEG} as options' help and messages write it. */
+    public static final String MAX_THETA_DEG_TEXT = "89";
 
     public LightDirection {
         if (!Double.isFinite(thetaDeg) || !Double.isFinite(phiDeg)) {

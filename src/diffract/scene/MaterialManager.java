@@ -1,17 +1,17 @@
 package diffract.scene;
 
 import diffract.geometry.PigmentationTexture;
-import diffract.optics.LightPolicy;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.LightPolicy;
 import diffract.optics.LobeQuadrature;
-import diffract.optics.PixelFilter;
-import diffract.optics.Variant;
 import diffract.optics.PatchCatalogue;
+import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
 import diffract.optics.TaylorBound;
 import diffract.optics.TaylorSettings;
+import diffract.optics.Variant;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.SamplingCheck;
 import diffract.pipeline.DiffractionPipeline;

@@ -24,6 +24,9 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
 
     /** Pixels of the rendered picture (the window's size for {@code view}). */
     public record ImageSize(int width, int height) {
+        /** Pixels per side a picture may have, in scene files and on every command ({@code --size}). */
+        public static final int MIN_PX = 1;
+        public static final int MAX_PX = 8192;
     }
 
     /** A pinhole camera: eye point, the point it looks at, the up direction, the vertical field of view. */

@@ -138,7 +138,7 @@ public final class SceneFile {
             return new Scene.ImageSize(640, 400);
         }
         SceneObject image = root.object("image");
-        SceneObject.Range pixels = SceneObject.Range.closed(16, 4096);
+        SceneObject.Range pixels = SceneObject.Range.closed(Scene.ImageSize.MIN_PX, Scene.ImageSize.MAX_PX);
         Scene.ImageSize size = new Scene.ImageSize(image.integer("width", pixels), image.integer("height", pixels));
         image.finish();
         return size;

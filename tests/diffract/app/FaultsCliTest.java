@@ -553,7 +553,8 @@ class FaultsCliTest {
         Object[] none = run();
         assertEquals(2, none[0]);
         assertEquals(List.of("diffract: missing command: one of demo, precompute, brdfmap, compare, convert-terms,"
-                + " patch, channels, view, render, measure, bench; try 'diffract --help'"), err(none).lines().toList());
+                + " patch, channels, view, render, measure, bench, export; try 'diffract --help'"),
+                err(none).lines().toList());
     }
 
     /**
