@@ -19,7 +19,7 @@ import picocli.CommandLine;
         description = "Structural colour from natural diffraction gratings (Single 2014, after Stam 1999).",
         subcommands = {DemoCommand.class, PrecomputeCommand.class, BrdfMapCommand.class, CompareCommand.class,
                 ConvertTermsCommand.class, PatchCommand.class, ChannelsCommand.class, ViewCommand.class,
-                RenderCommand.class, MeasureCommand.class, WarmUpCommand.class, BenchCommand.class,
+                RenderCommand.class, MeasureCommand.class, WarmUpCommand.class, BenchCommand.class, MergeCommand.class, SubmitCommand.class,
                 CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
     /** Exit code for bad usage or bad input. */
