@@ -1,7 +1,5 @@
 package diffract.app;
 
-import com.fasterxml.jackson.annotation.JsonPropertyOrder;
-
 import java.util.List;
 import java.util.Map;
 
@@ -28,7 +26,6 @@ import java.util.Map;
  * @param floatsFile    the piece's floats: little-endian float32, rows from the band's top, pixels left to right
  * @param floatsSha256  their SHA-256
  */
-@JsonPropertyOrder(alphabetic = false)
 record PieceManifest(String format, int piece, int pieces, int fromRow, int toRow, int sizePx, int channels,
                      String patchSha256, double patchWidthUm, double patchHeightUm, Map<String, String> settings,
                      Map<String, String> picture, List<String> arguments, String floatsFile, String floatsSha256) {

@@ -27,7 +27,7 @@ public record MapBand(int fromRow, int toRow) {
 
     /** The band in a progress line: empty for the whole map. */
     String label(int sizePx) {
-        return fromRow == 0 && toRow == sizePx ? "" : ", rows " + fromRow + "-" + (toRow - 1);
+        return fromRow == 0 && toRow == sizePx ? "" : ", rows " + this;
     }
 
     @Override
