@@ -152,6 +152,41 @@ class PiecesCliTest {
         assertEquals(-1, Files.mismatch(wholePng, temporary), "PNG bytes differ");
     }
 
+    @Test
+    void aMonochromaticMapMergesBitForBit() throws Exception {
+        List<String> mono = List.of("--synthetic", "blazed", "--coherence-length", "10", "--theta-i", "30", "--size",
+                "16", "--lambda", "550", "--exposure", "3");
+        Path png = dir.resolve("mono.png");
+        Path pfm = dir.resolve("mono.pfm");
+        List<String> whole = new ArrayList<>(mono);
+        whole.addAll(List.of("-o", png.toString(), "--pfm", pfm.toString()));
+        ok(CliTest.run(arguments(whole)));
+        Path folder = dir.resolve("mono");
+        for (int i = 0; i < 2; i++) {
+            List<String> piece = new ArrayList<>(mono);
+            piece.addAll(List.of("--tile", i + "/2", "--pieces", folder.toString()));
+            ok(CliTest.run(arguments(piece)));
+        }
+        Path mergedPng = dir.resolve("mono-merged.png");
+        Path mergedPfm = dir.resolve("mono-merged.pfm");
+        ok(CliTest.run("merge", folder.toString(), "-o", mergedPng.toString(), "--pfm", mergedPfm.toString()));
+        assertEquals(-1, Files.mismatch(pfm, mergedPfm), "PFM floats differ");
+        assertEquals(-1, Files.mismatch(png, mergedPng), "PNG bytes differ");
+    }
+
+    /** A worker that fails (here: the patch is not there) stops submit with its line and exit code, and no output. */
+    @Test
+    void aFailingWorkerEndsSubmitWithItsLine() {
+        Path png = dir.resolve("never.png");
+        Object[] result = CliTest.run("submit", "--local", "2", "--", "brdfmap", "--patch",
+                dir.resolve("absent.gsf").toString(), "--theta-i", "30", "--size", "16", "-o", png.toString());
+        String err = ((String) result[2]).strip();
+        assertEquals(2, result[0], err);
+        assertEquals(1, err.lines().count(), err);
+        assertTrue(err.matches("diffract: piece [01]/2 failed \\(exit code 2\\): diffract: .*absent\\.gsf.*"), err);
+        assertTrue(Files.notExists(png));
+    }
+
     private static Object[] brdfmap(String... more) {
         List<String> args = new ArrayList<>(MAP);
         args.addAll(List.of(more));
