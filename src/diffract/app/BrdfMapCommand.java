@@ -14,6 +14,7 @@ import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.LightPolicy;
 import diffract.optics.LightSource;
+import diffract.optics.MapBand;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.optics.io.SamplingCheck;
@@ -32,11 +33,17 @@ import diffract.util.UserInputException;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 
 /** {@code diffract brdfmap}: the BRDF of a patch for one light direction, over all viewing directions. */
@@ -63,14 +70,20 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Mixin
     CacheOption cache;
 
+    @Mixin
+    TileOptions tiles;
+
+    @Spec
+    CommandSpec spec;
+
     @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG",
             description = "Light polar angle from the patch's normal, 0.." + LightDirection.MAX_THETA_DEG_TEXT
                     + " (default ${DEFAULT-VALUE}).")
     double thetaIDeg;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png|MAP.exr",
+    @Option(names = {"-o", "--output"}, paramLabel = "MAP.png|MAP.exr",
             description = "The map to write: a PNG (display-encoded at the --exposure), or an OpenEXR file of the "
-                    + "linear values (as --exr).")
+                    + "linear values (as --exr). Required, except with --tile.")
     Path output;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Light:%n")
@@ -150,11 +163,8 @@ final class BrdfMapCommand implements Callable<Integer> {
     @Override
     public Integer call() throws IOException {
         Engine where = validate();
-        OutputPaths.require(OutputPaths.file("-o", output, "map.png", PNG, EXR),
-                OutputPaths.file("--pfm", picture.pfm, "map.pfm", ".pfm"),
-                OutputPaths.file("--exr", picture.exr, "map.exr", EXR));
-        if (picture.exrHalf && picture.exr == null && !outputIsExr()) {
-            throw new UserInputException("--exr-half goes with an OpenEXR output: --exr MAP.exr or -o MAP.exr");
+        if (tiles.tile == null) {
+            requireOutputs();
         }
         Reporter reporter = quiet.reporter();
         long start = System.nanoTime();
@@ -176,13 +186,106 @@ final class BrdfMapCommand implements Callable<Integer> {
                 settings.variant().label(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
                 window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phi);
+        if (tiles.tile != null) {
+            writePiece(pipeline, settings, named, phi, shortestLambdaNm, start, reporter);
+            return 0;
+        }
         float[] map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
                 : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
-        write(map, wi, settings, field, reporter);
+        write(map, wi, settings, field.widthUm(), field.heightExtentUm(), reporter);
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, picture.size, picture.size,
                 settings.variant().label(), where == Engine.GPU ? ", gpu" : "",
                 light.lambdaNm != null ? ", " + light.lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /**
+     * The outputs named can be written (checked before any work): -o, --pfm and --exr, and --exr-half only with an
+     * OpenEXR one. Merge checks the outputs it was given the same way.
+     */
+    void requireOutputs() {
+        if (output == null) {
+            throw new UserInputException("brdfmap needs -o MAP.png (or MAP.exr), the map to write; with --tile I/N "
+                    + "--pieces DIR it writes one piece of it instead");
+        }
+        OutputPaths.require(OutputPaths.file("-o", output, "map.png", PNG, EXR),
+                OutputPaths.file("--pfm", picture.pfm, "map.pfm", ".pfm"),
+                OutputPaths.file("--exr", picture.exr, "map.exr", EXR));
+        if (picture.exrHalf && picture.exr == null && !outputIsExr()) {
+            throw new UserInputException("--exr-half goes with an OpenEXR output: --exr MAP.exr or -o MAP.exr");
+        }
+    }
+
+    /** With --tile: the piece's rows, written with their manifest into --pieces DIR. */
+    private void writePiece(DiffractionPipeline pipeline, BrdfSettings settings, NamedPatch patch, double phiDeg, double shortestLambdaNm, long startNanos, Reporter reporter)
+            throws IOException {
+        TileOptions.Tile tile = tiles.tile;
+        MapBand band = MapBand.of(tile.index(), tile.count(), picture.size);
+        Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiDeg);
+        var cpu = pipeline.cpuBrdf(settings, shortestLambdaNm, reporter);
+        long work = System.nanoTime();
+        float[] floats = light.lambdaNm != null
+                ? BrdfMap.monochromatic(cpu, wi, light.lambdaNm, picture.size, band, reporter)
+                : BrdfMap.xyz(cpu, wi, picture.size, band, reporter);
+        long done = System.nanoTime();
+        PieceManifest manifest = new PieceManifest(PieceManifest.FORMAT, tile.index(), tile.count(), band.fromRow(),
+                band.toRow(), picture.size, light.lambdaNm != null ? 1 : 3, patch.meanSubtracted().contentSha256(),
+                patch.meanSubtracted().widthUm(), patch.meanSubtracted().heightExtentUm(),
+                floatSettings(settings, patch, phiDeg), pictureSettings(), pieceArguments(), null, null);
+        PieceFolder.write(tiles.pieces, tile, manifest, floats);
+        // submit reads this line: the piece's fixed cost (loading, terms) against its work (the pixels)
+        System.out.printf(Locale.ROOT, "wrote piece %s (rows %s of %d) into %s: setup %.2f s, work %.2f s%n", tile,
+                band, picture.size, tiles.pieces, (work - startNanos) * 1e-9, (done - work) * 1e-9);
+    }
+
+    /** Everything besides the patch and the map size that changes a piece's floats, as merge compares it. */
+    private Map<String, String> floatSettings(BrdfSettings settings, NamedPatch patch, double phiDeg) {
+        Map<String, String> s = new LinkedHashMap<>();
+        s.put("version", diffract.util.Version.VERSION);
+        s.put("brdf", settings.toString());
+        s.put("thetaIDeg", Double.toString(thetaIDeg));
+        s.put("phiIDeg", Double.toString(phiDeg));
+        s.put("lambdaNm", String.valueOf(light.lambdaNm));
+        s.put("patchMaxHeightUm", String.valueOf(patch.maxHeightUm()));
+        s.put("termsDir", engines.termsDir == null ? "cache" : engines.termsDir.toAbsolutePath().normalize()
+                + " (" + engines.termsHeightUnit + ")");
+        return s;
+    }
+
+    /** What changes the pictures written from the floats, not the floats. */
+    private Map<String, String> pictureSettings() {
+        Map<String, String> s = new LinkedHashMap<>();
+        s.put("exposure", picture.exposure.automatic() ? "auto" : Double.toString(picture.exposure.factor()));
+        s.put("colour", picture.colour.name());
+        s.put("exrHalf", Boolean.toString(picture.exrHalf));
+        return s;
+    }
+
+    /** The options this run was given, less --tile and --pieces and the ones that change no output. */
+    private List<String> pieceArguments() {
+        List<String> given = spec.commandLine().getParseResult().originalArgs();
+        int from = given.indexOf(spec.name()) + 1;
+        List<String> kept = new ArrayList<>();
+        for (int a = from; a < given.size(); a++) {
+            String arg = given.get(a);
+            if (arg.equals("--tile") || arg.equals("--pieces")) {
+                a++; // and its value
+            } else if (!arg.startsWith("--tile=") && !arg.startsWith("--pieces=")) {
+                kept.add(arg);
+            }
+        }
+        return kept;
+    }
+
+    /**
+     * Merge's half of a split run: the S x S floats that the pieces assembled, written as this command would have
+     * written them had it computed them whole (the same exposure, notices and files, bit for bit).
+     */
+    void writeMerged(float[] map, double phiDeg, double patchWidthUm, double patchHeightUm, Reporter reporter)
+            throws IOException {
+        requireOutputs();
+        write(map, Direction.fromSphericalDeg(thetaIDeg, phiDeg), brdf.apply(base(requested())), patchWidthUm,
+                patchHeightUm, reporter);
     }
 
     private static final String PNG = ".png";
@@ -223,6 +326,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (engines.time && where != Engine.GPU) {
             throw new UserInputException("--time measures the GPU: add --engine gpu");
         }
+        validateTile(where);
         BrdfSettings settings = brdf.apply(base(named)); // a refused value fails now too
         LightSource lightSource = settings.illumination().light();
         if (!lightSource.isPoint() && light.lambdaNm != null) {
@@ -236,6 +340,52 @@ final class BrdfMapCommand implements Callable<Integer> {
     }
 
     /**
+     * What {@code submit} checks before it starts any worker: the options as one run would (its outputs included),
+     * and those that splitting adds (on the CPU, at most a band per row).
+     */
+    void validateSplit(int pieceCount) {
+        if (tiles.tile != null || tiles.pieces != null) {
+            throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the brdfmap options");
+        }
+        Engine where = validate();
+        if (where == Engine.GPU || brdf.auto()) {
+            throw new UserInputException("submit splits the CPU's work (a GPU map takes seconds): run brdfmap alone, "
+                    + "or drop --engine gpu and --variant auto");
+        }
+        if (pieceCount > picture.size) {
+            throw new UserInputException("--pieces " + pieceCount + ": a map of --size " + picture.size + " has only "
+                    + picture.size + " rows to split");
+        }
+        requireOutputs();
+    }
+
+    /** --tile and --pieces go together, on the CPU, without the outputs that only merge writes. */
+    private void validateTile(Engine where) {
+        if (tiles.tile == null) {
+            if (tiles.pieces != null) {
+                throw new UserInputException("--pieces DIR goes with --tile I/N (which band of rows to compute)");
+            }
+            return;
+        }
+        if (tiles.pieces == null) {
+            throw new UserInputException("--tile " + tiles.tile + " needs --pieces DIR, the folder its piece goes to");
+        }
+        if (output != null || picture.pfm != null || picture.exr != null) {
+            throw new UserInputException("--tile writes one piece into --pieces " + tiles.pieces + "; the map's "
+                    + "-o, --pfm and --exr are written by 'diffract merge " + tiles.pieces + " -o MAP.png': drop them");
+        }
+        if (where == Engine.GPU || brdf.auto()) {
+            throw new UserInputException("--tile splits the CPU's work (a GPU map takes seconds): drop --tile, or "
+                    + "--engine gpu and --variant auto");
+        }
+        if (tiles.tile.count() > picture.size) {
+            throw new UserInputException("--tile " + tiles.tile + ": a map of --size " + picture.size + " has only "
+                    + picture.size + " rows to split");
+        }
+        OutputPaths.requireWritableFolder(tiles.pieces, "--pieces");
+    }
+
+    /**
      * The command's defaults for a variant: the thesis' configuration seen as the definitions say (a point light, the
      * canonical BRDF; each pixel the average over its square, honoured by lobes and the reference).
      */
@@ -244,7 +394,7 @@ final class BrdfMapCommand implements Callable<Integer> {
     }
 
     /** The variant asked for: the reference by default; with auto, FLSS stands in until the calibration chose. */
-    private Variant requested() {
+    Variant requested() {
         return brdf.auto() ? Variant.FLSS : brdf.variantOr(Variant.REFERENCE);
     }
 
@@ -297,7 +447,8 @@ final class BrdfMapCommand implements Callable<Integer> {
      * The PNG (display-encoded at the exposure) or OpenEXR (linear) of a colour or monochromatic map, and the optional
      * PFM and OpenEXR (linear, never exposed).
      */
-    private void write(float[] map, Direction wi, BrdfSettings settings, HeightField field, Reporter reporter)
+    private void write(float[] map, Direction wi, BrdfSettings settings, double patchWidthUm, double patchHeightUm,
+                       Reporter reporter)
             throws IOException {
         int channels = light.lambdaNm != null ? 1 : 3;
         float[] luminance = new float[picture.size * picture.size];
@@ -309,7 +460,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         if (picture.exposure.automatic()) {
             reporter.info(String.format(Locale.ROOT, "auto exposure %.4g", e));
         }
-        warnIfDark(luminance, wi, e, settings, field, reporter);
+        warnIfDark(luminance, wi, e, settings, patchWidthUm, patchHeightUm, reporter);
         float[] display = new float[map.length];
         float[] linear = new float[map.length];
         for (int p = 0; p < map.length; p += channels) {
@@ -344,7 +495,7 @@ final class BrdfMapCommand implements Callable<Integer> {
 
     /** A black (or nearly black) picture says so, and which option shows it. */
     private void warnIfDark(float[] luminance, Direction wi, double exposure, BrdfSettings settings,
-                            HeightField field, Reporter reporter) {
+                            double patchWidthUm, double patchHeightUm, Reporter reporter) {
         double brightest = 0;
         for (float value : luminance) {
             brightest = Math.max(brightest, value);
@@ -352,7 +503,7 @@ final class BrdfMapCommand implements Callable<Integer> {
         // an OpenEXR map is not exposed: no exposure can hide its light, only a map without any is worth a word
         boolean exposureShowsAll = picture.exposure.automatic() || outputIsExr();
         DarkMapNotice.check(brightest, AutoExposure.brightestDiffracted(luminance, picture.size, -wi.x(), -wi.y()),
-                exposure, exposureShowsAll, settings, field.widthUm(), field.heightExtentUm(),
+                exposure, exposureShowsAll, settings, patchWidthUm, patchHeightUm,
                 picture.size).ifPresent(n -> {
                     if (n.warning()) {
                         reporter.warn(n.text());

@@ -20,6 +20,7 @@ import picocli.CommandLine;
         subcommands = {DemoCommand.class, PrecomputeCommand.class, BrdfMapCommand.class, CompareCommand.class,
                 ConvertTermsCommand.class, PatchCommand.class, ChannelsCommand.class, ViewCommand.class,
                 RenderCommand.class, MeasureCommand.class, WarmUpCommand.class, BenchCommand.class, ExportCommand.class,
+                MergeCommand.class, SubmitCommand.class,
                 CommandLine.HelpCommand.class})
 public final class Main implements Runnable {
     /** Exit code for bad usage or bad input. */

@@ -30,10 +30,18 @@ public final class BrdfMap {
 
     /** CIE XYZ per pixel, 3 floats per pixel, rows from the top. */
     public static float[] xyz(DiffractionBrdf brdf, Direction wi, int size, Reporter reporter) {
-        float[] out = new float[size * size * 3];
-        forEachPixel(size, reporter, "BRDF map " + size + "x" + size, (i, j) -> {
+        return xyz(brdf, wi, size, new MapBand(0, size), reporter);
+    }
+
+    /**
+     * Rows {@code band} of the S x S map: the same floats, bit for bit, as those rows of {@link #xyz(DiffractionBrdf,
+     * Direction, int, Reporter)}, since every pixel is computed alone; 3 floats per pixel, the band's first row first.
+     */
+    public static float[] xyz(DiffractionBrdf brdf, Direction wi, int size, MapBand band, Reporter reporter) {
+        float[] out = new float[size * band.rows() * 3];
+        forEachPixel(size, band, reporter, "BRDF map " + size + "x" + size + band.label(size), (i, j) -> {
             Xyz c = brdf.mapPixel(wi, i, j, size);
-            int p = 3 * (j * size + i);
+            int p = 3 * ((j - band.fromRow()) * size + i);
             out[p] = (float) c.x();
             out[p + 1] = (float) c.y();
             out[p + 2] = (float) c.z();
@@ -43,12 +51,19 @@ public final class BrdfMap {
 
     /** The monochromatic relative BRDF per pixel, 1 float per pixel. */
     public static float[] monochromatic(DiffractionBrdf brdf, Direction wi, double lambdaNm, int size, Reporter reporter) {
-        float[] out = new float[size * size];
-        forEachPixel(size, reporter, "BRDF map " + size + "x" + size + " at " + lambdaNm + " nm", (i, j) -> {
+        return monochromatic(brdf, wi, lambdaNm, size, new MapBand(0, size), reporter);
+    }
+
+    /** Rows {@code band} of {@link #monochromatic(DiffractionBrdf, Direction, double, int, Reporter)}, bit for bit. */
+    public static float[] monochromatic(DiffractionBrdf brdf, Direction wi, double lambdaNm, int size, MapBand band,
+                                        Reporter reporter) {
+        float[] out = new float[size * band.rows()];
+        forEachPixel(size, band, reporter, "BRDF map " + size + "x" + size + band.label(size) + " at " + lambdaNm
+                + " nm", (i, j) -> {
             double x = xOf(i, size);
             double y = yOf(j, size);
             if (x * x + y * y < 1.0) {
-                out[j * size + i] = (float) brdf.relative(wi, Direction.fromProjected(x, y), lambdaNm);
+                out[(j - band.fromRow()) * size + i] = (float) brdf.relative(wi, Direction.fromProjected(x, y), lambdaNm);
             }
         });
         return out;
@@ -63,17 +78,21 @@ public final class BrdfMap {
      * Every pixel, handed out one at a time to as many workers as there are processors: pixels differ in cost by
      * orders of magnitude (the orders and the mirror against the dark), so a fixed split would leave workers idle.
      */
-    private static void forEachPixel(int size, Reporter reporter, String task, PixelTask pixel) {
+    private static void forEachPixel(int size, MapBand band, Reporter reporter, String task, PixelTask pixel) {
         if (size < 1) {
             throw new IllegalArgumentException("map size must be >= 1, got " + size);
         }
-        int total = size * size;
+        if (band.toRow() > size) {
+            throw new IllegalArgumentException("rows " + band + " lie outside a map of " + size + " rows");
+        }
+        int total = size * band.rows();
+        int first = band.fromRow() * size;
         AtomicInteger next = new AtomicInteger();
         AtomicInteger done = new AtomicInteger();
         int workers = Math.max(1, Math.min(total, Runtime.getRuntime().availableProcessors()));
         IntStream.range(0, workers).parallel().forEach(w -> {
             for (int p = next.getAndIncrement(); p < total; p = next.getAndIncrement()) {
-                pixel.run(p % size, p / size);
+                pixel.run((first + p) % size, (first + p) / size);
                 int finished = done.incrementAndGet();
                 if (finished % size == 0 || finished == total) {
                     reporter.progress(task, finished / (double) total);

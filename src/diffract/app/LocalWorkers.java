@@ -1,0 +1,114 @@
+package diffract.app;
+
+import java.io.IOException;
+import java.lang.management.ManagementFactory;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.function.Consumer;
+
+/**
+ * Commands of this program run as separate Java processes, at most {@code workers} at a time: the same Java, class path
+ * (the jar, or the test run's classes), heap limit, class-data archive and disk cache as this one, each told it has its
+ * share of the processors so that the workers together use the machine once, not {@code workers} times over.
+ */
+final class LocalWorkers {
+    /** How one process ended: its exit code, its output (standard output and error), and its wall time. */
+    record Finished(int index, int exitCode, String output, double wallS) {
+    }
+
+    private LocalWorkers() {
+    }
+
+    /**
+     * Runs every argument list (a command of {@link Main}), {@code workers} at a time, in order; {@code finished}
+     * hears of each as it ends. The first failure stops those still running and is returned; else null.
+     */
+    static Finished run(List<List<String>> commands, int workers, Consumer<Finished> finished)
+            throws IOException, InterruptedException {
+        int share = Math.max(1, Runtime.getRuntime().availableProcessors() / workers);
+        List<String> prefix = javaCommand(share);
+        ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
+            Thread t = new Thread(r, "local-worker");
+            t.setDaemon(true);
+            return t;
+        });
+        List<Process> started = java.util.Collections.synchronizedList(new ArrayList<>());
+        Finished[] failure = new Finished[1];
+        try {
+            List<Future<?>> futures = new ArrayList<>();
+            for (int i = 0; i < commands.size(); i++) {
+                int index = i;
+                futures.add(pool.submit(() -> {
+                    synchronized (failure) {
+                        if (failure[0] != null) {
+                            return null; // a piece failed: start no more
+                        }
+                    }
+                    List<String> command = new ArrayList<>(prefix);
+                    command.addAll(commands.get(index));
+                    long start = System.nanoTime();
+                    Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+                    started.add(p);
+                    String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+                    Finished f = new Finished(index, p.waitFor(), output, (System.nanoTime() - start) * 1e-9);
+                    synchronized (failure) {
+                        if (failure[0] != null) {
+                            return null; // stopped because another failed: that one is the news
+                        }
+                        if (f.exitCode() != 0) {
+                            failure[0] = f;
+                            started.forEach(Process::destroy);
+                        }
+                        finished.accept(f);
+                    }
+                    return null;
+                }));
+            }
+            for (Future<?> f : futures) {
+                try {
+                    f.get();
+                } catch (ExecutionException e) {
+                    if (e.getCause() instanceof IOException io) {
+                        throw io;
+                    }
+                    throw new IllegalStateException(e.getCause());
+                }
+            }
+        } finally {
+            started.forEach(Process::destroy); // an interrupted submit leaves no worker behind
+            pool.shutdownNow();
+        }
+        return failure[0];
+    }
+
+    /** java, its options as this process was given them where they matter to a worker, the class path and Main. */
+    private static List<String> javaCommand(int processors) {
+        List<String> command = new ArrayList<>();
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+            // the heap (DIFFRACT_JAVA_OPTS) and ./diffract's class-data archive; not agents or debuggers
+            if (option.startsWith("-Xmx") || option.startsWith("-Xms") || option.startsWith("-Xss")
+                    || option.startsWith("-XX:SharedArchiveFile=") || option.equals("-Xlog:disable")) {
+                command.add(option);
+            }
+        }
+        for (String property : List.of(diffract.util.DiskCache.ROOT_PROPERTY, diffract.util.DiskCache.LIMIT_PROPERTY,
+                "java.awt.headless")) {
+            String value = System.getProperty(property);
+            if (value != null) {
+                command.add("-D" + property + "=" + value);
+            }
+        }
+        command.add("-XX:ActiveProcessorCount=" + processors);
+        command.add("-cp");
+        command.add(System.getProperty("java.class.path"));
+        command.add(Main.class.getName());
+        return command;
+    }
+}

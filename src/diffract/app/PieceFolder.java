@@ -1,0 +1,231 @@
+package diffract.app;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import diffract.util.ImageFiles;
+import diffract.util.UserInputException;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HexFormat;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.TreeMap;
+import java.util.stream.Collectors;
+
+/**
+ * A folder of pieces of one BRDF map: {@code brdfmap --tile} writes one, {@code merge} reads them all back into the
+ * whole map's floats, or refuses, in one line, a folder whose pieces are missing, twice there, damaged or of another
+ * map. The floats are written before the manifest, each atomically, so a run that dies leaves no manifest that merge
+ * would accept.
+ */
+final class PieceFolder {
+    private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+    private static final String MANIFEST = ".json";
+    private static final String FLOATS = ".f32";
+
+    private PieceFolder() {
+    }
+
+    /** The pieces of a map, assembled: the first manifest (all agree) and the S x S map's floats. */
+    record Assembled(PieceManifest manifest, float[] map) {
+    }
+
+    /** Writes a piece's floats, then its manifest (with the floats' name and hash filled in). */
+    static void write(Path dir, TileOptions.Tile tile, PieceManifest manifest, float[] floats) throws IOException {
+        byte[] bytes = bytes(floats);
+        String floatsName = tile.fileName(FLOATS);
+        PieceManifest complete = new PieceManifest(PieceManifest.FORMAT, manifest.piece(), manifest.pieces(),
+                manifest.fromRow(), manifest.toRow(), manifest.sizePx(), manifest.channels(), manifest.patchSha256(),
+                manifest.patchWidthUm(), manifest.patchHeightUm(), manifest.settings(), manifest.picture(),
+                manifest.arguments(), floatsName, sha256(bytes));
+        byte[] json = (JSON.writeValueAsString(complete) + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        ImageFiles.writeAtomically(dir.resolve(floatsName), out -> out.write(bytes));
+        ImageFiles.writeAtomically(dir.resolve(tile.fileName(MANIFEST)), out -> out.write(json));
+    }
+
+    /** Every piece in {@code dir}, checked against each other and their hashes, as one map. */
+    static Assembled read(Path dir) throws IOException {
+        if (!Files.isDirectory(dir)) {
+            throw new UserInputException("merge: " + dir + " is not a folder of pieces (brdfmap --tile I/N --pieces "
+                    + "DIR writes one)");
+        }
+        Map<Path, PieceManifest> manifests = new TreeMap<>();
+        try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, "*" + MANIFEST)) {
+            for (Path file : files) {
+                manifests.put(file, parse(file));
+            }
+        }
+        if (manifests.isEmpty()) {
+            throw new UserInputException("merge: " + dir + " holds no pieces (piece-I-of-N.json, written by brdfmap "
+                    + "--tile I/N --pieces " + dir + ")");
+        }
+        PieceManifest first = agreeing(dir, manifests);
+        PieceManifest[] byIndex = complete(dir, manifests, first.pieces());
+        float[] map = new float[first.sizePx() * first.sizePx() * first.channels()];
+        for (PieceManifest m : byIndex) {
+            float[] floats = verifiedFloats(dir, m);
+            System.arraycopy(floats, 0, map, m.fromRow() * m.sizePx() * m.channels(), floats.length);
+        }
+        return new Assembled(first, map);
+    }
+
+    private static PieceManifest parse(Path file) throws IOException {
+        try {
+            PieceManifest m = JSON.readValue(file.toFile(), PieceManifest.class);
+            if (!PieceManifest.FORMAT.equals(m.format())) {
+                throw new UserInputException("merge: " + file + " is not a piece manifest (format '" + m.format()
+                        + "', expected '" + PieceManifest.FORMAT + "'): remove it or compute that piece again");
+            }
+            return m;
+        } catch (JsonProcessingException e) {
+            throw new UserInputException("merge: " + file + " is not a piece manifest (" + e.getOriginalMessage()
+                    + "): remove it or compute that piece again");
+        }
+    }
+
+    /**
+     * The manifest most pieces agree with; pieces of another map (other settings, patch, size or split) are refused,
+     * named, with what differs.
+     */
+    private static PieceManifest agreeing(Path dir, Map<Path, PieceManifest> manifests) {
+        Map<List<Object>, List<Path>> groups = new LinkedHashMap<>();
+        manifests.forEach((file, m) -> groups.computeIfAbsent(m.mapKey(), k -> new ArrayList<>()).add(file));
+        if (groups.size() == 1) {
+            return manifests.values().iterator().next();
+        }
+        List<Path> most = groups.values().stream().max(Comparator.comparingInt(List::size)).orElseThrow();
+        PieceManifest reference = manifests.get(most.get(0));
+        List<Path> others = manifests.keySet().stream().filter(f -> !most.contains(f)).toList();
+        PieceManifest other = manifests.get(others.get(0));
+        throw new UserInputException("merge: " + dir + ": " + names(others) + " belong to another map than "
+                + names(most) + " (" + difference(reference, other) + "): compute them again with the same options");
+    }
+
+    /** The first thing that differs between two pieces' maps, in words. */
+    private static String difference(PieceManifest a, PieceManifest b) {
+        if (a.pieces() != b.pieces()) {
+            return "split into " + b.pieces() + " pieces, not " + a.pieces();
+        }
+        if (!a.patchSha256().equals(b.patchSha256())) {
+            return "another patch: its height field's SHA-256 differs";
+        }
+        if (a.sizePx() != b.sizePx() || a.channels() != b.channels()) {
+            return "size " + b.sizePx() + " with " + b.channels() + " channels, not " + a.sizePx() + " with "
+                    + a.channels();
+        }
+        String settings = firstDifference(a.settings(), b.settings());
+        return settings != null ? settings : Objects.requireNonNullElse(firstDifference(a.picture(), b.picture()),
+                "other settings");
+    }
+
+    /** The first key whose value differs, as "key B, not A"; null if none does. */
+    private static String firstDifference(Map<String, String> a, Map<String, String> b) {
+        for (String key : union(a, b)) {
+            if (!Objects.equals(a.get(key), b.get(key))) {
+                return key + " " + b.get(key) + ", not " + a.get(key);
+            }
+        }
+        return null;
+    }
+
+    private static List<String> union(Map<String, String> a, Map<String, String> b) {
+        List<String> keys = new ArrayList<>(a.keySet());
+        b.keySet().stream().filter(k -> !a.containsKey(k)).forEach(keys::add);
+        return keys;
+    }
+
+    /** The pieces by index, each there exactly once. */
+    private static PieceManifest[] complete(Path dir, Map<Path, PieceManifest> manifests, int count) {
+        Map<Integer, List<Path>> byIndex = new TreeMap<>();
+        manifests.forEach((file, m) -> byIndex.computeIfAbsent(m.piece(), k -> new ArrayList<>()).add(file));
+        List<String> twice = byIndex.entrySet().stream().filter(e -> e.getValue().size() > 1)
+                .map(e -> e.getKey() + "/" + count + " (" + names(e.getValue()) + ")").toList();
+        if (!twice.isEmpty()) {
+            throw new UserInputException("merge: " + dir + ": piece" + (twice.size() > 1 ? "s " : " ")
+                    + String.join(", ", twice) + (twice.size() > 1 ? " are" : " is") + " there more than once: "
+                    + "remove the extra manifests");
+        }
+        List<String> missing = new ArrayList<>();
+        PieceManifest[] pieces = new PieceManifest[count];
+        for (int i = 0; i < count; i++) {
+            List<Path> files = byIndex.get(i);
+            if (files == null) {
+                missing.add(i + "/" + count);
+            } else {
+                pieces[i] = manifests.get(files.get(0));
+            }
+        }
+        if (!missing.isEmpty()) {
+            throw new UserInputException("merge: " + dir + ": piece" + (missing.size() > 1 ? "s " : " ")
+                    + String.join(", ", missing) + (missing.size() > 1 ? " are" : " is") + " missing: run brdfmap "
+                    + "--tile " + missing.get(0) + " --pieces " + dir + " with the same options");
+        }
+        for (PieceManifest m : pieces) {
+            TileOptions.Tile tile = new TileOptions.Tile(m.piece(), m.pieces());
+            var band = diffract.optics.MapBand.of(m.piece(), m.pieces(), m.sizePx());
+            if (band.fromRow() != m.fromRow() || band.toRow() != m.toRow()) {
+                throw new UserInputException("merge: " + dir + ": piece " + tile + " covers rows " + m.fromRow() + ".."
+                        + (m.toRow() - 1) + ", not " + band + ": compute it again");
+            }
+        }
+        return pieces;
+    }
+
+    /** A piece's floats, if their hash is the manifest's. */
+    private static float[] verifiedFloats(Path dir, PieceManifest m) throws IOException {
+        String name = m.floatsFile();
+        // a manifest names a file beside it, never one elsewhere
+        boolean beside = name != null && !name.isEmpty() && Path.of(name).getFileName().toString().equals(name);
+        Path file = beside ? dir.resolve(name) : dir;
+        if (!beside || !Files.isRegularFile(file)) {
+            throw new UserInputException("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
+                    + ") are missing: compute that piece again");
+        }
+        byte[] bytes;
+        try {
+            bytes = Files.readAllBytes(file);
+        } catch (NoSuchFileException e) {
+            throw new UserInputException("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
+                    + ") are missing: compute that piece again");
+        }
+        int expected = (m.toRow() - m.fromRow()) * m.sizePx() * m.channels();
+        if (bytes.length != 4L * expected || !sha256(bytes).equals(m.floatsSha256())) {
+            throw new UserInputException("merge: " + dir + ": piece " + m.label() + " is damaged: " + name
+                    + " does not match its manifest's SHA-256: compute that piece again");
+        }
+        float[] floats = new float[expected];
+        ByteBuffer.wrap(bytes).order(ByteOrder.LITTLE_ENDIAN).asFloatBuffer().get(floats);
+        return floats;
+    }
+
+    private static String names(List<Path> files) {
+        return files.stream().map(f -> f.getFileName().toString()).collect(Collectors.joining(", "));
+    }
+
+    static byte[] bytes(float[] floats) {
+        ByteBuffer buffer = ByteBuffer.allocate(4 * floats.length).order(ByteOrder.LITTLE_ENDIAN);
+        buffer.asFloatBuffer().put(floats);
+        return buffer.array();
+    }
+
+    static String sha256(byte[] bytes) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(bytes));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException("SHA-256 is part of every Java runtime", e);
+        }
+    }
+}
