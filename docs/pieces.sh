@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times a reference BRDF map computed whole, by `submit --local 1 --pieces 1` (the whole map as one worker), and by
+# Times a reference BRDF map computed whole, by `submit --local 1 --piece-count 1` (the whole map as one worker), and by
 # `submit --local J` (J = 1 and 2, 8 pieces each), checks that all write the same bytes, and splits each piece's time
 # into its fixed cost (Java start, loading the patch and building the BRDF) and its work (the pixels).
 # Writes docs/pieces.md. SIZE=64 bash docs/pieces.sh for a quicker run.
@@ -21,11 +21,11 @@ seconds() {  # command...: runs it, output to $out/log.txt, and prints its wall 
 }
 # the whole map first: it also fills the disk cache, as the runs that follow find it
 whole=$(seconds ./diffract brdfmap "${MAP[@]}" -o "$out/whole.png" --pfm "$out/whole.pfm")
-one=$(seconds ./diffract submit --local 1 --pieces 1 -- brdfmap "${MAP[@]}" -o "$out/one.png" --pfm "$out/one.pfm")
+one=$(seconds ./diffract submit --local 1 --piece-count 1 -- brdfmap "${MAP[@]}" -o "$out/one.png" --pfm "$out/one.pfm")
 cp "$out/log.txt" "$out/one.log"
-local1=$(seconds ./diffract submit --local 1 --pieces "$PIECES" -- brdfmap "${MAP[@]}" -o "$out/l1.png" --pfm "$out/l1.pfm")
+local1=$(seconds ./diffract submit --local 1 --piece-count "$PIECES" -- brdfmap "${MAP[@]}" -o "$out/l1.png" --pfm "$out/l1.pfm")
 cp "$out/log.txt" "$out/l1.log"
-local2=$(seconds ./diffract submit --local 2 --pieces "$PIECES" -- brdfmap "${MAP[@]}" -o "$out/l2.png" --pfm "$out/l2.pfm")
+local2=$(seconds ./diffract submit --local 2 --piece-count "$PIECES" -- brdfmap "${MAP[@]}" -o "$out/l2.png" --pfm "$out/l2.pfm")
 cp "$out/log.txt" "$out/l2.log"
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 same=yes
@@ -49,9 +49,9 @@ sum() {  # column of pieces(): the sum
     echo "| run | wall time (s) | sum of the pieces' start (s) | ... setup (s) | ... work (s) |"
     echo "| --- | ---: | ---: | ---: | ---: |"
     echo "| brdfmap alone | $whole | | | |"
-    echo "| submit --local 1 --pieces 1 | $one | $(sum "$out/one.log" 4) | $(sum "$out/one.log" 5) | $(sum "$out/one.log" 6) |"
-    echo "| submit --local 1 --pieces $PIECES | $local1 | $(sum "$out/l1.log" 4) | $(sum "$out/l1.log" 5) | $(sum "$out/l1.log" 6) |"
-    echo "| submit --local 2 --pieces $PIECES | $local2 | $(sum "$out/l2.log" 4) | $(sum "$out/l2.log" 5) | $(sum "$out/l2.log" 6) |"
+    echo "| submit --local 1 --piece-count 1 | $one | $(sum "$out/one.log" 4) | $(sum "$out/one.log" 5) | $(sum "$out/one.log" 6) |"
+    echo "| submit --local 1 --piece-count $PIECES | $local1 | $(sum "$out/l1.log" 4) | $(sum "$out/l1.log" 5) | $(sum "$out/l1.log" 6) |"
+    echo "| submit --local 2 --piece-count $PIECES | $local2 | $(sum "$out/l2.log" 4) | $(sum "$out/l2.log" 5) | $(sum "$out/l2.log" 6) |"
     echo
     echo "Each piece: *start* is its process' wall time less what it measured itself (the Java VM starting and"
     echo "ending, parsing options, writing the piece), *setup* loading the patch and building the BRDF, *work* its"

@@ -130,9 +130,8 @@ final class BrdfMapCommand implements Callable<Integer> {
 
     /** The map's size and how it is shown. */
     static final class Picture {
-        @Option(names = "--size", defaultValue = "256", paramLabel = "S", converter = OptionTypes.ImageSize.Converter.class,
+        @Option(names = "--size", defaultValue = "256", paramLabel = "S", converter = OptionTypes.ImageSize.Side.class,
                 description = "Map size in pixels, one side of the square map (S or SxS; default ${DEFAULT-VALUE}).")
-        OptionTypes.ImageSize sizeOption = new OptionTypes.ImageSize(256, 256);
         int size = 256;
 
         @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto", converter = OptionTypes.Exposure.Converter.class,
@@ -300,7 +299,6 @@ final class BrdfMapCommand implements Callable<Integer> {
     private Engine validate() {
         patch.validateRequired();
         brdf.validate();
-        picture.size = picture.sizeOption.squareSide("--size");
         if (!(thetaIDeg >= 0 && thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
             throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG_TEXT
                     + "] degrees, got " + thetaIDeg);

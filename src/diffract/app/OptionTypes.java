@@ -99,19 +99,23 @@ final class OptionTypes {
 
     /**
      * {@code --size WxH} (or {@code S} for a square), {@value #MIN_PX}..{@value #MAX_PX} pixels per side: the one
-     * form and range of every command's picture size (a BRDF map takes squares only, {@link #squareSide}).
+     * form and range of every command's picture size (a BRDF map takes squares only, {@link Side}).
      */
     record ImageSize(int width, int height) {
         static final int MIN_PX = Scene.ImageSize.MIN_PX;
         static final int MAX_PX = Scene.ImageSize.MAX_PX;
 
-        /** The side of a square size; a BRDF map, whose pixels are directions over the unit disk, is square. */
-        int squareSide(String option) {
-            if (width != height) {
-                throw new UserInputException(option + " of a BRDF map is one side (S or SxS): the map is square, got "
-                        + width + "x" + height);
+        /** The side of a square size (S or SxS): a BRDF map, whose pixels are directions over the unit disk. */
+        static final class Side implements ITypeConverter<Integer> {
+            @Override
+            public Integer convert(String text) {
+                ImageSize size = new Converter().convert(text);
+                if (size.width() != size.height()) {
+                    throw new TypeConversionException("a BRDF map is square: give one side, S or SxS, got '" + text
+                            + "'");
+                }
+                return size.width();
             }
-            return width;
         }
 
         static final class Converter implements ITypeConverter<ImageSize> {

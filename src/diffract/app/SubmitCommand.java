@@ -35,7 +35,7 @@ final class SubmitCommand implements Callable<Integer> {
                     + "processors.")
     int workers;
 
-    @Option(names = "--pieces", paramLabel = "N",
+    @Option(names = "--piece-count", paramLabel = "N",
             description = "How many pieces the map is split into (default J; more than J evens out pieces of "
                     + "unequal cost).")
     Integer pieceCount;
@@ -59,7 +59,7 @@ final class SubmitCommand implements Callable<Integer> {
         }
         int count = pieceCount != null ? pieceCount : workers;
         if (count < 1) {
-            throw new UserInputException("--pieces must be at least 1, got " + count);
+            throw new UserInputException("--piece-count must be at least 1, got " + count);
         }
         if (!command.get(0).equals("brdfmap")) {
             throw new UserInputException("submit runs brdfmap: diffract submit --local J -- brdfmap OPTIONS (got '"

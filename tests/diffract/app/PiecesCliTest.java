@@ -131,7 +131,7 @@ class PiecesCliTest {
         Path png = dir.resolve("submitted.png");
         Path pfm = dir.resolve("submitted.pfm");
         Path kept = dir.resolve("kept");
-        List<String> args = new ArrayList<>(List.of("submit", "--local", "2", "--pieces", "3", "--keep-pieces",
+        List<String> args = new ArrayList<>(List.of("submit", "--local", "2", "--piece-count", "3", "--keep-pieces",
                 kept.toString(), "--", "brdfmap"));
         args.addAll(MAP);
         args.addAll(List.of("-o", png.toString(), "--pfm", pfm.toString()));

@@ -29,7 +29,7 @@ class SubmitCommandTest {
                 "30", "--variant", "flss", "--engine", "gpu", "-o", "x.png");
         assertEquals(2, gpu[0]);
         assertTrue(((String) gpu[2]).contains("splits the CPU's work"), (String) gpu[2]);
-        Object[] rows = CliTest.run("submit", "--local", "2", "--pieces", "17", "--", "brdfmap", "--synthetic",
+        Object[] rows = CliTest.run("submit", "--local", "2", "--piece-count", "17", "--", "brdfmap", "--synthetic",
                 "blazed", "--theta-i", "30", "--size", "16", "-o", "x.png");
         assertEquals(2, rows[0]);
         assertTrue(((String) rows[2]).contains("has only 16 rows"), (String) rows[2]);
