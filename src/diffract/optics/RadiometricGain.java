@@ -10,9 +10,10 @@ import diffract.colour.MirrorNormalisation;
  * <p>Under {@link MirrorNormalisation#ENERGY} a flat mirror's relative lobe integrates over the projected solid angle
  * to Omega(lambda_0) = pi (lambda_0 sigma_f)^2 (CoherenceWindow#mirrorLobeProjectedSolidAngleSr) at every
  * wavelength, D65 white, while the mirror reflects the Fresnel reflectance R_0 of the light at normal incidence
- * (energy: integral of L cos theta_r d omega_r = R_0 E). The absolute BRDF is therefore f = rho R_0 / Omega(lambda_0)
- * (the gain factor C already carries R(theta) / R_0 away from normal incidence), and a Lambertian surface's
- * a E cos / pi is matched by
+ * (energy: integral of L cos theta_r d omega_r = R_0 E). rho R_0 / Omega(lambda_0) is therefore the absolute BRDF
+ * times cos theta_i, f cos theta_i (rho holds the incident cosine; the gain factor C carries R(theta) / R_0 away from
+ * normal incidence): the reflected radiance per unit of the light's normal irradiance E. A Lambertian surface's
+ * a E cos(theta_i) / pi is matched, times pi, by
  * <pre>
  *   gain = pi R_0 / Omega(lambda_0) = R_0 / (lambda_0 sigma_f)^2.
  * </pre>
