@@ -160,11 +160,27 @@ float nodeSpacingNm(vec2 c, float fromNm) {
     if (c.y != 0.0) {
         width = min(width, sqrt(lobeVariance + footprintGaussian.z) / abs(c.y) * 1e3);
     }
-    float target = min(width / lobeNodesPerSigma, lobeMaxStepNm);
+    // never wider than the band; below 1 nm a whole number of steps across it (LobeSpectrum.spacingNm)
+    float bandNm = lambdaMaxNm - lambdaMinNm;
+    float target = min(min(width / lobeNodesPerSigma, lobeMaxStepNm), bandNm);
     if (target >= 1.0) {
         return exp2(floor(log2(target) + 1e-6));
     }
-    return max(target, 1e-3);
+    return bandNm / ceil(bandNm / max(target, 1e-3) - 1e-4);
+}
+
+// LobeSpectrum.lastNode: the last node within the passage, or, for hats ending at the band's end, the first at or
+// beyond lambda_max (its hat still covers the band's last part).
+int lastNodeIndex(float toNm, float spacing) {
+    if (spacing >= 1.0 && toNm >= lambdaMaxNm - 1e-4) {
+        return int(ceil((lambdaMaxNm - lambdaMinNm) / spacing - 1e-4));
+    }
+    return int(floor((toNm - lambdaMinNm) / spacing + 1e-4));
+}
+
+// LobeSpectrum.endWeight: below 1 nm the trapezoid's half weights at the band's ends.
+float nodeEndWeight(float lambdaNm, float spacing) {
+    return spacing < 1.0 && (lambdaNm <= lambdaMinNm + 1e-3 || lambdaNm >= lambdaMaxNm - 1e-3) ? 0.5 : 1.0;
 }
 
 // The first table entry of a node spacing's level: HatFilteredSpectrum level 1 + log2(h) for h = 1..16 nm; -1 below
@@ -194,11 +210,11 @@ vec3 spectralWeight(float lambdaNm, float spacingNm, int levelBase) {
 vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
     float spacing = nodeSpacingNm(c, fromNm);
     int j0 = int(ceil((fromNm - lambdaMinNm) / spacing - 1e-4));
-    int j1 = int(floor((toNm - lambdaMinNm) / spacing + 1e-4));
+    int j1 = lastNodeIndex(toNm, spacing);
     if (spacing < 1.0 && j1 - j0 + 1 > MAX_NODES) {
         spacing = min(1.0, (toNm - fromNm) / float(MAX_NODES - 1));
         j0 = int(ceil((fromNm - lambdaMinNm) / spacing - 1e-4));
-        j1 = int(floor((toNm - lambdaMinNm) / spacing + 1e-4));
+        j1 = lastNodeIndex(toNm, spacing);
     }
     int levelBase = spectralLevelBase(spacing);
     float sigmaF = sigmaFPerUm();
@@ -210,7 +226,7 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
         float lambdaUm = lambdaNm * 1e-3;
         float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * uvw.z);
         xyz += weight * averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy)
-                * spectralWeight(lambdaNm, spacing, levelBase);
+                * spectralWeight(lambdaNm, spacing, levelBase) * nodeEndWeight(lambdaNm, spacing);
     }
     lobesLeftOut = lobesLeftOut || reached < j1;
     return xyz;

@@ -265,11 +265,11 @@ public final class LobeSpectrum {
                            double from, double to, double[] node, double[] total) {
         double spacing = spacingNm(cx, cy, shape, from);
         int j0 = (int) Math.ceil((from - lambdaMinNm) / spacing - 1e-9);
-        int j1 = (int) Math.floor((to - lambdaMinNm) / spacing + 1e-9);
+        int j1 = lastNode(to, spacing);
         if (spacing < 1 && j1 - j0 + 1 > MAX_NODES) {
             spacing = Math.min(1.0, (to - from) / (MAX_NODES - 1));
             j0 = (int) Math.ceil((from - lambdaMinNm) / spacing - 1e-9);
-            j1 = (int) Math.floor((to - lambdaMinNm) / spacing + 1e-9);
+            j1 = lastNode(to, spacing);
         }
         if (j1 < j0) {
             return;
@@ -299,11 +299,34 @@ public final class LobeSpectrum {
             }
             double a = averaged(lambdaNm * 1e-3, cx, cy, u, v, shape);
             spectral.weight(lambdaNm, spacing, node);
-            double scale = weight * a;
+            double scale = weight * a * endWeight(lambdaNm, spacing);
             total[0] += scale * node[0];
             total[1] += scale * node[1];
             total[2] += scale * node[2];
         }
+    }
+
+    /**
+     * The last node of a passage that ends at {@code to}: the last within it, or, where it ends at the band's end and
+     * the nodes are hats (1 nm and wider), the first at or beyond lambda_max, whose hat still covers the band's last
+     * part (HatFilteredSpectrum: the hats of the grid sum to 1 on the band).
+     */
+    private int lastNode(double to, double spacing) {
+        if (spacing >= 1 && to >= lambdaMaxNm - 1e-9) {
+            return (int) Math.ceil((lambdaMaxNm - lambdaMinNm) / spacing - 1e-9);
+        }
+        return (int) Math.floor((to - lambdaMinNm) / spacing + 1e-9);
+    }
+
+    /**
+     * Below 1 nm the rule is the trapezoid's on a grid that meets both ends of the band: the nodes at the ends weigh
+     * half (hats, 1 nm and wider, take their ends from the table).
+     */
+    private double endWeight(double lambdaNm, double spacing) {
+        if (spacing >= 1) {
+            return 1;
+        }
+        return lambdaNm <= lambdaMinNm + 1e-6 || lambdaNm >= lambdaMaxNm - 1e-6 ? 0.5 : 1;
     }
 
     /** The lobe's weight W_c(k w) at lambda. */
@@ -324,11 +347,14 @@ public final class LobeSpectrum {
         if (cy != 0) {
             widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.yy()) / Math.abs(cy) * 1e3);
         }
-        double target = Math.min(widthNm / quadrature.nodesPerSigma(), quadrature.maxStepNm());
+        // never wider than the band: a band narrower than the nodes' spacing would be seen through one node
+        double bandNm = lambdaMaxNm - lambdaMinNm;
+        double target = Math.min(Math.min(widthNm / quadrature.nodesPerSigma(), quadrature.maxStepNm()), bandNm);
         if (target >= 1) {
             return Math.pow(2, Math.floor(Math.log(target) / Math.log(2) + 1e-12));
         }
-        return Math.max(target, 1e-3);
+        // below 1 nm: a whole number of steps across the band, so that the nodes meet both its ends
+        return bandNm / Math.ceil(bandNm / Math.max(target, 1e-3) - 1e-9);
     }
 
     /** The lobe at wavelength lambda averaged over the footprint. */
