@@ -39,11 +39,12 @@ public final class AutoVariant {
     }
 
     /**
-     * The settings a choice renders with: the chosen configuration, summed with the thesis' series (the path its
-     * calibration measured) unless {@code expansion} asks for another one explicitly.
+     * The settings a choice renders with: the chosen configuration, summed by the expansion its calibration measured
+     * (the pipeline's choice for its settings) unless {@code expansion} asks for another one explicitly.
      */
     public static BrdfSettings settings(AutoChoice choice, TaylorExpansion expansion) {
-        TaylorExpansion path = expansion == TaylorExpansion.AUTO ? TaylorExpansion.PLAIN : expansion;
-        return choice.chosen().config().settings().with(b -> b.expansion(path));
+        BrdfSettings measured = choice.chosen().config().settings();
+        TaylorExpansion path = expansion == TaylorExpansion.AUTO ? measured.taylor().expansion() : expansion;
+        return measured.with(b -> b.expansion(path));
     }
 }

@@ -5,8 +5,8 @@ import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.InvalidSettingException;
-import diffract.optics.TaylorTerms;
-import diffract.precompute.Precomputation;
+import diffract.pipeline.DiffractionPipeline;
+import diffract.pipeline.NamedPatch;
 import diffract.render.GpuBrdfMap;
 import diffract.util.Reporter;
 
@@ -33,7 +33,8 @@ public final class BenchRunner {
 
     private final ReferenceMaps references;
     private final Reporter reporter;
-    private final Map<String, TaylorTerms> terms = new HashMap<>();
+    /** Per patch, the one path from height field to picture: its terms and the expansion the settings choose. */
+    private final Map<String, DiffractionPipeline> pipelines = new HashMap<>();
     private final Map<String, List<float[]>> keptMaps = new HashMap<>();
     private Predicate<BenchConfig> keepMaps = c -> false;
     private String progressTask;
@@ -157,8 +158,10 @@ public final class BenchRunner {
         }
         for (Map.Entry<String, Integer> e : highest.entrySet()) {
             BenchPatch p = patches.get(e.getKey());
-            terms.put(e.getKey(), Precomputation.cached(new Precomputation.Request(p.field(), "bench:" + p.name(),
-                    null, e.getValue(), null, base.spectral().lambdaMinNm()), reporter));
+            DiffractionPipeline pipeline = DiffractionPipeline.cached(NamedPatch.of("bench:" + p.name(), p.field()),
+                    base.spectral().lambdaMinNm());
+            pipeline.terms(e.getValue(), reporter); // computed (or read from the cache) before anything is timed
+            pipelines.put(e.getKey(), pipeline);
         }
     }
 
@@ -167,7 +170,8 @@ public final class BenchRunner {
         List<float[]> variant = new ArrayList<>();
         List<Double> exposures = new ArrayList<>();
         double ms;
-        try (GpuBrdfMap map = new GpuBrdfMap(terms.get(c.patch()), c.settings())) {
+        try (GpuBrdfMap map = pipelines.get(c.patch()).gpuMap(c.settings(), c.settings().spectral().lambdaMinNm(),
+                reporter)) {
             for (double theta : lightsDeg) {
                 Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
                 float[] ref = references.xyz(patch, theta, c.sizePx(), base);

@@ -31,7 +31,8 @@ public final class ParetoPlot {
     public static final double ERROR_FLOOR = 1e-3;
 
     static final int WIDTH_PX = 1000;
-    private static final int TITLE_MARGIN_PX = 10;
+    /** XChart centres the title over the plot area, the chart less the legend outside it on the right. */
+    static final int TITLE_WIDTH_PX = 700;
     private static final float MIN_TITLE_POINTS = 8f;
 
     /** One colour per patch (points and front), one marker shape per variant. */
@@ -81,15 +82,15 @@ public final class ParetoPlot {
     }
 
     /**
-     * XChart draws its title on one line, centred, and cuts both ends of a title wider than the chart (a long GL
-     * renderer's name does that): the font shrinks until the title fits, down to {@link #MIN_TITLE_POINTS}.
+     * XChart draws its title on one line, centred over the plot area, and cuts both ends of a title wider than that
+     * (a long GL renderer's name does that): the font shrinks until the title fits, down to {@link #MIN_TITLE_POINTS}.
      */
     static Font titleFont(Font font, String title) {
         Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
         try {
             Font fitted = font;
             while (fitted.getSize2D() > MIN_TITLE_POINTS
-                    && g.getFontMetrics(fitted).stringWidth(title) > WIDTH_PX - 2 * TITLE_MARGIN_PX) {
+                    && g.getFontMetrics(fitted).stringWidth(title) > TITLE_WIDTH_PX) {
                 fitted = fitted.deriveFont(fitted.getSize2D() - 0.5f);
             }
             return fitted;

@@ -132,7 +132,8 @@ public final class ResultsTable {
                     .lambdaStepNm(Double.parseDouble(f[3]))
                     .windowRadius(automaticWindow ? base.window().radius() : Integer.parseInt(f[4]))
                     .automaticWindowRadius(automaticWindow).taylorTolerance(Double.parseDouble(f[15]))
-                    .termFormat(TermFormat.valueOf(f[5].toUpperCase(Locale.ROOT))).build();
+                    .termFormat(TermFormat.valueOf(f[5].toUpperCase(Locale.ROOT)))
+                    .expansion(SweepPlan.expansionOf(Variant.parse(f[0]))).build();
             BenchConfig c = new BenchConfig(f[1], s, Integer.parseInt(f[6]));
             results.add(new BenchResult(c, Double.parseDouble(f[8]), new MapError(parse(f[9]), parse(f[10]),
                     parse(f[11]), Integer.parseInt(f[12]))));

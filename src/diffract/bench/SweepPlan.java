@@ -1,6 +1,7 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.TaylorExpansion;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
 
@@ -158,6 +159,15 @@ public final class SweepPlan {
     }
 
     /**
+     * The Taylor expansion a swept variant sums: the thesis' series for the thesis' variants (what the sweep measures
+     * of them, the series' truncation included), the expansion the pipeline chooses for the lobes method (the
+     * phase-centred one where float32 cannot reach the series' accuracy, as on the tall patch), as scenes draw it.
+     */
+    static TaylorExpansion expansionOf(Variant v) {
+        return v == Variant.LOBES ? TaylorExpansion.AUTO : TaylorExpansion.PLAIN;
+    }
+
+    /**
      * The configurations: every patch x variant x point, with the axes a variant ignores reset to the thesis'
      * value and duplicates dropped (first occurrence kept, order preserved).
      *
@@ -178,6 +188,7 @@ public final class SweepPlan {
                             .windowRadius(ignored.contains(Axis.WINDOW_RADIUS) ? thesis.windowRadius() : p.windowRadius())
                             .taylorTolerance(lean ? LEAN_TAYLOR_TOLERANCE : 0).automaticWindowRadius(lean)
                             .termFormat(ignored.contains(Axis.TEXTURE_FORMAT) ? EXACT_FORMAT : p.textureFormat())
+                            .expansion(expansionOf(v))
                             .build();
                     BenchConfig c = new BenchConfig(patch, s, p.sizePx());
                     unique.putIfAbsent(c.key(), c);

@@ -36,7 +36,7 @@ class BenchReportTest {
         Graphics2D g = new BufferedImage(1, 1, BufferedImage.TYPE_INT_RGB).createGraphics();
         assertTrue(g.getFontMetrics(base).stringWidth(longTitle) > ParetoPlot.WIDTH_PX, "the case is a real one");
         assertTrue(fitted.getSize2D() < base.getSize2D());
-        assertTrue(g.getFontMetrics(fitted).stringWidth(longTitle) <= ParetoPlot.WIDTH_PX - 20,
+        assertTrue(g.getFontMetrics(fitted).stringWidth(longTitle) <= ParetoPlot.TITLE_WIDTH_PX,
                 "width " + g.getFontMetrics(fitted).stringWidth(longTitle));
         g.dispose();
     }
