@@ -1,5 +1,6 @@
-// main() of the three variant shaders. A variant file includes its spectrum (spectrum_gaussian.glsl or
-// spectrum_sinc.glsl), defines spectralXyz(uvw) and then includes this file.
+// main() of every variant shader (flss, nmm, pq, lobes, baked). A variant file includes its spectrum
+// (spectrum_gaussian.glsl, spectrum_sinc.glsl, lobes_spectrum.glsl or the baked table), defines spectralXyz(uvw) and
+// then includes this file.
 #ifndef DIFFRACTION_MAIN_GLSL
 #define DIFFRACTION_MAIN_GLSL
 #include "diffraction_common.glsl"

@@ -8,7 +8,7 @@
 #include "diffraction_common.glsl"
 #include "footprint_covariance.glsl"
 
-#define LIGHT_NODES_MAX 8
+// LIGHT_NODES_MAX: the light arrays' size, a define from DiffractionMaterials.LIGHT_NODES_MAX (DiffractionShaders)
 
 // 1: surface pixels average over their footprint (PixelFilter.BOX); 0: the centre direction only
 // (PixelFilter.POINT). A BRDF map's box is the define LOBES_BOX.

@@ -12,7 +12,7 @@ uniform mat4 view;          // C^-1
 uniform mat4 projection;    // P
 uniform mat3 normalMatrix;  // inverse transpose of the model's 3x3 part
 uniform vec3 cameraPosition;      // world space
-uniform vec3 lightDirection[8];   // world space, towards the light; [0] is used (RenderContext.MAX_LIGHTS)
+uniform vec3 lightDirection[ENGINE_MAX_LIGHTS];   // world space, towards the light; [0] is used
 
 out vec3 omegaITangent;
 out vec3 toViewerTangent;

@@ -30,7 +30,7 @@ in vec3 surfaceWorldPosition;
 in vec3 surfaceWorldNormal;
 in vec3 surfaceWorldTangent;
 uniform vec3 cameraPosition;     // engine, world
-uniform vec3 lightDirection[8];  // engine: [0] towards the key light, world
+uniform vec3 lightDirection[ENGINE_MAX_LIGHTS];  // engine: [0] towards the key light, world
 #ifdef SCALE_FRAMES
 uniform sampler2D scaleFrames;
 #endif

@@ -8,7 +8,7 @@
 
 in vec3 groundWorldPosition;
 
-uniform vec3 lightDirection[8];  // engine: towards the key light, world
+uniform vec3 lightDirection[ENGINE_MAX_LIGHTS];  // engine: towards the key light, world
 uniform vec3 albedoLinear;       // linear sRGB
 uniform float mottle;            // relative amplitude of the albedo's variation, 0..1
 uniform float mottleScale;       // noise cells per world unit

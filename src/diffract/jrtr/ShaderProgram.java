@@ -50,13 +50,18 @@ public final class ShaderProgram extends GpuResource {
         this.declaredUniforms = Collections.unmodifiableSet(declared);
     }
 
-    /** Loads both stages from {@code root} with the same {@code defines}. */
+    /** The engine's own defines, in every program: the size of its light arrays ({@link RenderContext#MAX_LIGHTS}). */
+    public static final String MAX_LIGHTS_DEFINE = "ENGINE_MAX_LIGHTS";
+
+    /** Loads both stages from {@code root} with the same {@code defines} and the engine's ({@link #MAX_LIGHTS_DEFINE}). */
     public static ShaderProgram load(ShaderSourceRoot root, String vertexPath, String fragmentPath,
                                      Map<String, String> defines) {
         GlslPreprocessor preprocessor = new GlslPreprocessor(root);
+        Map<String, String> all = new java.util.TreeMap<>(defines);
+        all.put(MAX_LIGHTS_DEFINE, Integer.toString(RenderContext.MAX_LIGHTS));
         return new ShaderProgram(
-                new Shader(ShaderStage.VERTEX, preprocessor.process(vertexPath, defines)),
-                new Shader(ShaderStage.FRAGMENT, preprocessor.process(fragmentPath, defines)));
+                new Shader(ShaderStage.VERTEX, preprocessor.process(vertexPath, all)),
+                new Shader(ShaderStage.FRAGMENT, preprocessor.process(fragmentPath, all)));
     }
 
     /** Loads from the classpath folder {@code /shaders}, e.g. {@code fromClasspath("engine/unlit.vert", ...)}. */

@@ -123,7 +123,7 @@ public final class DiffractionMaterials {
         return brdfMap;
     }
 
-    /** The shader's light arrays hold this many Gauss-Hermite shifts (lobes_footprint.glsl). */
+    /** The shader's light arrays hold this many Gauss-Hermite shifts (lobes_footprint.glsl, the define LIGHT_NODES_MAX). */
     static final int LIGHT_NODES_MAX = 8;
 
     private static void setLobesLight(Material m, Covariance2 c, LobeQuadrature q) {

@@ -103,6 +103,7 @@ public final class DiffractionShaders {
             defines.put("WINDOW_FIXED", "1");
         }
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
+        defines.put("LIGHT_NODES_MAX", Integer.toString(DiffractionMaterials.LIGHT_NODES_MAX));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
         if (settings.illumination().fresnel() == FresnelModel.THESIS) {

@@ -33,7 +33,10 @@ class DiffractionShadersTest {
                     "the shared code appears once");
             ShaderProgram surface = DiffractionShaders.program(settings, DiffractionShaders.Target.SURFACE, false, true);
             assertTrue(surface.fragmentShader().source().text().contains("#define PIGMENTATION 1"));
-            assertTrue(surface.vertexShader().source().text().contains("lightDirection[8]"));
+            // the engine's light arrays sized from RenderContext.MAX_LIGHTS, not by hand
+            assertTrue(surface.vertexShader().source().text().contains("#define ENGINE_MAX_LIGHTS "
+                    + diffract.jrtr.RenderContext.MAX_LIGHTS));
+            assertTrue(surface.vertexShader().source().text().contains("lightDirection[ENGINE_MAX_LIGHTS]"));
             ShaderProgram mono = DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP, true, false);
             assertTrue(mono.fragmentShader().source().text().contains("#define MONOCHROMATIC 1"));
         }
