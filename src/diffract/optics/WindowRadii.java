@@ -9,7 +9,7 @@ package diffract.optics;
 public record WindowRadii(int x, int y) {
     /**
      * The share of the window's weight the automatic radius captures at least: 99.73 %, a continuous Gaussian's
-     * mass within 3 sigma (the issue's "ceil(3 sigma)", made exact for the discrete window).
+     * mass within 3 sigma ("ceil(3 sigma)", made exact for the discrete window).
      */
     public static final double AUTOMATIC_CAPTURE = 0.9973;
     /** Cap of the automatic radius: a 17 x 17 window (289 texels x N terms per wavelength) is already costly. */

@@ -383,7 +383,7 @@ class FaultsCliTest {
     }
 
     /**
-     * The issue's case: a 2048 x 2048 patch 0.3 um high, whose reference map keeps 5 phase centres of 16 double
+     * A 2048 x 2048 patch 0.3 um high, whose reference map keeps 5 phase centres of 16 double
      * complex transforms (5.4 GB): refused at once with the estimate and the ways out, under the tests' 4 GB heap.
      */
     @Test

@@ -10,7 +10,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** The procedural snake is a closed, well-framed surface of the size the issue asks for. */
+/** The procedural snake is a closed, well-framed surface of the size a scene expects. */
 class SnakeMeshTest {
     static SnakeMesh snake;
     static Mesh mesh;

@@ -51,7 +51,7 @@ class ExtremesReportTest {
      * FLSS on the automatic path against the reference. Monochromatic: max |rho - rho_ref| / max rho_ref; the
      * (2R+1)^2 = 9 texel window against the reference's full window costs up to 2e-2 here (sigma_f = 0.64
      * texels: the window's weight beyond 1.5 texels is 6 %, partly inside the stored band). Colour: mean CIEDE2000
-     * over the disk <= 1 (the issue's just-noticeable difference). Measured: see docs/extremes.md.
+     * over the disk <= 1 (about one just-noticeable difference). Measured: see docs/extremes.md.
      */
     private static final double FLSS_MAX_RELATIVE = 0.1;
     private static final double FLSS_MAX_MEAN_DE = 1.0;
