@@ -332,7 +332,9 @@ final class BrdfMapCommand implements Callable<Integer> {
         }
         LightPolicy light = LightPolicy.of(settings);
         if (!brdf.auto() && !light.accepted()) {
-            throw new UserInputException("--light-size-deg: " + light.reason().orElseThrow() + " (--variant lobes)");
+            throw new UserInputException(OptionNames.of(light.quantity()) + ": " + light.reason().orElseThrow()
+                    + (light.quantity() == diffract.optics.Quantity.LIGHT_SIZE && !lightSource.isDisc()
+                    ? " (--variant lobes)" : " (--variant reference)"));
         }
         return where;
     }

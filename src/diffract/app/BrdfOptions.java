@@ -4,6 +4,7 @@ import diffract.colour.MirrorNormalisation;
 import diffract.optics.BrdfSettings;
 import diffract.optics.FresnelModel;
 import diffract.optics.IlluminationSettings;
+import diffract.optics.LightProfile;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.SpectralSettings;
@@ -131,6 +132,12 @@ final class BrdfOptions {
                         + "Gaussian of sigma D/4 per axis (default: 0, a point light, on brdfmap; the sun's 0.53 on "
                         + "view, render and in scenes). Rendered by lobes, baked and the reference.")
         Double lightSizeDeg;
+
+        @Option(names = "--light-profile", paramLabel = "P", completionCandidates = OptionTypes.LightProfileNames.class,
+                description = "${COMPLETION-CANDIDATES}: the light of --light-size-deg as a Gaussian of sigma D/4 per "
+                        + "axis, linearised about its centre (default: the model the fast methods filter by) or a "
+                        + "uniform disc of diameter D, every direction integrated (the reference only).")
+        LightProfile lightProfile;
     }
 
     /** {@link diffract.optics.LobeQuadrature}. */
@@ -224,6 +231,9 @@ final class BrdfOptions {
         }
         if (illumination.lightSizeDeg != null) {
             b.lightSizeDeg(illumination.lightSizeDeg);
+        }
+        if (illumination.lightProfile != null) {
+            b.lightProfile(illumination.lightProfile);
         }
         if (illumination.fresnel != null) {
             b.fresnel(illumination.fresnel);

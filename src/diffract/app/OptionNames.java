@@ -29,6 +29,7 @@ final class OptionNames {
         FLAGS.put(Quantity.COHERENCE_LENGTH, "--coherence-length");
         FLAGS.put(Quantity.REFRACTIVE_INDEX, "--refractive-index");
         FLAGS.put(Quantity.LIGHT_SIZE, "--light-size-deg");
+        FLAGS.put(Quantity.LIGHT_PROFILE, "--light-profile");
         FLAGS.put(Quantity.FRESNEL, "--fresnel");
         FLAGS.put(Quantity.PIXEL_FILTER, "--pixel-filter");
         FLAGS.put(Quantity.LOBE_QUADRATURE, "--lobe-quadrature");

@@ -2,6 +2,7 @@ package diffract.app;
 
 import diffract.optics.FresnelModel;
 import diffract.optics.Levelling;
+import diffract.optics.LightProfile;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
@@ -206,6 +207,14 @@ final class OptionTypes {
         @Override
         public Iterator<String> iterator() {
             return java.util.Arrays.stream(FresnelModel.values()).map(FresnelModel::label).iterator();
+        }
+    }
+
+    /** gaussian, disc. */
+    static final class LightProfileNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return List.of(LightProfile.GAUSSIAN.label(), LightProfile.DISC.label()).iterator();
         }
     }
 

@@ -22,10 +22,11 @@ final class Csv {
 
     /**
      * Every illumination setting that changes a map, for cache keys: sigma_s, refractive index, the light's
-     * diameter, the pixel filter and the Fresnel model.
+     * diameter (and "disc" for a disc light: Gaussian keys stay as they were), the pixel filter and the Fresnel model.
      */
     static String illuminationKey(IlluminationSettings i) {
         return String.join("-", "c" + number(i.sigmaSpatialUm()), "n" + number(i.refractiveIndex()),
-                "d" + number(i.light().angularDiameterDeg()), i.pixelFilter().label(), i.fresnel().label());
+                "d" + number(i.light().angularDiameterDeg())
+                + (i.light().isDisc() ? "disc" : ""), i.pixelFilter().label(), i.fresnel().label());
     }
 }

@@ -166,9 +166,14 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
             return illumination(illumination.withRefractiveIndex(n));
         }
 
-        /** The light's angular diameter in degrees (0: a point light). */
+        /** The light's angular diameter in degrees (0: a point light), its profile kept. */
         public Builder lightSizeDeg(double diameterDeg) {
-            return illumination(illumination.withLight(new LightSource(diameterDeg)));
+            return illumination(illumination.withLight(new LightSource(diameterDeg, illumination.light().profile())));
+        }
+
+        /** The light's profile, its diameter kept. */
+        public Builder lightProfile(LightProfile profile) {
+            return illumination(illumination.withLight(illumination.light().withProfile(profile)));
         }
 
         public Builder fresnel(FresnelModel model) {

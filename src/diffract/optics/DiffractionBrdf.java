@@ -16,6 +16,8 @@ public final class DiffractionBrdf {
     private final IlluminationSettings illumination;
     /** The filtered reference (REFERENCE whose illumination filters), else null. */
     private final FilteredReference filteredReference;
+    /** The reference under a disc light (null for a Gaussian or point light). */
+    private final DiscLightAverage discLight;
     /** The lobes method (LOBES), else null. */
     private final LobeSpectrum lobes;
 
@@ -42,6 +44,8 @@ public final class DiffractionBrdf {
         this.illumination = illumination;
         this.filteredReference = filteredReference;
         this.lobes = lobes;
+        this.discLight = filteredReference != null && illumination.light().isDisc()
+                ? new DiscLightAverage(filteredReference, illumination.light()) : null;
     }
 
     /**
@@ -52,6 +56,9 @@ public final class DiffractionBrdf {
      */
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
         IlluminationSettings illumination = settings.illumination();
+        if (illumination.light().isDisc()) {
+            LightPolicy.of(settings).requireAccepted(); // only the reference integrates a disc
+        }
         if (settings.variant() == Variant.REFERENCE) {
             ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
             SpectralSettings spectral = settings.spectral();
@@ -176,6 +183,9 @@ public final class DiffractionBrdf {
      * incidence): at the direction itself (no pixel), averaged over the illumination's light for the reference and lobes.
      */
     public Xyz xyz(Direction wi, Direction wr) {
+        if (discLight != null) {
+            return discLight.at(wi, wr);
+        }
         if (filteredReference != null) {
             double[] v = filteredReference.at(wi, wr, Footprint.POINT.plus(illumination.light().uvCovariance(wi)));
             return new Xyz(v[0], v[1], v[2]);
@@ -216,6 +226,9 @@ public final class DiffractionBrdf {
         Direction wr = Direction.fromProjected(x, y);
         if (illumination.pixelFilter() != PixelFilter.BOX || (filteredReference == null && lobes == null)) {
             return xyz(wi, wr);
+        }
+        if (discLight != null) {
+            return discLight.mapPixel(wi, column, row, size);
         }
         Covariance2 light = illumination.light().uvCovariance(wi);
         if (filteredReference != null) {

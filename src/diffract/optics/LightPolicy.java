@@ -6,7 +6,9 @@ import java.util.Optional;
  * Whether a method can take the light its settings name: the one answer that every command, the scene loader, the
  * viewer and the bench ask for. A point light suits every method. A light of finite size needs a method that averages
  * the BRDF over the light's directions ({@link Variant#filtersLight}: the lobes method and its baked table) or the
- * reference, which integrates it exactly; FLSS, NMM and PQ sample the light at its centre (the thesis' model).
+ * reference, which integrates it exactly; FLSS, NMM and PQ sample the light at its centre (the thesis' model). A
+ * {@link LightProfile#DISC} light is taken by the reference only: the lobes method and the baked table filter by the
+ * Gaussian profile; where a scene asks them for a disc they draw the Gaussian of the same diameter.
  *
  * <p>Where the user named both the method and the light (brdfmap, the library), such a pair is refused with
  * {@link #reason}; where the light comes from a scene (scene files, the viewer's keys), it is drawn as a point light
@@ -21,13 +23,25 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
     public static LightPolicy of(BrdfSettings settings) {
         Variant v = settings.variant();
         LightSource light = settings.illumination().light();
-        if (light.isPoint() || v.filtersLight() || v == Variant.REFERENCE) {
+        if (light.isPoint() || v == Variant.REFERENCE || (v.filtersLight() && !light.isDisc())) {
             return new LightPolicy(settings, settings, Optional.empty());
+        }
+        if (v.filtersLight()) {
+            return new LightPolicy(settings, settings.with(b -> b.lightProfile(LightProfile.GAUSSIAN)), Optional.of(
+                    v.label() + " filters by the Gaussian light profile: a disc light needs the reference (or the "
+                    + "gaussian profile)"));
         }
         return new LightPolicy(settings, settings.with(b -> b.lightSizeDeg(0)), Optional.of(v.label()
                 + " samples the light at its centre only: a light of "
-                + InvalidSettingException.number(light.angularDiameterDeg()) + " degrees needs the lobes variant, the "
-                + "reference or the baked table (or a point light, 0 degrees)"));
+                + InvalidSettingException.number(light.angularDiameterDeg()) + (light.isDisc()
+                ? " degrees with the disc profile needs the reference (or a point light, 0 degrees)"
+                : " degrees needs the lobes variant, the reference or the baked table (or a point light, 0 degrees)")));
+    }
+
+    /** The quantity a refusal is about: the light's profile where only the disc is refused, else its size. */
+    public Quantity quantity() {
+        return asked.illumination().light().isDisc() && asked.variant().filtersLight() ? Quantity.LIGHT_PROFILE
+                : Quantity.LIGHT_SIZE;
     }
 
     /** Whether the method takes the light as asked. */
@@ -38,13 +52,18 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
     /** The settings as asked, or the refusal (one line naming the light's size) where the method cannot take them. */
     public BrdfSettings requireAccepted() {
         if (reason.isPresent()) {
-            throw new InvalidSettingException(Quantity.LIGHT_SIZE, reason.get());
+            throw new InvalidSettingException(quantity(), reason.get());
         }
         return asked;
     }
 
     /** What a scene or the viewer says when it draws {@link #usable} instead of what was asked; empty if nothing. */
     public Optional<String> notice() {
+        if (quantity() == Quantity.LIGHT_PROFILE) {
+            return reason.map(r -> asked.variant().label() + " filters by the Gaussian light profile: the "
+                    + InvalidSettingException.number(asked.illumination().light().angularDiameterDeg())
+                    + "-degree disc is drawn as the Gaussian of the same diameter (the reference integrates the disc)");
+        }
         return reason.map(r -> asked.variant().label() + " samples the light at its centre: the "
                 + InvalidSettingException.number(asked.illumination().light().angularDiameterDeg())
                 + "-degree light is drawn as a point light (lobes and baked filter by its size)");

@@ -1,21 +1,24 @@
 package diffract.optics;
 
 /**
- * A distant light of angular diameter D (the sun: 0.53 degrees; a lamp or a window: several).
+ * A distant light of angular diameter D (the sun: 0.53 degrees; a lamp or a window: several) and its profile.
  *
- * <p>Profile: a Gaussian over the light's directions in the tangent plane of the unit sphere at its centre
- * omega_i, with per-axis angular standard deviation sigma_a = D / 4, the standard deviation of a uniform disk of
- * diameter D along any axis. A direction offset by (a, b) along the polar basis vector
- * e_theta = (cos t cos p, cos t sin p, -sin t) and the azimuthal one e_phi = (-sin p, cos p, 0) moves
- * (u, v) = -omega_i.xy - omega_r.xy by -(a e_theta.xy + b e_phi.xy): to first order a Gaussian in (u, v) of
- * covariance sigma_a^2 J J^T, J = [e_theta.xy, e_phi.xy] = sigma_a^2 (cos^2 t r r^T + e e^T), r = (cos p, sin p),
- * e = (-sin p, cos p): an ellipse cos(theta_i) times shorter in the plane of incidence. <b>This Gaussian in (u, v)
- * is the definition</b> of the light throughout (reference and fast methods alike); the gain factor, the shadowing
- * and w stay at the light's centre. Against the true directions of a disk it differs by the disk's flat top
- * (a Gaussian of equal variance has tails instead) and by the linearisation, of relative size sigma_a^2 (8e-5 for a
- * 2-degree light).
+ * <p>{@link LightProfile#DISC}: uniform radiance over the cone of half-angle D / 2 around omega_i, what a scene's
+ * light is; only the reference takes it, averaging the relative BRDF over the cone's directions, each evaluated
+ * exactly ({@link DiscLightAverage}).
+ *
+ * <p>{@link LightProfile#GAUSSIAN} (the default, the model the fast methods filter by): a Gaussian over the light's
+ * directions in the tangent plane of the unit sphere at its centre omega_i, with per-axis angular standard deviation
+ * sigma_a = D / 4, the standard deviation of a uniform disk of diameter D along any axis. A direction offset by
+ * (a, b) along the polar basis vector e_theta = (cos t cos p, cos t sin p, -sin t) and the azimuthal one
+ * e_phi = (-sin p, cos p, 0) moves (u, v) = -omega_i.xy - omega_r.xy by -(a e_theta.xy + b e_phi.xy): to first
+ * order a Gaussian in (u, v) of covariance sigma_a^2 J J^T, J = [e_theta.xy, e_phi.xy] = sigma_a^2 (cos^2 t r r^T +
+ * e e^T), r = (cos p, sin p), e = (-sin p, cos p): an ellipse cos(theta_i) times shorter in the plane of incidence.
+ * The gain factor, the shadowing and w stay at the light's centre. Against the disc it differs by the disc's flat
+ * top (a Gaussian of equal variance puts 13.5 % of its power outside the diameter) and by the linearisation, of
+ * relative size sigma_a: docs/filtering.md measures the two apart.
  */
-public record LightSource(double angularDiameterDeg) {
+public record LightSource(double angularDiameterDeg, LightProfile profile) {
     /** The sun seen from the earth: 0.53 degrees. */
     public static final double SUN_DEG = 0.53;
     /** The largest diameter accepted: beyond it the linearised profile stops describing the light. */
@@ -23,10 +26,33 @@ public record LightSource(double angularDiameterDeg) {
     public static final LightSource POINT = new LightSource(0);
 
     public LightSource {
+        if (profile == null) {
+            throw new NullPointerException("the light's profile is required");
+        }
         if (!(angularDiameterDeg >= 0) || !(angularDiameterDeg <= MAX_DIAMETER_DEG)) {
             throw new InvalidSettingException(Quantity.LIGHT_SIZE, Quantity.LIGHT_SIZE.words() + " must be in [0, "
                     + InvalidSettingException.number(MAX_DIAMETER_DEG) + "] degrees, got " + angularDiameterDeg);
         }
+    }
+
+    /** A Gaussian light (the default profile) of angular diameter D degrees. */
+    public LightSource(double angularDiameterDeg) {
+        this(angularDiameterDeg, LightProfile.GAUSSIAN);
+    }
+
+    /** This light's diameter with {@code p}. */
+    public LightSource withProfile(LightProfile p) {
+        return new LightSource(angularDiameterDeg, p);
+    }
+
+    /** A light of finite size whose radiance is uniform over its disc (a point light is the same under both). */
+    public boolean isDisc() {
+        return profile == LightProfile.DISC && !isPoint();
+    }
+
+    /** The cone's half-angle D / 2 in radians. */
+    public double halfAngleRad() {
+        return Math.toRadians(angularDiameterDeg) / 2.0;
     }
 
     public boolean isPoint() {
@@ -43,9 +69,12 @@ public record LightSource(double angularDiameterDeg) {
         return Math.toRadians(angularDiameterDeg) / 4.0;
     }
 
-    /** The covariance in (u, v) of the light's directions around omega_i (see the class comment). */
+    /**
+     * The covariance in (u, v) of the Gaussian profile's directions around omega_i (see the class comment); a disc
+     * light has none (the reference integrates its directions, {@link DiscLightAverage}) and gives zero.
+     */
     public Covariance2 uvCovariance(Direction wi) {
-        if (isPoint()) {
+        if (isPoint() || isDisc()) {
             return Covariance2.ZERO;
         }
         double variance = sigmaRad() * sigmaRad();

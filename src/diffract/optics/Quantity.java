@@ -21,6 +21,7 @@ public enum Quantity {
     COHERENCE_LENGTH("the coherence length 4 sigma_s"),
     REFRACTIVE_INDEX("the refractive index"),
     LIGHT_SIZE("the light's angular diameter"),
+    LIGHT_PROFILE("the light's profile"),
     FRESNEL("the Fresnel model"),
     PIXEL_FILTER("the pixel filter"),
     LOBE_QUADRATURE("the lobes' quadrature"),

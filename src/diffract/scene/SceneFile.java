@@ -12,6 +12,7 @@ import diffract.optics.GainFactor;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.Levelling;
+import diffract.optics.LightProfile;
 import diffract.optics.LightSource;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
@@ -56,6 +57,7 @@ public final class SceneFile {
     /** {@code material.exposure}'s word for {@link RadiometricGain}. */
     static final String RADIOMETRIC = "radiometric";
     static final List<String> PIXEL_FILTERS = List.of("box", "point");
+    static final List<String> LIGHT_PROFILES = List.of("gaussian", "disc");
     static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed");
     /** The catalogue's names and their camelCase spellings. */
     static final List<String> PROCEDURAL_NAMES = proceduralNames();
@@ -122,10 +124,10 @@ public final class SceneFile {
         SceneObject root = SceneObject.root(where, tree);
         Scene.ImageSize image = image(root);
         Scene.CameraSpec camera = camera(root.object("camera"));
-        double[] lightSizeDeg = new double[1];
-        Scene.LightSpec light = light(root.object("light"), lightSizeDeg);
+        LightSource[] lightSource = new LightSource[1];
+        Scene.LightSpec light = light(root.object("light"), lightSource);
         Scene.ShapeSpec shape = shape(root.object("shape"));
-        Scene.MaterialSpec material = material(root.object("material"), lightSizeDeg[0]);
+        Scene.MaterialSpec material = material(root.object("material"), lightSource[0]);
         Scene scene = new Scene(source, image, camera, light, shape, material,
                 root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE,
                 StageKeys.stage(root));
@@ -164,9 +166,10 @@ public final class SceneFile {
 
     /**
      * The key light's direction and spectrum; its angular diameter ({@code angularDiameterDeg}, the sun's 0.53
-     * degrees by default) goes to {@code sizeDeg[0]}, for the material's settings, where every renderer reads it.
+     * degrees by default) and its profile (gaussian by default) go to {@code source[0]}, for the material's settings,
+     * where every renderer reads them.
      */
-    private static Scene.LightSpec light(SceneObject light, double[] sizeDeg) {
+    private static Scene.LightSpec light(SceneObject light, LightSource[] source) {
         double[] towards;
         if (light.has("direction")) {
             towards = light.direction("direction");
@@ -189,8 +192,10 @@ public final class SceneFile {
                     thetaDeg, LightDirection.MAX_THETA_DEG));
         }
         String spectrum = light.choice("spectrum", List.of("D65"), "D65");
-        sizeDeg[0] = light.number("angularDiameterDeg", SceneObject.Range.closed(0, LightSource.MAX_DIAMETER_DEG),
+        double sizeDeg = light.number("angularDiameterDeg", SceneObject.Range.closed(0, LightSource.MAX_DIAMETER_DEG),
                 LightSource.SUN_DEG);
+        // gaussian stays the default: the fast methods filter by it, and a disc is the reference's only
+        source[0] = new LightSource(sizeDeg, LightProfile.parse(light.choice("profile", LIGHT_PROFILES, "gaussian")));
         light.finish();
         return new Scene.LightSpec(towards, spectrum);
     }
@@ -276,7 +281,7 @@ public final class SceneFile {
             Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.FRESNEL, "fresnel"),
             Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"));
 
-    private static Scene.MaterialSpec material(SceneObject material, double lightSizeDeg) {
+    private static Scene.MaterialSpec material(SceneObject material, LightSource lightSource) {
         Scene.PatchSpec patch = patch(material.object("patch"));
         BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", VARIANTS, "lobes")));
         boolean radiometric = radiometric(material);
@@ -314,7 +319,7 @@ public final class SceneFile {
             windowRadius(material, b);
             b.pqReplicas(material.integer("pqReplicas", SceneObject.Range.closed(0, WindowSettings.MAX_PQ_REPLICAS), 0));
             b.windowPlacement(WindowPlacement.parse(material.choice("window", WINDOW_PLACEMENTS, "averaged")));
-            b.illumination(illumination(material).withLight(new LightSource(lightSizeDeg))
+            b.illumination(illumination(material).withLight(lightSource)
                     .withFresnel(FresnelModel.parse(material.choice("fresnel", FRESNEL_MODELS, "physical")))
                     .withPixelFilter(PixelFilter.parse(material.choice("pixelFilter", PIXEL_FILTERS, "box"))));
             b.termFormat(TermFormat.valueOf(material.choice("termFormat", TERM_FORMATS, "rg32f")

@@ -1,0 +1,136 @@
+package diffract.optics;
+
+import diffract.colour.Xyz;
+
+/**
+ * The filtered reference under a disc light ({@link LightProfile#DISC}): the relative BRDF averaged uniformly over
+ * the solid angle of the cone of half-angle R = D / 2 around the light's direction omega_i, every quantity (C, S,
+ * w, u, v) evaluated at each incident direction by the point-light reference ({@link FilteredReference}, with its
+ * pixel box and exact wavelength integral).
+ *
+ * <p>Why uniform over solid angle: the relative BRDF is f cos theta_i up to a constant (docs/theory.md), so a light
+ * of uniform radiance L over the cone reflects L integral f cos theta_i d omega = L Omega times the solid-angle
+ * average of the relative BRDF; divided by L Omega, the light's strength as a point light of the same L Omega would
+ * carry, the map keeps the point light's scale and the incident cosine enters per direction through C.
+ *
+ * <p>Quadrature: with t = (1 - cos alpha) / (1 - cos R) and beta the azimuth about omega_i, d omega =
+ * (1 - cos R) dt d beta, so the average is (1 / 2 pi) integral_0^1 dt integral_0^2pi d beta. Gauss-Legendre in t
+ * ({@link GaussLegendre}; a smooth function of the tangent plane, averaged over beta, is smooth in alpha^2 and so in
+ * t) and the trapezoid rule in beta (spectrally accurate on a periodic integrand), at n = 2, 4, 8, ... radial nodes
+ * and {@link #AZIMUTHS_PER_RADIAL} n azimuths, the azimuths of every other ring offset by half a step. A pixel is
+ * accepted where two successive rules agree to {@link FilteredReference#PIXEL_TOLERANCE} of its largest tristimulus
+ * value plus {@link FilteredReference#FLOOR}, up to {@link #MAX_RADIAL_NODES} radial nodes. Directions below the
+ * horizon light nothing but keep their share of the cone (the light is partly set).
+ */
+public final class DiscLightAverage {
+    /** Azimuths per radial node: the rings' circumference grows as sqrt(t), so 3 n is enough for the outer rings. */
+    static final int AZIMUTHS_PER_RADIAL = 3;
+    /** The finest rule: 32 radial nodes x 96 azimuths. */
+    static final int MAX_RADIAL_NODES = 32;
+
+    private final FilteredReference reference;
+    private final double halfAngleRad;
+
+    public DiscLightAverage(FilteredReference reference, LightSource light) {
+        if (!light.isDisc()) {
+            throw new IllegalArgumentException("a disc light of finite size is required, got " + light);
+        }
+        this.reference = reference;
+        this.halfAngleRad = light.halfAngleRad();
+    }
+
+    /** What one incident direction gives: {X, Y, Z}. */
+    @FunctionalInterface
+    interface PerDirection {
+        double[] at(Direction wi);
+    }
+
+    /** Pixel (column, row) of an S x S map ({@link BrdfMap}'s convention) averaged over the disc around omega_i. */
+    public Xyz mapPixel(Direction wi, int column, int row, int size) {
+        double x = BrdfMap.xOf(column, size);
+        double y = BrdfMap.yOf(row, size);
+        if (x * x + y * y >= 1) {
+            return new Xyz(0, 0, 0);
+        }
+        return average(wi, d -> {
+            Xyz c = reference.mapPixel(d, Covariance2.ZERO, column, row, size);
+            return new double[] {c.x(), c.y(), c.z()};
+        });
+    }
+
+    /** The point direction omega_r (no pixel) averaged over the disc around omega_i. */
+    public Xyz at(Direction wi, Direction wr) {
+        return average(wi, d -> reference.at(d, wr, Footprint.POINT));
+    }
+
+    /** The adaptive rule of the class comment. */
+    Xyz average(Direction wi, PerDirection f) {
+        double[] previous = rule(wi, f, 1);
+        for (int n = 2; ; n *= 2) {
+            double[] current = rule(wi, f, n);
+            double scale = Math.max(Math.abs(current[0]), Math.max(Math.abs(current[1]), Math.abs(current[2])));
+            double tolerance = FilteredReference.PIXEL_TOLERANCE * scale + FilteredReference.FLOOR;
+            boolean converged = true;
+            for (int i = 0; i < 3; i++) {
+                converged &= Math.abs(current[i] - previous[i]) <= tolerance;
+            }
+            if (converged || n >= MAX_RADIAL_NODES) {
+                return new Xyz(current[0], current[1], current[2]);
+            }
+            previous = current;
+        }
+    }
+
+    /** n radial Gauss-Legendre nodes in t times 3 n trapezoid azimuths. */
+    double[] rule(Direction wi, PerDirection f, int n) {
+        double[][] gl = GaussLegendre.unitInterval(n);
+        int azimuths = AZIMUTHS_PER_RADIAL * n;
+        double[][] basis = tangentBasis(wi);
+        double oneMinusCosR = 1 - Math.cos(halfAngleRad);
+        double[] sum = new double[3];
+        for (int i = 0; i < n; i++) {
+            double cosAlpha = 1 - gl[0][i] * oneMinusCosR;
+            double sinAlpha = Math.sqrt(Math.max(0, 1 - cosAlpha * cosAlpha));
+            double offset = (i % 2) * 0.5;
+            for (int j = 0; j < azimuths; j++) {
+                double beta = 2 * Math.PI * (j + offset) / azimuths;
+                Direction d = direction(wi, basis, cosAlpha, sinAlpha, beta);
+                if (d.z() <= 0) {
+                    continue;
+                }
+                double[] value = f.at(d);
+                double weight = gl[1][i] / azimuths;
+                for (int k = 0; k < 3; k++) {
+                    sum[k] += weight * value[k];
+                }
+            }
+        }
+        return sum;
+    }
+
+    /**
+     * The direction at angle alpha from omega_i and azimuth beta about it: cos alpha omega_i + sin alpha (cos beta
+     * e_theta + sin beta e_phi), with LightSource's polar and azimuthal basis vectors (any orthonormal pair at the
+     * normal).
+     */
+    static Direction direction(Direction wi, double[][] basis, double cosAlpha, double sinAlpha, double beta) {
+        double c = Math.cos(beta) * sinAlpha;
+        double s = Math.sin(beta) * sinAlpha;
+        double x = cosAlpha * wi.x() + c * basis[0][0] + s * basis[1][0];
+        double y = cosAlpha * wi.y() + c * basis[0][1] + s * basis[1][1];
+        double z = cosAlpha * wi.z() + c * basis[0][2] + s * basis[1][2];
+        double norm = Math.sqrt(x * x + y * y + z * z);
+        return new Direction(x / norm, y / norm, z / norm);
+    }
+
+    /** e_theta = (cos t cos p, cos t sin p, -sin t) and e_phi = (-sin p, cos p, 0) of omega_i; x and y at the normal. */
+    static double[][] tangentBasis(Direction wi) {
+        double sinTheta = Math.hypot(wi.x(), wi.y());
+        if (sinTheta < 1e-12) {
+            return new double[][] {{1, 0, 0}, {0, 1, 0}};
+        }
+        double cp = wi.x() / sinTheta;
+        double sp = wi.y() / sinTheta;
+        return new double[][] {{wi.z() * cp, wi.z() * sp, -sinTheta}, {-sp, cp, 0}};
+    }
+}
