@@ -4,26 +4,32 @@
 # diameter, for the blazed grating (blazed-10um) and the Elaphe-like patch, at 0.53, 2, 10 and 20 degrees; theta_i =
 # 30 degrees in the plane of each patch's period. SIZE (default 16) and COHERENCE_UM (default 10) keep the run to a
 # few minutes on 2 cores: the disc integrates every direction by the reference, so its cost grows with the light's
-# size and the coherence length. Writes docs/bench/disc-light.md. Run from anywhere: bash docs/disc-light.sh
+# size and the coherence length. PATCHES and LIGHTS choose the rows (default: both patches, all four sizes); APPEND=1
+# adds rows to the table instead of starting it. Writes docs/bench/disc-light.md. Run from anywhere:
+# bash docs/disc-light.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SIZE=${SIZE:-16}
 COHERENCE_UM=${COHERENCE_UM:-10}
+PATCHES=${PATCHES:-"blazed-10um elaphe-like"}
+LIGHTS=${LIGHTS:-"0.53 2 10 20"}
+APPEND=${APPEND:-0}
 tmp=out/disc-light
 mkdir -p "$tmp" docs/bench
 table=docs/bench/disc-light.md
 ./diffract patch blazed-10um -o "$tmp/blazed-10um.gsf" >/dev/null
 ./diffract patch elaphe-like -o "$tmp/elaphe-like.gsf" >/dev/null
-{
+[ "$APPEND" = 1 ] || {
     echo "$SIZE x $SIZE BRDF maps, theta_i = 30 degrees, coherence length $COHERENCE_UM um, the reference (box pixels):"
     echo "CIEDE2000 mean / p95 over the lit pixels between the disc and the Gaussian profile of the same diameter"
     echo
     echo "| patch | light (deg) | lit px | disc vs gaussian | gaussian s | disc s |"
     echo "|---|---|---|---|---|---|"
 } >"$table"
-for entry in "blazed-10um|0" "elaphe-like|90"; do
-    IFS='|' read -r name phi <<<"$entry"
-    for d in 0.53 2 10 20; do
+for name in $PATCHES; do
+    phi=0
+    [ "$name" = elaphe-like ] && phi=90 # the light in the plane of the patch's period
+    for d in $LIGHTS; do
         common="--patch $tmp/$name.gsf --theta-i 30 --phi-i $phi --variant reference --size $SIZE"
         common="$common --coherence-length $COHERENCE_UM --light-size-deg $d"
         start=$(date +%s.%N)
@@ -43,6 +49,7 @@ for entry in "blazed-10um|0" "elaphe-like|90"; do
         echo "$name $d deg: $line"
     done
 done
+[ "$APPEND" = 1 ] && sed -i '/CPU cores (/d; ${/^$/d}' "$table"
 echo >>"$table"
 echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))" >>"$table"
 cat "$table"

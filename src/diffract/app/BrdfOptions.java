@@ -128,8 +128,8 @@ final class BrdfOptions {
         FresnelModel fresnel;
 
         @Option(names = "--light-size-deg", paramLabel = "DEG",
-                description = "Angular diameter of the light, 0.." + (int) LightSource.MAX_DIAMETER_DEG + " degrees, a "
-                        + "Gaussian of sigma D/4 per axis (default: 0, a point light, on brdfmap; the sun's 0.53 on "
+                description = "Angular diameter of the light, 0.." + (int) LightSource.MAX_DIAMETER_DEG + " degrees, of "
+                        + "the profile --light-profile names (default: 0, a point light, on brdfmap; the sun's 0.53 on "
                         + "view, render and in scenes). Rendered by lobes, baked and the reference.")
         Double lightSizeDeg;
 
