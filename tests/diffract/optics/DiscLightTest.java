@@ -64,8 +64,10 @@ class DiscLightTest {
         return out;
     }
 
+    /** Minutes on two cores (brute force takes 512 directions per pixel): a long test, run by .ci/run after the rest. */
     @ParameterizedTest
     @ValueSource(doubles = {2, 10})
+    @org.junit.jupiter.api.Tag(diffract.jrtr.GlTestSupport.LONG_TAG)
     void discMapEqualsBruteForceOverTheLightsDirections(double lightDeg) {
         HeightField patch = grating();
         long start = System.nanoTime();
