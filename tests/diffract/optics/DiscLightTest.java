@@ -126,7 +126,9 @@ class DiscLightTest {
     /** 16 x 16 maps, the two rows either side of the line of orders (the rest is black under both profiles). */
     static final int COMPARE_SIZE = 16;
 
+    /** A 10-degree disc map: minutes on two cores, a long test. */
     @Test
+    @org.junit.jupiter.api.Tag(diffract.jrtr.GlTestSupport.LONG_TAG)
     void discAndGaussianAgreeForTheSunAndDifferAtTenDegrees() {
         HeightField patch = grating();
         BrdfMapDifference sun = profiles(patch, LightSource.SUN_DEG);
