@@ -56,9 +56,7 @@ public final class DiffractionBrdf {
      */
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
         IlluminationSettings illumination = settings.illumination();
-        if (illumination.light().isDisc()) {
-            LightPolicy.of(settings).requireAccepted(); // only the reference integrates a disc
-        }
+        LightPolicy.of(settings).requireAccepted();
         if (settings.variant() == Variant.REFERENCE) {
             ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
             SpectralSettings spectral = settings.spectral();
@@ -76,7 +74,6 @@ public final class DiffractionBrdf {
             return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.taylor().highestOrder(),
                     settings.coherenceWindow(), settings.spectral(), settings.lobes()));
         }
-        requirePointLight(settings);
         return withSampling(settings, taylorSpectrum(settings, terms, settings.taylor().highestOrder()));
     }
 
@@ -89,11 +86,11 @@ public final class DiffractionBrdf {
         if (settings.variant() == Variant.REFERENCE) {
             throw new IllegalArgumentException("the reference needs no Taylor expansion");
         }
+        LightPolicy.of(settings).requireAccepted();
         if (settings.variant() == Variant.LOBES) {
             return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(), settings.spectral(),
                     settings.lobes()));
         }
-        requirePointLight(settings);
         int orders = terms.centres().highestOrder();
         return withSampling(settings, new PhaseCentredSpectrum(terms, t -> taylorSpectrum(settings, t, orders)));
     }
@@ -116,11 +113,6 @@ public final class DiffractionBrdf {
             }
         };
         return new DiffractionBrdf(point, null, settings.illumination(), null, lobes);
-    }
-
-    /** Refuses a light of finite size for a variant that samples the light at its centre ({@link LightPolicy}). */
-    static void requirePointLight(BrdfSettings settings) {
-        LightPolicy.of(settings).requireAccepted();
     }
 
     /** The variant's Taylor-series spectrum over float32 terms: Gaussian window (FLSS, NMM) or sinc (PQ). */

@@ -5,6 +5,7 @@ import diffract.optics.io.GsfWriter;
 import diffract.util.DiskCache;
 import diffract.util.ImageFiles;
 import diffract.util.OpenExr;
+import diffract.util.SpecialFiles;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
@@ -82,21 +83,6 @@ class OutputsCliTest {
         return args.toArray(String[]::new);
     }
 
-    /** A named pipe made by mkfifo (in a folder made first); skips where there is none (not Linux). */
-    private static Path fifo(Path where) throws IOException, InterruptedException {
-        Files.createDirectories(where.getParent());
-        Process p;
-        try {
-            p = new ProcessBuilder("mkfifo", where.toString()).redirectErrorStream(true).start();
-        } catch (IOException e) {
-            assumeTrue(false, "no mkfifo here");
-            throw e;
-        }
-        String output = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-        assertEquals(0, p.waitFor(), output);
-        return where;
-    }
-
     private static void assertCharacterDevice(Path path) {
         assumeTrue(Files.exists(path), path + " is missing here");
         assertFalse(Files.isRegularFile(path), path + " is still no regular file");
@@ -130,31 +116,31 @@ class OutputsCliTest {
 
     @Test
     void aFifoIsRefusedAndStaysAFifo() throws Exception {
-        Path pfm = fifo(dir.resolve("m.pfm"));
+        Path pfm = SpecialFiles.fifo(dir.resolve("m.pfm"));
         assertRefused("--pfm " + pfm + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
                 + "map.pfm", brdfmap("-o", dir.resolve("m.png").toString(), "--pfm", pfm.toString()));
         assertFifo(pfm);
 
         // a turntable's PNG sequence: every frame's name is checked
-        Path frame = fifo(dir.resolve("turn-002.png"));
+        Path frame = SpecialFiles.fifo(dir.resolve("turn-002.png"));
         assertRefused("-o " + frame + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
                         + "turntable-000.png", "render", "--synthetic", "blazed", "--size", "16x16", "--turntable",
                 "4", "-o", dir.resolve("turn.png").toString());
         assertFifo(frame);
 
         // the bench's files of fixed name in its folder
-        Path results = fifo(dir.resolve("bench").resolve("results.md"));
+        Path results = SpecialFiles.fifo(dir.resolve("bench").resolve("results.md"));
         assertRefused("-o " + results + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
                 + "results.md", "bench", "--quick", "-o", dir.resolve("bench").toString());
         assertFifo(results);
 
         // the files of fixed name measure --save and the demo write into their folders
-        Path mask = fifo(dir.resolve("saved").resolve("mask.png"));
+        Path mask = SpecialFiles.fifo(dir.resolve("saved").resolve("mask.png"));
         assertRefused("--save " + mask + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
                 + "mask.png", "measure", "--synthetic", "blazed", "--size", "16x16", "--save",
                 dir.resolve("saved").toString());
         assertFifo(mask);
-        Path demo = fifo(dir.resolve("demo").resolve("demo.png"));
+        Path demo = SpecialFiles.fifo(dir.resolve("demo").resolve("demo.png"));
         assertRefused("-o " + demo + " is a named pipe (fifo), not a regular file; name a file to write, e.g. "
                 + "demo.png", "demo", "-o", dir.resolve("demo").toString());
         assertFifo(demo);

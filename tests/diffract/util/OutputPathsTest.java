@@ -26,21 +26,6 @@ class OutputPathsTest {
 
     static final Path DEV_NULL = Path.of("/dev/null");
 
-    /** A named pipe made by mkfifo; skips where there is none (not Linux). */
-    static Path fifo(Path where) throws IOException, InterruptedException {
-        Process p;
-        try {
-            p = new ProcessBuilder("mkfifo", where.toString()).redirectErrorStream(true).start();
-        } catch (IOException e) {
-            assumeTrue(false, "no mkfifo here");
-            throw e;
-        }
-        String output = new String(p.getInputStream().readAllBytes());
-        assertEquals(0, p.waitFor(), output);
-        assertEquals("a named pipe (fifo)", OutputPaths.kind(where));
-        return where;
-    }
-
     private static String refusal(Runnable check) {
         UserInputException e = assertThrows(UserInputException.class, check::run);
         assertEquals(1, e.getMessage().lines().count(), e.getMessage());
@@ -64,7 +49,7 @@ class OutputPathsTest {
 
     @Test
     void aFifoIsRefused() throws Exception {
-        Path fifo = fifo(dir.resolve("map.png"));
+        Path fifo = SpecialFiles.fifo(dir.resolve("map.png"));
         assertEquals("-o " + fifo + " is a named pipe (fifo), not a regular file; name a file to write, e.g. map.png",
                 refusal(() -> OutputPaths.requireWritableFile(fifo, "-o", "map.png", ".png")));
         assertEquals("a named pipe (fifo)", OutputPaths.kind(fifo));
@@ -138,7 +123,7 @@ class OutputPathsTest {
         assertTrue(onDevice.getReason().contains("a character device, not a regular file"), onDevice.getReason());
         assertCharacterDevice(DEV_NULL);
 
-        Path fifo = fifo(dir.resolve("turn.gif"));
+        Path fifo = SpecialFiles.fifo(dir.resolve("turn.gif"));
         assertThrows(FileSystemException.class,
                 () -> AnimatedGif.write(fifo, List.of(new float[3]), 1, 1, 80));
         assertEquals("a named pipe (fifo)", OutputPaths.kind(fifo));
