@@ -122,6 +122,11 @@ final class BenchCommand implements Callable<Integer> {
             + "and ms per frame, on the same GL context. Writes filtering.csv and filtering.md.")
     boolean filtering;
 
+    @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class,
+            description = "--filtering: the baked table's samples along u and v (each) and along w; 0 = automatic "
+                    + "(default " + FilteringTargets.DEFAULT_BAKED_UV_SAMPLES + ",0).")
+    OptionTypes.BakedSamples bakedSamples;
+
     @Option(names = "--lights", paramLabel = "LIST", split = ",", defaultValue = "0,2",
             description = "--filtering: the lights' angular diameters in degrees (default ${DEFAULT-VALUE}).")
     List<Double> lightsDeg;
@@ -260,8 +265,10 @@ final class BenchCommand implements Callable<Integer> {
         Files.createDirectories(outputDir);
         BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
                 .coherenceLengthUm(coherenceLengthUm));
+        int bakedUv = bakedSamples == null ? FilteringTargets.DEFAULT_BAKED_UV_SAMPLES : bakedSamples.uv();
+        int bakedW = bakedSamples == null ? 0 : bakedSamples.w();
         FilteringTargets targets = new FilteringTargets(new ReferenceMaps(DiskCache.user(), reporter), lobes, sizePx,
-                FilteringTargets.ROUNDS, frames, FilteringTargets.BAKED_UV_SAMPLES, reporter);
+                FilteringTargets.ROUNDS, frames, bakedUv, bakedW, reporter);
         int total = list.size() * lightsDeg.size();
         List<FilteringTargets.Row> done = new ArrayList<>();
         long start = System.nanoTime();
@@ -277,7 +284,7 @@ final class BenchCommand implements Callable<Integer> {
                         + e.getMessage(), e);
             }
         });
-        String md = FilteringTargets.markdown(rows, sizePx, lobes, FilteringTargets.BAKED_UV_SAMPLES)
+        String md = FilteringTargets.markdown(rows, sizePx, lobes, bakedUv)
                 + "\n" + machine(targets.glInfo()) + "\n";
         Files.writeString(outputDir.resolve("filtering.md"), md, StandardCharsets.UTF_8);
         System.out.printf(Locale.ROOT, "bench --filtering: %d rows in %.0f s%nwrote %s, %s%n%s", rows.size(),

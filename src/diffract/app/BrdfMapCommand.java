@@ -227,11 +227,12 @@ final class BrdfMapCommand implements Callable<Integer> {
                 ? BrdfMap.monochromatic(cpu, wi, light.lambdaNm, picture.size, band, reporter)
                 : BrdfMap.xyz(cpu, wi, picture.size, band, reporter);
         long done = System.nanoTime();
-        PieceManifest manifest = new PieceManifest(PieceManifest.FORMAT, tile.index(), tile.count(), band.fromRow(),
-                band.toRow(), picture.size, light.lambdaNm != null ? 1 : 3, patch.meanSubtracted().contentSha256(),
-                patch.meanSubtracted().widthUm(), patch.meanSubtracted().heightExtentUm(),
-                floatSettings(settings, patch, phiDeg), pictureSettings(), pieceArguments(), null, null);
-        PieceFolder.write(tiles.pieces, tile, manifest, floats);
+        int channels = light.lambdaNm != null ? 1 : 3;
+        HeightField field = patch.meanSubtracted();
+        PieceManifest manifest = new PieceManifest(PieceManifest.FORMAT, spec.name(), tile.index(), tile.count(),
+                band.fromRow(), band.toRow(), picture.size, picture.size * channels, field.contentSha256(),
+                floatSettings(settings, patch, phiDeg), pictureSettings(), TileOptions.argumentsWithoutTile(spec), null, null);
+        PieceFolder.write(tiles.pieces, manifest, floats);
         // submit reads this line: the piece's fixed cost (loading, terms) against its work (the pixels)
         System.out.printf(Locale.ROOT, "wrote piece %s (rows %s of %d) into %s: setup %.2f s, work %.2f s%n", tile,
                 band, picture.size, tiles.pieces, (work - startNanos) * 1e-9, (done - work) * 1e-9);
@@ -244,6 +245,8 @@ final class BrdfMapCommand implements Callable<Integer> {
         s.put("brdf", settings.toString());
         s.put("thetaIDeg", Double.toString(thetaIDeg));
         s.put("phiIDeg", Double.toString(phiDeg));
+        s.put("patchWidthUm", Double.toString(patch.meanSubtracted().widthUm()));
+        s.put("patchHeightUm", Double.toString(patch.meanSubtracted().heightExtentUm()));
         s.put("lambdaNm", String.valueOf(light.lambdaNm));
         s.put("patchMaxHeightUm", String.valueOf(patch.maxHeightUm()));
         s.put("termsDir", engines.termsDir == null ? "cache" : engines.termsDir.toAbsolutePath().normalize()
@@ -258,22 +261,6 @@ final class BrdfMapCommand implements Callable<Integer> {
         s.put("colour", picture.colour.name());
         s.put("exrHalf", Boolean.toString(picture.exrHalf));
         return s;
-    }
-
-    /** The options this run was given, less --tile and --pieces and the ones that change no output. */
-    private List<String> pieceArguments() {
-        List<String> given = spec.commandLine().getParseResult().originalArgs();
-        int from = given.indexOf(spec.name()) + 1;
-        List<String> kept = new ArrayList<>();
-        for (int a = from; a < given.size(); a++) {
-            String arg = given.get(a);
-            if (arg.equals("--tile") || arg.equals("--pieces")) {
-                a++; // and its value
-            } else if (!arg.startsWith("--tile=") && !arg.startsWith("--pieces=")) {
-                kept.add(arg);
-            }
-        }
-        return kept;
     }
 
     /**
@@ -353,7 +340,7 @@ final class BrdfMapCommand implements Callable<Integer> {
                     + "or drop --engine gpu and --variant auto");
         }
         if (pieceCount > picture.size) {
-            throw new UserInputException("--pieces " + pieceCount + ": a map of --size " + picture.size + " has only "
+            throw new UserInputException("--piece-count " + pieceCount + ": a map of --size " + picture.size + " has only "
                     + picture.size + " rows to split");
         }
         requireOutputs();

@@ -16,20 +16,23 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /**
- * {@code diffract merge DIR -o MAP.png}: the pieces that {@code brdfmap --tile I/N --pieces DIR} left, checked and
- * assembled into the map, written exactly as one {@code brdfmap} run with their options writes it (the exposure, auto
- * included, is chosen on the whole map here).
+ * {@code diffract merge DIR -o OUT}: the pieces that {@code brdfmap --tile I/N --pieces DIR} or {@code render
+ * --turntable F --tile I/N --pieces DIR} left, checked and assembled, written exactly as one run of that command with
+ * their options writes its result (a map's exposure, auto included, is chosen on the whole map here; a GIF's palette
+ * on all its frames).
  */
 @Command(name = "merge", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Assemble the pieces of a BRDF map (brdfmap --tile I/N --pieces DIR) into the map: the same "
-                + "PNG, PFM and OpenEXR files, bit for bit, as one brdfmap run with the pieces' options writes. "
-                + "Pieces missing, there twice, damaged or of another map are refused, named.")
+        description = "Assemble the pieces of a BRDF map (brdfmap --tile I/N --pieces DIR) or of a turntable (render "
+                + "--turntable F --tile I/N --pieces DIR) into the result: the same files, bit for bit, as one run "
+                + "with the pieces' options writes. Pieces missing, there twice, damaged or of another result are "
+                + "refused, named.")
 final class MergeCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "DIR", description = "The folder of pieces.")
     Path pieces;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "MAP.png|MAP.exr",
-            description = "The map to write, as brdfmap's -o: a PNG at the pieces' --exposure, or OpenEXR.")
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT",
+            description = "What to write, as the command's -o: a map's PNG (at the pieces' --exposure) or OpenEXR "
+                    + "file; a turntable's .gif or .png name for the numbered sequence.")
     Path output;
 
     @Option(names = "--pfm", paramLabel = "MAP.pfm", description = "Also write the floats, as brdfmap's --pfm.")
@@ -47,21 +50,42 @@ final class MergeCommand implements Callable<Integer> {
         Reporter reporter = quiet.reporter();
         PieceFolder.Assembled assembled = PieceFolder.read(pieces);
         PieceManifest m = assembled.manifest();
-        BrdfMapCommand single = singleRun(m);
+        if ("render".equals(m.command())) {
+            if (pfm != null || exr != null) {
+                throw new UserInputException("merge: the pieces are a turntable's frames: --pfm and --exr go with a "
+                        + "BRDF map's pieces; write -o OUT.gif or OUT.png");
+            }
+            if (!diffract.util.Version.VERSION.equals(m.settings().get("version"))) {
+                throw new UserInputException("merge: the pieces were rendered by diffract " + m.settings().get("version")
+                        + ", this is " + diffract.util.Version.VERSION + ": compute them again with this diffract");
+            }
+            RenderCommand single = (RenderCommand) singleRun(m);
+            single.output = output;
+            single.writeMergedTurntable(assembled.floats(), reporter);
+            System.out.printf(Locale.ROOT, "merged %d pieces into %s (%d frames) in %.1f s%n", m.pieces(), output,
+                    m.items(), (System.nanoTime() - start) * 1e-9);
+            return 0;
+        }
+        BrdfMapCommand single = (BrdfMapCommand) singleRun(m);
+        String settings = single.brdf.apply(BrdfMapCommand.base(single.requested())).toString();
+        if (!settings.equals(m.settings().get("brdf"))) {
+            throw new UserInputException("merge: the pieces' options give other settings in this diffract than in "
+                    + "the one that computed them: compute them again with this diffract");
+        }
         single.output = output;
         single.picture.pfm = pfm;
         single.picture.exr = exr;
-        single.writeMerged(assembled.map(), Double.parseDouble(m.settings().get("phiIDeg")), m.patchWidthUm(),
-                m.patchHeightUm(), reporter);
-        System.out.printf(Locale.ROOT, "merged %d pieces into %s (%dx%d) in %.1f s%n", m.pieces(), output, m.sizePx(),
-                m.sizePx(), (System.nanoTime() - start) * 1e-9);
+        single.writeMerged(assembled.floats(), m.number("phiIDeg"), m.number("patchWidthUm"), m.number("patchHeightUm"),
+                reporter);
+        System.out.printf(Locale.ROOT, "merged %d pieces into %s (%dx%d) in %.1f s%n", m.pieces(), output, m.items(),
+                m.items(), (System.nanoTime() - start) * 1e-9);
         return 0;
     }
 
-    /** The brdfmap run the pieces were cut from, read back from their options (its outputs are merge's). */
-    private static BrdfMapCommand singleRun(PieceManifest m) {
+    /** The run the pieces were cut from, read back from their command and options (its outputs are merge's). */
+    private static Object singleRun(PieceManifest m) {
         List<String> args = new ArrayList<>();
-        args.add("brdfmap");
+        args.add(m.command());
         args.addAll(m.arguments());
         CommandLine.ParseResult parsed;
         try {
@@ -71,12 +95,6 @@ final class MergeCommand implements Callable<Integer> {
             throw new UserInputException("merge: the pieces' options no longer parse (" + e.getMessage()
                     + "): compute them again with this diffract");
         }
-        BrdfMapCommand single = (BrdfMapCommand) parsed.subcommand().commandSpec().userObject();
-        String settings = single.brdf.apply(BrdfMapCommand.base(single.requested())).toString();
-        if (!settings.equals(m.settings().get("brdf"))) {
-            throw new UserInputException("merge: the pieces' options give other settings in this diffract than in "
-                    + "the one that computed them: compute them again with this diffract");
-        }
-        return single;
+        return parsed.subcommand().commandSpec().userObject();
     }
 }

@@ -26,10 +26,10 @@ import java.util.TreeMap;
 import java.util.stream.Collectors;
 
 /**
- * A folder of pieces of one BRDF map: {@code brdfmap --tile} writes one, {@code merge} reads them all back into the
- * whole map's floats, or refuses, in one line, a folder whose pieces are missing, twice there, damaged or of another
- * map. The floats are written before the manifest, each atomically, so a run that dies leaves no manifest that merge
- * would accept.
+ * A folder of pieces of one result (a BRDF map, a turntable's frames): {@code brdfmap --tile} and {@code render
+ * --turntable F --tile} write one each, {@code merge} reads them all back into the whole result's floats, or refuses,
+ * in one line, a folder whose pieces are missing, twice there, damaged or of another result. The floats are written
+ * before the manifest, each atomically, so a run that dies leaves no manifest that merge would accept.
  */
 final class PieceFolder {
     private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
@@ -39,28 +39,30 @@ final class PieceFolder {
     private PieceFolder() {
     }
 
-    /** The pieces of a map, assembled: the first manifest (all agree) and the S x S map's floats. */
-    record Assembled(PieceManifest manifest, float[] map) {
+    /** The pieces of a result, assembled: the first manifest (all agree) and all the result's floats, in order. */
+    record Assembled(PieceManifest manifest, float[] floats) {
     }
 
     /** Writes a piece's floats, then its manifest (with the floats' name and hash filled in). */
-    static void write(Path dir, TileOptions.Tile tile, PieceManifest manifest, float[] floats) throws IOException {
+    static void write(Path dir, PieceManifest manifest, float[] floats) throws IOException {
+        if (floats.length != (long) (manifest.to() - manifest.from()) * manifest.floatsPerItem()) {
+            throw new IllegalArgumentException("piece " + manifest.label() + " has " + floats.length + " floats, not "
+                    + (manifest.to() - manifest.from()) + " x " + manifest.floatsPerItem());
+        }
         byte[] bytes = bytes(floats);
+        TileOptions.Tile tile = new TileOptions.Tile(manifest.piece(), manifest.pieces());
         String floatsName = tile.fileName(FLOATS);
-        PieceManifest complete = new PieceManifest(PieceManifest.FORMAT, manifest.piece(), manifest.pieces(),
-                manifest.fromRow(), manifest.toRow(), manifest.sizePx(), manifest.channels(), manifest.patchSha256(),
-                manifest.patchWidthUm(), manifest.patchHeightUm(), manifest.settings(), manifest.picture(),
-                manifest.arguments(), floatsName, sha256(bytes));
+        PieceManifest complete = manifest.withFloats(floatsName, sha256(bytes));
         byte[] json = (JSON.writeValueAsString(complete) + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8);
         ImageFiles.writeAtomically(dir.resolve(floatsName), out -> out.write(bytes));
         ImageFiles.writeAtomically(dir.resolve(tile.fileName(MANIFEST)), out -> out.write(json));
     }
 
-    /** Every piece in {@code dir}, checked against each other and their hashes, as one map. */
+    /** Every piece in {@code dir}, checked against each other and their hashes, as one result. */
     static Assembled read(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) {
-            throw new UserInputException("merge: " + dir + " is not a folder of pieces (brdfmap --tile I/N --pieces "
-                    + "DIR writes one)");
+            throw new UserInputException("merge: " + dir + " is not a folder of pieces (brdfmap or render --tile I/N "
+                    + "--pieces DIR writes one)");
         }
         Map<Path, PieceManifest> manifests = new TreeMap<>();
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, "*" + MANIFEST)) {
@@ -70,16 +72,21 @@ final class PieceFolder {
         }
         if (manifests.isEmpty()) {
             throw new UserInputException("merge: " + dir + " holds no pieces (piece-I-of-N.json, written by brdfmap "
-                    + "--tile I/N --pieces " + dir + ")");
+                    + "or render --tile I/N --pieces " + dir + ")");
         }
         PieceManifest first = agreeing(dir, manifests);
         PieceManifest[] byIndex = complete(dir, manifests, first.pieces());
-        float[] map = new float[first.sizePx() * first.sizePx() * first.channels()];
+        long total = (long) first.items() * first.floatsPerItem();
+        if (total > Integer.MAX_VALUE - 8) {
+            throw new UserInputException("merge: " + dir + ": the result has " + total + " floats, more than one "
+                    + "array holds");
+        }
+        float[] all = new float[(int) total];
         for (PieceManifest m : byIndex) {
             float[] floats = verifiedFloats(dir, m);
-            System.arraycopy(floats, 0, map, m.fromRow() * m.sizePx() * m.channels(), floats.length);
+            System.arraycopy(floats, 0, all, m.from() * m.floatsPerItem(), floats.length);
         }
-        return new Assembled(first, map);
+        return new Assembled(first, all);
     }
 
     private static PieceManifest parse(Path file) throws IOException {
@@ -102,7 +109,7 @@ final class PieceFolder {
      */
     private static PieceManifest agreeing(Path dir, Map<Path, PieceManifest> manifests) {
         Map<List<Object>, List<Path>> groups = new LinkedHashMap<>();
-        manifests.forEach((file, m) -> groups.computeIfAbsent(m.mapKey(), k -> new ArrayList<>()).add(file));
+        manifests.forEach((file, m) -> groups.computeIfAbsent(m.resultKey(), k -> new ArrayList<>()).add(file));
         if (groups.size() == 1) {
             return manifests.values().iterator().next();
         }
@@ -110,21 +117,30 @@ final class PieceFolder {
         PieceManifest reference = manifests.get(most.get(0));
         List<Path> others = manifests.keySet().stream().filter(f -> !most.contains(f)).toList();
         PieceManifest other = manifests.get(others.get(0));
-        throw new UserInputException("merge: " + dir + ": " + names(others) + " belong to another map than "
-                + names(most) + " (" + difference(reference, other) + "): compute them again with the same options");
+        throw new UserInputException("merge: " + dir + ": " + names(others) + " belong to another "
+                + what(reference) + " than " + names(most) + " (" + difference(reference, other) + "): compute them "
+                + "again with the same options");
     }
 
-    /** The first thing that differs between two pieces' maps, in words. */
+    /** What a piece is part of, in words. */
+    private static String what(PieceManifest m) {
+        return "render".equals(m.command()) ? "turntable" : "map";
+    }
+
+    /** The first thing that differs between two pieces' results, in words. */
     private static String difference(PieceManifest a, PieceManifest b) {
+        if (!Objects.equals(a.command(), b.command())) {
+            return "computed by " + b.command() + ", not " + a.command();
+        }
         if (a.pieces() != b.pieces()) {
             return "split into " + b.pieces() + " pieces, not " + a.pieces();
         }
-        if (!a.patchSha256().equals(b.patchSha256())) {
+        if (!Objects.equals(a.inputSha256(), b.inputSha256())) {
             return "another patch: its height field's SHA-256 differs";
         }
-        if (a.sizePx() != b.sizePx() || a.channels() != b.channels()) {
-            return "size " + b.sizePx() + " with " + b.channels() + " channels, not " + a.sizePx() + " with "
-                    + a.channels();
+        if (a.items() != b.items() || a.floatsPerItem() != b.floatsPerItem()) {
+            return b.items() + " " + items(b) + " of " + b.floatsPerItem() + " floats, not " + a.items() + " of "
+                    + a.floatsPerItem();
         }
         String settings = firstDifference(a.settings(), b.settings());
         return settings != null ? settings : Objects.requireNonNullElse(firstDifference(a.picture(), b.picture()),
@@ -169,19 +185,25 @@ final class PieceFolder {
             }
         }
         if (!missing.isEmpty()) {
+            String command = manifests.values().iterator().next().command();
             throw new UserInputException("merge: " + dir + ": piece" + (missing.size() > 1 ? "s " : " ")
-                    + String.join(", ", missing) + (missing.size() > 1 ? " are" : " is") + " missing: run brdfmap "
-                    + "--tile " + missing.get(0) + " --pieces " + dir + " with the same options");
+                    + String.join(", ", missing) + (missing.size() > 1 ? " are" : " is") + " missing: run " + command
+                    + " --tile " + missing.get(0) + " --pieces " + dir + " with the same options");
         }
         for (PieceManifest m : pieces) {
             TileOptions.Tile tile = new TileOptions.Tile(m.piece(), m.pieces());
-            var band = diffract.optics.MapBand.of(m.piece(), m.pieces(), m.sizePx());
-            if (band.fromRow() != m.fromRow() || band.toRow() != m.toRow()) {
-                throw new UserInputException("merge: " + dir + ": piece " + tile + " covers rows " + m.fromRow() + ".."
-                        + (m.toRow() - 1) + ", not " + band + ": compute it again");
+            var band = diffract.optics.MapBand.of(m.piece(), m.pieces(), m.items());
+            if (band.fromRow() != m.from() || band.toRow() != m.to()) {
+                throw new UserInputException("merge: " + dir + ": piece " + tile + " covers " + items(m) + " "
+                        + m.from() + ".." + (m.to() - 1) + ", not " + band + ": compute it again");
             }
         }
         return pieces;
+    }
+
+    /** What a piece's items are, in words. */
+    private static String items(PieceManifest m) {
+        return "render".equals(m.command()) ? "frames" : "rows";
     }
 
     /** A piece's floats, if their hash is the manifest's. */
@@ -201,7 +223,7 @@ final class PieceFolder {
             throw new UserInputException("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
                     + ") are missing: compute that piece again");
         }
-        int expected = (m.toRow() - m.fromRow()) * m.sizePx() * m.channels();
+        int expected = (m.to() - m.from()) * m.floatsPerItem();
         if (bytes.length != 4L * expected || !sha256(bytes).equals(m.floatsSha256())) {
             throw new UserInputException("merge: " + dir + ": piece " + m.label() + " is damaged: " + name
                     + " does not match its manifest's SHA-256: compute that piece again");

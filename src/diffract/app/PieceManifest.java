@@ -4,40 +4,55 @@ import java.util.List;
 import java.util.Map;
 
 /**
- * What one piece of a split BRDF map is, as {@code piece-I-of-N.json} beside its floats: everything that changes the
- * floats ({@code settings}, the patch's content hash, the map size), everything that changes the pictures written from
- * them ({@code picture}), which band it covers, and the SHA-256 of its floats. It holds no time or path of the run, so
- * computing a piece again writes the same bytes.
+ * What one piece of a split run is, as {@code piece-I-of-N.json} beside its floats: which command computed it, which
+ * run of the result's items it holds (rows of a BRDF map, frames of a turntable), everything that changes its floats
+ * ({@code inputSha256}, {@code settings}), everything that changes the files written from them ({@code picture}), and
+ * the SHA-256 of its floats. It holds no time or path of the run, so computing a piece again writes the same bytes.
  *
  * @param format        {@link #FORMAT}: what the file is
- * @param piece         I, the band's index
- * @param pieces        N, how many bands the map is split into
- * @param fromRow       the band's first row
- * @param toRow         one past its last row
- * @param sizePx        the map's size S (S x S pixels)
- * @param channels      floats per pixel: 3 (CIE XYZ) or 1 (the relative BRDF at one wavelength)
- * @param patchSha256   the height field's content hash ({@link diffract.optics.HeightField#contentSha256})
- * @param patchWidthUm  the patch's extent along x, for the black-map notice
- * @param patchHeightUm ... along y
+ * @param command       the command that computed it and that merge writes the result as: brdfmap or render
+ * @param piece         I, the piece's index
+ * @param pieces        N, how many pieces the result is split into
+ * @param from          the piece's first item ({@link diffract.optics.MapBand#of}: N runs as even as items allow)
+ * @param to            one past its last item
+ * @param items         the result's items: a map's rows, a turntable's frames
+ * @param floatsPerItem floats per item: S x channels per map row, W x H x 3 per frame
+ * @param inputSha256   the content hash of what the command reads (the height field)
  * @param settings      the effective settings that change the floats, as text
- * @param picture       the settings that change the PNG and OpenEXR files written from the floats
- * @param arguments     the brdfmap options it was run with, less --tile and --pieces: merge reads the picture
+ * @param picture       the settings that change the files written from the floats
+ * @param arguments     the options the command was run with, less --tile and --pieces: merge reads the result's
  *                      settings back from them
- * @param floatsFile    the piece's floats: little-endian float32, rows from the band's top, pixels left to right
+ * @param floatsFile    the piece's floats: little-endian float32, items in order, each item's floats in order
  * @param floatsSha256  their SHA-256
  */
-record PieceManifest(String format, int piece, int pieces, int fromRow, int toRow, int sizePx, int channels,
-                     String patchSha256, double patchWidthUm, double patchHeightUm, Map<String, String> settings,
-                     Map<String, String> picture, List<String> arguments, String floatsFile, String floatsSha256) {
-    static final String FORMAT = "diffract brdfmap piece 1";
+record PieceManifest(String format, String command, int piece, int pieces, int from, int to, int items,
+                     int floatsPerItem, String inputSha256, Map<String, String> settings, Map<String, String> picture,
+                     List<String> arguments, String floatsFile, String floatsSha256) {
+    static final String FORMAT = "diffract piece 2";
 
     /** The piece as merge names it: I/N. */
     String label() {
         return piece + "/" + pieces;
     }
 
-    /** What pieces of one map share: a piece whose key differs was computed for another map. */
-    List<Object> mapKey() {
-        return List.of(pieces, sizePx, channels, patchSha256, settings, picture);
+    /** What pieces of one result share: a piece whose key differs was computed for another result. */
+    List<Object> resultKey() {
+        return List.of(command, pieces, items, floatsPerItem, inputSha256, settings, picture);
+    }
+
+    /** This manifest with its floats' file and hash filled in. */
+    PieceManifest withFloats(String file, String sha256) {
+        return new PieceManifest(format, command, piece, pieces, from, to, items, floatsPerItem, inputSha256, settings,
+                picture, arguments, file, sha256);
+    }
+
+    /** A setting that merge needs back as a number (a brdfmap piece's patch extent, its azimuth). */
+    double number(String key) {
+        String value = settings.get(key);
+        if (value == null) {
+            throw new diffract.util.UserInputException("merge: the pieces' manifests lack '" + key + "': compute them "
+                    + "again with this diffract");
+        }
+        return Double.parseDouble(value);
     }
 }

@@ -14,11 +14,17 @@ import diffract.viewer.ViewerRenderer;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.concurrent.Callable;
 
 /**
@@ -43,11 +49,17 @@ final class RenderCommand implements Callable<Integer> {
     @Mixin
     CacheOption cache;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT.png|OUT.exr|OUT.gif",
+    @Mixin
+    TileOptions tiles;
+
+    @Spec
+    CommandSpec spec;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png|OUT.exr|OUT.gif",
             description = "The PNG to write (tone mapped, display sRGB), or an OpenEXR file of the frame's linear "
                     + "light (linear sRGB times the exposure, neither tone mapped nor clipped); with --turntable a "
                     + ".gif (animated, looping), or a .png name for the numbered sequence OUT-000.png, OUT-001.png, "
-                    + "...")
+                    + "... Required, except with --tile.")
     Path output;
 
     @Option(names = "--exr-half",
@@ -87,8 +99,17 @@ final class RenderCommand implements Callable<Integer> {
         if (!(turntable.frameMs >= 10 && turntable.frameMs <= 10_000)) {
             throw new UserInputException("--frame-ms must be in 10..10000 milliseconds, got " + turntable.frameMs);
         }
-        OutputPaths.require(outputs(frames));
-        boolean linear = frames == null && output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".exr");
+        validateTile(frames);
+        if (tiles.tile == null) {
+            if (output == null) {
+                throw new UserInputException("render needs -o OUT.png (or OUT.exr, or with --turntable OUT.gif), the "
+                        + "picture to write; with --turntable F --tile I/N --pieces DIR it writes a piece of the frames "
+                        + "instead");
+            }
+            OutputPaths.require(outputs(frames));
+        }
+        boolean linear = output != null && frames == null
+                && output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".exr");
         if (exrHalf && !linear) {
             throw new UserInputException("--exr-half goes with an OpenEXR output: -o OUT.exr");
         }
@@ -100,6 +121,10 @@ final class RenderCommand implements Callable<Integer> {
         model.bakeIfNeeded(reporter);
         ViewerRenderer renderer = new ViewerRenderer(model, linear ? FrameOutput.LINEAR : FrameOutput.DISPLAY);
         try (OffscreenTarget target = new OffscreenTarget(renderer)) {
+            if (tiles.tile != null) {
+                writePiece(target, renderer, model, setup, frames, image, start, reporter);
+                return 0;
+            }
             if (frames != null) {
                 Turntable.render(target, renderer, model, frames, turntable.orbitLight, output, image,
                         turntable.frameMs, reporter);
@@ -117,6 +142,85 @@ final class RenderCommand implements Callable<Integer> {
                 setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
                 setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /** --tile and --pieces go with --turntable, without -o (merge writes it), and split at most a piece per frame. */
+    private void validateTile(Integer frames) {
+        if (tiles.tile == null) {
+            if (tiles.pieces != null) {
+                throw new UserInputException("--pieces DIR goes with --tile I/N (which run of frames to render)");
+            }
+            return;
+        }
+        if (frames == null) {
+            throw new UserInputException("--tile splits a turntable's frames: add --turntable FRAMES");
+        }
+        if (tiles.pieces == null) {
+            throw new UserInputException("--tile " + tiles.tile + " needs --pieces DIR, the folder its piece goes to");
+        }
+        if (output != null) {
+            throw new UserInputException("--tile writes one piece into --pieces " + tiles.pieces + "; the turntable's "
+                    + "-o is written by 'diffract merge " + tiles.pieces + " -o OUT.gif': drop it");
+        }
+        if (tiles.tile.count() > frames) {
+            throw new UserInputException("--tile " + tiles.tile + ": a turntable of " + frames + " frames has only "
+                    + frames + " frames to split");
+        }
+        OutputPaths.requireWritableFolder(tiles.pieces, "--pieces");
+    }
+
+    /** With --tile: the piece's frames, as linear floats, written with their manifest into --pieces DIR. */
+    private void writePiece(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, SceneSetup setup,
+                            int frames, Scene.ImageSize image, long startNanos, Reporter reporter) throws IOException {
+        TileOptions.Tile tile = tiles.tile;
+        var band = diffract.optics.MapBand.of(tile.index(), tile.count(), frames);
+        int perFrame = image.width() * image.height() * 3;
+        float[] floats = new float[band.rows() * perFrame];
+        long work = System.nanoTime();
+        Turntable.render(target, renderer, model, frames, turntable.orbitLight, band.fromRow(), band.toRow(), image,
+                reporter, (k, rgb) -> System.arraycopy(rgb, 0, floats, (k - band.fromRow()) * perFrame, perFrame));
+        long done = System.nanoTime();
+        Map<String, String> settings = new LinkedHashMap<>();
+        settings.put("version", diffract.util.Version.VERSION);
+        settings.put("brdf", setup.settings().toString());
+        settings.put("image", image.width() + "x" + image.height());
+        settings.put("orbitLight", Boolean.toString(turntable.orbitLight));
+        Map<String, String> picture = new LinkedHashMap<>();
+        picture.put("frameMs", Integer.toString(turntable.frameMs));
+        PieceManifest manifest = new PieceManifest(PieceManifest.FORMAT, spec.name(), tile.index(), tile.count(),
+                band.fromRow(), band.toRow(), frames, perFrame, setup.patch().contentSha256(), settings, picture,
+                TileOptions.argumentsWithoutTile(spec), null, null);
+        PieceFolder.write(tiles.pieces, manifest, floats);
+        // submit reads this line: the piece's fixed cost (loading, the table) against its work (the frames)
+        System.out.printf(Locale.ROOT, "wrote piece %s (frames %s of %d) into %s: setup %.2f s, work %.2f s%n", tile,
+                band, frames, tiles.pieces, (work - startNanos) * 1e-9, (done - work) * 1e-9);
+    }
+
+    /**
+     * Merge's half of a split turntable: every frame's floats, in order, written as this command would have written
+     * them had it rendered them all (the same GIF or PNG sequence, bit for bit).
+     */
+    void writeMergedTurntable(float[] floats, Reporter reporter) throws IOException {
+        Integer frames = turntable.frames;
+        if (frames == null) {
+            throw new UserInputException("merge: the pieces' options name no --turntable: compute them again");
+        }
+        OutputPaths.require(outputs(frames));
+        if (output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".exr")) {
+            throw new UserInputException("merge: a turntable is written as OUT.gif or OUT.png, not OpenEXR");
+        }
+        Scene.ImageSize image = options.imageSize(new Scene.ImageSize(512, 512));
+        int perFrame = image.width() * image.height() * 3;
+        if ((long) perFrame * frames != floats.length) {
+            throw new UserInputException("merge: the pieces hold " + floats.length + " floats, not " + frames
+                    + " frames of " + image.width() + "x" + image.height() + ": compute them again with this diffract");
+        }
+        List<float[]> pictures = new ArrayList<>();
+        for (int k = 0; k < frames; k++) {
+            pictures.add(java.util.Arrays.copyOfRange(floats, k * perFrame, (k + 1) * perFrame));
+        }
+        Turntable.write(output, pictures, image, turntable.frameMs);
+        reporter.info("wrote " + frames + " frames of " + image.width() + "x" + image.height());
     }
 
     /** What the command writes: one PNG or OpenEXR file, a GIF, or every name of a PNG sequence. */

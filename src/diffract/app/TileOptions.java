@@ -1,27 +1,48 @@
 package diffract.app;
 
 import picocli.CommandLine.ITypeConverter;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.TypeConversionException;
 
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
- * {@code --tile I/N --pieces DIR}: a run computes only band I of N bands of the map's rows and leaves it, as one piece
- * file and its manifest, in a folder that {@code diffract merge} turns into the map. A long reference map can so be
- * split over processes or machines; {@code diffract submit} does it on this one.
+ * {@code --tile I/N --pieces DIR}: a run computes only piece I of N equal pieces of its result (a BRDF map's rows, a
+ * turntable's frames) and leaves it, as one piece file and its manifest, in a folder that {@code diffract merge}
+ * turns into the result. Long work can so be split over processes or machines; {@code diffract submit} does it on
+ * this one or on a Slurm cluster.
  */
 final class TileOptions {
     @Option(names = "--tile", paramLabel = "I/N", converter = Tile.Converter.class,
-            description = "Compute only band I (0..N-1) of N equal bands of the map's rows, as floats, into "
-                    + "--pieces DIR; 'diffract merge DIR -o MAP.png' writes the map (CPU only, no -o, --pfm, --exr).")
+            description = "Compute only piece I (0..N-1) of N equal pieces of the result (brdfmap: bands of the map's "
+                    + "rows, on the CPU; render --turntable: runs of frames), as floats, into --pieces DIR; 'diffract "
+                    + "merge DIR -o OUT' writes the result as one run would (the outputs go to merge, not here).")
     Tile tile;
 
     @Option(names = "--pieces", paramLabel = "DIR",
             description = "With --tile: the folder the piece and its manifest go to (made if missing).")
     Path pieces;
 
-    /** Band {@code index} of {@code count}. */
+    /** The options a command was given, less --tile and --pieces: what merge parses to write the result. */
+    static List<String> argumentsWithoutTile(CommandSpec spec) {
+        List<String> given = spec.commandLine().getParseResult().originalArgs();
+        int from = given.indexOf(spec.name()) + 1;
+        List<String> kept = new ArrayList<>();
+        for (int a = from; a < given.size(); a++) {
+            String arg = given.get(a);
+            if (arg.equals("--tile") || arg.equals("--pieces")) {
+                a++; // and its value
+            } else if (!arg.startsWith("--tile=") && !arg.startsWith("--pieces=")) {
+                kept.add(arg);
+            }
+        }
+        return kept;
+    }
+
+    /** Piece {@code index} of {@code count}. */
     record Tile(int index, int count) {
         /** The file names of this piece: {@code piece-I-of-N} and an extension. */
         String fileName(String extension) {

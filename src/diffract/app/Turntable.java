@@ -24,30 +24,63 @@ final class Turntable {
     private Turntable() {
     }
 
+    /** All FRAMES frames into {@code output}: a GIF, or the PNG sequence written frame by frame as it goes. */
     static void render(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, int frames,
                        boolean orbitLight, Path output, Scene.ImageSize size, int frameMs, Reporter reporter)
             throws IOException {
-        OrbitCamera start = model.state().view().camera();
+        boolean gif = isGif(output);
         List<float[]> pictures = new ArrayList<>();
-        boolean gif = output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gif");
-        for (int k = 0; k < frames; k++) {
+        render(target, renderer, model, frames, orbitLight, 0, frames, size, reporter, (k, rgb) -> {
+            if (gif) {
+                pictures.add(rgb);
+            } else {
+                ImageFiles.writePng(sequenceName(output, k), rgb, size.width(), size.height(), 3);
+            }
+        });
+        if (gif) {
+            AnimatedGif.write(output, pictures, size.width(), size.height(), frameMs);
+        }
+    }
+
+    /** What becomes of frame k's linear floats (RGB, rows from the top). */
+    @FunctionalInterface
+    interface FrameSink {
+        void accept(int k, float[] rgb) throws IOException;
+    }
+
+    /**
+     * Frames {@code from} to {@code to - 1} of FRAMES: frame k at 360 k / FRAMES degrees from the model's own view,
+     * so that any run of frames is drawn as the whole turntable draws it.
+     */
+    static void render(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, int frames,
+                       boolean orbitLight, int from, int to, Scene.ImageSize size, Reporter reporter, FrameSink sink)
+            throws IOException {
+        OrbitCamera start = model.state().view().camera();
+        for (int k = from; k < to; k++) {
             double degrees = 360.0 * k / frames;
             if (orbitLight) {
                 renderer.setLightTurnDeg(degrees);
             } else {
                 model.update(s -> s.withView(s.view().withCamera(start.orbitedBy(degrees, 0))));
             }
-            float[] rgb = target.renderRgb(size.width(), size.height());
-            if (gif) {
-                pictures.add(rgb);
-            } else {
-                ImageFiles.writePng(sequenceName(output, k), rgb, size.width(), size.height(), 3);
-            }
-            reporter.progress("turntable", (k + 1.0) / frames);
+            sink.accept(k, target.renderRgb(size.width(), size.height()));
+            reporter.progress("turntable", (k - from + 1.0) / (to - from));
         }
-        if (gif) {
-            AnimatedGif.write(output, pictures, size.width(), size.height(), frameMs);
+    }
+
+    /** Every frame, in order, into {@code output}: what {@link #render} writes, from frames drawn elsewhere. */
+    static void write(Path output, List<float[]> frames, Scene.ImageSize size, int frameMs) throws IOException {
+        if (isGif(output)) {
+            AnimatedGif.write(output, frames, size.width(), size.height(), frameMs);
+            return;
         }
+        for (int k = 0; k < frames.size(); k++) {
+            ImageFiles.writePng(sequenceName(output, k), frames.get(k), size.width(), size.height(), 3);
+        }
+    }
+
+    private static boolean isGif(Path output) {
+        return output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".gif");
     }
 
     /** OUT.png -> OUT-007.png. */

@@ -39,8 +39,8 @@ public final class FilteringTargets {
     public static final double MIN_SPEED_UP = 10;
     /** Alternating timing rounds of the lobes method and FLSS. */
     public static final int ROUNDS = 3;
-    /** (u, v) samples of the baked table measured beside them. */
-    public static final int BAKED_UV_SAMPLES = 256;
+    /** (u, v) samples of the baked table measured beside them, unless the bench is told otherwise. */
+    public static final int DEFAULT_BAKED_UV_SAMPLES = 256;
 
     /** One patch under one light: errors against the reference and GPU times (NaN where not measured). */
     public record Row(String patch, double lightDeg, int litPixels, double lobesMean, double lobesP95,
@@ -57,21 +57,24 @@ public final class FilteringTargets {
     private final int rounds;
     private final int framesPerRound;
     private final int bakedSamples;
+    private final int bakedWSamples;
     private final Reporter reporter;
     private GLInfo glInfo;
 
     /**
      * @param lobes          the lobes method's settings (coherence, Fresnel, quadrature); the light size is set per row
      * @param bakedSamples   (u, v) samples of the baked table, 0 for none
+     * @param bakedWSamples  w samples of the baked table, 0 for automatic
      */
     public FilteringTargets(ReferenceMaps references, BrdfSettings lobes, int sizePx, int rounds, int framesPerRound,
-                            int bakedSamples, Reporter reporter) {
+                            int bakedSamples, int bakedWSamples, Reporter reporter) {
         this.references = references;
         this.lobes = lobes.with(b -> b.variant(Variant.LOBES).pixelFilter(PixelFilter.BOX));
         this.sizePx = sizePx;
         this.rounds = rounds;
         this.framesPerRound = framesPerRound;
         this.bakedSamples = bakedSamples;
+        this.bakedWSamples = bakedWSamples;
         this.reporter = reporter;
     }
 
@@ -97,7 +100,7 @@ public final class FilteringTargets {
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
         if (bakedSamples > 0) {
-            BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, 0));
+            BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, bakedWSamples));
             try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
                 // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
                 bakeSeconds = map.bakedTable().bakeSeconds();

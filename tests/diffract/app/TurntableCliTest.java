@@ -12,6 +12,7 @@ import java.awt.image.BufferedImage;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -61,6 +62,69 @@ class TurntableCliTest {
             assertEquals(24, image.getHeight());
         }
         assertTrue(!Files.exists(dir.resolve("light-003.png")));
+    }
+
+    @Test
+    void aTurntableInPiecesMergesIntoTheSameGifAndSequenceBitForBit() throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        String[] scene = {"render", SCENE, "--turntable", "5", "--size", "40x24", "--frame-ms", "120"};
+        Path wholeGif = dir.resolve("whole.gif");
+        Object[] result = CliTest.run(concat(scene, "-o", wholeGif.toString()));
+        assertEquals(0, result[0], (String) result[2]);
+        Path wholePng = dir.resolve("whole.png");
+        result = CliTest.run(concat(scene, "-o", wholePng.toString()));
+        assertEquals(0, result[0], (String) result[2]);
+        Path pieces = dir.resolve("pieces");
+        // pieces out of order, as workers finish: 2 of 3 first
+        for (int i : new int[] {2, 0, 1}) {
+            result = CliTest.run(concat(scene, "--tile", i + "/3", "--pieces", pieces.toString()));
+            assertEquals(0, result[0], (String) result[2]);
+            assertTrue(((String) result[1]).contains("wrote piece " + i + "/3 (frames "), (String) result[1]);
+        }
+        Path mergedGif = dir.resolve("merged.gif");
+        result = CliTest.run("merge", pieces.toString(), "-o", mergedGif.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        assertTrue(((String) result[1]).contains("merged 3 pieces into " + mergedGif + " (5 frames)"),
+                (String) result[1]);
+        assertArrayEquals(Files.readAllBytes(wholeGif), Files.readAllBytes(mergedGif), "the merged GIF");
+        Path mergedPng = dir.resolve("merged.png");
+        result = CliTest.run("merge", pieces.toString(), "-o", mergedPng.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        for (int k = 0; k < 5; k++) {
+            String frame = String.format("-%03d.png", k);
+            assertArrayEquals(Files.readAllBytes(dir.resolve("whole" + frame)),
+                    Files.readAllBytes(dir.resolve("merged" + frame)), "frame " + k);
+        }
+        assertTrue(!Files.exists(dir.resolve("merged-005.png")));
+        // the pieces hold different frames: a merge of the first piece's frames alone would not do
+        Files.delete(pieces.resolve("piece-1-of-3.json"));
+        result = CliTest.run("merge", pieces.toString(), "-o", dir.resolve("again.gif").toString());
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("piece 1/3 is missing: run render --tile 1/3"), (String) result[2]);
+    }
+
+    @Test
+    void turntablePiecesRefuseWhatOnlyMergeWrites() {
+        Object[] result = CliTest.run("render", SCENE, "--turntable", "4", "--tile", "0/2", "--pieces",
+                dir.resolve("p").toString(), "-o", dir.resolve("x.gif").toString());
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("written by 'diffract merge"), (String) result[2]);
+        result = CliTest.run("render", SCENE, "--tile", "0/2", "--pieces", dir.resolve("p").toString());
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("add --turntable FRAMES"), (String) result[2]);
+        result = CliTest.run("render", SCENE, "--turntable", "3", "--tile", "0/4", "--pieces",
+                dir.resolve("p").toString());
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("has only 3 frames to split"), (String) result[2]);
+        result = CliTest.run("render", SCENE);
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("render needs -o"), (String) result[2]);
+    }
+
+    private static String[] concat(String[] head, String... tail) {
+        String[] all = java.util.Arrays.copyOf(head, head.length + tail.length);
+        System.arraycopy(tail, 0, all, head.length, tail.length);
+        return all;
     }
 
     @Test
