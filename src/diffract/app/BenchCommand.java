@@ -173,11 +173,16 @@ final class BenchCommand implements Callable<Integer> {
     int errorSizePx;
 
     @Option(names = "--frames", defaultValue = "10", paramLabel = "N",
-            description = "GPU suite: timed frames per row, median (default ${DEFAULT-VALUE}).")
+            description = "GPU suite and --filtering: timed frames per row, their median (at least "
+                    + diffract.jrtr.GpuTimer.MIN_FRAMES + "; default ${DEFAULT-VALUE}).")
     int frames;
 
     @Override
     public Integer call() throws IOException {
+        if (frames < diffract.jrtr.GpuTimer.MIN_FRAMES) {
+            throw new UserInputException("--frames takes at least " + diffract.jrtr.GpuTimer.MIN_FRAMES
+                    + " frames (their median is the time), got " + frames);
+        }
         OutputPaths.require(outputs());
         if (gpuSuite) {
             HeadlessGL.require();
