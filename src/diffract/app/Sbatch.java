@@ -6,6 +6,7 @@ import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -38,24 +39,17 @@ final class Sbatch {
             command.add("--wait");
         }
         command.add(script.toString());
+        // what sbatch says on stderr goes to a file, read once it has ended
+        Path errorFile = Files.createTempFile("diffract-sbatch-", ".err");
         Process p;
         try {
-            p = new ProcessBuilder(command).start();
+            p = new ProcessBuilder(command).redirectError(errorFile.toFile()).start();
         } catch (IOException e) {
+            Files.deleteIfExists(errorFile);
             throw new UserInputException(program + " not found: --slurm submits with Slurm's sbatch, on a machine that "
                     + "can submit jobs (a cluster's login node); or run the pieces here with --local J");
         }
         p.getOutputStream().close();
-        StringBuilder errors = new StringBuilder();
-        Thread stderr = new Thread(() -> {
-            try {
-                errors.append(new String(p.getErrorStream().readAllBytes(), StandardCharsets.UTF_8));
-            } catch (IOException e) {
-                errors.append(e.getMessage());
-            }
-        }, "sbatch-stderr");
-        stderr.setDaemon(true);
-        stderr.start();
         String jobId = null;
         try (BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(),
                 StandardCharsets.UTF_8))) {
@@ -73,8 +67,9 @@ final class Sbatch {
             }
         }
         int code = p.waitFor();
-        stderr.join();
-        Result result = new Result(jobId, code, errors.toString().strip());
+        String errors = Files.readString(errorFile, StandardCharsets.UTF_8);
+        Files.deleteIfExists(errorFile);
+        Result result = new Result(jobId, code, errors.strip());
         if (jobId == null) {
             throw new UserInputException("sbatch did not accept " + script + " (exit code " + code + "): "
                     + lastLine(result.errors()));
