@@ -28,8 +28,9 @@ final class SlurmOptions {
     Integer cpusPerTask;
 
     @Option(names = "--gpus-per-task", paramLabel = "G",
-            description = "With --slurm: ask for G GPUs per task (--gres=gpu:G); the tasks then render on headless "
-                    + "EGL, the node's first GPU, with no X display.")
+            description = "With --slurm: ask for G GPUs per task (--gres=gpu:G), for partitions that give their "
+                    + "nodes only so; OpenGL in a task then runs on headless EGL, the node's first GPU, with no X "
+                    + "display (brdfmap's pieces themselves compute on the CPU).")
     Integer gpusPerTask;
 
     @Option(names = "--cache-dir", paramLabel = "DIR",
