@@ -36,6 +36,15 @@ if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed)$'; then
     cp "$out/log.txt" "$out/s.log"
     runs+=(s)
 fi
+# the Open Job Description template of the same pieces, run on this machine where openjd-cli is installed
+openjd_same=""
+if command -v openjd >/dev/null 2>&1; then
+    openjd check docs/openjd/brdfmap-pieces.yaml > "$out/openjd.log" 2>&1
+    openjd run docs/openjd/brdfmap-pieces.yaml --step Merge --run-dependencies -p Diffract="$PWD/diffract" \
+        -p WorkDir="$PWD" -p "MapOptions=${MAP[*]}" -p PieceCount="$PIECES" -p PiecesDir="$out/openjd" \
+        -p Output="$out/o.png" >> "$out/openjd.log" 2>&1
+    if cmp -s "$out/whole.png" "$out/o.png"; then openjd_same=yes; else openjd_same=NO; fi
+fi
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 same=yes
 for run in "${runs[@]}"; do
@@ -128,7 +137,16 @@ slurmctld and slurmd, this host as controller and node, no cgroups or accounting
 `mvn test -Dgroups=slurm -Ddiffract.excludedGroups=none` then runs `SlurmSubmitTest`, which submits a 4-task array
 of a 64 x 64 reference map and compares the merged PNG and PFM with the single run's, byte for byte (`.ci/run`
 does both). Without a Slurm that answers, that test fails, saying so.
+
+For render farms whose managers run [Open Job Description](https://github.com/OpenJobDescription) jobs,
+`docs/openjd/brdfmap-pieces.yaml` is a job template of the same pieces: a Pieces step of N tasks (task P runs
+`brdfmap ... --tile P-1/N --pieces DIR`) and a Merge step that depends on it. `openjd check` accepts it, and
+`openjd run ... --step Merge --run-dependencies` runs it on one machine (its header shows the command).
 EOF
+    if [ -n "$openjd_same" ]; then
+        echo "In this run \`openjd check\` accepted it, and \`openjd run\` of its Merge step with its dependencies, the map"
+        echo "above in $PIECES pieces, wrote a PNG identical byte for byte to the single run's: **$openjd_same**."
+    fi
     echo
     if [ -n "${slurm:-}" ]; then
         echo "The script of the run above (\`$out/slurm/job.sbatch\`; its folder was temporary):"
