@@ -39,11 +39,16 @@ fi
 # the Open Job Description template of the same pieces, run on this machine where openjd-cli is installed
 openjd_same=""
 if command -v openjd >/dev/null 2>&1; then
-    openjd check docs/openjd/brdfmap-pieces.yaml > "$out/openjd.log" 2>&1 || true
-    openjd run docs/openjd/brdfmap-pieces.yaml --step Merge --run-dependencies -p Diffract="$PWD/diffract" \
-        -p WorkDir="$PWD" -p "MapOptions=${MAP[*]}" -p PieceCount="$PIECES" -p PiecesDir="$out/openjd" \
-        -p Output="$out/o.png" >> "$out/openjd.log" 2>&1 || true  # a failed run leaves no o.png: NO below
-    if cmp -s "$out/whole.png" "$out/o.png"; then openjd_same=yes; else openjd_same=NO; fi
+    if openjd check docs/openjd/brdfmap-pieces.yaml > "$out/openjd.log" 2>&1 \
+        && openjd run docs/openjd/brdfmap-pieces.yaml --step Merge --run-dependencies -p Diffract="$PWD/diffract" \
+            -p WorkDir="$PWD" -p "MapOptions=${MAP[*]}" -p PieceCount="$PIECES" -p PiecesDir="$out/openjd" \
+            -p Output="$out/o.png" >> "$out/openjd.log" 2>&1 \
+        && cmp -s "$out/whole.png" "$out/o.png"; then
+        openjd_same=yes
+    else
+        openjd_same=NO
+    fi
+fi
 fi
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 same=yes
@@ -144,7 +149,7 @@ For render farms whose managers run [Open Job Description](https://github.com/Op
 `openjd run ... --step Merge --run-dependencies` runs it on one machine (its header shows the command).
 EOF
     if [ -n "$openjd_same" ]; then
-        echo "In this run \`openjd check\` accepted it, and \`openjd run\` of its Merge step with its dependencies, the map"
+        echo "In this run: \`openjd check\` accepted it, and \`openjd run\` of its Merge step with its dependencies, the map"
         echo "above in $PIECES pieces, wrote a PNG identical byte for byte to the single run's: **$openjd_same**."
     fi
     echo
