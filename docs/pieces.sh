@@ -49,7 +49,6 @@ if command -v openjd >/dev/null 2>&1; then
         openjd_same=NO
     fi
 fi
-fi
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 same=yes
 for run in "${runs[@]}"; do
