@@ -89,26 +89,40 @@ final class LocalWorkers {
 
     /** java, its options as this process was given them where they matter to a worker, the class path and Main. */
     private static List<String> javaCommand(int processors) {
+        List<String> command = new ArrayList<>(javaVm(true));
+        command.add("-XX:ActiveProcessorCount=" + processors);
+        command.addAll(mainClass());
+        return command;
+    }
+
+    /**
+     * This process' java and its options that matter to a worker: the heap (DIFFRACT_JAVA_OPTS), ./diffract's
+     * class-data archive, headless AWT, the disk cache's size limit and, with {@code cacheFolder}, its folder (not
+     * agents or debuggers).
+     */
+    static List<String> javaVm(boolean cacheFolder) {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
-            // the heap (DIFFRACT_JAVA_OPTS) and ./diffract's class-data archive; not agents or debuggers
             if (option.startsWith("-Xmx") || option.startsWith("-Xms") || option.startsWith("-Xss")
                     || option.startsWith("-XX:SharedArchiveFile=") || option.equals("-Xlog:disable")) {
                 command.add(option);
             }
         }
-        for (String property : List.of(diffract.util.DiskCache.ROOT_PROPERTY, diffract.util.DiskCache.LIMIT_PROPERTY,
-                "java.awt.headless")) {
+        List<String> properties = cacheFolder ? List.of(diffract.util.DiskCache.ROOT_PROPERTY,
+                diffract.util.DiskCache.LIMIT_PROPERTY, "java.awt.headless")
+                : List.of(diffract.util.DiskCache.LIMIT_PROPERTY, "java.awt.headless");
+        for (String property : properties) {
             String value = System.getProperty(property);
             if (value != null) {
                 command.add("-D" + property + "=" + value);
             }
         }
-        command.add("-XX:ActiveProcessorCount=" + processors);
-        command.add("-cp");
-        command.add(System.getProperty("java.class.path"));
-        command.add(Main.class.getName());
         return command;
+    }
+
+    /** The class path of this process and the program's entry point, which take a command's arguments. */
+    static List<String> mainClass() {
+        return List.of("-cp", System.getProperty("java.class.path"), Main.class.getName());
     }
 }

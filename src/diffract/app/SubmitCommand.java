@@ -4,6 +4,7 @@ import diffract.optics.MapBand;
 import diffract.util.UserInputException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 
@@ -23,26 +24,33 @@ import java.util.stream.Stream;
 /**
  * {@code diffract submit --local J -- brdfmap ...}: one brdfmap run split into pieces ({@code --tile I/N}), computed by
  * J worker processes on this machine, then merged: it leaves the files the brdfmap command names, the same bit for
- * bit as had it run alone.
+ * bit as had it run alone. {@code diffract submit --slurm ...} computes the same pieces as the tasks of a Slurm job
+ * array (its script written beside the pieces), waits for the array to end and merges them the same way, or prints the
+ * merge command.
  */
 @Command(name = "submit", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Run a brdfmap command as N pieces (bands of rows) in J local worker processes, then merge "
-                + "them: the same files, bit for bit, as the command alone writes. Usage: diffract submit --local J "
-                + "-- brdfmap OPTIONS.")
+        description = "Run a brdfmap command as N pieces (bands of rows), in J local worker processes or as a Slurm "
+                + "job array, then merge them: the same files, bit for bit, as the command alone writes. Usage: "
+                + "diffract submit --local J -- brdfmap OPTIONS, or diffract submit --slurm --piece-count N "
+                + "--keep-pieces DIR -- brdfmap OPTIONS.")
 final class SubmitCommand implements Callable<Integer> {
-    @Option(names = "--local", required = true, paramLabel = "J",
+    @Option(names = "--local", paramLabel = "J",
             description = "How many worker processes run at once on this machine; each gets its share of the "
                     + "processors.")
-    int workers;
+    Integer workers;
 
     @Option(names = "--piece-count", paramLabel = "N",
             description = "How many pieces the map is split into (default J; more than J evens out pieces of "
-                    + "unequal cost).")
+                    + "unequal cost; with --slurm required: the array's tasks).")
     Integer pieceCount;
 
     @Option(names = "--keep-pieces", paramLabel = "DIR",
-            description = "Leave the pieces and their manifests in DIR (default: a temporary folder, removed).")
+            description = "Leave the pieces and their manifests in DIR (default: a temporary folder, removed; with "
+                    + "--slurm required: a folder every node reads and writes, which also gets the job script).")
     Path keepPieces;
+
+    @Mixin
+    SlurmOptions slurm;
 
     @Parameters(paramLabel = "brdfmap OPTIONS", arity = "1..*",
             description = "After --: the brdfmap command as for a single run.")
@@ -54,8 +62,22 @@ final class SubmitCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException, InterruptedException {
-        if (workers < 1) {
+        slurm.validate();
+        if (slurm.slurm == (workers != null)) {
+            throw new UserInputException(slurm.slurm ? "--local and --slurm exclude each other: the pieces run either "
+                    + "here or on the cluster" : "submit needs --local J (worker processes here) or --slurm (a job "
+                    + "array): diffract submit --local J -- brdfmap OPTIONS");
+        }
+        if (workers != null && workers < 1) {
             throw new UserInputException("--local must be at least 1 worker, got " + workers);
+        }
+        if (slurm.slurm && pieceCount == null) {
+            throw new UserInputException("--slurm needs --piece-count N, how many pieces (tasks of the array) the map "
+                    + "is split into");
+        }
+        if (slurm.slurm && keepPieces == null) {
+            throw new UserInputException("--slurm needs --keep-pieces DIR, a folder every node reads and writes: the "
+                    + "pieces, the job script and the tasks' logs go there");
         }
         int count = pieceCount != null ? pieceCount : workers;
         if (count < 1) {
@@ -67,10 +89,13 @@ final class SubmitCommand implements Callable<Integer> {
         }
         BrdfMapCommand single = parse(command);
         single.validateSplit(count);
+        List<String> options = withoutOutputs(command.subList(1, command.size()));
+        if (slurm.slurm) {
+            return onSlurm(single, options, count, keepPieces.toAbsolutePath().normalize());
+        }
         long start = System.nanoTime();
         Path dir = keepPieces != null ? keepPieces : Files.createTempDirectory("diffract-pieces-");
         try {
-            List<String> options = withoutOutputs(command.subList(1, command.size()));
             List<List<String>> pieces = new ArrayList<>();
             for (int i = 0; i < count; i++) {
                 List<String> piece = new ArrayList<>(List.of("brdfmap"));
@@ -89,20 +114,10 @@ final class SubmitCommand implements Callable<Integer> {
             });
             if (failed != null) {
                 System.err.println("diffract: piece " + failed.index() + "/" + count + " failed (exit code "
-                        + failed.exitCode() + "): " + lastLine(failed.output()));
+                        + failed.exitCode() + "): " + Sbatch.lastLine(failed.output()));
                 return failed.exitCode() == Main.EXIT_USAGE ? Main.EXIT_USAGE : 1;
             }
-            List<String> merge = new ArrayList<>(List.of("merge", dir.toString(), "-o", single.output.toString()));
-            if (single.picture.pfm != null) {
-                merge.addAll(List.of("--pfm", single.picture.pfm.toString()));
-            }
-            if (single.picture.exr != null) {
-                merge.addAll(List.of("--exr", single.picture.exr.toString()));
-            }
-            if (single.quiet.quiet) {
-                merge.add("--quiet");
-            }
-            int code = Main.execute(merge.toArray(String[]::new));
+            int code = Main.execute(mergeArguments(single, dir, false).toArray(String[]::new));
             if (code == 0) {
                 System.out.printf(Locale.ROOT, "wrote %s from %d pieces on %d workers in %.1f s%n", single.output,
                         count, Math.min(workers, count), (System.nanoTime() - start) * 1e-9);
@@ -113,6 +128,74 @@ final class SubmitCommand implements Callable<Integer> {
                 removePieces(dir);
             }
         }
+    }
+
+    /**
+     * The pieces as a Slurm job array: its script written into the pieces' folder and submitted; then, unless told not
+     * to wait, the array waited for and the pieces merged.
+     */
+    private int onSlurm(BrdfMapCommand single, List<String> options, int count, Path dir)
+            throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        diffract.util.OutputPaths.requireWritableFolder(dir, "--keep-pieces");
+        Files.createDirectories(dir);
+        List<String> merge = mergeArguments(single, dir, true);
+        List<String> mergeCommand = new ArrayList<>(List.of("diffract"));
+        mergeCommand.addAll(merge);
+        Path script = dir.resolve(SlurmScript.FILE_NAME);
+        String text = SlurmScript.text(slurm, options, dir, count, Path.of("").toAbsolutePath(),
+                LocalWorkers.javaVm(slurm.cacheDir == null), LocalWorkers.mainClass(), mergeCommand);
+        diffract.util.ImageFiles.writeAtomically(script,
+                out -> out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
+        Sbatch.Result result = Sbatch.submit(script, !slurm.noWait, id -> System.out.printf(Locale.ROOT,
+                "submitted %s as Slurm array job %s: %d pieces of %d rows%s, logs %s%n", script, id, count,
+                single.picture.size, slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
+                dir.resolve(SlurmScript.logName("I", count))));
+        if (slurm.noWait) {
+            System.out.println("once the array has ended: " + SlurmScript.command(mergeCommand));
+            return 0;
+        }
+        if (result.exitCode() != 0) {
+            List<String> missing = new ArrayList<>();
+            for (int i = 0; i < count; i++) {
+                if (!Files.isRegularFile(dir.resolve(new TileOptions.Tile(i, count).fileName(".json")))) {
+                    missing.add(Integer.toString(i));
+                }
+            }
+            if (!missing.isEmpty()) {
+                throw new UserInputException("Slurm array job " + result.jobId() + " ended without piece"
+                        + (missing.size() > 1 ? "s " : " ") + String.join(", ", missing) + " of " + count + " (see "
+                        + dir.resolve(SlurmScript.logName(missing.get(0), count)) + "); resubmit them with sbatch "
+                        + "--array=" + String.join(",", missing) + " " + script + ", then "
+                        + SlurmScript.command(mergeCommand));
+            }
+        }
+        int code = Main.execute(merge.toArray(String[]::new));
+        if (code == 0) {
+            System.out.printf(Locale.ROOT, "wrote %s from %d pieces of Slurm array job %s in %.1f s%n", single.output,
+                    count, result.jobId(), (System.nanoTime() - start) * 1e-9);
+        }
+        return code;
+    }
+
+    /**
+     * The merge command that writes the outputs the brdfmap command names, from the pieces in {@code dir}; with
+     * {@code absolute} their paths are absolute, so that the command runs anywhere.
+     */
+    private static List<String> mergeArguments(BrdfMapCommand single, Path dir, boolean absolute) {
+        java.util.function.Function<Path, String> path = p -> (absolute ? p.toAbsolutePath().normalize() : p)
+                .toString();
+        List<String> merge = new ArrayList<>(List.of("merge", path.apply(dir), "-o", path.apply(single.output)));
+        if (single.picture.pfm != null) {
+            merge.addAll(List.of("--pfm", path.apply(single.picture.pfm)));
+        }
+        if (single.picture.exr != null) {
+            merge.addAll(List.of("--exr", path.apply(single.picture.exr)));
+        }
+        if (single.quiet.quiet) {
+            merge.add("--quiet");
+        }
+        return merge;
     }
 
     /** The brdfmap command as one run would read it; its errors are submit's. */
@@ -157,11 +240,6 @@ final class SubmitCommand implements Callable<Integer> {
         }
         return String.format(Locale.ROOT, "piece %d/%d (rows %s) finished in %.2f s%s; %d of %d done, %.1f s elapsed",
                 f.index(), count, band, f.wallS(), split, done, count, (System.nanoTime() - startNanos) * 1e-9);
-    }
-
-    private static String lastLine(String output) {
-        String[] lines = output.strip().split("\n");
-        return lines.length == 0 || lines[lines.length - 1].isBlank() ? "(no output)" : lines[lines.length - 1].strip();
     }
 
     /** The temporary folder and what the workers wrote in it. */

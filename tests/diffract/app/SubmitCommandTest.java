@@ -1,14 +1,23 @@
 package diffract.app;
 
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-/** What submit hands its workers, and what it refuses before starting any. */
+/** What submit hands its workers or writes into a Slurm job script, and what it refuses before starting any. */
 class SubmitCommandTest {
+    @TempDir
+    Path dir;
+
+    static final List<String> MAP = List.of("brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--size", "16");
+
     @Test
     void workersGetTheOptionsLessTheOutputsMergeWrites() {
         assertEquals(List.of("--synthetic", "blazed", "--theta-i", "30", "--size", "24"),
@@ -37,5 +46,119 @@ class SubmitCommandTest {
                 "--theta-i", "30");
         assertEquals(2, missing[0]);
         assertTrue(((String) missing[2]).contains("needs -o"), (String) missing[2]);
+    }
+
+    @Test
+    void theJobScriptAsksForWhatTheOptionsSayAndRunsOnePieceATask() {
+        SlurmOptions slurm = new SlurmOptions();
+        slurm.slurm = true;
+        slurm.maxRunning = 3;
+        slurm.cpusPerTask = 4;
+        slurm.gpusPerTask = 1;
+        slurm.cacheDir = Path.of("/shared/cache");
+        slurm.partition = "gpu";
+        slurm.timeLimit = "0:30:00";
+        slurm.sbatchOptions = List.of("--account=lab");
+        String script = SlurmScript.text(slurm, List.of("--synthetic", "blazed", "--theta-i", "30"),
+                Path.of("/shared/my pieces"), 8, Path.of("/home/u"), List.of("/opt/java/bin/java", "-Xmx4g"),
+                List.of("-cp", "/opt/d.jar", "diffract.app.Main"), List.of("diffract", "merge", "/shared/my pieces",
+                        "-o", "/home/u/map.png"));
+        List<String> lines = script.lines().toList();
+        assertEquals("#!/bin/bash", lines.get(0));
+        for (String line : List.of("#SBATCH --array=0-7%3", "#SBATCH --cpus-per-task=4", "#SBATCH --gres=gpu:1",
+                "#SBATCH --partition=gpu", "#SBATCH --time=0:30:00", "#SBATCH --account=lab",
+                "#SBATCH --chdir=/home/u", "#SBATCH --output=\"/shared/my pieces/piece-%a-of-8.log\"",
+                "export DIFFRACT_CACHE=/shared/cache", "unset DISPLAY", "export DIFFRACT_GL=egl",
+                "# once every piece is there: diffract merge '/shared/my pieces' -o /home/u/map.png")) {
+            assertTrue(lines.contains(line), line + " missing from\n" + script);
+        }
+        String exec = lines.get(lines.size() - 1);
+        assertEquals("exec /opt/java/bin/java -Xmx4g -Djava.awt.headless=true "
+                + "\"-XX:ActiveProcessorCount=${SLURM_CPUS_PER_TASK:-4}\" -cp /opt/d.jar diffract.app.Main brdfmap "
+                + "--synthetic blazed --theta-i 30 --tile \"${SLURM_ARRAY_TASK_ID}/8\" --pieces '/shared/my pieces'",
+                exec);
+        // every #SBATCH line comes before the first command: sbatch reads no further
+        int firstCommand = lines.indexOf("set -euo pipefail");
+        assertTrue(lines.subList(firstCommand, lines.size()).stream().noneMatch(l -> l.startsWith("#SBATCH")));
+    }
+
+    @Test
+    void withoutGpusOrCacheTheScriptLeavesTheNodesDefaults() {
+        SlurmOptions slurm = new SlurmOptions();
+        slurm.slurm = true;
+        String script = SlurmScript.text(slurm, List.of("--size", "16"), Path.of("/p"), 2, Path.of("/w"),
+                List.of("java"), List.of("-cp", "x", "M"), List.of("diffract", "merge", "/p", "-o", "/w/m.png"));
+        assertTrue(script.contains("#SBATCH --array=0-1\n"), script);
+        assertTrue(script.contains("#SBATCH --cpus-per-task=1\n"), script);
+        for (String absent : List.of("--gres", "DIFFRACT_CACHE", "DIFFRACT_GL", "--partition", "--time")) {
+            assertFalse(script.contains(absent), absent + " in\n" + script);
+        }
+    }
+
+    @Test
+    void wordsTheShellWouldSplitOrExpandAreQuoted() {
+        assertEquals("plain/path-1.png", SlurmScript.quote("plain/path-1.png"));
+        assertEquals("'a b'", SlurmScript.quote("a b"));
+        assertEquals("'$HOME'", SlurmScript.quote("$HOME"));
+        assertEquals("'it'\\''s'", SlurmScript.quote("it's"));
+        assertEquals("''", SlurmScript.quote(""));
+    }
+
+    @Test
+    void slurmRefusesWhatItCannotRunInOneLine() {
+        List<String[]> refused = List.of(
+                args(List.of("submit", "--slurm", "--keep-pieces", dir.toString())),
+                args(List.of("submit", "--slurm", "--piece-count", "2")),
+                args(List.of("submit", "--local", "2", "--max-running", "2", "--cpus-per-task", "2")),
+                args(List.of("submit", "--local", "2", "--slurm", "--piece-count", "2", "--keep-pieces",
+                        dir.toString())),
+                args(List.of("submit", "--piece-count", "2")),
+                args(List.of("submit", "--slurm", "--piece-count", "2", "--keep-pieces", dir.toString(),
+                        "--max-running", "0")),
+                args(List.of("submit", "--slurm", "--piece-count", "2", "--keep-pieces", dir.toString(),
+                        "--partition", "a b")),
+                args(List.of("submit", "--slurm", "--piece-count", "2", "--keep-pieces", dir.toString(),
+                        "--sbatch-option", "account=lab")));
+        List<String> expected = List.of("--slurm needs --piece-count N", "--slurm needs --keep-pieces DIR",
+                "--max-running, --cpus-per-task go with --slurm", "--local and --slurm exclude each other",
+                "submit needs --local J (worker processes here) or --slurm", "--max-running must be at least 1",
+                "--partition takes one word", "--sbatch-option takes one sbatch option as --name=value");
+        for (int i = 0; i < refused.size(); i++) {
+            Object[] result = CliTest.run(refused.get(i));
+            assertEquals(2, result[0], String.join(" ", refused.get(i)));
+            String err = (String) result[2];
+            assertEquals(1, err.lines().count(), err);
+            assertTrue(err.startsWith("diffract: " + expected.get(i)), err);
+        }
+    }
+
+    /** Where sbatch is not installed, one line says so, and the job script is there to take elsewhere. */
+    @Test
+    void withoutSbatchSubmitSaysSoInOneLine() {
+        String program = Sbatch.program;
+        Sbatch.program = "diffract-test-no-such-sbatch";
+        try {
+            Path pieces = dir.resolve("pieces");
+            Object[] result = CliTest.run(args(List.of("submit", "--slurm", "--piece-count", "2", "--keep-pieces",
+                    pieces.toString(), "--", "brdfmap", "--synthetic", "blazed", "--theta-i", "30", "--size", "16",
+                    "-o", dir.resolve("m.png").toString())));
+            assertEquals(2, result[0]);
+            assertEquals("diffract: diffract-test-no-such-sbatch not found: --slurm submits with Slurm's sbatch, on a "
+                    + "machine that can submit jobs (a cluster's login node); or run the pieces here with --local J",
+                    ((String) result[2]).strip());
+            assertTrue(Files.isRegularFile(pieces.resolve("job.sbatch")));
+        } finally {
+            Sbatch.program = program;
+        }
+    }
+
+    private static String[] args(List<String> submit) {
+        List<String> all = new java.util.ArrayList<>(submit);
+        if (!all.contains("--")) {
+            all.add("--");
+            all.addAll(MAP);
+            all.addAll(List.of("-o", "m.png"));
+        }
+        return all.toArray(String[]::new);
     }
 }
