@@ -123,8 +123,8 @@ final class BenchCommand implements Callable<Integer> {
     boolean filtering;
 
     @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class,
-            description = "--filtering: the baked table's samples along u and v (each) and along w; 0 = automatic "
-                    + "(default " + FilteringTargets.DEFAULT_BAKED_UV_SAMPLES + ",0).")
+            description = "--filtering: the baked table's samples along u and v (each) and along w; 0 = automatic, "
+                    + "as brdfmap and the scenes take it (default 0,0).")
     OptionTypes.BakedSamples bakedSamples;
 
     @Option(names = "--lights", paramLabel = "LIST", split = ",", defaultValue = "0,2",
@@ -289,7 +289,7 @@ final class BenchCommand implements Callable<Integer> {
                         + e.getMessage(), e);
             }
         });
-        String md = FilteringTargets.markdown(rows, sizePx, lobes, bakedUv)
+        String md = FilteringTargets.markdown(rows, sizePx, lobes)
                 + "\n" + machine(targets.glInfo()) + "\n";
         Files.writeString(outputDir.resolve("filtering.md"), md, StandardCharsets.UTF_8);
         System.out.printf(Locale.ROOT, "bench --filtering: %d rows in %.0f s%nwrote %s, %s%n%s", rows.size(),

@@ -51,7 +51,7 @@ import java.util.concurrent.Callable;
         description = "Render a BRDF map: pixel (i, j) of the S x S map is the viewing direction (x, y, sqrt(1 - x^2 - "
                 + "y^2)), x = 2(i + 0.5)/S - 1, y = 1 - 2(j + 0.5)/S; outside the unit disk is black. The tangent "
                 + "frame's x axis runs along the height field's columns, y along its rows.")
-final class BrdfMapCommand implements Callable<Integer> {
+final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     /** Where a map is computed. */
     enum Engine { CPU, GPU }
 
@@ -330,7 +330,45 @@ final class BrdfMapCommand implements Callable<Integer> {
      * What {@code submit} checks before it starts any worker: the options as one run would (its outputs included),
      * and those that splitting adds (on the CPU, at most a band per row).
      */
-    void validateSplit(int pieceCount) {
+    @Override
+    public String name() {
+        return spec.name();
+    }
+
+    @Override
+    public int items() {
+        return picture.size;
+    }
+
+    @Override
+    public String itemsName() {
+        return "rows";
+    }
+
+    @Override
+    public List<String> mergeOutputs(java.util.function.Function<Path, String> path) {
+        List<String> merge = new ArrayList<>(List.of("-o", path.apply(output)));
+        if (picture.pfm != null) {
+            merge.addAll(List.of("--pfm", path.apply(picture.pfm)));
+        }
+        if (picture.exr != null) {
+            merge.addAll(List.of("--exr", path.apply(picture.exr)));
+        }
+        return merge;
+    }
+
+    @Override
+    public Path output() {
+        return output;
+    }
+
+    @Override
+    public boolean quiet() {
+        return quiet.quiet;
+    }
+
+    @Override
+    public void validateSplit(int pieceCount) {
         if (tiles.tile != null || tiles.pieces != null) {
             throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the brdfmap options");
         }

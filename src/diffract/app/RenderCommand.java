@@ -36,7 +36,7 @@ import java.util.concurrent.Callable;
                 + "linear light (with --turntable, frames going round into a looping GIF or a numbered PNG "
                 + "sequence): the same model, renderer and shaders as 'diffract view', without a window or X server "
                 + "(headless EGL; see docs/headless-gl.md).")
-final class RenderCommand implements Callable<Integer> {
+final class RenderCommand implements Callable<Integer>, SplitCommand {
     @Mixin
     GpuOption gpu;
 
@@ -142,6 +142,61 @@ final class RenderCommand implements Callable<Integer> {
                 setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
                 setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    @Override
+    public String name() {
+        return spec.name();
+    }
+
+    @Override
+    public void validateSplit(int pieceCount) {
+        if (tiles.tile != null || tiles.pieces != null) {
+            throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the render options");
+        }
+        Integer frames = turntable.frames;
+        if (frames == null) {
+            throw new UserInputException("submit splits a turntable's frames: add --turntable FRAMES to the render "
+                    + "options (one frame takes seconds: render it alone)");
+        }
+        options.validate();
+        if (!(frames >= 2 && frames <= 720)) {
+            throw new UserInputException("--turntable takes 2..720 frames, got " + frames);
+        }
+        if (pieceCount > frames) {
+            throw new UserInputException("--piece-count " + pieceCount + ": a turntable of " + frames + " frames has "
+                    + "only " + frames + " frames to split");
+        }
+        if (output == null) {
+            throw new UserInputException("render needs -o OUT.gif (or OUT.png for the numbered sequence), what merge "
+                    + "writes");
+        }
+        OutputPaths.require(outputs(frames));
+    }
+
+    @Override
+    public int items() {
+        return turntable.frames;
+    }
+
+    @Override
+    public String itemsName() {
+        return "frames";
+    }
+
+    @Override
+    public List<String> mergeOutputs(java.util.function.Function<Path, String> path) {
+        return List.of("-o", path.apply(output));
+    }
+
+    @Override
+    public Path output() {
+        return output;
+    }
+
+    @Override
+    public boolean quiet() {
+        return quiet.quiet;
     }
 
     /** --tile and --pieces go with --turntable, without -o (merge writes it), and split at most a piece per frame. */

@@ -29,7 +29,8 @@ final class SlurmScript {
     /**
      * The script's text.
      *
-     * @param options the brdfmap options of one piece, less --tile, --pieces and the outputs that merge writes
+     * @param commandName the command the pieces run: brdfmap, or render with --turntable
+     * @param options the command's options of one piece, less --tile, --pieces and the outputs that merge writes
      * @param pieces  the pieces' folder, absolute: the nodes write there
      * @param count   how many pieces (tasks)
      * @param workDir the folder the tasks run in, where the options' relative paths start
@@ -37,16 +38,17 @@ final class SlurmScript {
      * @param main    the class path and entry point
      * @param merge   the merge command that ends the run, for the header
      */
-    static String text(SlurmOptions slurm, List<String> options, Path pieces, int count, Path workDir,
+    static String text(SlurmOptions slurm, String commandName, List<String> options, Path pieces, int count,
+            Path workDir,
             List<String> java, List<String> main, List<String> merge) {
         StringBuilder s = new StringBuilder();
         s.append("#!/bin/bash\n");
         s.append("# Written by 'diffract submit --slurm': task I of this array computes piece I of ").append(count)
-                .append(" of a BRDF map\n");
+                .append(commandName.equals("render") ? " of a turntable's frames\n" : " of a BRDF map\n");
         s.append("# into this folder. Resubmit with: sbatch ").append(quote(pieces.resolve(FILE_NAME).toString()))
                 .append(" (pieces that failed: sbatch --array=I,J ...);\n");
         s.append("# once every piece is there: ").append(command(merge)).append('\n');
-        sbatch(s, "--job-name=diffract-brdfmap");
+        sbatch(s, "--job-name=diffract-" + commandName);
         sbatch(s, "--array=0-" + (count - 1) + (slurm.maxRunning != null ? "%" + slurm.maxRunning : ""));
         sbatch(s, "--ntasks=1");
         sbatch(s, "--cpus-per-task=" + slurm.cpus());
@@ -75,7 +77,7 @@ final class SlurmScript {
             s.append("unset DISPLAY\n");
             s.append("export ").append(HeadlessGL.PLATFORM_VARIABLE).append("=egl\n");
         }
-        List<String> tile = new ArrayList<>(List.of("brdfmap"));
+        List<String> tile = new ArrayList<>(List.of(commandName));
         tile.addAll(options);
         List<String> vm = new ArrayList<>(java);
         if (vm.stream().noneMatch(o -> o.startsWith("-Djava.awt.headless="))) {

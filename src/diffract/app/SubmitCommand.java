@@ -22,17 +22,18 @@ import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 /**
- * {@code diffract submit --local J -- brdfmap ...}: one brdfmap run split into pieces ({@code --tile I/N}), computed by
- * J worker processes on this machine, then merged: it leaves the files the brdfmap command names, the same bit for
- * bit as had it run alone. {@code diffract submit --slurm ...} computes the same pieces as the tasks of a Slurm job
+ * {@code diffract submit --local J -- brdfmap ...} (or {@code -- render --turntable F ...}): one run of a
+ * {@link SplitCommand} split into pieces ({@code --tile I/N}), computed by J worker processes on this machine, then
+ * merged: it leaves the files the command names, the same bit for bit as had it run alone. {@code diffract submit --slurm ...} computes the same pieces as the tasks of a Slurm job
  * array (its script written beside the pieces), waits for the array to end and merges them the same way, or prints the
  * merge command.
  */
 @Command(name = "submit", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Run a brdfmap command as N pieces (bands of rows), in J local worker processes or as a Slurm "
-                + "job array, then merge them: the same files, bit for bit, as the command alone writes. Usage: "
-                + "diffract submit --local J -- brdfmap OPTIONS, or diffract submit --slurm --piece-count N "
-                + "--keep-pieces DIR -- brdfmap OPTIONS.")
+        description = "Run a brdfmap command as N pieces (bands of rows), or a render --turntable command as N pieces "
+                + "(runs of frames), in J local worker processes or as a Slurm job array, then merge them: the same "
+                + "files, bit for bit, as the command alone writes. Usage: diffract submit --local J -- brdfmap "
+                + "OPTIONS, or diffract submit --slurm --piece-count N --keep-pieces DIR -- render SCENE "
+                + "--turntable F OPTIONS.")
 final class SubmitCommand implements Callable<Integer> {
     @Option(names = "--local", paramLabel = "J",
             description = "How many worker processes run at once on this machine; each gets its share of the "
@@ -52,8 +53,8 @@ final class SubmitCommand implements Callable<Integer> {
     @Mixin
     SlurmOptions slurm;
 
-    @Parameters(paramLabel = "brdfmap OPTIONS", arity = "1..*",
-            description = "After --: the brdfmap command as for a single run.")
+    @Parameters(paramLabel = "COMMAND OPTIONS", arity = "1..*",
+            description = "After --: the brdfmap or render --turntable command as for a single run.")
     List<String> command;
 
     /** Outputs of brdfmap that merge writes, not the workers: each takes a value. */
@@ -83,11 +84,7 @@ final class SubmitCommand implements Callable<Integer> {
         if (count < 1) {
             throw new UserInputException("--piece-count must be at least 1, got " + count);
         }
-        if (!command.get(0).equals("brdfmap")) {
-            throw new UserInputException("submit runs brdfmap: diffract submit --local J -- brdfmap OPTIONS (got '"
-                    + command.get(0) + "')");
-        }
-        BrdfMapCommand single = parse(command);
+        SplitCommand single = parse(command);
         single.validateSplit(count);
         List<String> options = withoutOutputs(command.subList(1, command.size()));
         if (slurm.slurm) {
@@ -98,18 +95,18 @@ final class SubmitCommand implements Callable<Integer> {
         try {
             List<List<String>> pieces = new ArrayList<>();
             for (int i = 0; i < count; i++) {
-                List<String> piece = new ArrayList<>(List.of("brdfmap"));
+                List<String> piece = new ArrayList<>(List.of(single.name()));
                 piece.addAll(options);
                 piece.addAll(List.of("--tile", i + "/" + count, "--pieces", dir.toString(), "--quiet"));
                 pieces.add(piece);
             }
-            System.out.printf(Locale.ROOT, "%d pieces of %d rows on %d local workers, into %s%n", count,
-                    single.picture.size, Math.min(workers, count), dir);
+            System.out.printf(Locale.ROOT, "%d pieces of %d %s on %d local workers, into %s%n", count,
+                    single.items(), single.itemsName(), Math.min(workers, count), dir);
             int[] done = {0};
             LocalWorkers.Finished failed = LocalWorkers.run(pieces, Math.min(workers, count), f -> {
                 if (f.exitCode() == 0) {
                     done[0]++;
-                    System.out.println(progressLine(f, count, single.picture.size, done[0], start));
+                    System.out.println(progressLine(f, count, single, done[0], start));
                 }
             });
             if (failed != null) {
@@ -119,7 +116,7 @@ final class SubmitCommand implements Callable<Integer> {
             }
             int code = Main.execute(mergeArguments(single, dir, false).toArray(String[]::new));
             if (code == 0) {
-                System.out.printf(Locale.ROOT, "wrote %s from %d pieces on %d workers in %.1f s%n", single.output,
+                System.out.printf(Locale.ROOT, "wrote %s from %d pieces on %d workers in %.1f s%n", single.output(),
                         count, Math.min(workers, count), (System.nanoTime() - start) * 1e-9);
             }
             return code;
@@ -134,7 +131,7 @@ final class SubmitCommand implements Callable<Integer> {
      * The pieces as a Slurm job array: its script written into the pieces' folder and submitted; then, unless told not
      * to wait, the array waited for and the pieces merged.
      */
-    private int onSlurm(BrdfMapCommand single, List<String> options, int count, Path dir)
+    private int onSlurm(SplitCommand single, List<String> options, int count, Path dir)
             throws IOException, InterruptedException {
         long start = System.nanoTime();
         diffract.util.OutputPaths.requireWritableFolder(dir, "--keep-pieces");
@@ -143,13 +140,13 @@ final class SubmitCommand implements Callable<Integer> {
         List<String> mergeCommand = new ArrayList<>(List.of("diffract"));
         mergeCommand.addAll(merge);
         Path script = dir.resolve(SlurmScript.FILE_NAME);
-        String text = SlurmScript.text(slurm, options, dir, count, Path.of("").toAbsolutePath(),
+        String text = SlurmScript.text(slurm, single.name(), options, dir, count, Path.of("").toAbsolutePath(),
                 LocalWorkers.javaVm(slurm.cacheDir == null), LocalWorkers.mainClass(), mergeCommand);
         diffract.util.ImageFiles.writeAtomically(script,
                 out -> out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
         Sbatch.Result result = Sbatch.submit(script, !slurm.noWait, id -> System.out.printf(Locale.ROOT,
-                "submitted %s as Slurm array job %s: %d pieces of %d rows%s, logs %s%n", script, id, count,
-                single.picture.size, slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
+                "submitted %s as Slurm array job %s: %d pieces of %d %s%s, logs %s%n", script, id, count,
+                single.items(), single.itemsName(), slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
                 dir.resolve(SlurmScript.logName("I", count))));
         if (slurm.noWait) {
             System.out.println("once the array has ended: " + SlurmScript.command(mergeCommand));
@@ -172,47 +169,48 @@ final class SubmitCommand implements Callable<Integer> {
         }
         int code = Main.execute(merge.toArray(String[]::new));
         if (code == 0) {
-            System.out.printf(Locale.ROOT, "wrote %s from %d pieces of Slurm array job %s in %.1f s%n", single.output,
+            System.out.printf(Locale.ROOT, "wrote %s from %d pieces of Slurm array job %s in %.1f s%n", single.output(),
                     count, result.jobId(), (System.nanoTime() - start) * 1e-9);
         }
         return code;
     }
 
     /**
-     * The merge command that writes the outputs the brdfmap command names, from the pieces in {@code dir}; with
+     * The merge command that writes the outputs the command names, from the pieces in {@code dir}; with
      * {@code absolute} their paths are absolute, so that the command runs anywhere.
      */
-    private static List<String> mergeArguments(BrdfMapCommand single, Path dir, boolean absolute) {
+    private static List<String> mergeArguments(SplitCommand single, Path dir, boolean absolute) {
         java.util.function.Function<Path, String> path = p -> (absolute ? p.toAbsolutePath().normalize() : p)
                 .toString();
-        List<String> merge = new ArrayList<>(List.of("merge", path.apply(dir), "-o", path.apply(single.output)));
-        if (single.picture.pfm != null) {
-            merge.addAll(List.of("--pfm", path.apply(single.picture.pfm)));
-        }
-        if (single.picture.exr != null) {
-            merge.addAll(List.of("--exr", path.apply(single.picture.exr)));
-        }
-        if (single.quiet.quiet) {
+        List<String> merge = new ArrayList<>(List.of("merge", path.apply(dir)));
+        merge.addAll(single.mergeOutputs(path));
+        if (single.quiet()) {
             merge.add("--quiet");
         }
         return merge;
     }
 
-    /** The brdfmap command as one run would read it; its errors are submit's. */
-    private static BrdfMapCommand parse(List<String> command) {
+    /** The command as one run would read it, if it splits into pieces; its errors are submit's. */
+    private static SplitCommand parse(List<String> command) {
+        CommandLine.ParseResult parsed;
         try {
-            CommandLine.ParseResult parsed = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
+            parsed = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
                     .parseArgs(command.toArray(String[]::new));
-            if (!parsed.hasSubcommand() || parsed.subcommand().isUsageHelpRequested()) {
-                throw new UserInputException("submit needs a brdfmap command to run: -- brdfmap OPTIONS");
-            }
-            return (BrdfMapCommand) parsed.subcommand().commandSpec().userObject();
         } catch (CommandLine.ParameterException e) {
-            throw new UserInputException("brdfmap: " + e.getMessage());
+            throw new UserInputException(command.get(0) + ": " + e.getMessage());
         }
+        if (!parsed.hasSubcommand() || parsed.subcommand().isUsageHelpRequested()) {
+            throw new UserInputException("submit needs a command to run: -- brdfmap OPTIONS or -- render SCENE "
+                    + "--turntable F OPTIONS");
+        }
+        if (!(parsed.subcommand().commandSpec().userObject() instanceof SplitCommand split)) {
+            throw new UserInputException("submit runs brdfmap or render --turntable in pieces, not "
+                    + parsed.subcommand().commandSpec().name() + ": diffract submit --local J -- brdfmap OPTIONS");
+        }
+        return split;
     }
 
-    /** The brdfmap options less -o, --pfm and --exr (and their values), which merge writes. */
+    /** The command's options less -o, --pfm and --exr (and their values), which merge writes. */
     static List<String> withoutOutputs(List<String> options) {
         List<String> kept = new ArrayList<>();
         for (int a = 0; a < options.size(); a++) {
@@ -228,8 +226,9 @@ final class SubmitCommand implements Callable<Integer> {
     }
 
     /** Which piece finished, its rows, its time and how it was spent, and where the whole run stands. */
-    private static String progressLine(LocalWorkers.Finished f, int count, int sizePx, int done, long startNanos) {
-        MapBand band = MapBand.of(f.index(), count, sizePx);
+    private static String progressLine(LocalWorkers.Finished f, int count, SplitCommand single, int done,
+                                       long startNanos) {
+        MapBand band = MapBand.of(f.index(), count, single.items());
         Matcher times = PIECE_TIMES.matcher(f.output());
         String split = "";
         if (times.find()) {
@@ -238,8 +237,9 @@ final class SubmitCommand implements Callable<Integer> {
             split = String.format(Locale.ROOT, " (start %.2f s, setup %.2f s, work %.2f s)",
                     Math.max(0, f.wallS() - setup - work), setup, work);
         }
-        return String.format(Locale.ROOT, "piece %d/%d (rows %s) finished in %.2f s%s; %d of %d done, %.1f s elapsed",
-                f.index(), count, band, f.wallS(), split, done, count, (System.nanoTime() - startNanos) * 1e-9);
+        return String.format(Locale.ROOT, "piece %d/%d (%s %s) finished in %.2f s%s; %d of %d done, %.1f s elapsed",
+                f.index(), count, single.itemsName(), band, f.wallS(), split, done, count,
+                (System.nanoTime() - startNanos) * 1e-9);
     }
 
     /** The temporary folder and what the workers wrote in it. */

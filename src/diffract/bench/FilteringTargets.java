@@ -39,13 +39,14 @@ public final class FilteringTargets {
     public static final double MIN_SPEED_UP = 10;
     /** Alternating timing rounds of the lobes method and FLSS. */
     public static final int ROUNDS = 3;
-    /** (u, v) samples of the baked table measured beside them, unless the bench is told otherwise. */
-    public static final int DEFAULT_BAKED_UV_SAMPLES = 256;
+    /** (u, v) samples of the baked table measured beside them, unless the bench is told otherwise: automatic. */
+    public static final int DEFAULT_BAKED_UV_SAMPLES = 0;
 
     /** One patch under one light: errors against the reference and GPU times (NaN where not measured). */
     public record Row(String patch, double lightDeg, int litPixels, double lobesMean, double lobesP95,
                       double flssMean, double flssP95, double bakedMean, double bakedP95, double lobesMs,
-                      double flssMs, double speedUp, double bakedMs, double referenceSeconds, double bakeSeconds) {
+                      double flssMs, double speedUp, double bakedMs, double referenceSeconds, double bakeSeconds,
+                      String bakedGrid) {
         public boolean meetsTargets() {
             return lobesMean <= MAX_DELTA_E && speedUp >= MIN_SPEED_UP;
         }
@@ -63,7 +64,8 @@ public final class FilteringTargets {
 
     /**
      * @param lobes          the lobes method's settings (coherence, Fresnel, quadrature); the light size is set per row
-     * @param bakedSamples   (u, v) samples of the baked table, 0 for none
+     * @param bakedSamples   (u, v) samples of the baked table, 0 for automatic ({@link diffract.optics.BakedGrid}: what
+     *                       brdfmap and the scenes take), negative for no baked table
      * @param bakedWSamples  w samples of the baked table, 0 for automatic
      */
     public FilteringTargets(ReferenceMaps references, BrdfSettings lobes, int sizePx, int rounds, int framesPerRound,
@@ -99,11 +101,14 @@ public final class FilteringTargets {
         double bakedP95 = Double.NaN;
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
-        if (bakedSamples > 0) {
+        String bakedGrid = "-";
+        if (bakedSamples >= 0) {
             BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, bakedWSamples));
             try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
                 // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
                 bakeSeconds = map.bakedTable().bakeSeconds();
+                var grid = map.bakedTable().grid();
+                bakedGrid = grid.uvSamples() + " x " + grid.uvSamples() + " x " + grid.wSamples();
                 BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, sizePx), sizePx, exposure);
                 if (d.lit() != null) {
                     bakedMean = d.lit().mean();
@@ -132,7 +137,7 @@ public final class FilteringTargets {
                 ratio[r] = flssMs[r] / lobesMs[r];
             }
             return new Row(patch.name(), lightDeg, l.litPixels(), mean(l), p95(l), mean(f), p95(f), bakedMean, bakedP95,
-                    median(lobesMs), median(flssMs), median(ratio), bakedMs, timed.seconds(), bakeSeconds);
+                    median(lobesMs), median(flssMs), median(ratio), bakedMs, timed.seconds(), bakeSeconds, bakedGrid);
         }
     }
 
@@ -164,31 +169,33 @@ public final class FilteringTargets {
 
     public static String csv(List<Row> rows, GLInfo gl) {
         StringBuilder s = new StringBuilder("patch,light_deg,lit_px,lobes_mean,lobes_p95,flss_mean,flss_p95,"
-                + "baked_mean,baked_p95,lobes_ms,flss_ms,speed_up,baked_ms,reference_s,bake_s,meets_targets,gl_renderer\n");
+                + "baked_mean,baked_p95,baked_table,lobes_ms,flss_ms,speed_up,baked_ms,reference_s,bake_s,meets_targets,"
+                + "gl_renderer\n");
         for (Row r : rows) {
             s.append(String.format(Locale.ROOT,
-                    "%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%.3f,%.3f,%.2f,%.3f,%.1f,%.1f,%s,%s%n",
+                    "%s,%s,%d,%.4f,%.4f,%.4f,%.4f,%.4f,%.4f,%s,%.3f,%.3f,%.2f,%.3f,%.1f,%.1f,%s,%s%n",
                     r.patch(), Csv.number(r.lightDeg()), r.litPixels(), r.lobesMean(), r.lobesP95(), r.flssMean(),
-                    r.flssP95(), r.bakedMean(), r.bakedP95(), r.lobesMs(), r.flssMs(), r.speedUp(), r.bakedMs(),
+                    r.flssP95(), r.bakedMean(), r.bakedP95(), r.bakedGrid(), r.lobesMs(), r.flssMs(), r.speedUp(), r.bakedMs(),
                     r.referenceSeconds(), r.bakeSeconds(), r.meetsTargets(), gl == null ? "" : '"' + gl.renderer() + '"'));
         }
         return s.toString();
     }
 
     /** The table of docs/bench/filtering.md: one row per patch and light. */
-    public static String markdown(List<Row> rows, int sizePx, BrdfSettings lobes, int bakedSamples) {
+    public static String markdown(List<Row> rows, int sizePx, BrdfSettings lobes) {
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%d x %d BRDF maps, theta_i = %.0f degrees, "
                         + "coherence length %s um; CIEDE2000 mean / p95 over lit pixels against the filtered reference\n\n",
                 sizePx, sizePx, THETA_I_DEG, Csv.number(lobes.illumination().coherenceLengthUm())));
-        s.append("| patch | light | lit px | lobes | FLSS (thesis) | baked ").append(bakedSamples)
-                .append(" | lobes ms | FLSS ms | FLSS / lobes | baked ms | bake s | reference s | <= ")
+        s.append("| patch | light | lit px | lobes | FLSS (thesis) | baked | baked table (u x v x w) | lobes ms | FLSS ms "
+                + "| FLSS / lobes | baked ms | bake s | reference s | <= ")
                 .append(Csv.number(MAX_DELTA_E)).append(" and >= ").append(Csv.number(MIN_SPEED_UP)).append("x |\n");
-        s.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+        s.append("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
         for (Row r : rows) {
             s.append(String.format(Locale.ROOT,
-                    "| %s | %s deg | %d | %s | %s | %s | %.1f | %.1f | %.1f | %s | %s | %s | %s |%n",
+                    "| %s | %s deg | %d | %s | %s | %s | %s | %.1f | %.1f | %.1f | %s | %s | %s | %s |%n",
                     r.patch(), Csv.number(r.lightDeg()), r.litPixels(), pair(r.lobesMean(), r.lobesP95()),
-                    pair(r.flssMean(), r.flssP95()), pair(r.bakedMean(), r.bakedP95()), r.lobesMs(), r.flssMs(),
+                    pair(r.flssMean(), r.flssP95()), pair(r.bakedMean(), r.bakedP95()), r.bakedGrid(), r.lobesMs(),
+                    r.flssMs(),
                     r.speedUp(), Double.isNaN(r.bakedMs()) ? "-" : String.format(Locale.ROOT, "%.2f", r.bakedMs()),
                     seconds(r.bakeSeconds()), seconds(r.referenceSeconds()), r.meetsTargets() ? "yes" : "**no**"));
         }

@@ -26,10 +26,19 @@ class SubmitCommandTest {
     }
 
     @Test
-    void aCommandOtherThanBrdfmapIsRefused() {
-        Object[] result = CliTest.run("submit", "--local", "2", "--", "render", "-o", "x.png");
+    void aCommandThatDoesNotSplitIsRefused() {
+        Object[] result = CliTest.run("submit", "--local", "2", "--", "measure", "assets/scenes/snake-elaphe.json");
         assertEquals(2, result[0]);
-        assertTrue(((String) result[2]).contains("submit runs brdfmap"), (String) result[2]);
+        assertTrue(((String) result[2]).contains("submit runs brdfmap or render --turntable in pieces, not measure"),
+                (String) result[2]);
+        result = CliTest.run("submit", "--local", "2", "--", "render", "assets/scenes/blazed-grating-plane.json", "-o",
+                "x.png");
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("add --turntable FRAMES"), (String) result[2]);
+        result = CliTest.run("submit", "--local", "2", "--piece-count", "5", "--", "render",
+                "assets/scenes/blazed-grating-plane.json", "--turntable", "4", "-o", "x.gif");
+        assertEquals(2, result[0]);
+        assertTrue(((String) result[2]).contains("has only 4 frames to split"), (String) result[2]);
     }
 
     @Test
@@ -59,7 +68,7 @@ class SubmitCommandTest {
         slurm.partition = "gpu";
         slurm.timeLimit = "0:30:00";
         slurm.sbatchOptions = List.of("--account=lab");
-        String script = SlurmScript.text(slurm, List.of("--synthetic", "blazed", "--theta-i", "30"),
+        String script = SlurmScript.text(slurm, "brdfmap", List.of("--synthetic", "blazed", "--theta-i", "30"),
                 Path.of("/shared/my pieces"), 8, Path.of("/home/u"), List.of("/opt/java/bin/java", "-Xmx4g"),
                 List.of("-cp", "/opt/d.jar", "diffract.app.Main"), List.of("diffract", "merge", "/shared/my pieces",
                         "-o", "/home/u/map.png"));
@@ -86,7 +95,7 @@ class SubmitCommandTest {
     void withoutGpusOrCacheTheScriptLeavesTheNodesDefaults() {
         SlurmOptions slurm = new SlurmOptions();
         slurm.slurm = true;
-        String script = SlurmScript.text(slurm, List.of("--size", "16"), Path.of("/p"), 2, Path.of("/w"),
+        String script = SlurmScript.text(slurm, "brdfmap", List.of("--size", "16"), Path.of("/p"), 2, Path.of("/w"),
                 List.of("java"), List.of("-cp", "x", "M"), List.of("diffract", "merge", "/p", "-o", "/w/m.png"));
         assertTrue(script.contains("#SBATCH --array=0-1\n"), script);
         assertTrue(script.contains("#SBATCH --cpus-per-task=1\n"), script);

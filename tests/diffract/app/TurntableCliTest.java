@@ -104,6 +104,21 @@ class TurntableCliTest {
     }
 
     @Test
+    void submitRendersATurntableInTwoWorkersAsOneRunWould() throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        String[] scene = {"render", SCENE, "--turntable", "4", "--orbit-light", "--size", "32x24"};
+        Path whole = dir.resolve("whole.gif");
+        Object[] result = CliTest.run(concat(scene, "-o", whole.toString()));
+        assertEquals(0, result[0], (String) result[2]);
+        Path merged = dir.resolve("submitted.gif");
+        String[] submit = {"submit", "--local", "2", "--piece-count", "3", "--"};
+        result = CliTest.run(concat(concat(submit, scene), "-o", merged.toString()));
+        assertEquals(0, result[0], (String) result[2]);
+        assertTrue(((String) result[1]).contains("3 pieces of 4 frames on 2 local workers"), (String) result[1]);
+        assertArrayEquals(Files.readAllBytes(whole), Files.readAllBytes(merged), "the GIF submit leaves");
+    }
+
+    @Test
     void turntablePiecesRefuseWhatOnlyMergeWrites() {
         Object[] result = CliTest.run("render", SCENE, "--turntable", "4", "--tile", "0/2", "--pieces",
                 dir.resolve("p").toString(), "-o", dir.resolve("x.gif").toString());
