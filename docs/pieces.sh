@@ -118,8 +118,8 @@ node, with the pieces' folder on a disk every node reads and writes.
   whatever C.
 - **GPU nodes.** `--gpus-per-task G` adds `--gres=gpu:G` and, in the script, `unset DISPLAY` and `DIFFRACT_GL=egl`:
   OpenGL in a task runs on headless EGL on the node's first device ([headless-gl.md](headless-gl.md)), never on a
-  forwarded X display. brdfmap's pieces compute on the CPU; the request is for partitions that give out their nodes
-  only with a GPU.
+  forwarded X display. brdfmap's pieces compute on the CPU; a turntable's frames (`-- render SCENE --turntable F
+  ... -o OUT.gif`, split into runs of frames the same way) draw with the node's GPU.
 - **Cache.** `--cache-dir DIR` exports `DIFFRACT_CACHE=DIR` in the script: the tasks share one disk cache, and what
   one precomputed (a patch's Taylor terms, for the variants that use them; the reference uses none) the others read
   instead of computing it again. Without it each node uses its own default cache folder.
