@@ -326,10 +326,6 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         return where;
     }
 
-    /**
-     * What {@code submit} checks before it starts any worker: the options as one run would (its outputs included),
-     * and those that splitting adds (on the CPU, at most a band per row).
-     */
     @Override
     public String name() {
         return spec.name();
@@ -367,6 +363,10 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         return quiet.quiet;
     }
 
+    /**
+     * What {@code submit} checks before it starts any worker: the options as one run would (its outputs included),
+     * and those that splitting adds (on the CPU, at most a band per row).
+     */
     @Override
     public void validateSplit(int pieceCount) {
         if (tiles.tile != null || tiles.pieces != null) {
