@@ -48,6 +48,9 @@ final class MeasureCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         options.validate();
+        if (options.dumpedScene(new Scene.ImageSize(512, 512))) {
+            return 0;
+        }
         if (saveDir != null) {
             OutputPaths.require(OutputPaths.folder("--save", saveDir),
                     OutputPaths.file("--save", saveDir.resolve(MASK), MASK, ".png"),

@@ -89,6 +89,9 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
     @Override
     public Integer call() throws IOException {
         options.validate();
+        if (options.dumpedScene(new Scene.ImageSize(512, 512))) {
+            return 0;
+        }
         Integer frames = turntable.frames;
         if (frames == null && turntable.orbitLight) {
             throw new UserInputException("--orbit-light goes with --turntable FRAMES");

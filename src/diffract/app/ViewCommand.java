@@ -53,11 +53,17 @@ final class ViewCommand implements Callable<Integer> {
                     + "quit (docs/viewer-screenshot.sh).")
     boolean screenshotWhenRefined;
 
+    /** The window's size unless --size or the scene says otherwise. */
+    private static final Scene.ImageSize WINDOW = new Scene.ImageSize(800, 600);
+
     @Override
     public Integer call() throws Exception {
         // interactive: the baked table of the lobes method (one lookup per pixel, baked behind the preview)
         options.defaultVariant(Variant.BAKED);
         options.validate();
+        if (options.dumpedScene(WINDOW)) {
+            return 0;
+        }
         if (spec.commandLine().getParseResult().hasMatchedOption("--screenshot-dir")) {
             // the default folder is made when the first screenshot is saved; a folder named is checked now
             OutputPaths.requireWritableFolder(screenshotDir, "--screenshot-dir");
@@ -67,7 +73,7 @@ final class ViewCommand implements Callable<Integer> {
             throw new UserInputException(problem.get());
         }
         Reporter reporter = quiet.reporter();
-        Scene.ImageSize window = options.imageSize(new Scene.ImageSize(800, 600));
+        Scene.ImageSize window = options.imageSize(WINDOW);
         SceneSetup setup = options.setup(window, reporter);
         ViewerModel model = ViewerModel.load(setup, reporter);
         System.out.print(KeyBindings.helpText());

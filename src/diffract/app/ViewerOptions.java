@@ -18,7 +18,9 @@ import diffract.scene.LightDirection;
 import diffract.scene.OrbitCamera;
 import diffract.scene.Scene;
 import diffract.scene.SceneFile;
+import diffract.scene.SceneOverrides;
 import diffract.scene.SceneSetup;
+import diffract.scene.SceneWriter;
 import diffract.scene.StageSpec;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
@@ -49,6 +51,11 @@ final class ViewerOptions {
 
     @Spec(Spec.Target.MIXEE)
     CommandSpec mixee;
+
+    @Option(names = "--dump-scene", description = "Print the scene these options describe as a scene file (every key, "
+            + "defaults included, paths absolute; docs/scene-format.md) and draw nothing: save it to draw the same "
+            + "again, or to edit it.")
+    boolean dumpScene;
 
     @Mixin
     PatchOptions patch;
@@ -226,7 +233,8 @@ final class ViewerOptions {
      * given applied to its material.
      */
     Scene scene(Scene.ImageSize defaultSize) {
-        Scene s = parsedScene != null ? parsedScene : optionsScene(defaultSize);
+        Scene s = parsedScene != null ? sceneOverrides().applyTo(withImage(parsedScene, imageSize(defaultSize)))
+                : optionsScene(defaultSize);
         Scene.MaterialSpec m = s.material();
         // --terms replaces a scene's tolerance-chosen N; --patch or --synthetic the scene's patch
         Scene.PatchSpec patchSpec = parsedScene != null && patch.given() ? patch.spec(DEFAULT_PATCH) : m.patch();
@@ -234,6 +242,35 @@ final class ViewerOptions {
                 brdf.highestOrderGiven() ? null : m.orderTolerance(), m.pigmentation(), m.pigmentationOn(),
                 m.diffuseWeight(), m.exposure());
         return s.withMaterial(material);
+    }
+
+    /** What the options given beside a scene file replace in it. */
+    private SceneOverrides sceneOverrides() {
+        return new SceneOverrides(given("--azimuth") ? view.azimuthDeg : null,
+                given("--elevation") ? view.elevationDeg : null, given("--distance") ? view.distance : null,
+                given("--theta-i") ? view.thetaIDeg : null, given("--phi-i") ? view.phiIDeg : null,
+                given("--exposure") ? view.exposure : null, given("--diffuse-weight") ? surface.diffuseWeight : null,
+                surface.noPigmentation, view.brdfMap);
+    }
+
+    private static Scene withImage(Scene s, Scene.ImageSize image) {
+        return new Scene(s.source(), image, s.camera(), s.light(), s.shape(), s.material(), s.mode(), s.stage());
+    }
+
+    /**
+     * With --dump-scene: the scene these options describe printed as a scene file (validate() first), and true;
+     * the command then draws nothing.
+     */
+    boolean dumpedScene(Scene.ImageSize defaultSize) {
+        if (!dumpScene) {
+            return false;
+        }
+        if (brdf.auto()) {
+            throw new UserInputException("--dump-scene writes a scene of one method; --variant auto chooses its "
+                    + "method by measuring the patch: run without --dump-scene to see its choice, then give it");
+        }
+        System.out.print(SceneWriter.json(scene(imageSize(defaultSize))));
+        return true;
     }
 
     /** The scene the options describe: the patch on a shape, the thesis' settings, an orbit camera, one light. */
@@ -301,29 +338,11 @@ final class ViewerOptions {
      */
     SceneSetup setup(Scene.ImageSize defaultSize, Reporter reporter) {
         SceneSetup s = Fabricator.fabricate(scene(defaultSize), reporter);
-        if (parsedScene != null) {
-            s = withOverrides(s);
-        }
         if (!brdf.auto()) {
             return s;
         }
         AutoChoice choice = AutoVariant.choose(s.patch(), s.light().phiDeg(), s.settings(), brdf.maxDeltaE, reporter);
         System.out.println(choice.explanation());
         return s.withSettings(AutoVariant.settings(choice, s.settings().taylor().expansion()));
-    }
-
-    /** The scene's setup with the view options the command line gives in its place. */
-    private SceneSetup withOverrides(SceneSetup s) {
-        OrbitCamera c = s.camera();
-        OrbitCamera camera = new OrbitCamera(given("--azimuth") ? view.azimuthDeg : c.azimuthDeg(),
-                given("--elevation") ? view.elevationDeg : c.elevationDeg(),
-                given("--distance") ? view.distance : c.distance(),
-                c.targetX(), c.targetY(), c.targetZ());
-        LightDirection light = new LightDirection(given("--theta-i") ? view.thetaIDeg : s.light().thetaDeg(),
-                given("--phi-i") ? view.phiIDeg : s.light().phiDeg());
-        return new SceneSetup(s.pipeline(), s.shape(), s.pigmentation(),
-                given("--diffuse-weight") ? surface.diffuseWeight : s.diffuseWeight(), s.settings(), camera, light,
-                given("--exposure") ? view.exposure : s.exposure(), view.brdfMap ? DisplayMode.BRDF_MAP : s.mode(),
-                s.pigmentationOn() && !surface.noPigmentation, s.verticalFovDeg(), s.stage());
     }
 }
