@@ -114,8 +114,8 @@ public final class DiffractionBrdf {
 
     /** One line when the local window is asked of something without a surface point. */
     public static final String LOCAL_NEEDS_A_SURFACE = "the local window follows the surface point a pixel sees, and a"
-            + " BRDF map has none: use the window averaged over its position (what local converges to where a pixel"
-            + " covers the scan) or fixed (the window at the scan's origin)";
+            + " BRDF map has none: use averaged (what local converges to where a pixel covers the scan) or fixed (the"
+            + " window at the scan's origin)";
 
     /** One line when the local window is asked of a method that does not sum the window's texels itself. */
     public static final String LOCAL_NEEDS_FLSS_OR_NMM = "the local window is drawn by flss and nmm, which sum the"
