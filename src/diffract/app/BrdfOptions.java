@@ -233,7 +233,7 @@ final class BrdfOptions {
                 throw new InvalidSettingException(Quantity.SCAN_TILING, "give one number or two, U,V; got "
                         + t.length);
             }
-            b.scanTiling(new ScanTiling(t[0], t[t.length - 1], false));
+            b.scanTiling(new ScanTiling(t[0], t[t.length - 1], base.window().tiling().columnsAlongV()));
         }
         SpectralSettings s = base.spectral();
         if (spectral.minNm != null || spectral.maxNm != null || spectral.stepNm != null
