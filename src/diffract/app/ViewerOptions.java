@@ -7,6 +7,9 @@ import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
+import diffract.render.DiffractionMaterials;
+import diffract.optics.Quantity;
+import diffract.optics.WindowPlacement;
 import diffract.optics.ScanTiling;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
@@ -193,7 +196,11 @@ final class ViewerOptions {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY
                     + " (the reference is drawn by ./diffract brdfmap)");
         }
-        brdf.apply(parsedScene != null ? parsedScene.material().settings() : defaults()); // a refused value fails now
+        BrdfSettings checked = brdf.apply(parsedScene != null ? parsedScene.material().settings() : defaults());
+        if (checked.window().placement() == WindowPlacement.LOCAL && !checked.window().tiling().given()) {
+            throw new UserInputException(OptionNames.of(Quantity.SCAN_TILING) + ": "
+                    + DiffractionMaterials.LOCAL_NEEDS_A_TILING);
+        }
         if (!(view.distance >= OrbitCamera.MIN_DISTANCE && view.distance <= OrbitCamera.MAX_DISTANCE)) {
             throw new UserInputException("--distance must be in [" + OrbitCamera.MIN_DISTANCE + ", "
                     + OrbitCamera.MAX_DISTANCE + "], got " + view.distance);

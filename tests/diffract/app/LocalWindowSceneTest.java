@@ -114,6 +114,33 @@ class LocalWindowSceneTest {
                 + closeUpDifference);
     }
 
+    /** What cannot draw the local window says so in one line and exits 2. */
+    @Test
+    void whatCannotDrawTheLocalWindowRefusesItInOneLine() throws IOException {
+        Path out = dir.resolve("refused.png");
+        String[][] cases = {
+            {"brdfmap", "--synthetic", "elaphe-like", "--variant", "flss", "--window", "local", "--size", "8", "-o",
+                out.toString()},
+            {"render", "--shape", "plane", "--variant", "lobes", "--window", "local", "--skin-um-per-texcoord", "100",
+                "-o", out.toString()},
+            {"render", "--shape", "plane", "--variant", "flss", "--window", "local", "-o", out.toString()},
+        };
+        String[] expected = {"--window: the local window follows the surface point", "--window: the local window is"
+                + " drawn by flss and nmm", "--skin-um-per-texcoord: the local window needs"};
+        for (int i = 0; i < cases.length; i++) {
+            Object[] result = CliTest.run(cases[i]);
+            String err = ((String) result[2]).strip();
+            assertEquals(2, result[0], err);
+            assertTrue(err.lines().count() == 1 && err.contains(expected[i]), err);
+        }
+        Path scene = dir.resolve("untiled.json");
+        Files.writeString(scene, SCENE.replace("\"variant\": \"flss\",", "\"variant\": \"flss\", \"window\": \"local\","));
+        Object[] result = CliTest.run("render", scene.toString(), "-o", out.toString());
+        assertEquals(2, result[0], (String) result[2]);
+        assertTrue(((String) result[2]).contains("material.window: \"local\" needs \"skinUmPerTexcoord\""),
+                (String) result[2]);
+    }
+
     private Xyz[] render(Path scene, String window, double tiling) throws IOException {
         Path png = dir.resolve(window + "-" + (long) tiling + ".png");
         Object[] result = CliTest.run("render", scene.toString(), "--window", window, "--skin-um-per-texcoord",
