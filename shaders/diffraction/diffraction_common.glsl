@@ -289,6 +289,22 @@ vec3 localFootprintUm2 = vec3(0.0);
 // k = d / L with integer d != 0 once the smallest eigenvalue of diag(1/L) Sigma diag(1/L) reaches ln(1e7) / (2 pi^2).
 const float LOCAL_PAIR_EXPONENT_CUTOFF = 16.118;
 
+// diag(1/L) Sigma diag(1/L): the footprint's covariance in squared periods, (xx, xy, yy).
+vec3 localFootprintPeriods2() {
+    return localFootprintUm2 / vec3(patchExtentUm.x * patchExtentUm.x, patchExtentUm.x * patchExtentUm.y,
+                                    patchExtentUm.y * patchExtentUm.y);
+}
+
+// Whether any texel pair keeps a footprint factor of at least 1e-7: else the footprint covers the scan and the
+// window's texels add as powers, the averaged window (the same for every wavelength, so decided once per lookup
+// before the texels are read).
+bool localPairsMatter() {
+    vec3 m = localFootprintPeriods2();
+    float halfTrace = 0.5 * (m.x + m.z);
+    float smallest = halfTrace - sqrt(max(halfTrace * halfTrace - (m.x * m.z - m.y * m.y), 0.0));
+    return 2.0 * PI * PI * smallest < LOCAL_PAIR_EXPONENT_CUTOFF;
+}
+
 // sum_{k, l} A_k conj(A_l) exp(-2 pi i (o_k - o_l) . x0 / L) exp(-2 pi^2 q(o_k - o_l)) over the window's texels at
 // offsets o from its anchor (LocalWindow.power; only offsets enter, so the anchor's index drops out), with
 // q(d) = (d / L)^T Sigma (d / L): each amplitude turned by its phase, B_k = A_k exp(-2 pi i o_k . x0 / L), then
@@ -300,14 +316,7 @@ float localWindowPower(vec2 amplitude[(2 * WINDOW_RADIUS_X + 1) * (2 * WINDOW_RA
     for (int k = 0; k < COUNT; k++) {
         diagonal += dot(amplitude[k], amplitude[k]);
     }
-    // M = diag(1/L) Sigma diag(1/L), in squared texel offsets
-    vec3 m = localFootprintUm2 / vec3(patchExtentUm.x * patchExtentUm.x, patchExtentUm.x * patchExtentUm.y,
-                                      patchExtentUm.y * patchExtentUm.y);
-    float halfTrace = 0.5 * (m.x + m.z);
-    float smallest = halfTrace - sqrt(max(halfTrace * halfTrace - (m.x * m.z - m.y * m.y), 0.0));
-    if (2.0 * PI * PI * smallest >= LOCAL_PAIR_EXPONENT_CUTOFF) {
-        return diagonal; // the footprint covers the scan: the averaged window
-    }
+    vec3 m = localFootprintPeriods2();
     vec2 f = fract(localCentreUm / patchExtentUm);
     for (int k = 0; k < COUNT; k++) {
         vec2 o = vec2(float(k % WIDTH - WINDOW_RADIUS_X), float(k / WIDTH - WINDOW_RADIUS_Y));
@@ -354,6 +363,7 @@ float windowedTaylorPower(vec3 uvw, float lambdaNm) {
     vec2 p = vec2(0.0);
     float power = 0.0;
 #ifdef WINDOW_LOCAL
+    bool pairs = localPairsMatter();
     vec2 amplitude[(2 * WINDOW_RADIUS_X + 1) * (2 * WINDOW_RADIUS_Y + 1)];
 #endif
     for (int j = -WINDOW_RADIUS_Y; j <= WINDOW_RADIUS_Y; j++) {
@@ -370,7 +380,11 @@ float windowedTaylorPower(vec3 uvw, float lambdaNm) {
 #if defined(WINDOW_FIXED)
             p += weight * sum;
 #elif defined(WINDOW_LOCAL)
-            amplitude[(j + WINDOW_RADIUS_Y) * (2 * WINDOW_RADIUS_X + 1) + i + WINDOW_RADIUS_X] = weight * sum;
+            if (pairs) {
+                amplitude[(j + WINDOW_RADIUS_Y) * (2 * WINDOW_RADIUS_X + 1) + i + WINDOW_RADIUS_X] = weight * sum;
+            } else {
+                power += weight * weight * dot(sum, sum);
+            }
 #else
             power += weight * weight * dot(sum, sum);
 #endif
@@ -379,7 +393,7 @@ float windowedTaylorPower(vec3 uvw, float lambdaNm) {
 #if defined(WINDOW_FIXED)
     return dot(p, p);
 #elif defined(WINDOW_LOCAL)
-    return localWindowPower(amplitude);
+    return pairs ? localWindowPower(amplitude) : power;
 #else
     return power;
 #endif
