@@ -9,7 +9,9 @@ import java.util.function.DoubleUnaryOperator;
  * contribute nothing. The variants differ only in the window's weight (Gaussian for FLSS/NMM, sinc for PQ).
  *
  * <p>With the window averaged over its position ({@link WindowPlacement#AVERAGED}) the texels add as powers,
- * sum_m weightX^2 weightY^2 |sum_n c_n DFT_n(m)|^2, over the same texels; fixed, as complex amplitudes, squared after.
+ * sum_m weightX^2 weightY^2 |sum_n c_n DFT_n(m)|^2, over the same texels; fixed, as complex amplitudes, squared after;
+ * under one surface point ({@link #localPower}), in pairs damped by the pixel's footprint. A LOCAL window read by
+ * {@link #power} sits at x0 = 0 with a point footprint: the fixed window.
  *
  * <p>Two settings do less work: the window's half-widths per axis ({@link WindowRadii}, e.g. from
  * sigma_f), and a tolerance at which the Taylor loop stops early ({@link TaylorBound#stopOrder} with this lookup's
