@@ -348,7 +348,12 @@ public final class SceneFile {
                     + "\"pigmentation\": \"procedural\" or {\"file\": \"IMAGE\"}");
         }
         double diffuseWeight = material.number("diffuseWeight", SceneObject.Range.closed(0, 1), 0.2);
-        BrdfSettings settings = b.build();
+        BrdfSettings settings;
+        try {
+            settings = b.build(); // checks the groups together: the local window's method
+        } catch (InvalidSettingException e) {
+            throw material.problem(MATERIAL_KEYS.getOrDefault(e.quantity(), "variant"), e.getMessage());
+        }
         double exposure = radiometric ? RadiometricGain.of(settings)
                 : material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
         material.finish();
