@@ -29,7 +29,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * texels at 65 um: the nearest texel pairs weigh 0.3), compared as {@link GpuCpuAgreementTest} compares maps (its
  * limits: CIEDE2000 mean 0.05 and p99 0.5 over the lit pixels). A map has no surface point, so the window is placed
  * by uniforms ({@link GpuBrdfMap#placeWindow}); the surface's own placement from the texture coordinates is
- * {@link LocalWindowSceneTest}'s. The negative control: the GPU's window at one centre against the CPU's at another
+ * {@code LocalWindowSceneTest}'s. The negative control: the GPU's window at one centre against the CPU's at another
  * fails the limits.
  */
 @Tag("gl")
