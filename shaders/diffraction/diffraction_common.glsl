@@ -20,8 +20,13 @@
 //   WINDOW_FIXED          one coherence window at the DFT's origin: texels add as complex amplitudes, squared after
 //                         (the thesis); without it the window is averaged over its position and texels add as powers
 //                         (WindowPlacement)
+//   WINDOW_LOCAL          the window under the surface point this fragment sees, averaged over the pixel's footprint
+//                         on the skin: texels add in pairs, each pair damped by the footprint (LocalWindow)
 #if defined(TERMS_UNORM8) && defined(PHASE_CENTRED)
 #error "8-bit terms hold the thesis' series around 0 only (DiffractionTextures.ofPhaseCentred refuses them)"
+#endif
+#if defined(WINDOW_FIXED) && defined(WINDOW_LOCAL)
+#error "define at most one of WINDOW_FIXED and WINDOW_LOCAL (WindowPlacement)"
 #endif
 #if !defined(TAYLOR_HIGHEST_ORDER) || !defined(WINDOW_RADIUS) || !defined(XYZ_TO_LINEAR_SRGB)
 #error "TAYLOR_HIGHEST_ORDER, WINDOW_RADIUS and XYZ_TO_LINEAR_SRGB must be defined (see DiffractionShaders)"
@@ -271,14 +276,79 @@ vec2 normalisedTaylorSumAt(ivec2 m, NormalisedWeights w, int lastOrder) {
 }
 #endif
 
+#ifdef WINDOW_LOCAL
+// The window under this fragment's surface point (LocalWindow): its centre x0 on the scan in um (x along the
+// columns, y along the rows) and the covariance (xx, xy, yy) in um^2 of the pixel's footprint there, a Gaussian with
+// the covariance of the pixel's box (SkinFootprint.pixelCovarianceUm2). Set by main() before any lookup: from the
+// texture coordinates on a surface, from uniforms on a BRDF map.
+vec2 localCentreUm = vec2(0.0);
+vec3 localFootprintUm2 = vec3(0.0);
+
+// Pairs whose footprint factor is below 1e-7 (float32's resolution of their sum) are left out; where every pair's is,
+// the footprint covers the scan and the sum is the averaged window's diagonal: 2 pi^2 k^T Sigma k >= ln(1e7) for all
+// k = d / L with integer d != 0 once the smallest eigenvalue of diag(1/L) Sigma diag(1/L) reaches ln(1e7) / (2 pi^2).
+const float LOCAL_PAIR_EXPONENT_CUTOFF = 16.118;
+
+// diag(1/L) Sigma diag(1/L): the footprint's covariance in squared periods, (xx, xy, yy).
+vec3 localFootprintPeriods2() {
+    return localFootprintUm2 / vec3(patchExtentUm.x * patchExtentUm.x, patchExtentUm.x * patchExtentUm.y,
+                                    patchExtentUm.y * patchExtentUm.y);
+}
+
+// Whether any texel pair keeps a footprint factor of at least 1e-7: else the footprint covers the scan and the
+// window's texels add as powers, the averaged window (the same for every wavelength, so decided once per lookup
+// before the texels are read).
+bool localPairsMatter() {
+    vec3 m = localFootprintPeriods2();
+    float halfTrace = 0.5 * (m.x + m.z);
+    float smallest = halfTrace - sqrt(max(halfTrace * halfTrace - (m.x * m.z - m.y * m.y), 0.0));
+    return 2.0 * PI * PI * smallest < LOCAL_PAIR_EXPONENT_CUTOFF;
+}
+
+// sum_{k, l} A_k conj(A_l) exp(-2 pi i (o_k - o_l) . x0 / L) exp(-2 pi^2 q(o_k - o_l)) over the window's texels at
+// offsets o from its anchor (LocalWindow.power; only offsets enter, so the anchor's index drops out), with
+// q(d) = (d / L)^T Sigma (d / L): each amplitude turned by its phase, B_k = A_k exp(-2 pi i o_k . x0 / L), then
+// sum_k |B_k|^2 + 2 sum_{k < l} exp(-2 pi^2 q(o_k - o_l)) Re(B_k conj(B_l)).
+float localWindowPower(vec2 amplitude[(2 * WINDOW_RADIUS_X + 1) * (2 * WINDOW_RADIUS_Y + 1)]) {
+    const int WIDTH = 2 * WINDOW_RADIUS_X + 1;
+    const int COUNT = WIDTH * (2 * WINDOW_RADIUS_Y + 1);
+    float diagonal = 0.0;
+    for (int k = 0; k < COUNT; k++) {
+        diagonal += dot(amplitude[k], amplitude[k]);
+    }
+    vec3 m = localFootprintPeriods2();
+    vec2 f = fract(localCentreUm / patchExtentUm);
+    for (int k = 0; k < COUNT; k++) {
+        vec2 o = vec2(float(k % WIDTH - WINDOW_RADIUS_X), float(k / WIDTH - WINDOW_RADIUS_Y));
+        float angle = -2.0 * PI * dot(o, f);
+        vec2 a = amplitude[k];
+        amplitude[k] = vec2(a.x * cos(angle) - a.y * sin(angle), a.x * sin(angle) + a.y * cos(angle));
+    }
+    float pairs = 0.0;
+    for (int k = 0; k < COUNT; k++) {
+        ivec2 ok = ivec2(k % WIDTH, k / WIDTH);
+        for (int l = k + 1; l < COUNT; l++) {
+            vec2 d = vec2(ok - ivec2(l % WIDTH, l / WIDTH));
+            float exponent = 2.0 * PI * PI * (m.x * d.x * d.x + 2.0 * m.y * d.x * d.y + m.z * d.y * d.y);
+            if (exponent < LOCAL_PAIR_EXPONENT_CUTOFF) {
+                vec2 b = amplitude[k];
+                vec2 c = amplitude[l];
+                pairs += exp(-exponent) * (b.x * c.x + b.y * c.y);
+            }
+        }
+    }
+    return max(diagonal + 2.0 * pairs, 0.0);
+}
+#endif
+
 // The interpolation kernel of a variant along one axis (0 = x, 1 = y): the Gaussian window (FLSS, NMM) or sinc
 // (PQ). Defined by spectrum_gaussian.glsl or spectrum_sinc.glsl.
 float windowWeight(float offsetTexels, int axis);
 
 // The window's sum over the (2R_x+1)(2R_y+1) texels around the nearest texel floor(s + 0.5) of T_m = sum_n c_n DFT_n(m)
 // weighted by K(s - m) (WindowedTaylorSum.power; 003 Algorithm 3 lines 9-24 with the loops exchanged, which changes
-// nothing but the order of the float sums): |sum_m K T_m|^2 with WINDOW_FIXED, else sum_m K^2 |T_m|^2, the window
-// averaged over its position.
+// nothing but the order of the float sums): |sum_m K T_m|^2 with WINDOW_FIXED, the pairs under the footprint with
+// WINDOW_LOCAL (localWindowPower), else sum_m K^2 |T_m|^2, the window averaged over its position.
 float windowedTaylorPower(vec3 uvw, float lambdaNm) {
     vec2 s = lookupTexels(uvw.xy, lambdaNm);
     float c[TERM_COUNT];
@@ -292,6 +362,10 @@ float windowedTaylorPower(vec3 uvw, float lambdaNm) {
 #endif
     vec2 p = vec2(0.0);
     float power = 0.0;
+#ifdef WINDOW_LOCAL
+    bool pairs = localPairsMatter();
+    vec2 amplitude[(2 * WINDOW_RADIUS_X + 1) * (2 * WINDOW_RADIUS_Y + 1)];
+#endif
     for (int j = -WINDOW_RADIUS_Y; j <= WINDOW_RADIUS_Y; j++) {
         int my = anchor.y + j;
         float weightY = windowWeight(float(my) - s.y, 1);
@@ -303,15 +377,23 @@ float windowedTaylorPower(vec3 uvw, float lambdaNm) {
             vec2 sum = taylorSumAt(ivec2(mx, my), c, layerBase, lastOrder);
 #endif
             float weight = weightY * windowWeight(float(mx) - s.x, 0);
-#ifdef WINDOW_FIXED
+#if defined(WINDOW_FIXED)
             p += weight * sum;
+#elif defined(WINDOW_LOCAL)
+            if (pairs) {
+                amplitude[(j + WINDOW_RADIUS_Y) * (2 * WINDOW_RADIUS_X + 1) + i + WINDOW_RADIUS_X] = weight * sum;
+            } else {
+                power += weight * weight * dot(sum, sum);
+            }
 #else
             power += weight * weight * dot(sum, sum);
 #endif
         }
     }
-#ifdef WINDOW_FIXED
+#if defined(WINDOW_FIXED)
     return dot(p, p);
+#elif defined(WINDOW_LOCAL)
+    return pairs ? localWindowPower(amplitude) : power;
 #else
     return power;
 #endif

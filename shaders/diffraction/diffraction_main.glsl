@@ -52,6 +52,12 @@ uniform float lambdaNm;
 #ifdef DISPLAY_SRGB
 uniform float exposure;   // a window shows display sRGB of exposure x XYZ instead of storing linear XYZ
 #endif
+#ifdef WINDOW_LOCAL
+// A map has no surface point: the window's centre on the scan and the footprint's covariance come from the caller
+// (GpuBrdfMap.placeWindow; 0 and 0: the fixed window at the scan's origin).
+uniform vec2 mapWindowCentreUm;
+uniform vec3 mapFootprintUm2;
+#endif
 
 void main() {
     // Pixel (i, j), j counted from the top, has its centre at gl_FragCoord = (i + 0.5, S - j - 0.5), so
@@ -63,6 +69,10 @@ void main() {
         return;
     }
     vec3 wr = vec3(xy, sqrt(zz)); // Direction.fromProjected
+#ifdef WINDOW_LOCAL
+    localCentreUm = mapWindowCentreUm;
+    localFootprintUm2 = mapFootprintUm2;
+#endif
 #ifdef FILTERED
     setMapPixel(1.0 / mapSizePx); // the pixel's square of side 2 / S (Footprint.mapPixel)
 #endif
@@ -96,7 +106,31 @@ uniform float diffuseWeight;      // w_d of Algorithm 4
 #include "surface_stage.glsl"
 #endif
 
+#ifdef WINDOW_LOCAL
+// How the scan lies on the texture coordinates (ScanTiling): um of skin per unit of u and v, and whether the scan's
+// columns run along v.
+uniform vec2 skinUmPerTexcoord;
+uniform bool scanColumnsAlongV;
+
+// The window under this fragment's surface point: x0 = (u, v) scaled to um (ScanTiling.centreUm) and the Gaussian
+// with the covariance of the pixel's box mapped onto the skin by the screen-space derivatives J = dx0 / d(x, y),
+// (J_x J_x^T + J_y J_y^T) / 12 (SkinFootprint.pixelCovarianceUm2). Called in uniform control flow (derivatives).
+void setLocalWindow(vec2 texcoord) {
+    vec2 x0 = texcoord * skinUmPerTexcoord;
+    if (scanColumnsAlongV) {
+        x0 = x0.yx;
+    }
+    vec2 jx = dFdx(x0);
+    vec2 jy = dFdy(x0);
+    localCentreUm = x0;
+    localFootprintUm2 = vec3(jx.x * jx.x + jy.x * jy.x, jx.x * jx.y + jy.x * jy.y, jx.y * jx.y + jy.y * jy.y) / 12.0;
+}
+#endif
+
 void main() {
+#ifdef WINDOW_LOCAL
+    setLocalWindow(surfaceTexcoord);
+#endif
 #ifdef STAGE
     vec3 staged = toneMap(stagedSurfaceLinear());
     fragColor = vec4(frameOutput(staged), 1.0);

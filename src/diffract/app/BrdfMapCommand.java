@@ -10,13 +10,16 @@ import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
+import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.LightPolicy;
 import diffract.optics.LightSource;
 import diffract.optics.MapBand;
 import diffract.optics.PixelFilter;
+import diffract.optics.Quantity;
 import diffract.optics.Variant;
+import diffract.optics.WindowPlacement;
 import diffract.optics.io.SamplingCheck;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;
@@ -313,6 +316,10 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         }
         validateTile(where);
         BrdfSettings settings = brdf.apply(base(named)); // a refused value fails now too
+        if (settings.window().placement() == WindowPlacement.LOCAL) {
+            throw new UserInputException(OptionNames.of(Quantity.WINDOW_PLACEMENT) + ": "
+                    + DiffractionBrdf.LOCAL_NEEDS_A_SURFACE);
+        }
         LightSource lightSource = settings.illumination().light();
         if (!lightSource.isPoint() && light.lambdaNm != null) {
             throw new UserInputException("--lambda maps sample the light at its centre: drop --light-size-deg");

@@ -11,6 +11,9 @@ import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
+import diffract.optics.ScanTiling;
 import diffract.optics.WindowPlacement;
 import diffract.util.UserInputException;
 import picocli.CommandLine.ArgGroup;
@@ -85,8 +88,15 @@ final class BrdfOptions {
         @Option(names = "--window", paramLabel = "W", completionCandidates = OptionTypes.WindowPlacementNames.class,
                 description = "${COMPLETION-CANDIDATES}: the BRDF averaged over where the coherence window sits on "
                         + "the surface (default: what a pixel or a light wider than a coherence area sees; texels add "
-                        + "as powers) or one window at the DFT's origin, as the thesis (for comparisons).")
+                        + "as powers), one window at the DFT's origin, as the thesis (for comparisons), or local: the "
+                        + "window under each surface point of a mesh, averaged over the pixel's footprint on the skin "
+                        + "(glints of a close-up; flss and nmm on surfaces, with --skin-um-per-texcoord).")
         WindowPlacement placement;
+
+        @Option(names = "--skin-um-per-texcoord", paramLabel = "U[,V]", split = ",", hideParamSyntax = true,
+                description = "For --window local: micrometres of skin one unit of the mesh's texture coordinates "
+                        + "spans, along u and v (one number: both); the scan repeats every L / U along u.")
+        double[] skinUmPerTexcoord;
     }
 
     /** {@link SpectralSettings}. */
@@ -216,6 +226,14 @@ final class BrdfOptions {
         }
         if (window.placement != null) {
             b.windowPlacement(window.placement);
+        }
+        if (window.skinUmPerTexcoord != null) {
+            double[] t = window.skinUmPerTexcoord;
+            if (t.length < 1 || t.length > 2) {
+                throw new InvalidSettingException(Quantity.SCAN_TILING, "give one number or two, U,V; got "
+                        + t.length);
+            }
+            b.scanTiling(new ScanTiling(t[0], t[t.length - 1], base.window().tiling().columnsAlongV()));
         }
         SpectralSettings s = base.spectral();
         if (spectral.minNm != null || spectral.maxNm != null || spectral.stepNm != null

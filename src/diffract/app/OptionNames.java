@@ -22,6 +22,7 @@ final class OptionNames {
         FLAGS.put(Quantity.WINDOW_RADIUS, "--window-radius");
         FLAGS.put(Quantity.PQ_REPLICAS, "--pq-replicas");
         FLAGS.put(Quantity.WINDOW_PLACEMENT, "--window");
+        FLAGS.put(Quantity.SCAN_TILING, "--skin-um-per-texcoord");
         FLAGS.put(Quantity.LAMBDA_MIN, "--lambda-min");
         FLAGS.put(Quantity.LAMBDA_MAX, "--lambda-max");
         FLAGS.put(Quantity.LAMBDA_STEP, "--lambda-step");

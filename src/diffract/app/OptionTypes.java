@@ -222,7 +222,8 @@ final class OptionTypes {
     static final class WindowPlacementNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return List.of(WindowPlacement.AVERAGED.label(), WindowPlacement.FIXED.label()).iterator();
+            return List.of(WindowPlacement.AVERAGED.label(), WindowPlacement.FIXED.label(), WindowPlacement.LOCAL.label())
+                    .iterator();
         }
     }
 

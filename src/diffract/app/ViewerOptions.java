@@ -7,6 +7,10 @@ import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
+import diffract.render.DiffractionMaterials;
+import diffract.optics.Quantity;
+import diffract.optics.WindowPlacement;
+import diffract.optics.ScanTiling;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.RadiometricGain;
@@ -199,7 +203,11 @@ final class ViewerOptions {
             throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY
                     + " (the reference is drawn by ./diffract brdfmap)");
         }
-        brdf.apply(defaults()); // a refused value fails now too
+        BrdfSettings checked = brdf.apply(parsedScene != null ? parsedScene.material().settings() : defaults());
+        if (checked.window().placement() == WindowPlacement.LOCAL && !checked.window().tiling().given()) {
+            throw new UserInputException(OptionNames.of(Quantity.SCAN_TILING) + ": "
+                    + DiffractionMaterials.LOCAL_NEEDS_A_TILING);
+        }
         if (!(view.distance >= OrbitCamera.MIN_DISTANCE && view.distance <= OrbitCamera.MAX_DISTANCE)) {
             throw new UserInputException("--distance must be in [" + OrbitCamera.MIN_DISTANCE + ", "
                     + OrbitCamera.MAX_DISTANCE + "], got " + view.distance);
@@ -297,7 +305,8 @@ final class ViewerOptions {
                 : Scene.PigmentationSpec.none();
         // the snake, as the demo scene, is radiometric unless an exposure is given
         boolean radiometric = snake && !given("--exposure");
-        BrdfSettings base = defaults();
+        // the snake's ridges run along the body, its v: the scan's columns lie along v (ScanTiling)
+        BrdfSettings base = defaults().with(b -> b.scanTiling(new ScanTiling(0, 0, snake)));
         BrdfSettings settings = radiometric ? base.with(b -> b.spectral(
                 base.spectral().withNormalisation(MirrorNormalisation.ENERGY))) : base;
         double exposure = radiometric ? RadiometricGain.of(settings) : view.exposure;

@@ -22,6 +22,9 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
                 || lobes == null || gpu == null) {
             throw new NullPointerException("the variant and every group of settings are required");
         }
+        if (window.placement() == WindowPlacement.LOCAL && variant != Variant.FLSS && variant != Variant.NMM) {
+            throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, DiffractionBrdf.LOCAL_NEEDS_FLSS_OR_NMM);
+        }
     }
 
     /** The thesis' configuration for a variant. */
@@ -134,21 +137,30 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
 
         /** A fixed window radius R (the automatic radius off). */
         public Builder windowRadius(int r) {
-            return window(new WindowSettings(r, false, window.pqReplicas(), window.placement()));
+            return window(new WindowSettings(r, false, window.pqReplicas(), window.placement(), window.tiling()));
         }
 
         /** The window radius per axis from sigma_f (true), or the fixed radius (false). */
         public Builder automaticWindowRadius(boolean automatic) {
-            return window(new WindowSettings(window.radius(), automatic, window.pqReplicas(), window.placement()));
+            return window(new WindowSettings(window.radius(), automatic, window.pqReplicas(), window.placement(),
+                    window.tiling()));
         }
 
         /** Where the coherence window sits: averaged over its position, or fixed at the DFT's origin. */
         public Builder windowPlacement(WindowPlacement placement) {
-            return window(new WindowSettings(window.radius(), window.automatic(), window.pqReplicas(), placement));
+            return window(new WindowSettings(window.radius(), window.automatic(), window.pqReplicas(), placement,
+                    window.tiling()));
+        }
+
+        /** How the scan lies on a mesh's texture coordinates (the local window's). */
+        public Builder scanTiling(ScanTiling tiling) {
+            return window(new WindowSettings(window.radius(), window.automatic(), window.pqReplicas(),
+                    window.placement(), tiling));
         }
 
         public Builder pqReplicas(int replicas) {
-            return window(new WindowSettings(window.radius(), window.automatic(), replicas, window.placement()));
+            return window(new WindowSettings(window.radius(), window.automatic(), replicas, window.placement(),
+                    window.tiling()));
         }
 
         /** The illumination as a whole. */

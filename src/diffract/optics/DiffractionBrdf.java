@@ -56,6 +56,7 @@ public final class DiffractionBrdf {
      */
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
         IlluminationSettings illumination = settings.illumination();
+        requireNotLocal(settings);
         LightPolicy.of(settings).requireAccepted();
         if (settings.variant() == Variant.REFERENCE) {
             ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
@@ -83,6 +84,7 @@ public final class DiffractionBrdf {
      * ({@code settings.taylor().highestOrder()} does not apply; the centres fix their own orders).
      */
     public static DiffractionBrdf createPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
+        requireNotLocal(settings);
         if (settings.variant() == Variant.REFERENCE) {
             throw new IllegalArgumentException("the reference needs no Taylor expansion");
         }
@@ -93,6 +95,36 @@ public final class DiffractionBrdf {
         }
         int orders = terms.centres().highestOrder();
         return withSampling(settings, new PhaseCentredSpectrum(terms, t -> taylorSpectrum(settings, t, orders)));
+    }
+
+    /**
+     * FLSS or NMM with the window under one surface point, averaged over the pixel's footprint there
+     * ({@link LocalWindow}): the CPU's exact counterpart of a mesh's fragment under {@link WindowPlacement#LOCAL}.
+     */
+    public static DiffractionBrdf createLocal(BrdfSettings settings, TaylorTerms terms, LocalWindow local) {
+        if (settings.variant() != Variant.FLSS && settings.variant() != Variant.NMM) {
+            throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, LOCAL_NEEDS_FLSS_OR_NMM);
+        }
+        LightPolicy.of(settings).requireAccepted();
+        TaylorGaussianSpectrum spectrum = new TaylorGaussianSpectrum(terms, settings.taylor().highestOrder(),
+                settings.windowRadii(terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm()),
+                settings.taylor().tolerance(), settings.coherenceWindow());
+        return withSampling(settings, spectrum.under(local));
+    }
+
+    /** One line when the local window is asked of something without a surface point. */
+    public static final String LOCAL_NEEDS_A_SURFACE = "the local window follows the surface point a pixel sees, and a"
+            + " BRDF map has none: use averaged (what local converges to where a pixel covers the scan) or fixed (the"
+            + " window at the scan's origin)";
+
+    /** One line when the local window is asked of a method that does not sum the window's texels itself. */
+    public static final String LOCAL_NEEDS_FLSS_OR_NMM = "the local window is drawn by flss and nmm, which sum the"
+            + " window's texels per fragment; the other methods draw the window averaged over its position";
+
+    private static void requireNotLocal(BrdfSettings settings) {
+        if (settings.window().placement() == WindowPlacement.LOCAL) {
+            throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, LOCAL_NEEDS_A_SURFACE);
+        }
     }
 
     private static DiffractionBrdf withLobes(BrdfSettings settings, LobeSpectrum lobes) {

@@ -13,6 +13,7 @@ public enum Quantity {
     EXPANSION("the Taylor expansion"),
     WINDOW_RADIUS("the window radius R"),
     WINDOW_PLACEMENT("the coherence window's placement"),
+    SCAN_TILING("the micrometres of skin per unit of texture coordinates"),
     PQ_REPLICAS("the PQ replicas per axis"),
     LAMBDA_MIN("the shortest wavelength"),
     LAMBDA_MAX("the longest wavelength"),

@@ -38,6 +38,31 @@ public final class TaylorGaussianSpectrum extends WindowedTaylorSpectrum {
                 d -> CoherenceWindow.weight(d, sigmaX), d -> CoherenceWindow.weight(d, sigmaY), window.placement());
     }
 
+    /**
+     * This spectrum read through the window under one surface point, averaged over the pixel's footprint
+     * ({@link LocalWindow}): what FLSS and NMM draw on a mesh with {@link WindowPlacement#LOCAL}, in double precision.
+     */
+    public PatchSpectrum under(LocalWindow local) {
+        TaylorGaussianSpectrum self = this;
+        return new PatchSpectrum() {
+            @Override
+            public double power(double u, double v, double w, double lambdaUm) {
+                return sum.localPower(u * extentXUm() / lambdaUm, v * extentYUm() / lambdaUm, // eq. 1.8
+                        2.0 * Math.PI / lambdaUm * w, local);
+            }
+
+            @Override
+            public double extentXUm() {
+                return self.extentXUm();
+            }
+
+            @Override
+            public double extentYUm() {
+                return self.extentYUm();
+            }
+        };
+    }
+
     /** P = (Re, Im) before |.|^2 (tests of the early stop's bound). */
     double[] amplitude(double u, double v, double w, double lambdaUm) {
         return sum.amplitude(u * extentXUm() / lambdaUm, v * extentYUm() / lambdaUm, 2.0 * Math.PI / lambdaUm * w);

@@ -23,7 +23,13 @@ public enum WindowPlacement {
     /** The BRDF averaged over the window's position: sum_m G^2 |T_m|^2 (the default, the physics of a pixel). */
     AVERAGED,
     /** One window at the DFT's origin: |sum_m G T_m|^2, as the thesis (for comparisons). */
-    FIXED;
+    FIXED,
+    /**
+     * The window at the surface point a pixel sees, averaged over the pixel's footprint on the skin
+     * ({@link LocalWindow}): FIXED where the footprint is a point, AVERAGED where it covers the scan, spatially varying
+     * glints between. Needs a surface point, so only a mesh's FLSS and NMM draw it.
+     */
+    LOCAL;
 
     /** averaged, fixed: the name on the command line and in scene files. */
     public String label() {
@@ -39,6 +45,7 @@ public enum WindowPlacement {
         }
         throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, "unknown window placement '" + text
                 + "': use averaged (the BRDF averaged over where the coherence window sits, the default) or fixed"
-                + " (one window at the DFT's origin, as the thesis)");
+                + " (one window at the DFT's origin, as the thesis) or local (the window under each surface point, averaged"
+                + " over the pixel's footprint on the skin)");
     }
 }

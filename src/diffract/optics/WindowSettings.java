@@ -9,9 +9,12 @@ package diffract.optics;
  * @param automatic  the radius per axis follows sigma_f in texels ({@link WindowRadii#automatic}) instead
  * @param pqReplicas PQ's replicas per axis; 0 = enough to span the coherence length
  * @param placement  the BRDF averaged over the window's position (every method sums texels' powers), or one window
- *                   at the DFT's origin (every method sums complex amplitudes, then squares)
+ *                   at the DFT's origin (every method sums complex amplitudes, then squares), or under each
+ *                   surface point of a mesh ({@link WindowPlacement#LOCAL})
+ * @param tiling     how the scan lies on a mesh's texture coordinates, for the local window
  */
-public record WindowSettings(int radius, boolean automatic, int pqReplicas, WindowPlacement placement) {
+public record WindowSettings(int radius, boolean automatic, int pqReplicas, WindowPlacement placement,
+                             ScanTiling tiling) {
     /**
      * The largest fixed radius, a 33 x 33 window: sigma_f grows with the patch (2 texels for a 200 um patch at the
      * thesis' coherence), and the automatic radius stops at {@link WindowRadii#MAX_AUTOMATIC} for cost.
@@ -28,9 +31,14 @@ public record WindowSettings(int radius, boolean automatic, int pqReplicas, Wind
             throw new InvalidSettingException(Quantity.PQ_REPLICAS, Quantity.PQ_REPLICAS.words()
                     + " must be in 0.." + MAX_PQ_REPLICAS + " (0 = span the coherence length), got " + pqReplicas);
         }
-        if (placement == null) {
-            throw new NullPointerException("the window's placement is required");
+        if (placement == null || tiling == null) {
+            throw new NullPointerException("the window's placement and the scan's tiling are required");
         }
+    }
+
+    /** No tiling: the averaged and fixed windows need none. */
+    public WindowSettings(int radius, boolean automatic, int pqReplicas, WindowPlacement placement) {
+        this(radius, automatic, pqReplicas, placement, ScanTiling.NONE);
     }
 
     /**

@@ -9,7 +9,9 @@ import java.util.function.DoubleUnaryOperator;
  * contribute nothing. The variants differ only in the window's weight (Gaussian for FLSS/NMM, sinc for PQ).
  *
  * <p>With the window averaged over its position ({@link WindowPlacement#AVERAGED}) the texels add as powers,
- * sum_m weightX^2 weightY^2 |sum_n c_n DFT_n(m)|^2, over the same texels; fixed, as complex amplitudes, squared after.
+ * sum_m weightX^2 weightY^2 |sum_n c_n DFT_n(m)|^2, over the same texels; fixed, as complex amplitudes, squared after;
+ * under one surface point ({@link #localPower}), in pairs damped by the pixel's footprint. A LOCAL window read by
+ * {@link #power} sits at x0 = 0 with a point footprint: the fixed window.
  *
  * <p>Two settings do less work: the window's half-widths per axis ({@link WindowRadii}, e.g. from
  * sigma_f), and a tolerance at which the Taylor loop stops early ({@link TaylorBound#stopOrder} with this lookup's
@@ -67,6 +69,51 @@ final class WindowedTaylorSum {
     /** P = (Re, Im) of the window at the origin, before |.|^2. */
     double[] amplitude(double sx, double sy, double a) {
         return sum(sx, sy, a, false);
+    }
+
+    /**
+     * |P|^2 of the window under one surface point, averaged over the pixel's footprint ({@link LocalWindow}): the
+     * window's complex amplitudes A_m = weight T_m over the same texels, summed in pairs.
+     */
+    double localPower(double sx, double sy, double a, LocalWindow local) {
+        double[] coefficients = TaylorCoefficients.of(a, highestOrder);
+        int lastOrder = stopOrder(a);
+        int anchorX = (int) Math.floor(sx + 0.5);
+        int anchorY = (int) Math.floor(sy + 0.5);
+        int capacity = (2 * radii.x() + 1) * (2 * radii.y() + 1);
+        double[] re = new double[capacity];
+        double[] im = new double[capacity];
+        int[] offX = new int[capacity];
+        int[] offY = new int[capacity];
+        int count = 0;
+        for (int j = -radii.y(); j <= radii.y(); j++) {
+            int row = anchorY + j + terms.centreRow();
+            if (row < 0 || row >= terms.rows()) {
+                continue;
+            }
+            double wy = weightY.applyAsDouble(anchorY + j - sy);
+            for (int i = -radii.x(); i <= radii.x(); i++) {
+                int col = anchorX + i + terms.centreCol();
+                if (col < 0 || col >= terms.cols()) {
+                    continue;
+                }
+                double weight = wy * weightX.applyAsDouble(anchorX + i - sx);
+                int index = 2 * (row * terms.cols() + col);
+                double sumRe = 0;
+                double sumIm = 0;
+                for (int n = 0; n <= lastOrder; n++) {
+                    float[] term = terms.termUnsafe(n);
+                    sumRe += coefficients[n] * term[index];
+                    sumIm += coefficients[n] * term[index + 1];
+                }
+                re[count] = weight * sumRe;
+                im[count] = weight * sumIm;
+                offX[count] = i;
+                offY[count] = j;
+                count++;
+            }
+        }
+        return local.power(re, im, offX, offY, count, extentXUm(), extentYUm());
     }
 
     /** The window's sum: of the texels' powers ({power, 0}), or of their complex amplitudes ({Re, Im}). */

@@ -6,6 +6,11 @@ import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.Covariance2;
+import diffract.optics.InvalidSettingException;
+import diffract.optics.Quantity;
+import diffract.optics.ScanTiling;
+import diffract.optics.WindowPlacement;
+import diffract.optics.Covariance2;
 import diffract.optics.Direction;
 import diffract.optics.GaussHermite;
 import diffract.optics.InvalidSettingException;
@@ -38,7 +43,7 @@ public final class DiffractionMaterials {
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
         Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.BRDF_MAP,
                 monochromatic, false));
-        return common(m, textures, settings);
+        return mapWindow(common(m, textures, settings), settings);
     }
 
     /**
@@ -49,7 +54,7 @@ public final class DiffractionMaterials {
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                              FrameOutput output) {
         Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures, output));
-        return common(m, textures, settings).setFloat("exposure", exposure);
+        return mapWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
     }
 
     /**
@@ -66,7 +71,7 @@ public final class DiffractionMaterials {
                                    Texture2D pigmentation, float diffuseWeight, FrameOutput output) {
         Material m = new Material(DiffractionShaders.surfaceProgram(settings, textures, pigmentation != null,
                 output));
-        common(m, textures, settings).setFloat("exposure", exposure);
+        surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }
@@ -83,13 +88,50 @@ public final class DiffractionMaterials {
                 ? textures.lobesTable(reporter) : Optional.empty();
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
                 stage, table.isPresent(), output));
-        common(m, textures, settings).setFloat("exposure", exposure);
+        surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
         table.ifPresent(t -> filteredTable(m, t, settings));
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }
         return m;
     }
+
+    /**
+     * The local window's centre on the scan (um) and the footprint's covariance (um^2) of a BRDF map
+     * ({@code mapWindowCentreUm}, {@code mapFootprintUm2} in {@code diffraction_main.glsl}): a map has no surface
+     * point, so its caller places the window; a material of another placement is returned unchanged.
+     */
+    public static Material placeMapWindow(Material brdfMap, BrdfSettings settings, double centreXUm, double centreYUm,
+                                          Covariance2 footprintUm2) {
+        if (settings.window().placement() != WindowPlacement.LOCAL) {
+            return brdfMap;
+        }
+        return brdfMap.setVec2("mapWindowCentreUm", (float) centreXUm, (float) centreYUm)
+                .setVec3("mapFootprintUm2", (float) footprintUm2.xx(), (float) footprintUm2.xy(),
+                        (float) footprintUm2.yy());
+    }
+
+    /** A map's local window at the scan's origin, no footprint: the fixed window until it is placed. */
+    private static Material mapWindow(Material m, BrdfSettings settings) {
+        return placeMapWindow(m, settings, 0, 0, Covariance2.ZERO);
+    }
+
+    /** The scan's tiling of a surface's texture coordinates, for the local window ({@code setLocalWindow}). */
+    private static Material surfaceWindow(Material m, BrdfSettings settings) {
+        if (settings.window().placement() != WindowPlacement.LOCAL) {
+            return m;
+        }
+        ScanTiling tiling = settings.window().tiling();
+        if (!tiling.given()) {
+            throw new InvalidSettingException(Quantity.SCAN_TILING, LOCAL_NEEDS_A_TILING);
+        }
+        return m.setVec2("skinUmPerTexcoord", (float) tiling.umPerTexcoordU(), (float) tiling.umPerTexcoordV())
+                .setInt("scanColumnsAlongV", tiling.columnsAlongV() ? 1 : 0);
+    }
+
+    /** One line when a surface asks for the local window without saying how the scan lies on it. */
+    public static final String LOCAL_NEEDS_A_TILING = "the local window needs to know how the scan lies on the skin:"
+            + " give the micrometres of skin per unit of the mesh's texture coordinates";
 
     /**
      * The bake pass of a BAKED table: FLSS of {@code flssSettings} per sample of {@code grid}; set {@code bakeW} per

@@ -101,6 +101,8 @@ public final class DiffractionShaders {
         defines.put("WINDOW_RADIUS_Y", Integer.toString(radii.y()));
         if (settings.window().placement() == WindowPlacement.FIXED) {
             defines.put("WINDOW_FIXED", "1");
+        } else if (settings.window().placement() == WindowPlacement.LOCAL) {
+            defines.put("WINDOW_LOCAL", "1");
         }
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("LIGHT_NODES_MAX", Integer.toString(DiffractionMaterials.LIGHT_NODES_MAX));

@@ -77,6 +77,16 @@ public final class GpuBrdfMap implements AutoCloseable {
         this.target = new OffscreenTarget(new Renderer(new Group("brdf map").add(quad), new Camera(), new Frustum()));
     }
 
+    /**
+     * The local window's centre on the scan (um) and its footprint's covariance (um^2) for the maps that follow
+     * ({@link diffract.optics.WindowPlacement#LOCAL}: a map has no surface point; until placed, the window sits at
+     * the scan's origin with no footprint); nothing for other placements.
+     */
+    public GpuBrdfMap placeWindow(double centreXUm, double centreYUm, diffract.optics.Covariance2 footprintUm2) {
+        DiffractionMaterials.placeMapWindow(xyzMaterial, settings, centreXUm, centreYUm, footprintUm2);
+        return this;
+    }
+
     /** CIE XYZ per pixel (D65 white at Y = 1), 3 floats per pixel, rows from the top, as BrdfMap.xyz. */
     public float[] xyz(Direction wi, int size) {
         use(xyzMaterial, wi, size);

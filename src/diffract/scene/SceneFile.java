@@ -24,6 +24,7 @@ import diffract.optics.TaylorExpansion;
 import diffract.optics.TaylorSettings;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
+import diffract.optics.ScanTiling;
 import diffract.optics.WindowPlacement;
 import diffract.optics.WindowSettings;
 import diffract.util.UserInputException;
@@ -58,7 +59,7 @@ public final class SceneFile {
     static final String RADIOMETRIC = "radiometric";
     static final List<String> PIXEL_FILTERS = List.of("box", "point");
     static final List<String> LIGHT_PROFILES = List.of("gaussian", "disc");
-    static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed");
+    static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed", "local");
     /** The catalogue's names and their camelCase spellings. */
     static final List<String> PROCEDURAL_NAMES = proceduralNames();
     static final List<String> LEVELLING_NAMES = Arrays.stream(Levelling.values()).map(Levelling::label).toList();
@@ -127,7 +128,7 @@ public final class SceneFile {
         LightSource[] lightSource = new LightSource[1];
         Scene.LightSpec light = light(root.object("light"), lightSource);
         Scene.ShapeSpec shape = shape(root.object("shape"));
-        Scene.MaterialSpec material = material(root.object("material"), lightSource[0]);
+        Scene.MaterialSpec material = material(root.object("material"), lightSource[0], shape);
         Scene scene = new Scene(source, image, camera, light, shape, material,
                 root.choice("mode", MODES, "surface").equals("brdfMap") ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE,
                 StageKeys.stage(root));
@@ -279,9 +280,11 @@ public final class SceneFile {
             Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
             Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
             Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.FRESNEL, "fresnel"),
-            Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"));
+            Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"),
+            Map.entry(Quantity.SCAN_TILING, "skinUmPerTexcoord"));
 
-    private static Scene.MaterialSpec material(SceneObject material, LightSource lightSource) {
+    private static Scene.MaterialSpec material(SceneObject material, LightSource lightSource,
+                                                Scene.ShapeSpec shape) {
         Scene.PatchSpec patch = patch(material.object("patch"));
         BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", VARIANTS, "lobes")));
         boolean radiometric = radiometric(material);
@@ -318,7 +321,16 @@ public final class SceneFile {
                     SceneObject.Range.above(0, SpectralSettings.MAX_STEP_NM), 5), normalisation));
             windowRadius(material, b);
             b.pqReplicas(material.integer("pqReplicas", SceneObject.Range.closed(0, WindowSettings.MAX_PQ_REPLICAS), 0));
-            b.windowPlacement(WindowPlacement.parse(material.choice("window", WINDOW_PLACEMENTS, "averaged")));
+            WindowPlacement placement = WindowPlacement.parse(material.choice("window", WINDOW_PLACEMENTS, "averaged"));
+            b.windowPlacement(placement);
+            // the scan's columns lie along the mesh's tangent: along v on a snake whose ridges run along the body
+            double[] tiling = material.pair("skinUmPerTexcoord",
+                    SceneObject.Range.above(0, ScanTiling.MAX_UM_PER_TEXCOORD));
+            b.scanTiling(new ScanTiling(tiling[0], tiling[1], shape.ridges() == SnakeMesh.RidgeDirection.ALONG_BODY));
+            if (placement == WindowPlacement.LOCAL && tiling[0] == 0) {
+                throw material.problem("window", "\"local\" needs \"skinUmPerTexcoord\": the micrometres of skin one"
+                        + " unit of the mesh's texture coordinates spans, a number or [u, v]");
+            }
             b.illumination(illumination(material).withLight(lightSource)
                     .withFresnel(FresnelModel.parse(material.choice("fresnel", FRESNEL_MODELS, "physical")))
                     .withPixelFilter(PixelFilter.parse(material.choice("pixelFilter", PIXEL_FILTERS, "box"))));
@@ -336,7 +348,12 @@ public final class SceneFile {
                     + "\"pigmentation\": \"procedural\" or {\"file\": \"IMAGE\"}");
         }
         double diffuseWeight = material.number("diffuseWeight", SceneObject.Range.closed(0, 1), 0.2);
-        BrdfSettings settings = b.build();
+        BrdfSettings settings;
+        try {
+            settings = b.build(); // checks the groups together: the local window's method
+        } catch (InvalidSettingException e) {
+            throw material.problem(MATERIAL_KEYS.getOrDefault(e.quantity(), "variant"), e.getMessage());
+        }
         double exposure = radiometric ? RadiometricGain.of(settings)
                 : material.number("exposure", SceneObject.Range.above(0, 1e6), 10);
         material.finish();

@@ -217,6 +217,28 @@ final class SceneObject {
                 + (node.value() instanceof List<?> l ? "an array of " + l.size() + " items" : node.typeName()));
     }
 
+    /**
+     * A positive number or an array of two, [u, v], within {@code range}: one number stands for both; 0 when absent.
+     */
+    double[] pair(String key, Range range) {
+        if (!has(key)) {
+            return new double[2];
+        }
+        JsonTree.Located node = raw(key);
+        if (node.value() instanceof Double) {
+            double value = number(key, range);
+            return new double[] {value, value};
+        }
+        if (node.value() instanceof List<?> items && items.size() == 2
+                && ((JsonTree.Located) items.get(0)).value() instanceof Double a
+                && ((JsonTree.Located) items.get(1)).value() instanceof Double b && range.contains(a)
+                && range.contains(b)) {
+            return new double[] {a, b};
+        }
+        throw problem(key, "must be a number or an array of two numbers [u, v], each " + range.describe() + ", got "
+                + (node.value() instanceof List<?> l ? "an array of " + l.size() + " items" : node.typeName()));
+    }
+
     /** A non-zero vector [x, y, z]. */
     double[] direction(String key, JsonTree.Located node) {
         double[] v = vector3(key, node);

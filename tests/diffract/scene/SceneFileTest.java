@@ -104,6 +104,31 @@ class SceneFileTest {
                 SceneFile.load(file).material().settings().spectral().normalisation());
     }
 
+    /**
+     * {@code "window": "local"} takes the scan's tiling of the texture coordinates, one number or [u, v]; the scan's
+     * columns lie along v on a snake whose ridges run along the body; without the tiling, with another method or
+     * with a wrong type the scene is refused in one line.
+     */
+    @Test
+    void theLocalWindowTakesTheScansTiling() throws IOException {
+        Path file = dir.resolve("local.json");
+        Files.writeString(file, valid(",\n    \"window\": \"local\", \"skinUmPerTexcoord\": [250, 400]"));
+        diffract.optics.WindowSettings w = SceneFile.load(file).material().settings().window();
+        assertEquals(diffract.optics.WindowPlacement.LOCAL, w.placement());
+        assertEquals(new diffract.optics.ScanTiling(250, 400, false), w.tiling());
+        Files.writeString(file, valid(",\n    \"window\": \"local\", \"skinUmPerTexcoord\": 300")
+                .replace("\"kind\": \"plane\"", "\"kind\": \"snake\""));
+        assertEquals(new diffract.optics.ScanTiling(300, 300, true),
+                SceneFile.load(file).material().settings().window().tiling());
+        String m = message(valid(",\n    \"window\": \"local\""));
+        assertTrue(m.startsWith("7: material.window: \"local\" needs \"skinUmPerTexcoord\""), m);
+        m = message(valid(",\n    \"window\": \"local\", \"skinUmPerTexcoord\": [1, 2, 3]"));
+        assertTrue(m.startsWith("7: material.skinUmPerTexcoord: must be a number or an array of two numbers [u, v]"), m);
+        m = message(valid(",\n    \"window\": \"local\", \"skinUmPerTexcoord\": 300").replace("\"flss\"",
+                "\"lobes\""));
+        assertTrue(m.startsWith("7: material.window: the local window is drawn by flss and nmm"), m);
+    }
+
     @Test
     void radiometricExposureRefusesThePeakNormalisationAndOtherWords() throws IOException {
         String m = message(valid(",\n    \"exposure\": \"radiometric\", \"normalisation\": \"peak\""));
