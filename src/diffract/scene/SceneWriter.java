@@ -167,6 +167,10 @@ public final class SceneWriter {
         material.put("windowRadius", window.automatic() ? "auto" : (Object) window.radius());
         material.put("pqReplicas", window.pqReplicas());
         material.put("window", window.placement().label());
+        if (window.tiling().umPerTexcoordU() > 0) {
+            material.put("skinUmPerTexcoord", List.of(window.tiling().umPerTexcoordU(),
+                    window.tiling().umPerTexcoordV()));
+        }
         IlluminationSettings illumination = s.illumination();
         material.put("coherenceLengthUm", illumination.coherenceLengthUm());
         material.put("refractiveIndex", illumination.refractiveIndex());

@@ -60,6 +60,19 @@ class SceneWriterTest {
     }
 
     @Test
+    void theLocalWindowKeepsItsTiling() {
+        Scene local = SceneFile.parse("""
+                {"camera": {"eye": [0, 0, 3]}, "light": {"thetaDeg": 30}, "shape": {"kind": "sphere"},
+                 "material": {"patch": {"procedural": "blazed"}, "variant": "flss", "window": "local",
+                              "skinUmPerTexcoord": [120, 340]}}
+                """, "local.json", Path.of("/"), null);
+        String text = SceneWriter.json(local);
+        assertTrue(text.contains("\"window\" : \"local\""), text);
+        Scene again = SceneFile.parse(text, "again.json", Path.of("/"), null);
+        assertEquals(local.material().settings(), again.material().settings());
+    }
+
+    @Test
     void overridesChangeTheSceneThatIsWritten() {
         Scene scene = SceneFile.parse("""
                 {"camera": {"eye": [0, 0, 3]}, "light": {"thetaDeg": 30, "phiDeg": 90},
