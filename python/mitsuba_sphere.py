@@ -2,7 +2,9 @@
 
     python3 python/mitsuba_sphere.py table.json -o sphere.png [--size 160] [--spp 64] [--exposure 1000]
 
-The sphere's shading frame is Mitsuba's (x along dp/du, the longitude), so the patch's columns run round the sphere.
+The sphere's shading frame is Mitsuba's (x along dp/du, the longitude); the sphere is turned so that its poles lie on
+the world's y axis, so the patch's columns run round it horizontally, as on diffract's own sphere with its tangent
+projected from x (docs/mitsuba-figure.sh renders both).
 The PNG is sRGB-encoded at the exposure, clipped; the specular highlight saturates so that the orders show.
 """
 import argparse
@@ -22,7 +24,7 @@ def main():
     parser.add_argument("table")
     parser.add_argument("-o", "--output", required=True)
     parser.add_argument("--size", type=int, default=160)
-    parser.add_argument("--spp", type=int, default=64)
+    parser.add_argument("--spp", type=int, default=256)
     parser.add_argument("--exposure", type=float, default=1000.0)
     args = parser.parse_args()
     diffract_mitsuba.register()
@@ -35,8 +37,9 @@ def main():
             "film": {"type": "hdrfilm", "width": args.size, "height": args.size, "rfilter": {"type": "box"}},
             "sampler": {"type": "independent", "sample_count": args.spp},
         },
-        "sphere": {"type": "sphere", "bsdf": {"type": "diffract", "filename": args.table, "mode": "relative",
-                                              "scale": args.exposure}},
+        # poles on the world's y axis: the longitude (dp/du, the patch's x) runs horizontally across the view
+        "sphere": {"type": "sphere", "to_world": mi.ScalarTransform4f().rotate(axis=[1, 0, 0], angle=-90),
+                   "bsdf": {"type": "diffract", "filename": args.table, "mode": "relative", "scale": args.exposure}},
         # a small round light (1.4 degrees in radius, irradiance pi) above and behind the camera's right: a light of
         # finite size widens the orders from lines thinner than a pixel into bands
         "sun": {"type": "sphere", "center": [9, 12, 13.2], "radius": 0.5,

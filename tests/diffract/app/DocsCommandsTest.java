@@ -36,8 +36,9 @@ class DocsCommandsTest {
         assertTrue(commands.size() >= 20, "found only " + commands.size() + " commands");
         List<String> failures = new ArrayList<>();
         for (String command : commands) {
-            String[] args = command.substring(command.indexOf("./diffract ") + "./diffract ".length()).trim()
-                    .split("\\s+");
+            // a redirection of the output (> FILE) is the shell's, not the command's
+            String[] args = command.substring(command.indexOf("./diffract ") + "./diffract ".length())
+                    .replaceFirst("\\s>\\s*\\S+\\s*$", "").trim().split("\\s+");
             try {
                 new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true).parseArgs(args);
             } catch (CommandLine.ParameterException e) {
