@@ -29,7 +29,12 @@ local1=$(seconds ./diffract submit --local 1 --piece-count "$PIECES" -- brdfmap 
 cp "$out/log.txt" "$out/l1.log"
 local2=$(seconds ./diffract submit --local 2 --piece-count "$PIECES" -- brdfmap "${MAP[@]}" -o "$out/l2.png" --pfm "$out/l2.pfm")
 cp "$out/log.txt" "$out/l2.log"
-runs=(one l1 l2)
+# the same two with one processor per worker: what a second worker adds when each has a core of its own
+local1c=$(seconds ./diffract submit --local 1 --piece-count "$PIECES" --cpus-per-task 1 -- brdfmap "${MAP[@]}" -o "$out/l1c.png" --pfm "$out/l1c.pfm")
+cp "$out/log.txt" "$out/l1c.log"
+local2c=$(seconds ./diffract submit --local 2 --piece-count "$PIECES" --cpus-per-task 1 -- brdfmap "${MAP[@]}" -o "$out/l2c.png" --pfm "$out/l2c.pfm")
+cp "$out/log.txt" "$out/l2c.log"
+runs=(one l1 l2 l1c l2c)
 if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed)$'; then
     slurm=$(seconds ./diffract submit --slurm --piece-count "$PIECES" --cpus-per-task 1 --keep-pieces "$out/slurm" \
         -- brdfmap "${MAP[@]}" -o "$out/s.png" --pfm "$out/s.pfm")
@@ -74,6 +79,8 @@ sum() {  # column of pieces(): the sum
     echo "| submit --local 1 --piece-count 1 | $one | $(sum "$out/one.log" 4) | $(sum "$out/one.log" 5) | $(sum "$out/one.log" 6) |"
     echo "| submit --local 1 --piece-count $PIECES | $local1 | $(sum "$out/l1.log" 4) | $(sum "$out/l1.log" 5) | $(sum "$out/l1.log" 6) |"
     echo "| submit --local 2 --piece-count $PIECES | $local2 | $(sum "$out/l2.log" 4) | $(sum "$out/l2.log" 5) | $(sum "$out/l2.log" 6) |"
+    echo "| submit --local 1 --piece-count $PIECES --cpus-per-task 1 | $local1c | $(sum "$out/l1c.log" 4) | $(sum "$out/l1c.log" 5) | $(sum "$out/l1c.log" 6) |"
+    echo "| submit --local 2 --piece-count $PIECES --cpus-per-task 1 | $local2c | $(sum "$out/l2c.log" 4) | $(sum "$out/l2c.log" 5) | $(sum "$out/l2c.log" 6) |"
     if [ -n "${slurm:-}" ]; then
         echo "| submit --slurm --piece-count $PIECES --cpus-per-task 1 (one-node Slurm, $(nproc) CPUs) | $slurm | | | |"
     fi
@@ -82,8 +89,10 @@ sum() {  # column of pieces(): the sum
     echo "ending, parsing options, writing the piece), *setup* loading the patch and building the BRDF, *work* its"
     echo "pixels. The reference's exact spectrum expands the patch around phase centres as its pixels first need them:"
     echo "each process computes those its rows need, so that cost is part of *work* and paid again by every piece;"
-    echo "the work of 8 pieces against that of 1 shows it. With --local 1 a worker has both cores; with --local 2 each"
-    echo "has one."
+    echo "the work of 8 pieces against that of 1 shows it. By default the J workers share the machine's processors"
+    echo "(--local 1: one worker with both cores; --local 2: two with one each), so a second worker adds only what"
+    echo "one process's threads leave unused; with --cpus-per-task 1 each worker has one core whatever J, and the"
+    echo "second worker's gain is $(echo "scale=2; $local1c / $local2c" | bc)x."
     echo
     echo "| piece | rows | local 1: wall | start | setup | work | local 2: wall | start | setup | work |"
     echo "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"

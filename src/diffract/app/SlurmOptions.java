@@ -24,7 +24,9 @@ final class SlurmOptions {
     Integer maxRunning;
 
     @Option(names = "--cpus-per-task", paramLabel = "C",
-            description = "With --slurm: the processors each task asks for and uses (default 1).")
+            description = "The processors each piece uses: with --slurm those each task asks for (default 1); with "
+                    + "--local J those each worker is told it has (default: this machine's processors shared "
+                    + "among the J workers).")
     Integer cpusPerTask;
 
     @Option(names = "--gpus-per-task", paramLabel = "G",
@@ -63,9 +65,6 @@ final class SlurmOptions {
             if (maxRunning != null) {
                 given.add("--max-running");
             }
-            if (cpusPerTask != null) {
-                given.add("--cpus-per-task");
-            }
             if (gpusPerTask != null) {
                 given.add("--gpus-per-task");
             }
@@ -88,6 +87,7 @@ final class SlurmOptions {
                 throw new UserInputException(String.join(", ", given) + (given.size() > 1 ? " go" : " goes")
                         + " with --slurm (a job array), not --local");
             }
+            atLeast("--cpus-per-task", cpusPerTask, 1);
             return;
         }
         atLeast("--max-running", maxRunning, 1);

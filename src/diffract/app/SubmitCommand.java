@@ -100,10 +100,13 @@ final class SubmitCommand implements Callable<Integer> {
                 piece.addAll(List.of("--tile", i + "/" + count, "--pieces", dir.toString(), "--quiet"));
                 pieces.add(piece);
             }
-            System.out.printf(Locale.ROOT, "%d pieces of %d %s on %d local workers, into %s%n", count,
-                    single.items(), single.itemsName(), Math.min(workers, count), dir);
+            int processors = slurm.cpusPerTask != null ? slurm.cpusPerTask
+                    : LocalWorkers.share(Math.min(workers, count));
+            System.out.printf(Locale.ROOT, "%d pieces of %d %s on %d local workers of %d processor%s each, into %s%n",
+                    count, single.items(), single.itemsName(), Math.min(workers, count), processors,
+                    processors == 1 ? "" : "s", dir);
             int[] done = {0};
-            LocalWorkers.Finished failed = LocalWorkers.run(pieces, Math.min(workers, count), f -> {
+            LocalWorkers.Finished failed = LocalWorkers.run(pieces, Math.min(workers, count), processors, f -> {
                 if (f.exitCode() == 0) {
                     done[0]++;
                     System.out.println(progressLine(f, count, single, done[0], start));

@@ -114,11 +114,19 @@ class SubmitCommandTest {
     }
 
     @Test
+    void localWorkersTakeTheProcessorsTheyAreGivenAndNoFewerThanOne() {
+        Object[] none = CliTest.run("submit", "--local", "2", "--cpus-per-task", "0", "--", "brdfmap",
+                "--synthetic", "blazed", "--theta-i", "30", "--size", "16", "-o", dir.resolve("x.png").toString());
+        assertEquals(2, none[0]);
+        assertTrue(((String) none[2]).contains("--cpus-per-task must be at least 1"), (String) none[2]);
+    }
+
+    @Test
     void slurmRefusesWhatItCannotRunInOneLine() {
         List<String[]> refused = List.of(
                 args(List.of("submit", "--slurm", "--keep-pieces", dir.toString())),
                 args(List.of("submit", "--slurm", "--piece-count", "2")),
-                args(List.of("submit", "--local", "2", "--max-running", "2", "--cpus-per-task", "2")),
+                args(List.of("submit", "--local", "2", "--max-running", "2", "--gpus-per-task", "2")),
                 args(List.of("submit", "--local", "2", "--slurm", "--piece-count", "2", "--keep-pieces",
                         dir.toString())),
                 args(List.of("submit", "--piece-count", "2")),
@@ -129,7 +137,7 @@ class SubmitCommandTest {
                 args(List.of("submit", "--slurm", "--piece-count", "2", "--keep-pieces", dir.toString(),
                         "--sbatch-option", "account=lab")));
         List<String> expected = List.of("--slurm needs --piece-count N", "--slurm needs --keep-pieces DIR",
-                "--max-running, --cpus-per-task go with --slurm", "--local and --slurm exclude each other",
+                "--max-running, --gpus-per-task go with --slurm", "--local and --slurm exclude each other",
                 "submit needs --local J (worker processes here) or --slurm", "--max-running must be at least 1",
                 "--partition takes one word", "--sbatch-option takes one sbatch option as --name=value");
         for (int i = 0; i < refused.size(); i++) {

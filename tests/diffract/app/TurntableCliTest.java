@@ -111,10 +111,10 @@ class TurntableCliTest {
         Object[] result = CliTest.run(concat(scene, "-o", whole.toString()));
         assertEquals(0, result[0], (String) result[2]);
         Path merged = dir.resolve("submitted.gif");
-        String[] submit = {"submit", "--local", "2", "--piece-count", "3", "--"};
+        String[] submit = {"submit", "--local", "2", "--piece-count", "3", "--cpus-per-task", "1", "--"};
         result = CliTest.run(concat(concat(submit, scene), "-o", merged.toString()));
         assertEquals(0, result[0], (String) result[2]);
-        assertTrue(((String) result[1]).contains("3 pieces of 4 frames on 2 local workers"), (String) result[1]);
+        assertTrue(((String) result[1]).contains("3 pieces of 4 frames on 2 local workers of 1 processor each"), (String) result[1]);
         assertArrayEquals(Files.readAllBytes(whole), Files.readAllBytes(merged), "the GIF submit leaves");
     }
 
