@@ -7,7 +7,7 @@
 # Writes docs/pieces.md. SIZE=64 bash docs/pieces.sh for a quicker run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-SIZE=${SIZE:-96}
+SIZE=${SIZE:-256}
 PIECES=${PIECES:-8}
 MAP=(--patch assets/patches/elaphe-100px.gwy --theta-i 30 --size "$SIZE" --exposure auto)
 ./diffract --version > /dev/null  # builds the jar first, outside the timings
