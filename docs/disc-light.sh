@@ -49,7 +49,8 @@ for name in $PATCHES; do
         echo "$name $d deg: $line"
     done
 done
-[ "$APPEND" = 1 ] && sed -i '/CPU cores (/d; ${/^$/d}' "$table"
+# appending: the old footer goes, and the blank line above it, so that the new rows join the table
+[ "$APPEND" = 1 ] && sed -i '/CPU cores/d' "$table" && sed -i -e :a -e '/^\n*$/{$d;N;ba' -e '}' "$table"
 echo >>"$table"
 echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))" >>"$table"
 cat "$table"
