@@ -376,9 +376,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
      */
     @Override
     public void validateSplit(int pieceCount) {
-        if (tiles.tile != null || tiles.pieces != null) {
-            throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the brdfmap options");
-        }
+        tiles.refuseForSubmit(name());
         Engine where = validate();
         if (where == Engine.GPU || brdf.auto()) {
             throw new UserInputException("submit splits the CPU's work (a GPU map takes seconds): run brdfmap alone, "
@@ -393,14 +391,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
 
     /** --tile and --pieces go together, on the CPU, without the outputs that only merge writes. */
     private void validateTile(Engine where) {
-        if (tiles.tile == null) {
-            if (tiles.pieces != null) {
-                throw new UserInputException("--pieces DIR goes with --tile I/N (which band of rows to compute)");
-            }
+        if (!tiles.requested("which band of rows to compute")) {
             return;
-        }
-        if (tiles.pieces == null) {
-            throw new UserInputException("--tile " + tiles.tile + " needs --pieces DIR, the folder its piece goes to");
         }
         if (output != null || picture.pfm != null || picture.exr != null) {
             throw new UserInputException("--tile writes one piece into --pieces " + tiles.pieces + "; the map's "
@@ -410,11 +402,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             throw new UserInputException("--tile splits the CPU's work (a GPU map takes seconds): drop --tile, or "
                     + "--engine gpu and --variant auto");
         }
-        if (tiles.tile.count() > picture.size) {
-            throw new UserInputException("--tile " + tiles.tile + ": a map of --size " + picture.size + " has only "
-                    + picture.size + " rows to split");
-        }
-        OutputPaths.requireWritableFolder(tiles.pieces, "--pieces");
+        tiles.requireSplittable(picture.size, "a map of --size " + picture.size + " has only " + picture.size
+                + " rows");
     }
 
     /**

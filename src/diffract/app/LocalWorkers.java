@@ -25,22 +25,16 @@ final class LocalWorkers {
     private LocalWorkers() {
     }
 
-    /**
-     * Runs every argument list (a command of {@link Main}), {@code workers} at a time, in order, each worker told it
-     * has its share of this machine's processors; {@code finished} hears of each as it ends. The first failure stops
-     * those still running and is returned; else null.
-     */
-    static Finished run(List<List<String>> commands, int workers, Consumer<Finished> finished)
-            throws IOException, InterruptedException {
-        return run(commands, workers, share(workers), finished);
-    }
-
     /** A worker's share of this machine's processors when {@code workers} run at once: at least 1. */
     static int share(int workers) {
         return Math.max(1, Runtime.getRuntime().availableProcessors() / workers);
     }
 
-    /** As {@link #run(List, int, Consumer)}, each worker told it has {@code processors} processors. */
+    /**
+     * Runs every argument list (a command of {@link Main}), {@code workers} at a time, in order, each worker told it
+     * has {@code processors} processors ({@link #share} of them by default); {@code finished} hears of each as it
+     * ends. The first failure stops those still running and is returned; else null.
+     */
     static Finished run(List<List<String>> commands, int workers, int processors, Consumer<Finished> finished)
             throws IOException, InterruptedException {
         List<String> prefix = javaCommand(processors);

@@ -154,9 +154,7 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
 
     @Override
     public void validateSplit(int pieceCount) {
-        if (tiles.tile != null || tiles.pieces != null) {
-            throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the render options");
-        }
+        tiles.refuseForSubmit(name());
         Integer frames = turntable.frames;
         if (frames == null) {
             throw new UserInputException("submit splits a turntable's frames: add --turntable FRAMES to the render "
@@ -204,27 +202,17 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
 
     /** --tile and --pieces go with --turntable, without -o (merge writes it), and split at most a piece per frame. */
     private void validateTile(Integer frames) {
-        if (tiles.tile == null) {
-            if (tiles.pieces != null) {
-                throw new UserInputException("--pieces DIR goes with --tile I/N (which run of frames to render)");
-            }
+        if (!tiles.requested("which run of frames to render")) {
             return;
         }
         if (frames == null) {
             throw new UserInputException("--tile splits a turntable's frames: add --turntable FRAMES");
         }
-        if (tiles.pieces == null) {
-            throw new UserInputException("--tile " + tiles.tile + " needs --pieces DIR, the folder its piece goes to");
-        }
         if (output != null) {
             throw new UserInputException("--tile writes one piece into --pieces " + tiles.pieces + "; the turntable's "
                     + "-o is written by 'diffract merge " + tiles.pieces + " -o OUT.gif': drop it");
         }
-        if (tiles.tile.count() > frames) {
-            throw new UserInputException("--tile " + tiles.tile + ": a turntable of " + frames + " frames has only "
-                    + frames + " frames to split");
-        }
-        OutputPaths.requireWritableFolder(tiles.pieces, "--pieces");
+        tiles.requireSplittable(frames, "a turntable of " + frames + " frames has only " + frames + " frames");
     }
 
     /** With --tile: the piece's frames, as linear floats, written with their manifest into --pieces DIR. */
@@ -264,9 +252,6 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
             throw new UserInputException("merge: the pieces' options name no --turntable: compute them again");
         }
         OutputPaths.require(outputs(frames));
-        if (output.getFileName().toString().toLowerCase(Locale.ROOT).endsWith(".exr")) {
-            throw new UserInputException("merge: a turntable is written as OUT.gif or OUT.png, not OpenEXR");
-        }
         Scene.ImageSize image = options.imageSize(new Scene.ImageSize(512, 512));
         int perFrame = image.width() * image.height() * 3;
         if ((long) perFrame * frames != floats.length) {

@@ -1,5 +1,7 @@
 package diffract.app;
 
+import diffract.util.OutputPaths;
+import diffract.util.UserInputException;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -25,6 +27,42 @@ final class TileOptions {
     @Option(names = "--pieces", paramLabel = "DIR",
             description = "With --tile: the folder the piece and its manifest go to (made if missing).")
     Path pieces;
+
+    /**
+     * Whether this run computes a piece: --tile given, with --pieces; --pieces without --tile is refused
+     * ({@code piece} says what a piece is, e.g. "which band of rows to compute").
+     */
+    boolean requested(String piece) {
+        if (tile == null) {
+            if (pieces != null) {
+                throw new UserInputException("--pieces DIR goes with --tile I/N (" + piece + ")");
+            }
+            return false;
+        }
+        if (pieces == null) {
+            throw new UserInputException("--tile " + tile + " needs --pieces DIR, the folder its piece goes to");
+        }
+        return true;
+    }
+
+    /**
+     * Refuses more pieces than the result has items ({@code whole} says so, e.g. "a map of --size 16 has only 16
+     * rows"), and a --pieces folder that cannot be written.
+     */
+    void requireSplittable(int items, String whole) {
+        if (tile.count() > items) {
+            throw new UserInputException("--tile " + tile + ": " + whole + " to split");
+        }
+        OutputPaths.requireWritableFolder(pieces, "--pieces");
+    }
+
+    /** What submit refuses: it chooses --tile and --pieces itself for the {@code command} it splits. */
+    void refuseForSubmit(String command) {
+        if (tile != null || pieces != null) {
+            throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the " + command
+                    + " options");
+        }
+    }
 
     /** The options a command was given, less --tile and --pieces: what merge parses to write the result. */
     static List<String> argumentsWithoutTile(CommandSpec spec) {

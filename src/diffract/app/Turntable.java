@@ -38,7 +38,7 @@ final class Turntable {
             }
         });
         if (gif) {
-            AnimatedGif.write(output, pictures, size.width(), size.height(), frameMs);
+            write(output, pictures, size, frameMs);
         }
     }
 

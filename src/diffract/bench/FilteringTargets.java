@@ -65,7 +65,7 @@ public final class FilteringTargets {
     /**
      * @param lobes          the lobes method's settings (coherence, Fresnel, quadrature); the light size is set per row
      * @param bakedSamples   (u, v) samples of the baked table, 0 for automatic ({@link diffract.optics.BakedGrid}: what
-     *                       brdfmap and the scenes take), negative for no baked table
+     *                       brdfmap and the scenes take)
      * @param bakedWSamples  w samples of the baked table, 0 for automatic
      */
     public FilteringTargets(ReferenceMaps references, BrdfSettings lobes, int sizePx, int rounds, int framesPerRound,
@@ -102,22 +102,20 @@ public final class FilteringTargets {
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
         String bakedGrid = "-";
-        if (bakedSamples >= 0) {
-            BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, bakedWSamples));
-            try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
-                // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
-                bakeSeconds = map.bakedTable().bakeSeconds();
-                var grid = map.bakedTable().grid();
-                bakedGrid = grid.uvSamples() + " x " + grid.uvSamples() + " x " + grid.wSamples();
-                BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, sizePx), sizePx, exposure);
-                if (d.lit() != null) {
-                    bakedMean = d.lit().mean();
-                    bakedP95 = d.lit().p95();
-                }
-                bakedMs = map.medianMsPerFrame(wi, sizePx, 2, framesPerRound);
-            } catch (RuntimeException e) {
-                reporter.warn(patch.name() + ": no baked table (" + e.getMessage() + ")");
+        BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, bakedWSamples));
+        try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
+            // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
+            bakeSeconds = map.bakedTable().bakeSeconds();
+            var grid = map.bakedTable().grid();
+            bakedGrid = grid.uvSamples() + " x " + grid.uvSamples() + " x " + grid.wSamples();
+            BrdfMapDifference d = BrdfMapDifference.of(reference, map.xyz(wi, sizePx), sizePx, exposure);
+            if (d.lit() != null) {
+                bakedMean = d.lit().mean();
+                bakedP95 = d.lit().p95();
             }
+            bakedMs = map.medianMsPerFrame(wi, sizePx, 2, framesPerRound);
+        } catch (RuntimeException e) {
+            reporter.warn(patch.name() + ": no baked table (" + e.getMessage() + ")");
         }
         try (GpuBrdfMap lobesMap = pipeline.gpuMap(lobesHere, lambdaMin, reporter);
              GpuBrdfMap flssMap = pipeline.gpuMap(flss(), lambdaMin, reporter)) {
