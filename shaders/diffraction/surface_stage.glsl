@@ -12,6 +12,8 @@
 //   ENVIRONMENT_TABLE   the lobes method with extended lights wider than it takes (sigma_a above
 //                       TABLE_BEYOND_SIGMA_RAD): those read the lobes method's baked table over their footprint
 //                       (baked_table.glsl), the key light and narrower ones sum their lobes
+//   SKY_TABLE           the baked variant's environment lights read their own copies of its table, spread in advance
+//                       by each light (diffract.render.SkyTable): one bilinear lookup per light
 //   IRRADIANCE_SH, SHADOW_MAP (environment.glsl), TONE_MAP_OPERATOR (tone_mapping.glsl)
 //   GGX_ALPHA           the scales as a glossy dielectric (engine/ggx.glsl, this roughness, the patch's refractive
 //                       index) in place of the diffraction BRDF, everything else as staged: what the diffraction
@@ -137,6 +139,33 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
     }
 }
 
+#ifdef SKY_TABLE
+uniform sampler2DArray skyTable;
+uniform vec2 skyTableSamples; // (u, v) samples per axis, w samples per light
+
+// XYZ(u, v, w) of environment light k's spread table: bilinear in (u, v), the nearest of its finely spaced w slices;
+// light k's slices follow the k before it.
+vec3 skyTableXyz(int k, vec3 uvw) {
+    vec2 tc = ((uvw.xy + 2.0) * 0.25 * (skyTableSamples.x - 1.0) + 0.5) / skyTableSamples.x;
+    float slice = clamp((uvw.z + 2.0) * 0.5 * (skyTableSamples.y - 1.0), 0.0, skyTableSamples.y - 1.0);
+    return textureLod(skyTable, vec3(tc, float(k) * skyTableSamples.y + floor(slice + 0.5)), 0.0).rgb;
+}
+
+// Environment light k's structural colour from its spread table (the light's width is in the table: no footprint).
+void addSkyLight(SurfaceFrame f, int k, vec3 wr, inout vec3 structural) {
+    vec3 l = safeNormalize(environmentLightDirection[k]);
+    if (dot(l, f.base) <= 0.0) {
+        return; // behind the body
+    }
+    vec3 wi = toFrame(f, l);
+    float gain = gainTimesShadowing(wi, wr);
+    if (gain > 0.0) {
+        structural += environmentLightRgb[k]
+                * max(linearSrgbFromXyz(exposure * gain * skyTableXyz(k, uvwOf(wi, wr))), vec3(0.0));
+    }
+}
+#endif
+
 // The (u, v) of a light across the pixel (see addLight); zero for variants that do not filter. The derivatives are
 // taken in the mesh's own smooth frame (perspective and the body's curvature), not in the scale's: a scale's frame
 // jumps at its border, and a finite difference across two scales is not the spread of one footprint (it darkened
@@ -168,9 +197,13 @@ vec3 stagedSurfaceLinear() {
     }
 #if defined(ENVIRONMENT_LIGHTS) && ENVIRONMENT_LIGHTS > 0
     for (int k = 0; k < ENVIRONMENT_LIGHTS; k++) {
+#ifdef SKY_TABLE
+        addSkyLight(f, k, wr, structural);
+#else
         addLight(f, environmentLightDirection[k], environmentLightRgb[k], wr, false,
                  uvDerivatives(f, environmentLightDirection[k], towardsCamera),
                  radians(environmentLightAngularDiameterDeg[k]) / 4.0, structural, diffuse);
+#endif
     }
 #endif
 #ifdef PIGMENTATION

@@ -21,8 +21,11 @@ vec3 environmentIrradiance(vec3 n) {
 #endif
 
 #ifdef SHADOW_MAP
-// diffract.jrtr.ShadowMap: world -> [0, 1]^3 of the key light's depth map, raw depths compared here.
-uniform sampler2D shadowMap;
+// diffract.jrtr.ShadowMap: world -> [0, 1]^3 of the key light's depth map, sampled with comparisons (GL_LEQUAL,
+// bilinear); diffract.jrtr.DepthBounds: (min, max) of its depths over blocks of 2^p texels at level p, level 0 the
+// raw depths.
+uniform sampler2DShadow shadowMap;
+uniform sampler2D shadowDepthBounds;
 uniform mat4 shadowMatrix;
 uniform float shadowNormalOffset;     // world units: the lookup starts this far out along the normal (against acne)
 uniform float shadowTexelWorld;       // world units across a texel of the map
@@ -49,25 +52,62 @@ vec2 vogelDisc(int i, int n) {
     return r * vec2(cos(a), sin(a));
 }
 
-// The stored depth of a texel of a map of `size` texels; beyond the map nothing blocks (depth 1).
-float storedDepth(ivec2 texel, ivec2 size) {
+// The nearest stored depth in the block of 2^level texels holding a texel of a map of `size` texels; beyond the map
+// nothing blocks (depth 1).
+float nearestDepthAround(ivec2 texel, ivec2 size, int level) {
     if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, size))) {
         return 1.0;
     }
-    return texelFetch(shadowMap, texel, 0).r;
+    return texelFetch(shadowDepthBounds, texel >> level, level).r;
 }
 
-// 1 where the receiver at `depth` is in front of what the map stores (GL_LEQUAL), bilinear over the four texels
-// around st: the comparison a sampler2DShadow's linear filter makes.
-float litFraction(vec2 st, float depth, ivec2 size) {
-    vec2 f = st * vec2(size) - 0.5;
-    ivec2 i = ivec2(floor(f));
-    vec2 w = f - floor(f);
-    float a = step(depth, storedDepth(i, size));
-    float b = step(depth, storedDepth(i + ivec2(1, 0), size));
-    float c = step(depth, storedDepth(i + ivec2(0, 1), size));
-    float e = step(depth, storedDepth(i + ivec2(1, 1), size));
-    return mix(mix(a, b, w.x), mix(c, e, w.x), w.y);
+// The level of the depth bounds the blocker search reads for a search disc of `radiusTexels`: blocks an eighth of the
+// radius wide (the taps lie about 0.44 radii apart), so that a wide search reads a small level that stays in the
+// cache rather than texels scattered over the whole map, and a narrow one reads the texels themselves.
+int searchLevel(float radiusTexels) {
+    return clamp(int(floor(log2(radiusTexels / 8.0))), 0, 4);
+}
+
+// 1 where the receiver at `depth` is at or in front of what the map stores, bilinear over the four texels around
+// st (the sampler's comparison; outside the map its border, depth 1, blocks nothing).
+float litFraction(vec2 st, float depth) {
+    return texture(shadowMap, vec3(st, depth));
+}
+
+// (min, max) of the stored depths over the texels [lo, hi] (both corners inclusive, per axis) of a map of `size`
+// texels, read from the bounds of the at most 2 x 2 blocks of the finest level whose blocks are as wide as the
+// range; texels outside the map are left out (they store 1 and block nothing).
+vec2 depthBoundsOver(ivec2 lo, ivec2 hi, ivec2 size) {
+    lo = clamp(lo, ivec2(0), size - 1);
+    hi = clamp(hi, ivec2(0), size - 1);
+    int width = max(hi.x - lo.x, hi.y - lo.y) + 1;
+    int levels = int(log2(float(textureSize(shadowDepthBounds, 0).x)) + 0.5) + 1; // sides 2^(levels-1) .. 1
+    int p = min(int(ceil(log2(float(width)))), levels - 1);
+    ivec2 a = lo >> p;
+    ivec2 b = hi >> p;
+    vec2 b00 = texelFetch(shadowDepthBounds, a, p).rg;
+    vec2 b10 = texelFetch(shadowDepthBounds, ivec2(b.x, a.y), p).rg;
+    vec2 b01 = texelFetch(shadowDepthBounds, ivec2(a.x, b.y), p).rg;
+    vec2 b11 = texelFetch(shadowDepthBounds, b, p).rg;
+    return vec2(min(min(b00.x, b10.x), min(b01.x, b11.x)), max(max(b00.y, b10.y), max(b01.y, b11.y)));
+}
+
+// Whether a disc of taps around texel position c (in texels) of radius r is settled by the depth bounds of the
+// texels it can touch, for a receiver at `depth` whose comparisons move by at most `slack` across the disc:
+// 1 when no stored depth there lies in front of the receiver (every tap lit), 0 when all lie in front of it by more
+// than the slack and the disc is inside the map (every tap blocked), -1 when the taps must be compared one by one.
+// The taps then give exactly this answer: the test only skips their work.
+float settledByBounds(vec2 c, float r, float depth, float slack, ivec2 size) {
+    ivec2 lo = ivec2(floor(c - r)) - 1;
+    ivec2 hi = ivec2(floor(c + r)) + 1;
+    vec2 bounds = depthBoundsOver(lo, hi, size);
+    if (bounds.x >= depth) {
+        return 1.0;
+    }
+    if (all(greaterThanEqual(lo, ivec2(0))) && all(lessThan(hi, size)) && bounds.y < depth - slack) {
+        return 0.0;
+    }
+    return -1.0;
 }
 
 // The fraction of the key light reaching a point with normal worldNormal, the light towards towardsLight.
@@ -86,11 +126,19 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     float texelsPerDepth = shadowDepthRangeWorld * keyLightTanHalfAngle / shadowTexelWorld;
     // blockers: anywhere between the light's side of the map and the receiver, within the cone towards the light
     float searchTexels = clamp(s.z * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
+    // nothing in front of the receiver anywhere in the search disc: lit, as the search would find
+    if (depthBoundsOver(ivec2(floor(s.xy * size - searchTexels)), ivec2(floor(s.xy * size + searchTexels)), texels).x
+            >= s.z) {
+        return 1.0;
+    }
+    // the blockers' mean depth (PCSS's estimate of their distance), from the nearest depth of the block under each
+    // tap: within a wide search a block is a few texels, and its nearest depth tells whether it holds a blocker
     float blockerSum = 0.0;
     int blockers = 0;
+    int level = searchLevel(searchTexels);
     for (int i = 0; i < SHADOW_BLOCKER_TAPS; i++) {
         vec2 o = vogelDisc(i, SHADOW_BLOCKER_TAPS) * searchTexels;
-        float d = storedDepth(ivec2(floor(s.xy * size + o)), texels);
+        float d = nearestDepthAround(ivec2(floor(s.xy * size + o)), texels, level);
         if (d < s.z - slopePerTexel * length(o)) {
             blockerSum += d;
             blockers++;
@@ -103,10 +151,16 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
         return 0.0; // the search disc, wider than the penumbra's, is covered: the umbra
     }
     float radiusTexels = clamp((s.z - blockerSum / float(blockers)) * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
+    // each tap's bilinear comparison reads the texels within one of its position, its depth moves by at most
+    // slopePerTexel x radiusTexels: the whole filter disc lit or blocked is settled by the bounds
+    float settled = settledByBounds(s.xy * size - 0.5, radiusTexels, s.z, slopePerTexel * radiusTexels, texels);
+    if (settled >= 0.0) {
+        return settled;
+    }
     float sum = 0.0;
     for (int i = 0; i < SHADOW_FILTER_TAPS; i++) {
         vec2 o = vogelDisc(i, SHADOW_FILTER_TAPS) * radiusTexels;
-        sum += litFraction(s.xy + o / size, s.z - slopePerTexel * length(o), texels);
+        sum += litFraction(s.xy + o / size, s.z - slopePerTexel * length(o));
     }
     return sum / float(SHADOW_FILTER_TAPS);
 }

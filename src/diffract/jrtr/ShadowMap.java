@@ -7,17 +7,23 @@ import com.jogamp.opengl.GL3;
 
 import javax.vecmath.Matrix4f;
 import javax.vecmath.Vector3f;
+import java.nio.FloatBuffer;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 
 /**
  * A shadow map for a directional light (L. Williams, "Casting Curved Shadows on Curved Surfaces", SIGGRAPH 1978):
  * the depth of the scene seen from the light through an orthographic box around a bounding sphere, kept in a
- * depth texture of raw depths that materials read with {@code texelFetch} and compare themselves (a light of
- * finite size needs the blockers' depths, not only the comparison: {@code lighting/environment.glsl}).
+ * depth texture that materials sample with comparisons ({@code sampler2DShadow}, bilinear), and the same depths raw in
+ * level 0 of its {@link DepthBounds} (a light of finite size needs the blockers' depths, not only the comparison:
+ * {@code lighting/environment.glsl}).
  * {@link #lightMatrix()} maps world points to the map's [0, 1]^3 (s, t, depth); {@link #texelWorld()} and
  * {@link #depthRangeWorld()} turn texels and depths back into world units. The depth pass uses its own tiny program
  * ({@code engine/shadow_depth.*}) and a slope-scaled polygon offset against self-shadowing; it leaves the framebuffer
- * binding and viewport as it found them.
+ * binding and viewport as it found them. A map whose light, box and casters are those of its last pass is not drawn
+ * again: a still scene's shadow costs its lookups only. After each pass the map's {@link DepthBounds} are rebuilt, so
+ * that a lookup can settle a whole region of the map at once.
  */
 public final class ShadowMap extends Texture {
     private final int sizePx;
@@ -28,12 +34,17 @@ public final class ShadowMap extends Texture {
     private final Matrix4f projection = new Matrix4f();
     private float boxHalfWidth = 1;
     private float depthRange = 1;
+    private final DepthBounds bounds;
+    /** What the map's content was drawn from (view, projection, casters' shapes and model matrices), or null. */
+    private List<Object> drawnFrom;
 
+    /** @param sizePx side of the map, a power of two in 16..8192 */
     public ShadowMap(int sizePx) {
-        if (sizePx < 16 || sizePx > 8192) {
-            throw new IllegalArgumentException("shadow map size must be 16..8192, got " + sizePx);
+        if (sizePx < 16 || sizePx > 8192 || Integer.bitCount(sizePx) != 1) {
+            throw new IllegalArgumentException("shadow map size must be a power of two in 16..8192, got " + sizePx);
         }
         this.sizePx = sizePx;
+        this.bounds = new DepthBounds(sizePx);
         view.setIdentity();
         projection.setIdentity();
     }
@@ -47,16 +58,25 @@ public final class ShadowMap extends Texture {
         return GL.GL_TEXTURE_2D;
     }
 
+    /** The bounds of the map's depths over blocks of texels, rebuilt by each {@link #render} that draws. */
+    public DepthBounds depthBounds() {
+        return bounds;
+    }
+
     @Override
     protected void fill(GL3 gl) {
+        drawnFrom = null; // a new texture object holds nothing yet
         gl.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL2ES3.GL_DEPTH_COMPONENT32F, sizePx, sizePx, 0,
                 GL2ES2.GL_DEPTH_COMPONENT, GL.GL_FLOAT, null);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_NEAREST);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_NEAREST);
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR);
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_S, GL3.GL_CLAMP_TO_BORDER);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_T, GL3.GL_CLAMP_TO_BORDER);
         gl.glTexParameterfv(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BORDER_COLOR, new float[] {1, 1, 1, 1}, 0);
-        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_MODE, GL.GL_NONE);
+        // a sampler2DShadow's lookup: the four texels around a point compared (GL_LEQUAL: lit where the receiver
+        // lies at or in front of the stored depth) and blended bilinearly; raw depths come from depthBounds()
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_MODE, GL2ES2.GL_COMPARE_REF_TO_TEXTURE);
+        gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_FUNC, GL.GL_LEQUAL);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BASE_LEVEL, 0);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_MAX_LEVEL, 0);
     }
@@ -86,6 +106,8 @@ public final class ShadowMap extends Texture {
         }
         framebuffer = 0;
         depthProgram.dispose(gl);
+        bounds.dispose(gl);
+        drawnFrom = null;
         super.deleteOnGpu(gl);
     }
 
@@ -142,12 +164,20 @@ public final class ShadowMap extends Texture {
         return m;
     }
 
-    /** Renders the depth of every shape of {@code list} from the light (shapes' model matrices apply). */
+    /**
+     * Renders the depth of every shape of {@code list} from the light (shapes' model matrices apply), unless the map
+     * holds that already; then rebuilds the depth bounds.
+     */
     public void render(GLRenderContext context, RenderList list) {
         GL3 gl = context.gl();
         upload(gl);
+        bounds.upload(gl);
         if (framebuffer == 0) {
             createFramebuffer(gl);
+        }
+        List<Object> from = drawnFrom(list);
+        if (from.equals(drawnFrom)) {
+            return;
         }
         int[] previous = new int[1];
         gl.glGetIntegerv(GL2ES3.GL_DRAW_FRAMEBUFFER_BINDING, previous, 0);
@@ -165,6 +195,43 @@ public final class ShadowMap extends Texture {
         gl.glBindFramebuffer(GL.GL_FRAMEBUFFER, previous[0]);
         gl.glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
         GLErrors.check(gl, "rendering the shadow map");
+        float[] depth = new float[sizePx * sizePx];
+        gl.glActiveTexture(GL.GL_TEXTURE0);
+        gl.glBindTexture(GL.GL_TEXTURE_2D, glTexture());
+        gl.glPixelStorei(GL.GL_PACK_ALIGNMENT, 1);
+        gl.glGetTexImage(GL.GL_TEXTURE_2D, 0, GL2ES2.GL_DEPTH_COMPONENT, GL.GL_FLOAT, FloatBuffer.wrap(depth));
+        gl.glBindTexture(GL.GL_TEXTURE_2D, 0);
+        GLErrors.check(gl, "reading the shadow map back");
+        bounds.update(gl, depth);
+        drawnFrom = from;
+    }
+
+    /**
+     * What a pass draws from: the light's view and projection, and per caster its shape (by identity: shapes are
+     * immutable) and model matrix.
+     */
+    private List<Object> drawnFrom(RenderList list) {
+        List<Object> from = new ArrayList<>();
+        from.add(new Matrix4f(view));
+        from.add(new Matrix4f(projection));
+        for (RenderItem item : list.items()) {
+            from.add(new IdentityKey(item.shape()));
+            from.add(new Matrix4f(item.modelMatrix()));
+        }
+        return from;
+    }
+
+    /** Equal only to a key of the same object. */
+    private record IdentityKey(Object of) {
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof IdentityKey k && k.of == of;
+        }
+
+        @Override
+        public int hashCode() {
+            return System.identityHashCode(of);
+        }
     }
 
     @Override

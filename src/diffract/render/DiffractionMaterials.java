@@ -86,10 +86,16 @@ public final class DiffractionMaterials {
                            float diffuseWeight, Stage stage, FrameOutput output, Reporter reporter) {
         Optional<BakedTable> table = DiffractionShaders.environmentTableNeeded(settings, stage)
                 ? textures.lobesTable(reporter) : Optional.empty();
+        boolean sky = DiffractionShaders.skyTableNeeded(settings, textures, stage);
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
-                stage, table.isPresent(), output));
+                stage, table.isPresent(), sky, output));
         surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
         table.ifPresent(t -> filteredTable(m, t, settings));
+        if (sky) {
+            SkyTable spread = SkyTable.of(textures.baked(), stage.environment().lights(),
+                    settings.illumination().light().sigmaRad());
+            m.setTexture("skyTable", spread.texture()).setVec2("skyTableSamples", spread.side(), spread.wSamples());
+        }
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }

@@ -162,19 +162,33 @@ public final class DiffractionShaders {
     }
 
     /**
+     * Whether a staged surface of the baked variant reads its environment lights from tables spread in advance by each
+     * light ({@link SkyTable}): a filtered table under an environment.
+     */
+    public static boolean skyTableNeeded(BrdfSettings settings, DiffractionTextures textures, Stage stage) {
+        return settings.variant() == Variant.BAKED && textures.baked() != null && textures.baked().filtered()
+                && stage.environment() != null && !stage.environment().lights().isEmpty()
+                && stage.glossyAlpha() == null;
+    }
+
+    /**
      * The surface program on a {@link Stage}: the same BRDF, evaluated per fragment in each scale's frame for the key
      * and environment lights, tone mapped ({@code surface_stage.glsl}, switched on by the stage's defines);
-     * with {@code environmentTable} the lobes method's wide environment lights read its table (ENVIRONMENT_TABLE).
+     * with {@code environmentTable} the lobes method's wide environment lights read its table (ENVIRONMENT_TABLE),
+     * with {@code skyTable} the baked variant's read their spread tables (SKY_TABLE).
      */
     public static ShaderProgram stagedSurfaceProgram(BrdfSettings settings, DiffractionTextures textures,
                                                      boolean pigmentation, Stage stage, boolean environmentTable,
-                                                     FrameOutput output) {
+                                                     boolean skyTable, FrameOutput output) {
         Map<String, String> defines = definesFor(settings, textures, Target.SURFACE, false, pigmentation);
         defines.putAll(stage.defines());
         output.addDefines(defines);
         if (environmentTable) {
             defines.put("ENVIRONMENT_TABLE", "1");
             defines.put("TABLE_BEYOND_SIGMA_RAD", Float.toString((float) TABLE_BEYOND_SIGMA_RAD));
+        }
+        if (skyTable) {
+            defines.put("SKY_TABLE", "1");
         }
         return ShaderProgram.fromClasspath(vertexPath(Target.SURFACE), fragmentPath(settings.variant()), defines);
     }

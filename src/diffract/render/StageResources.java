@@ -89,7 +89,7 @@ public final class StageResources {
             m.setTexture("scaleFrames", scaleFrames);
         }
         if (shadowMap != null) {
-            m.setTexture("shadowMap", shadowMap);
+            m.setTexture("shadowMap", shadowMap).setTexture("shadowDepthBounds", shadowMap.depthBounds());
         }
         return m;
     }
@@ -185,7 +185,7 @@ public final class StageResources {
                 .setFloat("mottle", (float) g.mottle())
                 .setFloat("mottleScale", 12 / radius);
         if (shadowMap != null) {
-            m.setTexture("shadowMap", shadowMap);
+            m.setTexture("shadowMap", shadowMap).setTexture("shadowDepthBounds", shadowMap.depthBounds());
         }
         return m;
     }
