@@ -32,6 +32,8 @@ uniform float shadowTexelWorld;       // world units across a texel of the map
 uniform float shadowDepthRangeWorld;  // world units along the light per unit of stored depth
 uniform float keyLightTanHalfAngle;   // tan of half the key light's angular diameter (0: a point light)
 
+// SHADOW_TAPS_ONLY compares every tap, without the depth bounds' shortcuts, which give the same answer
+// (ShadowBoundsTest holds them to it).
 // Percentage-closer soft shadows (R. Fernando, "Percentage-Closer Soft Shadows", SIGGRAPH 2005 sketch) for a
 // directional light of angular diameter D: a blocker edge a distance d above the receiver (along the light) hides
 // the light's disc over a penumbra of radius d tan(D / 2) around the geometric edge, and the fraction of the disc
@@ -126,11 +128,13 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     float texelsPerDepth = shadowDepthRangeWorld * keyLightTanHalfAngle / shadowTexelWorld;
     // blockers: anywhere between the light's side of the map and the receiver, within the cone towards the light
     float searchTexels = clamp(s.z * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
+#ifndef SHADOW_TAPS_ONLY
     // nothing in front of the receiver anywhere in the search disc: lit, as the search would find
     if (depthBoundsOver(ivec2(floor(s.xy * size - searchTexels)), ivec2(floor(s.xy * size + searchTexels)), texels).x
             >= s.z) {
         return 1.0;
     }
+#endif
     // the blockers' mean depth (PCSS's estimate of their distance), from the nearest depth of the block under each
     // tap: within a wide search a block is a few texels, and its nearest depth tells whether it holds a blocker
     float blockerSum = 0.0;
@@ -153,10 +157,12 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     float radiusTexels = clamp((s.z - blockerSum / float(blockers)) * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
     // each tap's bilinear comparison reads the texels within one of its position, its depth moves by at most
     // slopePerTexel x radiusTexels: the whole filter disc lit or blocked is settled by the bounds
+#ifndef SHADOW_TAPS_ONLY
     float settled = settledByBounds(s.xy * size - 0.5, radiusTexels, s.z, slopePerTexel * radiusTexels, texels);
     if (settled >= 0.0) {
         return settled;
     }
+#endif
     float sum = 0.0;
     for (int i = 0; i < SHADOW_FILTER_TAPS; i++) {
         vec2 o = vogelDisc(i, SHADOW_FILTER_TAPS) * radiusTexels;
