@@ -39,7 +39,7 @@ uniform float keyLightTanHalfAngle;   // tan of half the key light's angular dia
 // the light's disc over a penumbra of radius d tan(D / 2) around the geometric edge, and the fraction of the disc
 // left visible at a point is the fraction of a disc of that radius around it that no blocker covers. So: the
 // blockers' mean depth within the cone towards the light, then percentage-closer filtering over that disc.
-const int SHADOW_BLOCKER_TAPS = 16;
+const int SHADOW_BLOCKER_TAPS = 8;
 const int SHADOW_FILTER_TAPS = 48;
 // The widest disc searched and filtered, texels: beyond it a penumbra is cut to this radius. The taps' count stays
 // fixed, so a wide disc's taps lie several texels apart: the visibility then steps by 1 / SHADOW_FILTER_TAPS, finer
@@ -67,7 +67,7 @@ float nearestDepthAround(ivec2 texel, ivec2 size, int level) {
 // radius wide (the taps lie about 0.44 radii apart), so that a wide search reads a small level that stays in the
 // cache rather than texels scattered over the whole map, and a narrow one reads the texels themselves.
 int searchLevel(float radiusTexels) {
-    return clamp(int(floor(log2(radiusTexels / 8.0))), 0, 4);
+    return clamp(int(floor(log2(radiusTexels / 4.0))), 0, 5);
 }
 
 // 1 where the receiver at `depth` is at or in front of what the map stores, bilinear over the four texels around

@@ -40,9 +40,18 @@ public final class FloatTexture3D extends Texture {
     private final float[] rgb;
     private final Precision precision;
     private final boolean mipmapped;
+    private final boolean layered;
 
     public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision) {
         this(width, height, depth, rgb, precision, false);
+    }
+
+    /**
+     * A GL_TEXTURE_2D_ARRAY of the same data (layer z = the z-th slice) without mip levels, bilinear within a layer:
+     * for lookups of one slice at a time, which need neither the third axis' interpolation nor a level choice.
+     */
+    public static FloatTexture3D layers(int width, int height, int depth, float[] rgb, Precision precision) {
+        return new FloatTexture3D(width, height, depth, rgb, precision, false, true);
     }
 
     /**
@@ -52,6 +61,11 @@ public final class FloatTexture3D extends Texture {
      *                  slices into each other (the shader interpolates between slices itself)
      */
     public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision, boolean mipmapped) {
+        this(width, height, depth, rgb, precision, mipmapped, mipmapped);
+    }
+
+    private FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision, boolean mipmapped,
+                           boolean layered) {
         if (width <= 0 || height <= 0 || depth <= 0) {
             throw new IllegalArgumentException("need a positive size, got " + width + "x" + height + "x" + depth);
         }
@@ -65,6 +79,7 @@ public final class FloatTexture3D extends Texture {
         this.rgb = rgb;
         this.precision = precision;
         this.mipmapped = mipmapped;
+        this.layered = layered;
     }
 
     public int width() {
@@ -91,7 +106,7 @@ public final class FloatTexture3D extends Texture {
 
     @Override
     public int glTarget() {
-        return mipmapped ? GL2ES3.GL_TEXTURE_2D_ARRAY : GL2ES2.GL_TEXTURE_3D;
+        return layered ? GL2ES3.GL_TEXTURE_2D_ARRAY : GL2ES2.GL_TEXTURE_3D;
     }
 
     @Override
@@ -112,7 +127,7 @@ public final class FloatTexture3D extends Texture {
             gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_S, GL.GL_CLAMP_TO_EDGE);
             gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_T, GL.GL_CLAMP_TO_EDGE);
         } else {
-            clampWithoutMipmaps(gl, target, GL.GL_LINEAR); // trilinear lookups between the table's samples
+            clampWithoutMipmaps(gl, target, GL.GL_LINEAR); // trilinear (bilinear per layer) between the samples
         }
         gl.glTexParameteri(target, GL2ES2.GL_TEXTURE_WRAP_R, GL.GL_CLAMP_TO_EDGE);
     }

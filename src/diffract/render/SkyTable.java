@@ -248,6 +248,6 @@ public final class SkyTable {
 
     /** A new texture of the spread tables for one GL context: one layer per w slice, bilinear in (u, v). */
     public FloatTexture3D texture() {
-        return new FloatTexture3D(side, side, wSamples * lights, rgb, BakedTable.PRECISION, true);
+        return FloatTexture3D.layers(side, side, wSamples * lights, rgb, BakedTable.PRECISION);
     }
 }
