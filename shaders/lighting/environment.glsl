@@ -63,8 +63,8 @@ float nearestDepthAround(ivec2 texel, ivec2 size, int level) {
     return texelFetch(shadowDepthBounds, texel >> level, level).r;
 }
 
-// The level of the depth bounds the blocker search reads for a search disc of `radiusTexels`: blocks an eighth of the
-// radius wide (the taps lie about 0.44 radii apart), so that a wide search reads a small level that stays in the
+// The level of the depth bounds the blocker search reads for a search disc of `radiusTexels`: blocks a quarter of the
+// radius wide (the 8 taps lie about 0.6 radii apart), so that a wide search reads a small level that stays in the
 // cache rather than texels scattered over the whole map, and a narrow one reads the texels themselves.
 int searchLevel(float radiusTexels) {
     return clamp(int(floor(log2(radiusTexels / 4.0))), 0, 5);

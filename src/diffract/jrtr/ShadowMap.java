@@ -37,6 +37,7 @@ public final class ShadowMap extends Texture {
     private final DepthBounds bounds;
     /** What the map's content was drawn from (view, projection, casters' shapes and model matrices), or null. */
     private List<Object> drawnFrom;
+    private int passes;
 
     /** @param sizePx side of the map, a power of two in 16..8192 */
     public ShadowMap(int sizePx) {
@@ -204,6 +205,12 @@ public final class ShadowMap extends Texture {
         GLErrors.check(gl, "reading the shadow map back");
         bounds.update(gl, depth);
         drawnFrom = from;
+        passes++;
+    }
+
+    /** How many times {@link #render} has drawn the map (a still scene draws it once). */
+    public int passes() {
+        return passes;
     }
 
     /**
