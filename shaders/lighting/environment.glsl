@@ -129,6 +129,11 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     // blockers: anywhere between the light's side of the map and the receiver, within the cone towards the light
     float searchTexels = clamp(s.z * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
 #ifndef SHADOW_TAPS_ONLY
+    // the whole search disc beyond the map, where nothing blocks: lit
+    vec2 beyond = max(-s.xy, s.xy - 1.0) * size;
+    if (max(beyond.x, beyond.y) > searchTexels + 1.0) {
+        return 1.0;
+    }
     // nothing in front of the receiver anywhere in the search disc: lit, as the search would find
     if (depthBoundsOver(ivec2(floor(s.xy * size - searchTexels)), ivec2(floor(s.xy * size + searchTexels)), texels).x
             >= s.z) {
