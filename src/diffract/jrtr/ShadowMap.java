@@ -67,15 +67,23 @@ public final class ShadowMap extends Texture {
     @Override
     protected void fill(GL3 gl) {
         drawnFrom = null; // a new texture object holds nothing yet
-        gl.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL2ES3.GL_DEPTH_COMPONENT32F, sizePx, sizePx, 0,
-                GL2ES2.GL_DEPTH_COMPONENT, GL.GL_FLOAT, null);
+        depthImage(gl, sizePx, null);
+    }
+
+    /**
+     * Allocates (or fills, given {@code depth}) the bound GL_TEXTURE_2D as a size^2 depth map sampled with
+     * comparisons: a sampler2DShadow's lookup compares the four texels around a point (GL_LEQUAL: lit where the
+     * receiver lies at or in front of the stored depth) and blends them bilinearly; beyond the map the border, depth
+     * 1, blocks nothing. Raw depths come from {@link #depthBounds()}.
+     */
+    static void depthImage(GL3 gl, int size, float[] depth) {
+        gl.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL2ES3.GL_DEPTH_COMPONENT32F, size, size, 0,
+                GL2ES2.GL_DEPTH_COMPONENT, GL.GL_FLOAT, depth == null ? null : FloatBuffer.wrap(depth));
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_S, GL3.GL_CLAMP_TO_BORDER);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_T, GL3.GL_CLAMP_TO_BORDER);
         gl.glTexParameterfv(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BORDER_COLOR, new float[] {1, 1, 1, 1}, 0);
-        // a sampler2DShadow's lookup: the four texels around a point compared (GL_LEQUAL: lit where the receiver
-        // lies at or in front of the stored depth) and blended bilinearly; raw depths come from depthBounds()
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_MODE, GL2ES2.GL_COMPARE_REF_TO_TEXTURE);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_FUNC, GL.GL_LEQUAL);
         gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BASE_LEVEL, 0);

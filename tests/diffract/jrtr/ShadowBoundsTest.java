@@ -1,8 +1,6 @@
 package diffract.jrtr;
 
 import com.jogamp.opengl.GL;
-import com.jogamp.opengl.GL2ES2;
-import com.jogamp.opengl.GL2ES3;
 import com.jogamp.opengl.GL3;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Tag;
@@ -10,7 +8,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
 import javax.vecmath.Matrix4f;
-import java.nio.FloatBuffer;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -146,17 +143,7 @@ class ShadowBoundsTest {
 
         @Override
         protected void fill(GL3 gl) {
-            gl.glTexImage2D(GL.GL_TEXTURE_2D, 0, GL2ES3.GL_DEPTH_COMPONENT32F, MAP, MAP, 0, GL2ES2.GL_DEPTH_COMPONENT,
-                    GL.GL_FLOAT, FloatBuffer.wrap(depth));
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_S, GL3.GL_CLAMP_TO_BORDER);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL.GL_TEXTURE_WRAP_T, GL3.GL_CLAMP_TO_BORDER);
-            gl.glTexParameterfv(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BORDER_COLOR, new float[] {1, 1, 1, 1}, 0);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_MODE, GL2ES2.GL_COMPARE_REF_TO_TEXTURE);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL2ES2.GL_TEXTURE_COMPARE_FUNC, GL.GL_LEQUAL);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_BASE_LEVEL, 0);
-            gl.glTexParameteri(GL.GL_TEXTURE_2D, GL3.GL_TEXTURE_MAX_LEVEL, 0);
+            ShadowMap.depthImage(gl, MAP, depth);
         }
     }
 }
