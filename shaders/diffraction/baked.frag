@@ -1,4 +1,7 @@
 #version 330 core
+#if defined(SKY_TABLE) && defined(GL_ARB_derivative_control)
+#extension GL_ARB_derivative_control : enable
+#endif
 // BAKED (lookup tables as in Dhillon and Ghosh 2016, Toisoul and Ghosh 2017): the spectral integral of
 // 004 eq. finalexpression, sum_j |P(lambda_j)|^2 weights_j, depends on the directions only through
 // (u, v, w) = -omega_i - omega_r. It is baked once per patch and settings into a 3-D table over |u|, |v| <= 2,

@@ -140,6 +140,13 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
 }
 
 #ifdef SKY_TABLE
+// the difference to the horizontal neighbour within a pixel quad, per row (GLSL 4.5's dFdxFine); GL 3.3's dFdx may
+// take one row's difference for both rows
+#ifdef GL_ARB_derivative_control
+#define HORIZONTAL_DIFFERENCE dFdxFine // enabled at the top of baked.frag
+#else
+#define HORIZONTAL_DIFFERENCE dFdx
+#endif
 uniform sampler2DArray skyTable;
 uniform vec2 skyTableSamples; // (u, v) samples per axis, w samples per light
 
@@ -163,6 +170,25 @@ void addSkyLight(SurfaceFrame f, int k, vec3 wr, inout vec3 structural) {
         structural += environmentLightRgb[k]
                 * max(linearSrgbFromXyz(exposure * gain * skyTableXyz(k, uvwOf(wi, wr))), vec3(0.0));
     }
+}
+
+// The environment's structural colour by interleaved sampling (A. Keller and W. Heidrich, "Interleaved Sampling",
+// EGWR 2001): of each horizontal pair of pixels the left evaluates the even-numbered lights, the right the odd ones,
+// and each adds its neighbour's share, read across the pair by the horizontal derivative (v(x + 1) - v(x)). Both
+// pixels of a pair so show the whole sky at half the cost, as if evaluated at half the horizontal resolution: the
+// lights are tens of degrees wide, their colour changes slowly across the surface. Called in uniform control flow.
+vec3 interleavedSky(SurfaceFrame f, vec3 wr) {
+    vec3 share = vec3(0.0);
+    int parity = int(gl_FragCoord.x) & 1;
+    for (int i = 0; i < ENVIRONMENT_LIGHTS / 2; i++) {
+        addSkyLight(f, 2 * i + parity, wr, share);
+    }
+    vec3 across = HORIZONTAL_DIFFERENCE(share);
+    vec3 sky = share + (parity == 0 ? share + across : share - across);
+#if ENVIRONMENT_LIGHTS % 2 == 1
+    addSkyLight(f, ENVIRONMENT_LIGHTS - 1, wr, sky); // an odd light out: every pixel evaluates it
+#endif
+    return sky;
 }
 #endif
 
@@ -196,15 +222,15 @@ vec3 stagedSurfaceLinear() {
                  diffuse);
     }
 #if defined(ENVIRONMENT_LIGHTS) && ENVIRONMENT_LIGHTS > 0
-    for (int k = 0; k < ENVIRONMENT_LIGHTS; k++) {
 #ifdef SKY_TABLE
-        addSkyLight(f, k, wr, structural);
+    structural += interleavedSky(f, wr);
 #else
+    for (int k = 0; k < ENVIRONMENT_LIGHTS; k++) {
         addLight(f, environmentLightDirection[k], environmentLightRgb[k], wr, false,
                  uvDerivatives(f, environmentLightDirection[k], towardsCamera),
                  radians(environmentLightAngularDiameterDeg[k]) / 4.0, structural, diffuse);
-#endif
     }
+#endif
 #endif
 #ifdef PIGMENTATION
     vec3 pigment = srgbDecode(texture(pigmentation, surfaceTexcoord).rgb);

@@ -156,7 +156,9 @@ float keyLightVisibility(vec3 worldPosition, vec3 worldNormal, vec3 towardsLight
     if (blockers == 0) {
         return 1.0;
     }
-    if (blockers == SHADOW_BLOCKER_TAPS) {
+    // Every tap finding a blocker is no proof of umbra when the taps read blocks (a block with one blocking texel
+    // counts): the filter below decides, and settles a true umbra at once by the bounds.
+    if (level == 0 && blockers == SHADOW_BLOCKER_TAPS) {
         return 0.0; // the search disc, wider than the penumbra's, is covered: the umbra
     }
     float radiusTexels = clamp((s.z - blockerSum / float(blockers)) * texelsPerDepth, 1.0, SHADOW_MAX_RADIUS_TEXELS);
