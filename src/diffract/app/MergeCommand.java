@@ -89,7 +89,7 @@ final class MergeCommand implements Callable<Integer> {
         args.addAll(m.arguments());
         CommandLine.ParseResult parsed;
         try {
-            parsed = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
+            parsed = Main.commandLine().setCaseInsensitiveEnumValuesAllowed(true)
                     .parseArgs(args.toArray(String[]::new));
         } catch (CommandLine.ParameterException e) {
             throw new UserInputException("merge: the pieces' options no longer parse (" + e.getMessage()

@@ -197,7 +197,7 @@ final class SubmitCommand implements Callable<Integer> {
     private static SplitCommand parse(List<String> command) {
         CommandLine.ParseResult parsed;
         try {
-            parsed = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
+            parsed = Main.commandLine().setCaseInsensitiveEnumValuesAllowed(true)
                     .parseArgs(command.toArray(String[]::new));
         } catch (CommandLine.ParameterException e) {
             throw new UserInputException(command.get(0) + ": " + e.getMessage());
