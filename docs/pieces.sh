@@ -3,7 +3,8 @@
 # `submit --local J` (J = 1 and 2, 8 pieces each), checks that all write the same bytes, and splits each piece's time
 # into its fixed cost (Java start, loading the patch and building the BRDF) and its work (the pixels). Where a Slurm
 # answers (sinfo; bash .ci/slurm-node starts a one-node one here), also times the pieces as a job array
-# (`submit --slurm`) and shows the job script it writes.
+# (`submit --slurm`) and shows the job script it writes. Profiles one piece with Java's flight recorder (where its work
+# goes), and splits a small bench sweep into pieces (merged rows against the single run's).
 # Writes docs/pieces.md. SIZE=64 bash docs/pieces.sh for a quicker run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -35,6 +36,37 @@ cp "$out/log.txt" "$out/l1c.log"
 local2c=$(seconds ./diffract submit --local 2 --piece-count "$PIECES" --cpus-per-task 1 -- brdfmap "${MAP[@]}" -o "$out/l2c.png" --pfm "$out/l2c.pfm")
 cp "$out/log.txt" "$out/l2c.log"
 runs=(one l1 l2 l1c l2c)
+# where one piece's time goes: the flight recorder's samples of piece 3 (one processor), by the method on top of the
+# stack; the exact spectrum's phase-centre expansions (ExactSpectrum.expand, .bounds) anywhere on it; and the time the
+# Java compiler took (-XX:+CITime)
+java -XX:StartFlightRecording=filename="$out/piece.jfr",settings=profile -XX:+CITime -Xlog:disable \
+    -Djava.awt.headless=true -XX:ActiveProcessorCount=1 -cp target/diffract.jar diffract.app.Main brdfmap "${MAP[@]}" \
+    --tile 3/"$PIECES" --pieces "$out/jfr" --quiet > "$out/jfr.log" 2>&1
+profiled_work=$(sed -nE 's/.*work ([0-9.]+) s.*/\1/p' "$out/jfr.log")
+compiler=$(sed -nE 's/^ *Total compilation time *: *([0-9.]+) s.*/\1/p' "$out/jfr.log")
+# the same piece compiled by the first tier alone (less compilation, slower code)
+c1_work=$(java -XX:TieredStopAtLevel=1 -Xlog:disable -Djava.awt.headless=true -XX:ActiveProcessorCount=1 \
+    -cp target/diffract.jar diffract.app.Main brdfmap "${MAP[@]}" --tile 3/"$PIECES" --pieces "$out/c1" --quiet 2>&1 \
+    | sed -nE 's/.*work ([0-9.]+) s.*/\1/p')
+jfr print --events jdk.ExecutionSample "$out/piece.jfr" > "$out/samples.txt"
+samples=$(grep -c 'jdk.ExecutionSample' "$out/samples.txt")
+expansions=$(awk '/jdk.ExecutionSample/ { n++ } /ExactSpectrum\.(expand|bounds)/ { hit[n] = 1 } END { print length(hit) }' \
+    "$out/samples.txt")
+top=$(grep -A1 'stackTrace = \[' "$out/samples.txt" | grep -v -e 'stackTrace' -e '^--' | sed -E 's/^ *//; s/\(.*//' \
+    | sort | uniq -c | sort -rn | head -4 | awk '{ printf "%s`%s` %d", (NR > 1 ? ", " : ""), $2, $1 }')
+# a small bench sweep whole and in two pieces by two workers: the same rows but for the GPU times (measured again)
+# and the Pareto column that follows from them
+SWEEP=(--patches blazed --variants flss,nmm --terms 4,8 --lambda-steps 25 --window-radii 1 --texture-formats rg32f --size 24)
+bench_same=""
+if ./diffract bench "${SWEEP[@]}" -o "$out/bench-whole" --quiet > "$out/bench.log" 2>&1 \
+    && ./diffract submit --local 2 -- bench "${SWEEP[@]}" -o "$out/bench-split" --quiet >> "$out/bench.log" 2>&1; then
+    mask() { cut -d, -f1-8,10-14,16- "$1"; }
+    if cmp -s <(mask "$out/bench-whole/results.csv") <(mask "$out/bench-split/results.csv"); then
+        bench_same=yes
+    else
+        bench_same=NO
+    fi
+fi
 if sinfo -h -o %T 2>/dev/null | grep -qE '^(idle|mixed)$'; then
     slurm=$(seconds ./diffract submit --slurm --piece-count "$PIECES" --cpus-per-task 1 --keep-pieces "$out/slurm" \
         -- brdfmap "${MAP[@]}" -o "$out/s.png" --pfm "$out/s.pfm")
@@ -66,6 +98,10 @@ pieces() {  # sorted as join wants them
 sum() {  # column of pieces(): the sum
     pieces "$1" | awk -F'|' -v c="$2" '{ s += $c } END { printf "%.1f", s }'
 }
+fixed() {  # the pieces' fixed cost (start and setup) as a percentage of their work: of the sums, and the largest
+    pieces "$1" | awk -F'|' '{ f = $4 + $5; s += f; w += $6; r = 100 * f / $6; if (r > m) m = r }
+        END { printf "%.1f (up to %.1f)", 100 * s / w, m }'
+}
 {
     echo "# A reference map in pieces, timed"
     echo
@@ -73,26 +109,39 @@ sum() {  # column of pieces(): the sum
     echo "before and $load_after after (the machine is shared: the wall times move with its load). The map:"
     echo "\`brdfmap ${MAP[*]}\`, the reference on the CPU. Outputs of the ${#runs[@]} runs identical byte for byte: **$same**."
     echo
-    echo "| run | wall time (s) | sum of the pieces' start (s) | ... setup (s) | ... work (s) |"
-    echo "| --- | ---: | ---: | ---: | ---: |"
-    echo "| brdfmap alone | $whole | | | |"
-    echo "| submit --local 1 --piece-count 1 | $one | $(sum "$out/one.log" 4) | $(sum "$out/one.log" 5) | $(sum "$out/one.log" 6) |"
-    echo "| submit --local 1 --piece-count $PIECES | $local1 | $(sum "$out/l1.log" 4) | $(sum "$out/l1.log" 5) | $(sum "$out/l1.log" 6) |"
-    echo "| submit --local 2 --piece-count $PIECES | $local2 | $(sum "$out/l2.log" 4) | $(sum "$out/l2.log" 5) | $(sum "$out/l2.log" 6) |"
-    echo "| submit --local 1 --piece-count $PIECES --cpus-per-task 1 | $local1c | $(sum "$out/l1c.log" 4) | $(sum "$out/l1c.log" 5) | $(sum "$out/l1c.log" 6) |"
-    echo "| submit --local 2 --piece-count $PIECES --cpus-per-task 1 | $local2c | $(sum "$out/l2c.log" 4) | $(sum "$out/l2c.log" 5) | $(sum "$out/l2c.log" 6) |"
+    echo "| run | wall time (s) | sum of the pieces' start (s) | ... setup (s) | ... work (s) | fixed cost: (start + setup) / work (%) |"
+    echo "| --- | ---: | ---: | ---: | ---: | ---: |"
+    echo "| brdfmap alone | $whole | | | | |"
+    echo "| submit --local 1 --piece-count 1 | $one | $(sum "$out/one.log" 4) | $(sum "$out/one.log" 5) | $(sum "$out/one.log" 6) | $(fixed "$out/one.log") |"
+    echo "| submit --local 1 --piece-count $PIECES | $local1 | $(sum "$out/l1.log" 4) | $(sum "$out/l1.log" 5) | $(sum "$out/l1.log" 6) | $(fixed "$out/l1.log") |"
+    echo "| submit --local 2 --piece-count $PIECES | $local2 | $(sum "$out/l2.log" 4) | $(sum "$out/l2.log" 5) | $(sum "$out/l2.log" 6) | $(fixed "$out/l2.log") |"
+    echo "| submit --local 1 --piece-count $PIECES --cpus-per-task 1 | $local1c | $(sum "$out/l1c.log" 4) | $(sum "$out/l1c.log" 5) | $(sum "$out/l1c.log" 6) | $(fixed "$out/l1c.log") |"
+    echo "| submit --local 2 --piece-count $PIECES --cpus-per-task 1 | $local2c | $(sum "$out/l2c.log" 4) | $(sum "$out/l2c.log" 5) | $(sum "$out/l2c.log" 6) | $(fixed "$out/l2c.log") |"
     if [ -n "${slurm:-}" ]; then
-        echo "| submit --slurm --piece-count $PIECES --cpus-per-task 1 (one-node Slurm, $(nproc) CPUs) | $slurm | | | |"
+        echo "| submit --slurm --piece-count $PIECES --cpus-per-task 1 (one-node Slurm, $(nproc) CPUs) | $slurm | | | | |"
     fi
     echo
     echo "Each piece: *start* is its process' wall time less what it measured itself (the Java VM starting and"
-    echo "ending, parsing options, writing the piece), *setup* loading the patch and building the BRDF, *work* its"
-    echo "pixels. The reference's exact spectrum expands the patch around phase centres as its pixels first need them:"
-    echo "each process computes those its rows need, so that cost is part of *work* and paid again by every piece;"
-    echo "the work of 8 pieces against that of 1 shows it. By default the J workers share the machine's processors"
-    echo "(--local 1: one worker with both cores; --local 2: two with one each), so a second worker adds only what"
-    echo "one process's threads leave unused; with --cpus-per-task 1 each worker has one core whatever J, and the"
-    echo "second worker's gain is $(echo "scale=2; $local1c / $local2c" | bc)x."
+    echo "ending, reading the options, writing the piece), *setup* loading the patch and building the BRDF, *work* its"
+    echo "pixels; the fixed cost column gives the sums' ratio and, in brackets, the largest piece's. By default the J"
+    echo "workers share the machine's processors (--local 1: one worker with both cores; --local 2: two with one"
+    echo "each), so a second worker adds only what one process's threads leave unused; with --cpus-per-task 1 each"
+    echo "worker has one core whatever J, and the second worker's gain is $(echo "scale=2; $local1c / $local2c" | bc)x."
+    echo
+    echo "Where the rest goes. The flight recorder's samples of piece 3 on one processor ($samples samples; the most"
+    echo "frequent methods on top of the stack: $top) put the exact spectrum's phase-centre expansions"
+    echo "(\`ExactSpectrum.expand\` and \`.bounds\`, anywhere on the stack) in $expansions of them: the FFTs of the"
+    echo "few centres a 100 x 100 patch needs take milliseconds, so keeping them on disk for the next piece would save"
+    echo "nothing that a disk cache's read and checksum did not cost again. The pieces' work is the filtered"
+    echo "reference's integrals over each pixel's footprint. What a piece pays besides is Java's: the start above,"
+    echo "and the compiler, which compiles the same code again in every process: $compiler s of compilation"
+    echo "(-XX:+CITime) in that piece, against its $profiled_work s of work. It runs on threads of its own, beside"
+    echo "the work where a core is idle (one worker of one processor on this 2-core machine); where every core"
+    echo "computes, it takes its time from the work, and the work runs interpreted or half-compiled until it is done."
+    echo "That is most of the difference between the work of 8 pieces and of 1 with both cores, and between one and"
+    echo "two workers of one core each; the rest of the second worker's shortfall is the last pieces' imbalance (rows"
+    echo "near the rim cost more: the table below) and the machine's other load. Compiling less does not pay: with the"
+    echo "first tier alone (-XX:TieredStopAtLevel=1) the same piece works $c1_work s."
     echo
     echo "| piece | rows | local 1: wall | start | setup | work | local 2: wall | start | setup | work |"
     echo "| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"
@@ -144,6 +193,36 @@ node, with the pieces' folder on a disk every node reads and writes.
 - **Running again** computes every piece again, as `--local` does: each piece's files are replaced atomically, and a
   piece computed again has the same bytes. To compute only the missing pieces, resubmit the script for them
   (above), then merge.
+
+## A bench sweep in pieces
+
+The bench's sweep splits the same way, into runs of its configurations:
+
+```bash
+./diffract bench --quick --tile 0/4 --pieces /shared/me/bench-pieces    # task 0 of 4; 1, 2, 3 alike
+./diffract merge /shared/me/bench-pieces -o out/bench
+./diffract submit --local 2 -- bench --quick -o out/bench               # or --slurm --piece-count N --keep-pieces DIR
+```
+
+A piece measures its configurations (the reference maps and terms they need come from the shared disk cache, or
+are computed) and writes their rows into its manifest, every number as the exact double it measured. Merge writes
+`results.csv`, `results.md`, `pareto.md`, `targets.md`, `machine.txt` and `pareto.png` from those rows as one run
+writes them: the same configurations in the same order, the same errors, the Pareto front over all rows, the
+GPU times each piece measured. What it cannot reproduce: the times themselves, which every run measures again (two
+single runs differ in them too), and, in `targets.md`, the direct comparison of NMM with FLSS at 1 nm, which needs
+both configurations' maps in one process ("-" there). Pieces measured on different OpenGL renderers are refused:
+their times do not compare. On a software rasteriser (llvmpipe) two local workers share the processors that draw,
+so their times are not those of one run; measure times with one worker per machine or GPU. `--gpu-suite` and
+`--filtering` run whole.
+EOF
+    if [ -n "$bench_same" ]; then
+        echo
+        echo "In this run: the sweep \`${SWEEP[*]}\` whole and by \`submit --local 2\`: results.csv identical byte for"
+        echo "byte but for the columns ms_per_frame and pareto: **$bench_same**."
+    fi
+    cat <<'EOF'
+
+## The Slurm test
 
 The test: `bash .ci/slurm-node` (as root, Debian) configures and starts a one-node Slurm on the machine (munge,
 slurmctld and slurmd, this host as controller and node, no cgroups or accounting);
