@@ -126,7 +126,7 @@ fixed() {  # the pieces' fixed cost (start and setup) as a percentage of their w
     echo "pixels; the fixed cost column gives the sums' ratio and, in brackets, the largest piece's. By default the J"
     echo "workers share the machine's processors (--local 1: one worker with both cores; --local 2: two with one"
     echo "each), so a second worker adds only what one process's threads leave unused; with --cpus-per-task 1 each"
-    echo "worker has one core whatever J, and the second worker's gain is $(echo "scale=2; $local1c / $local2c" | bc)x."
+    echo "worker has one core whatever J, and the second worker's gain is $(printf "%.2f" "$(echo "scale=4; $local1c / $local2c" | bc)")x."
     echo
     echo "Where the rest goes. The flight recorder's samples of piece 3 on one processor ($samples samples; the most"
     echo "frequent methods on top of the stack: $top) put the exact spectrum's phase-centre expansions"
