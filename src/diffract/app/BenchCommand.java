@@ -241,8 +241,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             if (csv == null) {
                 return;
             }
-            try {
-                ResultsTable.writeCsv(csv, done, runner.glInfo()); // after every configuration: an interrupted run keeps its rows
+            try { // after every configuration: an interrupted run keeps its rows
+                ResultsTable.writeCsv(csv, done, runner.glInfo());
             } catch (IOException e) {
                 throw new UserInputException("cannot write " + csv + ": " + e.getMessage(), e);
             }
@@ -299,7 +299,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
      * targets' table. {@code maps} gives the kept GPU maps of a configuration (null where none are kept).
      */
     private String writeResults(Sweep sweep, List<BenchResult> results, GLInfo gl, String machine,
-                                Function<BenchConfig, List<float[]>> maps, ReferenceMaps references) throws IOException {
+                                Function<BenchConfig, List<float[]>> maps, ReferenceMaps references)
+            throws IOException {
         ResultsTable.writeCsv(outputDir.resolve("results.csv"), results, gl);
         Files.writeString(outputDir.resolve("results.md"), ResultsTable.markdown(results), StandardCharsets.UTF_8);
         Files.writeString(outputDir.resolve("pareto.md"), ResultsTable.markdown(results, true), StandardCharsets.UTF_8);
@@ -373,7 +374,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             }
             GLInfo pieceGl = m.bench().glInfo();
             if (pieceGl != null) {
-                if (gl != null && !(gl.renderer().equals(pieceGl.renderer()) && gl.version().equals(pieceGl.version()))) {
+                if (gl != null && !(gl.renderer().equals(pieceGl.renderer())
+                        && gl.version().equals(pieceGl.version()))) {
                     throw new UserInputException("merge: bench pieces " + glPiece + " and " + m.label() + " ran on "
                             + "different OpenGL (" + machineShort(gl) + "; " + machineShort(pieceGl) + "): their "
                             + "times do not compare; measure every piece on one kind of GPU");

@@ -72,8 +72,9 @@ final class MergeCommand implements Callable<Integer> {
                         + "BRDF map's pieces; write -o DIR, the bench's folder");
             }
             if (!diffract.util.Version.VERSION.equals(m.settings().get("version"))) {
-                throw new UserInputException("merge: the pieces were measured by diffract " + m.settings().get("version")
-                        + ", this is " + diffract.util.Version.VERSION + ": measure them again with this diffract");
+                throw new UserInputException("merge: the pieces were measured by diffract "
+                        + m.settings().get("version") + ", this is " + diffract.util.Version.VERSION
+                        + ": measure them again with this diffract");
             }
             BenchCommand single = (BenchCommand) singleRun(m);
             single.outputDir = output;

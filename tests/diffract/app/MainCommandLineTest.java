@@ -20,7 +20,8 @@ class MainCommandLineTest {
 
     @Test
     void aCommandIsBuiltAloneAndTheRestGetEveryCommand() {
-        assertTrue(EVERY.containsAll(List.of("brdfmap", "render", "bench", "merge", "submit", "help", "patch")), EVERY.toString());
+        assertTrue(EVERY.containsAll(List.of("brdfmap", "render", "bench", "merge", "submit", "help", "patch")),
+                EVERY.toString());
         assertEquals(Set.of("brdfmap"), Main.commandLine("brdfmap", "--size", "8").getSubcommands().keySet());
         assertEquals(Set.of("brdfmap"), Main.commandLine("--debug", "brdfmap").getSubcommands().keySet());
         assertEquals(Set.of("bench"), Main.commandLine("bench", "--help").getSubcommands().keySet());
