@@ -45,6 +45,7 @@ public final class Main implements Runnable {
         c.put("export", ExportCommand::new);
         c.put("merge", MergeCommand::new);
         c.put("submit", SubmitCommand::new);
+        c.put("worker", WorkerCommand::new);
         c.put("help", CommandLine.HelpCommand::new);
         return java.util.Collections.unmodifiableMap(c);
     }
