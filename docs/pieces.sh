@@ -121,9 +121,11 @@ fixed() {  # the pieces' fixed cost (start and setup) as a percentage of their w
         echo "| submit --slurm --piece-count $PIECES --cpus-per-task 1 (one-node Slurm, $(nproc) CPUs) | $slurm | | | | |"
     fi
     echo
-    echo "Each piece: *start* is its process' wall time less what it measured itself (the Java VM starting and"
-    echo "ending, reading the options, writing the piece), *setup* loading the patch and building the BRDF, *work* its"
-    echo "pixels; the fixed cost column gives the sums' ratio and, in brackets, the largest piece's. By default the J"
+    echo "Each of \`submit --local\`'s J workers is one Java process that computes piece after piece, as they come. A"
+    echo "piece's *start* is its wall time less what it measured itself: reading its options and writing the piece,"
+    echo "and for a worker's first piece the Java VM's start; *setup* is loading the patch and building the BRDF,"
+    echo "*work* its pixels; the fixed cost column gives the sums' ratio and, in brackets, the largest piece's (a"
+    echo "worker's first). By default the J"
     echo "workers share the machine's processors (--local 1: one worker with both cores; --local 2: two with one"
     echo "each), so a second worker adds only what one process's threads leave unused; with --cpus-per-task 1 each"
     echo "worker has one core whatever J, and the second worker's gain is $(printf "%.2f" "$(echo "scale=4; $local1c / $local2c" | bc)")x."
@@ -133,13 +135,14 @@ fixed() {  # the pieces' fixed cost (start and setup) as a percentage of their w
     echo "(\`ExactSpectrum.expand\` and \`.bounds\`, anywhere on the stack) in $expansions of them: the FFTs of the"
     echo "few centres a 100 x 100 patch needs take milliseconds, so keeping them on disk for the next piece would save"
     echo "nothing that a disk cache's read and checksum did not cost again. The pieces' work is the filtered"
-    echo "reference's integrals over each pixel's footprint. What a piece pays besides is Java's: the start above,"
-    echo "and the compiler, which compiles the same code again in every process: $compiler s of compilation"
-    echo "(-XX:+CITime) in that piece, against its $profiled_work s of work. It runs on threads of its own, beside"
-    echo "the work where a core is idle (one worker of one processor on this 2-core machine); where every core"
-    echo "computes, it takes its time from the work, and the work runs interpreted or half-compiled until it is done."
-    echo "That is most of the difference between the work of 8 pieces and of 1 with both cores, and between one and"
-    echo "two workers of one core each; the rest of the second worker's shortfall is the last pieces' imbalance (rows"
+    echo "reference's integrals over each pixel's footprint. What a process pays besides is Java's: its start, and"
+    echo "the compiler, which compiles the code again in every process: $compiler s of compilation (-XX:+CITime) in"
+    echo "that piece, run as a process of its own, against its $profiled_work s of work. The compiler runs on threads"
+    echo "of its own, beside the work where a core is idle; where every core computes, it takes its time from the"
+    echo "work, which runs interpreted or half-compiled until it is done. That is why a local worker computes all its"
+    echo "pieces in one process: it pays both once. A Slurm task is a process of its own and pays them per piece"
+    echo "(choose fewer, larger pieces there). What remains of the second worker's shortfall is the compilation"
+    echo "that one worker of one processor does beside its work and two must share, the last pieces' imbalance (rows"
     echo "near the rim cost more: the table below) and the machine's other load. Compiling less does not pay: with the"
     echo "first tier alone (-XX:TieredStopAtLevel=1) the same piece works $c1_work s."
     echo
@@ -172,8 +175,8 @@ node, with the pieces' folder on a disk every node reads and writes.
   room for.
 - **Processors.** `--cpus-per-task C` (default 1) asks for C processors per task and starts Java with
   `-XX:ActiveProcessorCount=$SLURM_CPUS_PER_TASK`, so a task's threads match what it was given even where Slurm
-  confines no processes (no cgroups) and Java would see the whole node. Each piece pays its fixed cost (tables above)
-  whatever C.
+  confines no processes (no cgroups) and Java would see the whole node. Each task is a Java process of its own and
+  pays Java's start and compilation (above) whatever C: fewer, larger pieces waste less of them.
 - **GPU nodes.** `--gpus-per-task G` adds `--gres=gpu:G` and, in the script, `unset DISPLAY` and `DIFFRACT_GL=egl`:
   OpenGL in a task runs on headless EGL on the node's first device ([headless-gl.md](headless-gl.md)), never on a
   forwarded X display. brdfmap's pieces compute on the CPU; a turntable's frames (`-- render SCENE --turntable F
