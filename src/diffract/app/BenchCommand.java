@@ -18,6 +18,7 @@ import diffract.optics.HeightField;
 import diffract.optics.Levelling;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.TermFormat;
+import diffract.optics.MapBand;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
 import diffract.util.OutputPaths;
@@ -25,7 +26,9 @@ import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
+import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -37,12 +40,15 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
+import java.util.function.Function;
 
 /**
  * {@code diffract bench}: sweeps GPU configurations (variant, Taylor terms, lambda step, window radius, term texture
  * format, image size, patch), measures each one's median GPU time per frame and its CIEDE2000 error against the
  * CPU reference, and writes {@code results.csv}, {@code results.md}, {@code pareto.md}, {@code targets.md},
- * {@code machine.txt} and the Pareto plot {@code pareto.png} into the output folder.
+ * {@code machine.txt} and the Pareto plot {@code pareto.png} into the output folder. With {@code --tile I/N --pieces
+ * DIR} it measures only run I of N runs of the sweep's configurations, into a piece that {@code merge} assembles with
+ * the others into those files ({@link SplitCommand}: {@code submit} runs it in pieces).
  */
 @Command(name = "bench", mixinStandardHelpOptions = true,
         description = "Measure the speed/accuracy trade of the GPU variants: per configuration the median GPU time "
@@ -50,12 +56,19 @@ import java.util.concurrent.Callable;
                 + "against the CPU reference (exact model, 1 nm), over the lit pixels. Writes results.csv, results.md, "
                 + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
                 + "maps are cached there.")
-final class BenchCommand implements Callable<Integer> {
+final class BenchCommand implements SplitCommand, Callable<Integer> {
     @Mixin
     GpuOption gpu;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
+    @Option(names = {"-o", "--output"}, paramLabel = "DIR",
+            description = "Output folder. Required, except with --tile (merge writes the folder then).")
     Path outputDir;
+
+    @Mixin
+    TileOptions tiles;
+
+    @Spec
+    CommandSpec spec;
 
     @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
     boolean quick;
@@ -183,7 +196,11 @@ final class BenchCommand implements Callable<Integer> {
             throw new UserInputException("--frames takes at least " + diffract.jrtr.GpuTimer.MIN_FRAMES
                     + " frames (their median is the time), got " + frames);
         }
-        OutputPaths.require(outputs());
+        if (tiles.requested("which run of the sweep's configurations to measure")) {
+            validateTile();
+        } else {
+            requireOutput();
+        }
         if (gpuSuite) {
             HeadlessGL.require();
             long start = System.nanoTime();
@@ -199,6 +216,66 @@ final class BenchCommand implements Callable<Integer> {
         if (filtering) {
             return filtering();
         }
+        long start = System.nanoTime();
+        Sweep sweep = sweep();
+        List<BenchConfig> configs = sweep.configs();
+        MapBand band = tiles.tile == null ? null : MapBand.of(tiles.tile.index(), tiles.tile.count(), configs.size());
+        List<BenchConfig> measured = band == null ? configs : configs.subList(band.fromRow(), band.toRow());
+        HeadlessGL.require();
+        if (tiles.tile == null) {
+            Files.createDirectories(outputDir);
+        }
+        Reporter reporter = quiet.reporter();
+        reporter.info(String.format(Locale.ROOT, "bench: %d configurations%s on %d patches (%s sweep), coherence "
+                        + "length %s um, output %s", measured.size(), tiles.tile == null ? ""
+                        : " (" + band + " of " + configs.size() + ", piece " + tiles.tile + ")", sweep.patches().size(),
+                quick ? "quick" : isCustom() ? "own" : "full", coherenceLengthUm,
+                tiles.tile == null ? outputDir : tiles.pieces));
+        ReferenceMaps references = new ReferenceMaps(DiskCache.user(), reporter);
+        BenchRunner runner = new BenchRunner(references, reporter).keepMapsOf(Targets::needsMaps);
+        Path csv = tiles.tile == null ? outputDir.resolve("results.csv") : null;
+        List<BenchResult> done = new ArrayList<>();
+        long work = System.nanoTime();
+        List<BenchResult> results = runner.run(measured, sweep.patches(), sweep.base(), r -> {
+            done.add(r);
+            if (csv == null) {
+                return;
+            }
+            try { // after every configuration: an interrupted run keeps its rows
+                ResultsTable.writeCsv(csv, done, runner.glInfo());
+            } catch (IOException e) {
+                throw new UserInputException("cannot write " + csv + ": " + e.getMessage(), e);
+            }
+        });
+        if (tiles.tile != null) {
+            writePiece(sweep, band, results, runner.glInfo(), start, work);
+            return 0;
+        }
+        String machine = machine(runner.glInfo());
+        String targets = writeResults(sweep, results, runner.glInfo(), machine, runner::maps, references);
+        System.out.printf(Locale.ROOT, "bench: %d configurations in %.0f s on %s%nwrote %s, %s, %s, %s%n%s",
+                results.size(), (System.nanoTime() - start) * 1e-9, machine, csv, outputDir.resolve("results.md"),
+                outputDir.resolve("targets.md"), outputDir.resolve("pareto.png"), targets);
+        return 0;
+    }
+
+    /** The sweep the options name: its base settings, its patches by name and its configurations, in order. */
+    record Sweep(BrdfSettings base, Map<String, BenchPatch> patches, List<BenchConfig> configs) {
+        /** A content hash of the configurations, in order: pieces of one sweep agree on it. */
+        String configurationsSha256() {
+            return DiskCache.sha256Hex(String.join("\n", configs.stream().map(BenchConfig::key).toList())
+                    .getBytes(StandardCharsets.UTF_8));
+        }
+
+        /** A content hash of the patches' height fields, in order. */
+        String patchesSha256() {
+            return DiskCache.sha256Hex(String.join("\n", patches.values().stream()
+                    .map(p -> p.name() + " " + p.field().contentSha256()).toList()).getBytes(StandardCharsets.UTF_8));
+        }
+    }
+
+    /** The sweep's settings and configurations (no GL, no measurement): what a run, a piece and merge agree on. */
+    Sweep sweep() {
         if (sizePx < 8 || sizePx > 1024 || largeSizePx < 8 || largeSizePx > 1024) {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
@@ -214,40 +291,177 @@ final class BenchCommand implements Callable<Integer> {
             throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
         }
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
-        HeadlessGL.require();
-        Files.createDirectories(outputDir);
-        Reporter reporter = quiet.reporter();
-        reporter.info(String.format(Locale.ROOT, "bench: %d configurations on %d patches (%s sweep), coherence length "
-                        + "%s um, output %s", configs.size(), patchMap.size(), quick ? "quick" : isCustom() ? "own" : "full",
-                coherenceLengthUm, outputDir));
-        ReferenceMaps references = new ReferenceMaps(DiskCache.user(), reporter);
-        BenchRunner runner = new BenchRunner(references, reporter).keepMapsOf(Targets::needsMaps);
-        Path csv = outputDir.resolve("results.csv");
-        List<BenchResult> done = new ArrayList<>();
-        long start = System.nanoTime();
-        List<BenchResult> results = runner.run(configs, patchMap, base, r -> {
-            done.add(r);
-            try {
-                ResultsTable.writeCsv(csv, done, runner.glInfo()); // after every configuration: an interrupted run keeps its rows
-            } catch (IOException e) {
-                throw new UserInputException("cannot write " + csv + ": " + e.getMessage(), e);
-            }
-        });
-        ResultsTable.writeCsv(csv, results, runner.glInfo());
+        return new Sweep(base, patchMap, configs);
+    }
+
+    /**
+     * results.csv, results.md, pareto.md, targets.md, machine.txt and pareto.png of the measured rows; returns the
+     * targets' table. {@code maps} gives the kept GPU maps of a configuration (null where none are kept).
+     */
+    private String writeResults(Sweep sweep, List<BenchResult> results, GLInfo gl, String machine,
+                                Function<BenchConfig, List<float[]>> maps, ReferenceMaps references)
+            throws IOException {
+        ResultsTable.writeCsv(outputDir.resolve("results.csv"), results, gl);
         Files.writeString(outputDir.resolve("results.md"), ResultsTable.markdown(results), StandardCharsets.UTF_8);
         Files.writeString(outputDir.resolve("pareto.md"), ResultsTable.markdown(results, true), StandardCharsets.UTF_8);
-        List<Targets.Outcome> outcomes = Targets.of(results, sizePx, runner::maps,
-                (patch, size) -> exposures(references, patchMap.get(patch), size, base));
-        Files.writeString(outputDir.resolve("targets.md"), Targets.markdown(outcomes), StandardCharsets.UTF_8);
-        String machine = machine(runner.glInfo());
+        List<Targets.Outcome> outcomes = Targets.of(results, sizePx, maps,
+                (patch, size) -> exposures(references, sweep.patches().get(patch), size, sweep.base()));
+        String targets = Targets.markdown(outcomes);
+        Files.writeString(outputDir.resolve("targets.md"), targets, StandardCharsets.UTF_8);
         Files.writeString(outputDir.resolve("machine.txt"), machine + "\n", StandardCharsets.UTF_8);
-        Path plot = outputDir.resolve("pareto.png");
-        ParetoPlot.write(plot, results, "diffract bench: error against GPU time per frame (" + sizePx + "x" + sizePx
-                + ", " + machineShort(runner.glInfo()) + ")");
-        System.out.printf(Locale.ROOT, "bench: %d configurations in %.0f s on %s%nwrote %s, %s, %s, %s%n%s",
-                results.size(), (System.nanoTime() - start) * 1e-9, machine, csv, outputDir.resolve("results.md"),
-                outputDir.resolve("targets.md"), plot, Targets.markdown(outcomes));
-        return 0;
+        ParetoPlot.write(outputDir.resolve("pareto.png"), results, "diffract bench: error against GPU time per frame ("
+                + sizePx + "x" + sizePx + ", " + machineShort(gl) + ")");
+        return targets;
+    }
+
+    /** With --tile: the piece's rows, in its manifest (no floats), into --pieces DIR. */
+    private void writePiece(Sweep sweep, MapBand band, List<BenchResult> results, GLInfo gl, long startNanos,
+                            long workNanos) throws IOException {
+        TileOptions.Tile tile = tiles.tile;
+        long done = System.nanoTime();
+        PieceFolder.write(tiles.pieces, pieceManifest(sweep, tile, TileOptions.argumentsWithoutTile(spec), results,
+                machine(gl), gl), new float[0]);
+        // submit reads this line: the piece's fixed cost (loading, terms, reference maps) against its work
+        System.out.printf(Locale.ROOT, "wrote piece %s (configurations %s of %d) into %s: setup %.2f s, work %.2f s%n",
+                tile, band, sweep.configs().size(), tiles.pieces, (workNanos - startNanos) * 1e-9,
+                (done - workNanos) * 1e-9);
+    }
+
+    /**
+     * The manifest of piece {@code tile} of a sweep run with {@code arguments} (less --tile and --pieces): what merge
+     * compares (the sweep's base settings, its configurations and patches) and the rows it measured.
+     */
+    static PieceManifest pieceManifest(Sweep sweep, TileOptions.Tile tile, List<String> arguments,
+                                       List<BenchResult> results, String machine, GLInfo gl) {
+        MapBand band = MapBand.of(tile.index(), tile.count(), sweep.configs().size());
+        Map<String, String> settings = new LinkedHashMap<>();
+        settings.put("version", diffract.util.Version.VERSION);
+        settings.put("base", sweep.base().toString());
+        settings.put("configurationsSha256", sweep.configurationsSha256());
+        return new PieceManifest(PieceManifest.FORMAT, "bench", tile.index(), tile.count(), band.fromRow(),
+                band.toRow(), sweep.configs().size(), 0, sweep.patchesSha256(), settings, Map.of(), arguments, null,
+                null, BenchPiece.of(results, machine, gl));
+    }
+
+    /**
+     * Merge's half of a split sweep: the pieces' rows, in the sweep's order, written as one run writes them
+     * (results.csv from the same doubles, bit for bit). The targets' direct comparison of NMM with FLSS at 1 nm needs
+     * both configurations' maps in one process and is left out (its columns read "-"); machine.txt holds the
+     * pieces' machine lines, one per distinct line.
+     */
+    void writeMerged(List<PieceManifest> pieces, Reporter reporter) throws IOException {
+        requireOutput();
+        Sweep sweep = sweep();
+        PieceManifest first = pieces.get(0);
+        if (!sweep.configurationsSha256().equals(first.settings().get("configurationsSha256"))
+                || !sweep.base().toString().equals(first.settings().get("base"))) {
+            throw new UserInputException("merge: the pieces' options give another sweep in this diffract than in the "
+                    + "one that measured them: compute them again with this diffract");
+        }
+        List<BenchResult> results = new ArrayList<>();
+        List<String> machines = new ArrayList<>();
+        GLInfo gl = null;
+        String glPiece = null;
+        for (PieceManifest m : pieces) {
+            if (m.bench() == null) {
+                throw new UserInputException("merge: bench piece " + m.label() + " holds no rows: compute it again");
+            }
+            Map<String, BenchConfig> ofPiece = new LinkedHashMap<>(); // its own run of configurations
+            sweep.configs().subList(m.from(), m.to()).forEach(c -> ofPiece.put(c.key(), c));
+            results.addAll(m.bench().results(ofPiece, m.label()));
+            if (!machines.contains(m.bench().machine())) {
+                machines.add(m.bench().machine());
+            }
+            GLInfo pieceGl = m.bench().glInfo();
+            if (pieceGl != null) {
+                if (gl != null && !(gl.renderer().equals(pieceGl.renderer())
+                        && gl.version().equals(pieceGl.version()))) {
+                    throw new UserInputException("merge: bench pieces " + glPiece + " and " + m.label() + " ran on "
+                            + "different OpenGL (" + machineShort(gl) + "; " + machineShort(pieceGl) + "): their "
+                            + "times do not compare; measure every piece on one kind of GPU");
+                }
+                gl = pieceGl;
+                glPiece = m.label();
+            }
+        }
+        Files.createDirectories(outputDir);
+        String targets = writeResults(sweep, results, gl, String.join("\n", machines), c -> null,
+                new ReferenceMaps(DiskCache.user(), reporter));
+        reporter.info("merged bench: targets.md leaves out the direct comparison of NMM with FLSS at 1 nm (it needs "
+                + "both configurations' maps in one process)\n" + targets);
+    }
+
+    /** -o DIR and the files of fixed name the run writes into it can be written. */
+    private void requireOutput() {
+        if (outputDir == null) {
+            throw new UserInputException("bench needs -o DIR, the folder its results go to; with --tile I/N --pieces "
+                    + "DIR it measures one piece of the sweep instead");
+        }
+        OutputPaths.require(outputs());
+    }
+
+    /** --tile splits the sweep (not the GPU suite or the filtering targets) and writes no -o. */
+    private void validateTile() {
+        if (gpuSuite || filtering) {
+            throw new UserInputException("--tile splits the sweep's configurations; --gpu-suite and --filtering run "
+                    + "whole: drop --tile and --pieces");
+        }
+        if (outputDir != null) {
+            throw new UserInputException("--tile writes one piece into --pieces " + tiles.pieces + "; the bench's "
+                    + "files are written by 'diffract merge " + tiles.pieces + " -o DIR': drop -o");
+        }
+        tiles.requireSplittable(sweep().configs().size(), "the sweep has only " + sweep().configs().size()
+                + " configurations");
+    }
+
+    @Override
+    public String name() {
+        return spec.name();
+    }
+
+    /** What {@code submit} checks before it starts any worker: the options as one run would, and the split. */
+    @Override
+    public void validateSplit(int pieceCount) {
+        tiles.refuseForSubmit(name());
+        if (frames < diffract.jrtr.GpuTimer.MIN_FRAMES) {
+            throw new UserInputException("--frames takes at least " + diffract.jrtr.GpuTimer.MIN_FRAMES
+                    + " frames (their median is the time), got " + frames);
+        }
+        if (gpuSuite || filtering) {
+            throw new UserInputException("submit splits the bench's sweep into runs of its configurations; "
+                    + "--gpu-suite and --filtering run whole: run bench alone");
+        }
+        requireOutput();
+        int configurations = sweep().configs().size();
+        if (pieceCount > configurations) {
+            throw new UserInputException("--piece-count " + pieceCount + ": the sweep has only " + configurations
+                    + " configurations to split");
+        }
+    }
+
+    @Override
+    public int items() {
+        return sweep().configs().size();
+    }
+
+    @Override
+    public String itemsName() {
+        return "configurations";
+    }
+
+    @Override
+    public List<String> mergeOutputs(Function<Path, String> path) {
+        return List.of("-o", path.apply(outputDir));
+    }
+
+    @Override
+    public Path output() {
+        return outputDir;
+    }
+
+    @Override
+    public boolean quiet() {
+        return quiet.quiet;
     }
 
     /** The filtering targets ({@link FilteringTargets}): a table per patch and light. */

@@ -234,7 +234,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         HeightField field = patch.meanSubtracted();
         PieceManifest manifest = new PieceManifest(PieceManifest.FORMAT, spec.name(), tile.index(), tile.count(),
                 band.fromRow(), band.toRow(), picture.size, picture.size * channels, field.contentSha256(),
-                floatSettings(settings, patch, phiDeg), pictureSettings(), TileOptions.argumentsWithoutTile(spec), null, null);
+                floatSettings(settings, patch, phiDeg), pictureSettings(), TileOptions.argumentsWithoutTile(spec), null,
+                null, null);
         PieceFolder.write(tiles.pieces, manifest, floats);
         // submit reads this line: the piece's fixed cost (loading, terms) against its work (the pixels)
         System.out.printf(Locale.ROOT, "wrote piece %s (rows %s of %d) into %s: setup %.2f s, work %.2f s%n", tile,

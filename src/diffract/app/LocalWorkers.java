@@ -1,6 +1,10 @@
 package diffract.app;
 
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.OutputStreamWriter;
+import java.io.Writer;
 import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -10,17 +14,23 @@ import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.Consumer;
 
 /**
- * Commands of this program run as separate Java processes, at most {@code workers} at a time: the same Java, class path
+ * Commands of this program run in at most {@code workers} separate Java processes at a time: the same Java, class path
  * (the jar, or the test run's classes), heap limit, class-data archive and disk cache as this one, each told it has its
- * share of the processors so that the workers together use the machine once, not {@code workers} times over.
+ * share of the processors so that the workers together use the machine once, not {@code workers} times over. A worker
+ * process ({@link WorkerCommand}) runs command after command, as they come: Java's start and the compilation of the
+ * code they run are paid once per worker, not once per command; each command still writes its own files.
  */
 final class LocalWorkers {
-    /** How one process ended: its exit code, its output (standard output and error), and its wall time. */
+    /** How one command ended: its exit code, its output (standard output and error), and its wall time. */
     record Finished(int index, int exitCode, String output, double wallS) {
     }
+
+    private static final com.fasterxml.jackson.databind.ObjectMapper JSON =
+            new com.fasterxml.jackson.databind.ObjectMapper();
 
     private LocalWorkers() {
     }
@@ -31,47 +41,28 @@ final class LocalWorkers {
     }
 
     /**
-     * Runs every argument list (a command of {@link Main}), {@code workers} at a time, in order, each worker told it
-     * has {@code processors} processors ({@link #share} of them by default); {@code finished} hears of each as it
-     * ends. The first failure stops those still running and is returned; else null.
+     * Runs every argument list (a command of {@link Main}) in {@code workers} worker processes, each told it has
+     * {@code processors} processors ({@link #share} of them by default), each taking the next command in order when it
+     * has ended one; {@code finished} hears of each as it ends, with its wall time (a worker's first command's
+     * includes the worker's start). The first failure stops the workers and is returned; else null.
      */
     static Finished run(List<List<String>> commands, int workers, int processors, Consumer<Finished> finished)
             throws IOException, InterruptedException {
-        List<String> prefix = javaCommand(processors);
+        List<String> worker = new ArrayList<>(javaCommand(processors));
+        worker.add("worker");
         ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
             Thread t = new Thread(r, "local-worker");
             t.setDaemon(true);
             return t;
         });
         List<Process> started = java.util.Collections.synchronizedList(new ArrayList<>());
+        AtomicInteger next = new AtomicInteger();
         Finished[] failure = new Finished[1];
         try {
             List<Future<?>> futures = new ArrayList<>();
-            for (int i = 0; i < commands.size(); i++) {
-                int index = i;
+            for (int w = 0; w < workers; w++) {
                 futures.add(pool.submit(() -> {
-                    synchronized (failure) {
-                        if (failure[0] != null) {
-                            return null; // a piece failed: start no more
-                        }
-                    }
-                    List<String> command = new ArrayList<>(prefix);
-                    command.addAll(commands.get(index));
-                    long start = System.nanoTime();
-                    Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
-                    started.add(p);
-                    String output = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-                    Finished f = new Finished(index, p.waitFor(), output, (System.nanoTime() - start) * 1e-9);
-                    synchronized (failure) {
-                        if (failure[0] != null) {
-                            return null; // stopped because another failed: that one is the news
-                        }
-                        if (f.exitCode() != 0) {
-                            failure[0] = f;
-                            started.forEach(Process::destroy);
-                        }
-                        finished.accept(f);
-                    }
+                    work(worker, commands, next, started, failure, finished);
                     return null;
                 }));
             }
@@ -90,6 +81,63 @@ final class LocalWorkers {
             pool.shutdownNow();
         }
         return failure[0];
+    }
+
+    /** One worker process: the next command, until none is left or one has failed; then its input ends, and so does it. */
+    private static void work(List<String> worker, List<List<String>> commands, AtomicInteger next,
+                             List<Process> started, Finished[] failure, Consumer<Finished> finished)
+            throws IOException, InterruptedException {
+        long start = System.nanoTime();
+        Process p = new ProcessBuilder(worker).redirectErrorStream(true).start();
+        started.add(p);
+        try (BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
+             Writer in = new OutputStreamWriter(p.getOutputStream(), StandardCharsets.UTF_8)) {
+            for (int index = next.getAndIncrement(); index < commands.size(); index = next.getAndIncrement()) {
+                synchronized (failure) {
+                    if (failure[0] != null) {
+                        return; // a command failed: start no more
+                    }
+                }
+                in.write(JSON.writeValueAsString(commands.get(index)) + "\n");
+                in.flush();
+                StringBuilder output = new StringBuilder();
+                Integer code = null;
+                for (String line = out.readLine(); line != null; line = out.readLine()) {
+                    if (line.startsWith(WorkerCommand.DONE)) {
+                        code = Integer.parseInt(line.substring(WorkerCommand.DONE.length()).trim());
+                        break;
+                    }
+                    output.append(line).append('\n');
+                }
+                if (code == null) { // the worker ended amid the command: its exit code, and never 0
+                    int exit = p.waitFor();
+                    code = exit == 0 ? 1 : exit;
+                }
+                Finished f = new Finished(index, code, output.toString(), (System.nanoTime() - start) * 1e-9);
+                start = System.nanoTime();
+                synchronized (failure) {
+                    if (failure[0] != null) {
+                        return; // stopped because another failed: that one is the news
+                    }
+                    if (f.exitCode() != 0) {
+                        failure[0] = f;
+                        started.forEach(Process::destroy);
+                    }
+                    finished.accept(f);
+                }
+                if (f.exitCode() != 0) {
+                    return;
+                }
+            }
+        } catch (IOException e) {
+            synchronized (failure) {
+                if (failure[0] != null) {
+                    return; // the pipe closed because another failed and the workers were stopped
+                }
+            }
+            throw e;
+        }
+        p.waitFor();
     }
 
     /** java, its options as this process was given them where they matter to a worker, the class path and Main. */

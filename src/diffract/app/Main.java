@@ -16,15 +16,73 @@ import picocli.CommandLine;
  * one-line message and exit code 2, without a stack trace unless {@code --debug} is given.
  */
 @Command(name = "diffract", mixinStandardHelpOptions = true, version = "diffract " + Version.VERSION,
-        description = "Structural colour from natural diffraction gratings (Single 2014, after Stam 1999).",
-        subcommands = {DemoCommand.class, PrecomputeCommand.class, BrdfMapCommand.class, CompareCommand.class,
-                ConvertTermsCommand.class, PatchCommand.class, ChannelsCommand.class, ViewCommand.class,
-                RenderCommand.class, MeasureCommand.class, WarmUpCommand.class, BenchCommand.class, ExportCommand.class,
-                MergeCommand.class, SubmitCommand.class,
-                CommandLine.HelpCommand.class})
+        description = "Structural colour from natural diffraction gratings (Single 2014, after Stam 1999).")
 public final class Main implements Runnable {
     /** Exit code for bad usage or bad input. */
     public static final int EXIT_USAGE = 2;
+
+    /**
+     * The commands, in the order help lists them. They are registered by {@link #commandLine}, not by the
+     * annotation, so that a run of one command builds only that command's options: picocli reads every option of
+     * every command it is given, and for all of them that is about a fifth of a second of each process' start.
+     */
+    private static final java.util.Map<String, java.util.function.Supplier<Object>> COMMANDS = commands();
+
+    private static java.util.Map<String, java.util.function.Supplier<Object>> commands() {
+        java.util.Map<String, java.util.function.Supplier<Object>> c = new java.util.LinkedHashMap<>();
+        c.put("demo", DemoCommand::new);
+        c.put("precompute", PrecomputeCommand::new);
+        c.put("brdfmap", BrdfMapCommand::new);
+        c.put("compare", CompareCommand::new);
+        c.put("convert-terms", ConvertTermsCommand::new);
+        c.put("patch", PatchCommand::new);
+        c.put("channels", ChannelsCommand::new);
+        c.put("view", ViewCommand::new);
+        c.put("render", RenderCommand::new);
+        c.put("measure", MeasureCommand::new);
+        c.put("warm-up", WarmUpCommand::new);
+        c.put("bench", BenchCommand::new);
+        c.put("export", ExportCommand::new);
+        c.put("merge", MergeCommand::new);
+        c.put("submit", SubmitCommand::new);
+        c.put("worker", WorkerCommand::new);
+        c.put("help", CommandLine.HelpCommand::new);
+        return java.util.Collections.unmodifiableMap(c);
+    }
+
+    /** The whole command line: every command (help, tests, and the commands that parse another's options). */
+    public static CommandLine commandLine() {
+        return commandLine(COMMANDS.keySet());
+    }
+
+    /**
+     * The command line for {@code args}: where its first word names a command (other than help), that command
+     * alone; else every command, for the help, the list of commands and the suggestions that name the others.
+     */
+    static CommandLine commandLine(String... args) {
+        for (String arg : args) {
+            if (!arg.startsWith("-")) {
+                return COMMANDS.containsKey(arg) && !arg.equals("help") ? commandLine(java.util.List.of(arg))
+                        : commandLine();
+            }
+        }
+        return commandLine();
+    }
+
+    private static CommandLine commandLine(java.util.Collection<String> names) {
+        CommandLine cli = new CommandLine(new Main());
+        for (String name : names) {
+            cli.addSubcommand(COMMANDS.get(name).get()); // named by its @Command
+            if (!cli.getSubcommands().containsKey(name)) {
+                throw new IllegalStateException("the command registered as " + name + " names itself otherwise");
+            }
+        }
+        cli.setCaseInsensitiveEnumValuesAllowed(true); // after the commands: it applies to those registered
+        if (names.contains("patch")) {
+            cli.getSubcommands().get("patch").getCommandSpec().usageMessage().footer(PatchCommand.catalogueText());
+        }
+        return cli;
+    }
 
     @Option(names = "--debug", scope = CommandLine.ScopeType.INHERIT,
             description = "Show stack traces of errors.")
@@ -50,8 +108,7 @@ public final class Main implements Runnable {
 
     /** Runs the command line and returns the exit code (tests call this). */
     public static int execute(String... args) {
-        CommandLine cli = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true);
-        cli.getSubcommands().get("patch").getCommandSpec().usageMessage().footer(PatchCommand.catalogueText());
+        CommandLine cli = commandLine(args);
         reportGlOncePerRenderer(System.err);
         HeadlessGL.useGpu(null); // --gpu, where given, applies to this command only
         boolean debug = java.util.Arrays.asList(args).contains("--debug");

@@ -16,23 +16,23 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /**
- * {@code diffract merge DIR -o OUT}: the pieces that {@code brdfmap --tile I/N --pieces DIR} or {@code render
- * --turntable F --tile I/N --pieces DIR} left, checked and assembled, written exactly as one run of that command with
- * their options writes its result (a map's exposure, auto included, is chosen on the whole map here; a GIF's palette
- * on all its frames).
+ * {@code diffract merge DIR -o OUT}: the pieces that {@code brdfmap --tile I/N --pieces DIR}, {@code render
+ * --turntable F --tile I/N --pieces DIR} or {@code bench --tile I/N --pieces DIR} left, checked and assembled, written
+ * exactly as one run of that command with their options writes its result (a map's exposure, auto included, is chosen
+ * on the whole map here; a GIF's palette on all its frames; a sweep's Pareto front on all its rows).
  */
 @Command(name = "merge", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Assemble the pieces of a BRDF map (brdfmap --tile I/N --pieces DIR) or of a turntable (render "
-                + "--turntable F --tile I/N --pieces DIR) into the result: the same files, bit for bit, as one run "
-                + "with the pieces' options writes. Pieces missing, there twice, damaged or of another result are "
-                + "refused, named.")
+        description = "Assemble the pieces of a BRDF map (brdfmap --tile I/N --pieces DIR), of a turntable (render "
+                + "--turntable F --tile I/N --pieces DIR) or of a bench sweep (bench --tile I/N --pieces DIR) into the "
+                + "result: the same files, bit for bit, as one run with the pieces' options writes (a sweep: its rows "
+                + "as measured). Pieces missing, there twice, damaged or of another result are refused, named.")
 final class MergeCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "DIR", description = "The folder of pieces.")
     Path pieces;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT",
             description = "What to write, as the command's -o: a map's PNG (at the pieces' --exposure) or OpenEXR "
-                    + "file; a turntable's .gif or .png name for the numbered sequence.")
+                    + "file; a turntable's .gif or .png name for the numbered sequence; a bench sweep's folder.")
     Path output;
 
     @Option(names = "--pfm", paramLabel = "MAP.pfm", description = "Also write the floats, as brdfmap's --pfm.")
@@ -66,6 +66,23 @@ final class MergeCommand implements Callable<Integer> {
                     m.items(), (System.nanoTime() - start) * 1e-9);
             return 0;
         }
+        if ("bench".equals(m.command())) {
+            if (pfm != null || exr != null) {
+                throw new UserInputException("merge: the pieces are a bench sweep's rows: --pfm and --exr go with a "
+                        + "BRDF map's pieces; write -o DIR, the bench's folder");
+            }
+            if (!diffract.util.Version.VERSION.equals(m.settings().get("version"))) {
+                throw new UserInputException("merge: the pieces were measured by diffract "
+                        + m.settings().get("version") + ", this is " + diffract.util.Version.VERSION
+                        + ": measure them again with this diffract");
+            }
+            BenchCommand single = (BenchCommand) singleRun(m);
+            single.outputDir = output;
+            single.writeMerged(assembled.pieces(), reporter);
+            System.out.printf(Locale.ROOT, "merged %d pieces into %s (%d configurations) in %.1f s%n", m.pieces(),
+                    output, m.items(), (System.nanoTime() - start) * 1e-9);
+            return 0;
+        }
         BrdfMapCommand single = (BrdfMapCommand) singleRun(m);
         String settings = single.brdf.apply(BrdfMapCommand.base(single.requested())).toString();
         if (!settings.equals(m.settings().get("brdf"))) {
@@ -89,7 +106,7 @@ final class MergeCommand implements Callable<Integer> {
         args.addAll(m.arguments());
         CommandLine.ParseResult parsed;
         try {
-            parsed = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
+            parsed = Main.commandLine(String.valueOf(m.command()))
                     .parseArgs(args.toArray(String[]::new));
         } catch (CommandLine.ParameterException e) {
             throw new UserInputException("merge: the pieces' options no longer parse (" + e.getMessage()

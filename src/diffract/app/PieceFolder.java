@@ -26,8 +26,9 @@ import java.util.TreeMap;
 import java.util.stream.Collectors;
 
 /**
- * A folder of pieces of one result (a BRDF map, a turntable's frames): {@code brdfmap --tile} and {@code render
- * --turntable F --tile} write one each, {@code merge} reads them all back into the whole result's floats, or refuses,
+ * A folder of pieces of one result (a BRDF map, a turntable's frames, a bench sweep's rows): {@code brdfmap --tile},
+ * {@code render --turntable F --tile} and {@code bench --tile} write one each, {@code merge} reads them all back into
+ * the whole result's floats (a bench piece has none: its rows are in its manifest), or refuses,
  * in one line, a folder whose pieces are missing, twice there, damaged or of another result. The floats are written
  * before the manifest, each atomically, so a run that dies leaves no manifest that merge would accept.
  */
@@ -39,8 +40,11 @@ final class PieceFolder {
     private PieceFolder() {
     }
 
-    /** The pieces of a result, assembled: the first manifest (all agree) and all the result's floats, in order. */
-    record Assembled(PieceManifest manifest, float[] floats) {
+    /**
+     * The pieces of a result, assembled: the first manifest (all agree), all the result's floats, and every piece's
+     * manifest, in order.
+     */
+    record Assembled(PieceManifest manifest, float[] floats, List<PieceManifest> pieces) {
     }
 
     /** Writes a piece's floats, then its manifest (with the floats' name and hash filled in). */
@@ -61,8 +65,8 @@ final class PieceFolder {
     /** Every piece in {@code dir}, checked against each other and their hashes, as one result. */
     static Assembled read(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) {
-            throw new UserInputException("merge: " + dir + " is not a folder of pieces (brdfmap or render --tile I/N "
-                    + "--pieces DIR writes one)");
+            throw new UserInputException("merge: " + dir + " is not a folder of pieces (brdfmap, render or bench "
+                    + "--tile I/N --pieces DIR writes one)");
         }
         Map<Path, PieceManifest> manifests = new TreeMap<>();
         try (DirectoryStream<Path> files = Files.newDirectoryStream(dir, "*" + MANIFEST)) {
@@ -71,8 +75,8 @@ final class PieceFolder {
             }
         }
         if (manifests.isEmpty()) {
-            throw new UserInputException("merge: " + dir + " holds no pieces (piece-I-of-N.json, written by brdfmap "
-                    + "or render --tile I/N --pieces " + dir + ")");
+            throw new UserInputException("merge: " + dir + " holds no pieces (piece-I-of-N.json, written by brdfmap, "
+                    + "render or bench --tile I/N --pieces " + dir + ")");
         }
         PieceManifest first = agreeing(dir, manifests);
         PieceManifest[] byIndex = complete(dir, manifests, first.pieces());
@@ -86,7 +90,7 @@ final class PieceFolder {
             float[] floats = verifiedFloats(dir, m);
             System.arraycopy(floats, 0, all, m.from() * m.floatsPerItem(), floats.length);
         }
-        return new Assembled(first, all);
+        return new Assembled(first, all, List.of(byIndex));
     }
 
     private static PieceManifest parse(Path file) throws IOException {
@@ -124,7 +128,11 @@ final class PieceFolder {
 
     /** What a piece is part of, in words. */
     private static String what(PieceManifest m) {
-        return "render".equals(m.command()) ? "turntable" : "map";
+        return switch (String.valueOf(m.command())) {
+            case "render" -> "turntable";
+            case "bench" -> "bench sweep";
+            default -> "map";
+        };
     }
 
     /** The first thing that differs between two pieces' results, in words. */
@@ -203,7 +211,11 @@ final class PieceFolder {
 
     /** What a piece's items are, in words. */
     private static String items(PieceManifest m) {
-        return "render".equals(m.command()) ? "frames" : "rows";
+        return switch (String.valueOf(m.command())) {
+            case "render" -> "frames";
+            case "bench" -> "configurations";
+            default -> "rows";
+        };
     }
 
     /** A piece's floats, if their hash is the manifest's. */

@@ -235,7 +235,7 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
         picture.put("frameMs", Integer.toString(turntable.frameMs));
         PieceManifest manifest = new PieceManifest(PieceManifest.FORMAT, spec.name(), tile.index(), tile.count(),
                 band.fromRow(), band.toRow(), frames, perFrame, setup.patch().contentSha256(), settings, picture,
-                TileOptions.argumentsWithoutTile(spec), null, null);
+                TileOptions.argumentsWithoutTile(spec), null, null, null);
         PieceFolder.write(tiles.pieces, manifest, floats);
         // submit reads this line: the piece's fixed cost (loading, the table) against its work (the frames)
         System.out.printf(Locale.ROOT, "wrote piece %s (frames %s of %d) into %s: setup %.2f s, work %.2f s%n", tile,

@@ -29,7 +29,7 @@ final class SlurmScript {
     /**
      * The script's text.
      *
-     * @param commandName the command the pieces run: brdfmap, or render with --turntable
+     * @param commandName the command the pieces run: brdfmap, render with --turntable, or bench
      * @param options the command's options of one piece, less --tile, --pieces and the outputs that merge writes
      * @param pieces  the pieces' folder, absolute: the nodes write there
      * @param count   how many pieces (tasks)
@@ -44,7 +44,11 @@ final class SlurmScript {
         StringBuilder s = new StringBuilder();
         s.append("#!/bin/bash\n");
         s.append("# Written by 'diffract submit --slurm': task I of this array computes piece I of ").append(count)
-                .append(commandName.equals("render") ? " of a turntable's frames\n" : " of a BRDF map\n");
+                .append(switch (commandName) {
+                    case "render" -> " of a turntable's frames\n";
+                    case "bench" -> " of a bench sweep's configurations\n";
+                    default -> " of a BRDF map\n";
+                });
         s.append("# into this folder. Resubmit with: sbatch ").append(quote(pieces.resolve(FILE_NAME).toString()))
                 .append(" (pieces that failed: sbatch --array=I,J ...);\n");
         s.append("# once every piece is there: ").append(command(merge)).append('\n');

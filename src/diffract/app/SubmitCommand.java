@@ -29,11 +29,11 @@ import java.util.stream.Stream;
  * merge command.
  */
 @Command(name = "submit", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Run a brdfmap command as N pieces (bands of rows), or a render --turntable command as N pieces "
-                + "(runs of frames), in J local worker processes or as a Slurm job array, then merge them: the same "
-                + "files, bit for bit, as the command alone writes. Usage: diffract submit --local J -- brdfmap "
-                + "OPTIONS, or diffract submit --slurm --piece-count N --keep-pieces DIR -- render SCENE "
-                + "--turntable F OPTIONS.")
+        description = "Run a brdfmap command as N pieces (bands of rows), a render --turntable command as N pieces "
+                + "(runs of frames) or a bench sweep as N pieces (runs of configurations), in J local worker processes "
+                + "or as a Slurm job array, then merge them: the same files, bit for bit, as the command alone writes "
+                + "(a sweep: its rows as measured). Usage: diffract submit --local J -- brdfmap OPTIONS, or diffract "
+                + "submit --slurm --piece-count N --keep-pieces DIR -- render SCENE --turntable F OPTIONS.")
 final class SubmitCommand implements Callable<Integer> {
     @Option(names = "--local", paramLabel = "J",
             description = "How many worker processes run at once on this machine; each gets its share of the "
@@ -97,7 +97,10 @@ final class SubmitCommand implements Callable<Integer> {
             for (int i = 0; i < count; i++) {
                 List<String> piece = new ArrayList<>(List.of(single.name()));
                 piece.addAll(options);
-                piece.addAll(List.of("--tile", i + "/" + count, "--pieces", dir.toString(), "--quiet"));
+                piece.addAll(List.of("--tile", i + "/" + count, "--pieces", dir.toString()));
+                if (!single.quiet()) {
+                    piece.add("--quiet"); // a worker's progress goes nowhere; a command told to be quiet already is
+                }
                 pieces.add(piece);
             }
             int processors = slurm.cpusPerTask != null ? slurm.cpusPerTask
@@ -197,17 +200,17 @@ final class SubmitCommand implements Callable<Integer> {
     private static SplitCommand parse(List<String> command) {
         CommandLine.ParseResult parsed;
         try {
-            parsed = new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true)
+            parsed = Main.commandLine().setCaseInsensitiveEnumValuesAllowed(true)
                     .parseArgs(command.toArray(String[]::new));
         } catch (CommandLine.ParameterException e) {
             throw new UserInputException(command.get(0) + ": " + e.getMessage());
         }
         if (!parsed.hasSubcommand() || parsed.subcommand().isUsageHelpRequested()) {
-            throw new UserInputException("submit needs a command to run: -- brdfmap OPTIONS or -- render SCENE "
-                    + "--turntable F OPTIONS");
+            throw new UserInputException("submit needs a command to run: -- brdfmap OPTIONS, -- render SCENE "
+                    + "--turntable F OPTIONS or -- bench OPTIONS");
         }
         if (!(parsed.subcommand().commandSpec().userObject() instanceof SplitCommand split)) {
-            throw new UserInputException("submit runs brdfmap or render --turntable in pieces, not "
+            throw new UserInputException("submit runs brdfmap, render --turntable or bench in pieces, not "
                     + parsed.subcommand().commandSpec().name() + ": diffract submit --local J -- brdfmap OPTIONS");
         }
         return split;

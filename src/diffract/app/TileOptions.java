@@ -13,15 +13,16 @@ import java.util.List;
 
 /**
  * {@code --tile I/N --pieces DIR}: a run computes only piece I of N equal pieces of its result (a BRDF map's rows, a
- * turntable's frames) and leaves it, as one piece file and its manifest, in a folder that {@code diffract merge}
+ * turntable's frames, a bench sweep's configurations) and leaves it, as one piece file and its manifest, in a folder that {@code diffract merge}
  * turns into the result. Long work can so be split over processes or machines; {@code diffract submit} does it on
  * this one or on a Slurm cluster.
  */
 final class TileOptions {
     @Option(names = "--tile", paramLabel = "I/N", converter = Tile.Converter.class,
             description = "Compute only piece I (0..N-1) of N equal pieces of the result (brdfmap: bands of the map's "
-                    + "rows, on the CPU; render --turntable: runs of frames), as floats, into --pieces DIR; 'diffract "
-                    + "merge DIR -o OUT' writes the result as one run would (the outputs go to merge, not here).")
+                    + "rows, on the CPU; render --turntable: runs of frames; bench: runs of the sweep's "
+                    + "configurations) into --pieces DIR; 'diffract merge DIR -o OUT' writes the result as one run "
+                    + "would (the outputs go to merge, not here).")
     Tile tile;
 
     @Option(names = "--pieces", paramLabel = "DIR",

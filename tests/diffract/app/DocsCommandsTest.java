@@ -40,7 +40,7 @@ class DocsCommandsTest {
             String[] args = command.substring(command.indexOf("./diffract ") + "./diffract ".length())
                     .replaceFirst("\\s>\\s*\\S+\\s*$", "").trim().split("\\s+");
             try {
-                new CommandLine(new Main()).setCaseInsensitiveEnumValuesAllowed(true).parseArgs(args);
+                Main.commandLine().setCaseInsensitiveEnumValuesAllowed(true).parseArgs(args);
             } catch (CommandLine.ParameterException e) {
                 failures.add(command + "\n    " + e.getMessage());
             }

@@ -16,7 +16,7 @@ class HelpTextTest {
     @Test
     void everyOptionAndParameterHasADescription() {
         List<String> missing = new ArrayList<>();
-        collect(new CommandLine(new Main()).getCommandSpec(), missing);
+        collect(Main.commandLine().getCommandSpec(), missing);
         assertEquals(List.of(), missing, "options and parameters without a description");
     }
 

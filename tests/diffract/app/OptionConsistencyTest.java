@@ -30,7 +30,7 @@ class OptionConsistencyTest {
     void everySharedOptionTakesTheSameValueEverywhere() {
         Map<String, TreeSet<String>> forms = new TreeMap<>();
         Map<String, List<String>> where = new TreeMap<>();
-        walk(new CommandLine(new Main()).getCommandSpec(), forms, where);
+        walk(Main.commandLine().getCommandSpec(), forms, where);
         List<String> inconsistent = new ArrayList<>();
         forms.forEach((name, variants) -> {
             if (variants.size() > 1 && !DIFFERS_ON_PURPOSE.containsKey(name)) {

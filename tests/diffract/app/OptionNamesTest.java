@@ -13,7 +13,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class OptionNamesTest {
     @Test
     void everyQuantityHasAnOptionThatACommandDeclares() {
-        CommandLine cli = new CommandLine(new Main());
+        CommandLine cli = Main.commandLine();
         Set<String> declared = new HashSet<>();
         for (CommandLine sub : cli.getSubcommands().values()) {
             sub.getCommandSpec().options().forEach(o -> declared.addAll(java.util.List.of(o.names())));
@@ -26,7 +26,7 @@ class OptionNamesTest {
 
     @Test
     void theSameOptionMeansTheSameOnEveryCommand() {
-        CommandLine cli = new CommandLine(new Main());
+        CommandLine cli = Main.commandLine();
         for (String shared : new String[] {"--terms", "--variant", "--window-radius", "--coherence-length",
             "--lambda-step", "--patch", "--synthetic"}) {
             Set<String> labels = new HashSet<>();

@@ -29,7 +29,8 @@ class SubmitCommandTest {
     void aCommandThatDoesNotSplitIsRefused() {
         Object[] result = CliTest.run("submit", "--local", "2", "--", "measure", "assets/scenes/snake-elaphe.json");
         assertEquals(2, result[0]);
-        assertTrue(((String) result[2]).contains("submit runs brdfmap or render --turntable in pieces, not measure"),
+        assertTrue(((String) result[2]).contains(
+                "submit runs brdfmap, render --turntable or bench in pieces, not measure"),
                 (String) result[2]);
         result = CliTest.run("submit", "--local", "2", "--", "render", "assets/scenes/blazed-grating-plane.json", "-o",
                 "x.png");
