@@ -6,7 +6,6 @@ import diffract.bench.MapError;
 import diffract.bench.ReferenceMaps;
 import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
-import diffract.colour.Xyz;
 import diffract.jrtr.GLInfo;
 import diffract.jrtr.OffscreenTarget;
 import diffract.optics.BrdfSettings;
@@ -213,7 +212,8 @@ final class GpuSuite {
             }
             writePng("scene-" + fileName(name) + ".png", picture, size);
             boolean[] covered = covered(reference);
-            DeltaEStatistics error = DeltaEStatistics.of(xyzOfDisplayRgb(reference), xyzOfDisplayRgb(picture), covered);
+            DeltaEStatistics error = DeltaEStatistics.of(Srgb.xyzOfDisplayRgb(reference), Srgb.xyzOfDisplayRgb(picture),
+                    covered);
             rows.add(log(new Row("scene", name[0], settings, size[0], size[1], ms, size[0], error.mean(), error.p95(),
                     error.pixels(), "gpu " + (settings.variant().filtersLight() ? "lobes" : "flss") + " N="
                     + converged.taylor().highestOrder() + (settings.variant().filtersLight() ? "" : " 1 nm"))));
@@ -307,19 +307,6 @@ final class GpuSuite {
                     || Math.abs(rgb[3 * p + 2] - clear[2]) > 1e-3;
         }
         return covered;
-    }
-
-    /** The viewer writes display-encoded sRGB; CIEDE2000 compares the XYZ it encodes (D65, Y = 1). */
-    static float[] xyzOfDisplayRgb(float[] rgb) {
-        float[] xyz = new float[rgb.length];
-        for (int p = 0; p < rgb.length; p += 3) {
-            Xyz c = Srgb.xyzFromLinear(new double[] {Srgb.decode(rgb[p]), Srgb.decode(rgb[p + 1]),
-                Srgb.decode(rgb[p + 2])});
-            xyz[p] = (float) c.x();
-            xyz[p + 1] = (float) c.y();
-            xyz[p + 2] = (float) c.z();
-        }
-        return xyz;
     }
 
     static String csv(List<Row> rows, GLInfo gl) {

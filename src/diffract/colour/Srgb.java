@@ -115,4 +115,16 @@ public final class Srgb {
         }
         return Math.pow((encoded + OFFSET) / (1 + OFFSET), GAMMA);
     }
+
+    /** XYZ (D65, Y = 1) of interleaved display-encoded sRGB triples, as a picture's pixels are stored. */
+    public static float[] xyzOfDisplayRgb(float[] rgb) {
+        float[] xyz = new float[rgb.length];
+        for (int p = 0; p + 2 < rgb.length; p += 3) {
+            Xyz c = xyzFromLinear(new double[] {decode(rgb[p]), decode(rgb[p + 1]), decode(rgb[p + 2])});
+            xyz[p] = (float) c.x();
+            xyz[p + 1] = (float) c.y();
+            xyz[p + 2] = (float) c.z();
+        }
+        return xyz;
+    }
 }

@@ -2,7 +2,6 @@ package diffract.render;
 
 import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
-import diffract.colour.Xyz;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.Variant;
 import diffract.scene.Fabricator;
@@ -62,23 +61,10 @@ class InterleavedSkyTest {
     }
 
     private static DeltaEStatistics difference(SceneSetup a, SceneSetup b) {
-        float[] xyzA = xyz(StagedSurfaceTest.render(a));
-        float[] xyzB = xyz(StagedSurfaceTest.render(b));
+        float[] xyzA = Srgb.xyzOfDisplayRgb(StagedSurfaceTest.render(a));
+        float[] xyzB = Srgb.xyzOfDisplayRgb(StagedSurfaceTest.render(b));
         boolean[] all = new boolean[xyzA.length / 3];
         Arrays.fill(all, true);
         return DeltaEStatistics.of(xyzA, xyzB, all);
-    }
-
-    /** The display sRGB the viewer writes, as XYZ (D65, Y = 1). */
-    private static float[] xyz(float[] rgb) {
-        float[] xyz = new float[rgb.length];
-        for (int p = 0; p < rgb.length; p += 3) {
-            Xyz c = Srgb.xyzFromLinear(new double[] {Srgb.decode(rgb[p]), Srgb.decode(rgb[p + 1]),
-                Srgb.decode(rgb[p + 2])});
-            xyz[p] = (float) c.x();
-            xyz[p + 1] = (float) c.y();
-            xyz[p + 2] = (float) c.z();
-        }
-        return xyz;
     }
 }
