@@ -80,7 +80,7 @@ public final class SkyTable {
         for (int k = 0; k < lights.size(); k++) {
             double variance = sigmaUv[k] * sigmaUv[k] - tableLightSigmaRad * tableLightSigmaRad
                     - pooled.spacing * pooled.spacing / 12 - step * step / 6;
-            spread(pooled, side, Math.sqrt(Math.max(variance, 0)), one, 0);
+            spread(pooled, side, Math.sqrt(Math.max(variance, 0)), one);
             oversampleW(one, side * side, nw, out, k * 3 * side * side * slices);
         }
         return new SkyTable(side, slices, lights.size(), out);
@@ -156,13 +156,17 @@ public final class SkyTable {
      * the table (unreachable directions), sampled at side x side points over the table's range: separable, u then v,
      * each a Riemann sum over the blocks.
      */
-    private static void spread(Pooled p, int side, double sigmaUv, float[] out, int offset) {
+    private static void spread(Pooled p, int side, double sigmaUv, float[] out) {
         double step = (BakedGrid.U_MAX - BakedGrid.U_MIN) / (side - 1);
         double[][] kernel = new double[side][p.count];
         for (int j = 0; j < side; j++) {
             double at = BakedGrid.U_MIN + j * step;
+            if (sigmaUv == 0) {
+                kernel[j][nearest(p, at)] = 1;
+                continue;
+            }
             for (int a = 0; a < p.count; a++) {
-                kernel[j][a] = sigmaUv == 0 ? nearest(p, at, a) : p.weight[a] * gaussian(at - p.position[a], sigmaUv);
+                kernel[j][a] = p.weight[a] * gaussian(at - p.position[a], sigmaUv);
             }
         }
         int count = p.count;
@@ -202,7 +206,7 @@ public final class SkyTable {
                         g += k * alongU[at + 1];
                         bl += k * alongU[at + 2];
                     }
-                    int to = offset + 3 * (j + side * (l + side * w));
+                    int to = 3 * (j + side * (l + side * w));
                     out[to] = (float) r;
                     out[to + 1] = (float) g;
                     out[to + 2] = (float) bl;
@@ -217,15 +221,15 @@ public final class SkyTable {
         return Math.abs(t) > 5 ? 0 : Math.exp(-0.5 * t * t) / (Math.sqrt(2 * Math.PI) * sigma);
     }
 
-    /** Without a spread: the block nearest to {@code at}, weight 1. */
-    private static double nearest(Pooled p, double at, int a) {
-        double d = Math.abs(at - p.position[a]);
-        for (int b = 0; b < p.count; b++) {
-            if (Math.abs(at - p.position[b]) < d) {
-                return 0;
+    /** Without a spread: the block nearest to {@code at} (the first of two as near), which gets weight 1. */
+    private static int nearest(Pooled p, double at) {
+        int best = 0;
+        for (int b = 1; b < p.count; b++) {
+            if (Math.abs(at - p.position[b]) < Math.abs(at - p.position[best])) {
+                best = b;
             }
         }
-        return 1;
+        return best;
     }
 
     public int side() {
