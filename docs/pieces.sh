@@ -128,7 +128,9 @@ fixed() {  # the pieces' fixed cost (start and setup) as a percentage of their w
         echo "| submit --slurm --piece-count $PIECES --cpus-per-task 1 (one-node Slurm, $(nproc) CPUs) | $slurm | | | | |"
     fi
     echo
-    echo "Each of \`submit --local\`'s J workers is one Java process that computes piece after piece, as they come. A"
+    echo "Each of \`submit --local\`'s J workers is one Java process that computes piece after piece, as they come:"
+    echo "a map's outer bands first (0, $((PIECES - 1)), 1, $((PIECES - 2)), ...), whose rows near the horizon's rim cost"
+    echo "the most (the table below), so that the cheap middle bands even out the workers' ends. A"
     echo "piece's *start* is its wall time less what it measured itself: reading its options and writing the piece,"
     echo "and for a worker's first piece the Java VM's start; *setup* is loading the patch and building the BRDF,"
     echo "*work* its pixels; the fixed cost column gives the sums' ratio and, in brackets, the largest piece's (a"
@@ -149,8 +151,8 @@ fixed() {  # the pieces' fixed cost (start and setup) as a percentage of their w
     echo "work, which runs interpreted or half-compiled until it is done. That is why a local worker computes all its"
     echo "pieces in one process: it pays both once. A Slurm task is a process of its own and pays them per piece"
     echo "(choose fewer, larger pieces there). What remains of the second worker's shortfall is the compilation"
-    echo "that one worker of one processor does beside its work and two must share, the last pieces' imbalance (rows"
-    echo "near the rim cost more: the table below) and the machine's other load. Compiling less does not pay: with the"
+    echo "that one worker of one processor does beside its work and two must share, what is left"
+    echo "of the last pieces' imbalance and the machine's other load. Compiling less does not pay: with the"
     echo "first tier alone (-XX:TieredStopAtLevel=1) the same piece works $c1_work s."
     echo
     echo "| piece | rows | local 1: wall | start | setup | work | local 2: wall | start | setup | work |"

@@ -349,6 +349,22 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         return "rows";
     }
 
+    /**
+     * The bands farthest from the map's middle row first, alternating top and bottom. Their pixels lie nearest the
+     * horizon's rim, which the CPU's filtered pixels refine where their boxes cross it, and their directions are the
+     * most grazing: an outer band of a 256 x 256 reference map in 8 pieces works 1.6 to 1.9 times as long as a middle
+     * one (docs/pieces.md). Taken first, they leave the cheap middle bands to even out the workers' ends, and each
+     * worker's start is paid beside its longest piece.
+     */
+    @Override
+    public int[] dispatchOrder(int pieceCount) {
+        double middle = (pieceCount - 1) / 2.0;
+        return java.util.stream.IntStream.range(0, pieceCount).boxed()
+                .sorted(java.util.Comparator.comparingDouble((Integer i) -> -Math.abs(i - middle))
+                        .thenComparingInt(i -> i))
+                .mapToInt(Integer::intValue).toArray();
+    }
+
     @Override
     public List<String> mergeOutputs(java.util.function.Function<Path, String> path) {
         List<String> merge = new ArrayList<>(List.of("-o", path.apply(output)));

@@ -9,6 +9,7 @@ import java.lang.management.ManagementFactory;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.ExecutorService;
@@ -48,6 +49,21 @@ final class LocalWorkers {
      */
     static Finished run(List<List<String>> commands, int workers, int processors, Consumer<Finished> finished)
             throws IOException, InterruptedException {
+        return run(commands, java.util.stream.IntStream.range(0, commands.size()).toArray(), workers, processors,
+                finished);
+    }
+
+    /**
+     * As {@link #run(List, int, int, Consumer)}, the commands handed out in {@code order} (indices into
+     * {@code commands}, each once); a {@link Finished}'s index is the command's own.
+     */
+    static Finished run(List<List<String>> commands, int[] order, int workers, int processors,
+                        Consumer<Finished> finished) throws IOException, InterruptedException {
+        if (order.length != commands.size()
+                || java.util.stream.IntStream.of(order).distinct().filter(i -> i >= 0 && i < order.length).count()
+                != order.length) {
+            throw new IllegalArgumentException("the order must name every command once: " + Arrays.toString(order));
+        }
         List<String> worker = new ArrayList<>(javaCommand(processors));
         worker.add("worker");
         ExecutorService pool = Executors.newFixedThreadPool(workers, r -> {
@@ -62,7 +78,7 @@ final class LocalWorkers {
             List<Future<?>> futures = new ArrayList<>();
             for (int w = 0; w < workers; w++) {
                 futures.add(pool.submit(() -> {
-                    work(worker, commands, next, started, failure, finished);
+                    work(worker, commands, order, next, started, failure, finished);
                     return null;
                 }));
             }
@@ -84,7 +100,7 @@ final class LocalWorkers {
     }
 
     /** One worker process: the next command, until none is left or one has failed; then its input ends, and so does it. */
-    private static void work(List<String> worker, List<List<String>> commands, AtomicInteger next,
+    private static void work(List<String> worker, List<List<String>> commands, int[] order, AtomicInteger next,
                              List<Process> started, Finished[] failure, Consumer<Finished> finished)
             throws IOException, InterruptedException {
         long start = System.nanoTime();
@@ -92,7 +108,8 @@ final class LocalWorkers {
         started.add(p);
         try (BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
              Writer in = new OutputStreamWriter(p.getOutputStream(), StandardCharsets.UTF_8)) {
-            for (int index = next.getAndIncrement(); index < commands.size(); index = next.getAndIncrement()) {
+            for (int taken = next.getAndIncrement(); taken < order.length; taken = next.getAndIncrement()) {
+                int index = order[taken];
                 synchronized (failure) {
                     if (failure[0] != null) {
                         return; // a command failed: start no more

@@ -33,4 +33,13 @@ interface SplitCommand {
 
     /** Whether the command was told to be quiet. */
     boolean quiet();
+
+    /**
+     * The order in which local workers take the {@code pieceCount} pieces (each index once): where some pieces are
+     * known to cost more, those first, so that the cheap ones even out the workers' ends (longest processing time
+     * first). By default in index order.
+     */
+    default int[] dispatchOrder(int pieceCount) {
+        return java.util.stream.IntStream.range(0, pieceCount).toArray();
+    }
 }

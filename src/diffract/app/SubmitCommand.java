@@ -109,7 +109,8 @@ final class SubmitCommand implements Callable<Integer> {
                     count, single.items(), single.itemsName(), Math.min(workers, count), processors,
                     processors == 1 ? "" : "s", dir);
             int[] done = {0};
-            LocalWorkers.Finished failed = LocalWorkers.run(pieces, Math.min(workers, count), processors, f -> {
+            LocalWorkers.Finished failed = LocalWorkers.run(pieces, single.dispatchOrder(count),
+                    Math.min(workers, count), processors, f -> {
                 if (f.exitCode() == 0) {
                     done[0]++;
                     System.out.println(progressLine(f, count, single, done[0], start));

@@ -9,6 +9,7 @@ import java.util.List;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
@@ -26,6 +27,19 @@ class LocalWorkersTest {
         assertTrue(done.get(1).output().startsWith("Usage: diffract merge"), done.get(1).output());
         assertEquals("diffract 0.1.0\n", done.get(2).output());
         assertTrue(done.stream().allMatch(f -> f.exitCode() == 0 && f.wallS() > 0));
+    }
+
+    @Test
+    void workersTakeTheCommandsInTheOrderGivenAndReportTheirOwnIndices() throws Exception {
+        List<List<String>> commands = List.of(List.of("--version"), List.of("merge", "--help"), List.of("--version"));
+        List<LocalWorkers.Finished> done = Collections.synchronizedList(new ArrayList<>());
+        assertNull(LocalWorkers.run(commands, new int[] {2, 0, 1}, 1, 1, done::add));
+        assertEquals(List.of(2, 0, 1), done.stream().map(LocalWorkers.Finished::index).toList());
+        assertTrue(done.get(2).output().startsWith("Usage: diffract merge"), done.get(2).output());
+        assertThrows(IllegalArgumentException.class,
+                () -> LocalWorkers.run(commands, new int[] {0, 0, 1}, 1, 1, done::add), "each once");
+        assertThrows(IllegalArgumentException.class,
+                () -> LocalWorkers.run(commands, new int[] {0, 1}, 1, 1, done::add), "every one");
     }
 
     @Test

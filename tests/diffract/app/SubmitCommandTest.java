@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -23,6 +24,15 @@ class SubmitCommandTest {
         assertEquals(List.of("--synthetic", "blazed", "--theta-i", "30", "--size", "24"),
                 SubmitCommand.withoutOutputs(List.of("--synthetic", "blazed", "-o", "m.png", "--theta-i", "30",
                         "--pfm=m.pfm", "--exr", "m.exr", "--size", "24", "--output=x.png", "-oy.png")));
+    }
+
+    @Test
+    void aMapsOuterBandsAreHandedOutFirstAndEveryOtherCommandsPiecesInOrder() {
+        BrdfMapCommand map = new BrdfMapCommand();
+        assertArrayEquals(new int[] {0, 7, 1, 6, 2, 5, 3, 4}, map.dispatchOrder(8));
+        assertArrayEquals(new int[] {0, 4, 1, 3, 2}, map.dispatchOrder(5));
+        assertArrayEquals(new int[] {0}, map.dispatchOrder(1));
+        assertArrayEquals(new int[] {0, 1, 2, 3}, new RenderCommand().dispatchOrder(4));
     }
 
     @Test
