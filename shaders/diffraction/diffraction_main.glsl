@@ -21,12 +21,20 @@ void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi);
 void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad); // a light of sigma_a = sigmaRad
 #endif
 
+#ifdef LIGHT_DISC
+// The lobes method under a disc light places the disc for each pixel (lobes_footprint.glsl).
+void setDisc(vec3 wi, vec3 wr);
+#endif
+
 // CIE XYZ of the light reflected towards omega_r, D65 white at Y = 1 (DiffractionBrdf.xyz; eq. finalexpression).
 vec3 diffractionXyz(vec3 wi, vec3 wr) {
     float gain = gainTimesShadowing(wi, wr);
     if (gain == 0.0) {
         return vec3(0.0);
     }
+#if defined(LIGHT_DISC) && !defined(STAGE)
+    setDisc(wi, wr);
+#endif
     return gain * spectralXyz(uvwOf(wi, wr));
 }
 

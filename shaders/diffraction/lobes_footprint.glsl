@@ -59,9 +59,13 @@ void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
     footprintShiftCount = 1;
 }
 
-// A surface pixel under the settings' light (lightSigmaRad).
+// A surface pixel under the settings' light (lightSigmaRad; a disc is averaged over as itself, setDisc).
 void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
+#ifdef LIGHT_DISC
+    setSurfacePixelUnder(dUvDx, dUvDy, wi, 0.0);
+#else
     setSurfacePixelUnder(dUvDx, dUvDy, wi, lightSigmaRad);
+#endif
 }
 
 // ErrorFunction.fastErfc for x >= 0: Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7.
@@ -80,6 +84,13 @@ float massInInterval(float a, float b) {
     return 0.5 * (a < 0.0 && b > 0.0 ? 2.0 - ea - eb : sameSide);
 }
 
+// Phi(z), the standard normal distribution, from the fast erfc on whichever side does not cancel.
+float normalCdf(float z) {
+    float tail = 0.5 * erfcPositive(abs(z) * 0.70710678);
+    return z >= 0.0 ? 1.0 - tail : tail;
+}
+
+
 #ifdef LOBES_BOX
 // LobeGeometry.axis with a box: sqrt(pi) sigmaUv times the average over [u - h, u + h] of N(mu, variance).
 float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
@@ -87,6 +98,110 @@ float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
     // the fast erf's absolute error (1.5e-7) could make a far tail's mass slightly negative
     float mass = max(0.0, massInInterval((u - h - mu) * scale, (u + h - mu) * scale));
     return 1.77245385 * sigmaUv * mass / (2.0 * h);
+}
+#endif
+
+#ifdef LIGHT_DISC
+// A disc light of half-angle lightHalfAngleRad (DiscFootprint): its directions seen from the pixel form an ellipse in
+// (u, v) around the pixel's (u, v) at the light's centre plus (1 - cos R) omega_i.xy, semi-axes sin R along
+// e = (-sin phi_i, cos phi_i) and sin R cos theta_i along r, of density 1 / (Omega d_z) per unit (u, v). setDisc places
+// it for one pixel (diffractionXyz); discOn is false for lights other than the disc (a stage's environment lights).
+uniform float lightHalfAngleRad;
+const float DISC_GAUSSIAN_BELOW = 1.0; // DiscFootprint.GAUSSIAN_BELOW
+const float DISC_EDGE_ABOVE = 3.0;    // DiscFootprint.EDGE_ABOVE
+bool discOn = false;
+vec2 discCentreOffset; // the ellipse's centre less the pixel's (u, v) at the light's centre
+vec2 discE;            // the unit axis across the plane of incidence (r = (e.y, -e.x))
+vec2 discAxes;         // (a, b) = (sin R, sin R cos theta_i)
+float discSolidAngle;
+vec3 discWr;
+float discCentreGain;
+
+// DiscFootprint's constructor for the pixel at omega_r under the disc about omega_i.
+void setDisc(vec3 wi, vec3 wr) {
+    float cosR = cos(lightHalfAngleRad);
+    float sinR = sin(lightHalfAngleRad);
+    float sinTheta = length(wi.xy);
+    vec2 r = sinTheta < 1e-6 ? vec2(1.0, 0.0) : wi.xy / sinTheta;
+    discE = vec2(-r.y, r.x);
+    discAxes = vec2(sinR, sinR * wi.z);
+    discCentreOffset = (1.0 - cosR) * wi.xy;
+    discSolidAngle = 6.28318531 * (1.0 - cosR);
+    discWr = wr;
+    discCentreGain = gainTimesShadowing(wi, wr);
+    discOn = lightHalfAngleRad > 0.0;
+}
+
+// DiscFootprint.reach: the ellipse's support along u and v plus its centre's offset.
+vec2 discReach() {
+    vec2 r = vec2(discE.y, -discE.x);
+    return abs(discCentreOffset) + sqrt(discAxes.x * discAxes.x * discE * discE + discAxes.y * discAxes.y * r * r);
+}
+
+// DiscFootprint.covariance: (xx, xy, yy) of a^2 / 4 along e and b^2 / 4 along r.
+vec3 discCovariance() {
+    vec2 r = vec2(discE.y, -discE.x);
+    float ea = 0.25 * discAxes.x * discAxes.x;
+    float rb = 0.25 * discAxes.y * discAxes.y;
+    return ea * vec3(discE.x * discE.x, discE.x * discE.y, discE.y * discE.y) + rb * vec3(r.x * r.x, r.x * r.y, r.y * r.y);
+}
+
+// DiscFootprint.peakDensity: 1 / (Omega d_z) at the disc's lowest direction (theta_i + R).
+float discPeakDensity(vec3 wi) {
+    float lowest = cos(min(1.5698, acos(min(1.0, wi.z)) + lightHalfAngleRad));
+    return 1.0 / (discSolidAngle * lowest);
+}
+
+// DiscFootprint.average: the lobe of spread sigmaUv at mu averaged over the disc from the pixel at uv (its (u, v) at
+// the light's centre), with the footprint's box and Gaussian: (the average relative to the centre's gain, w at the
+// direction that puts the lobe on the pixel's centre).
+vec2 discAverage(float sigmaUv, vec2 mu, vec2 uv) {
+    float lobeVariance = 0.5 * sigmaUv * sigmaUv;
+    vec2 centre = uv + discCentreOffset;
+    vec2 q = mu - centre;
+    vec2 r = vec2(discE.y, -discE.x);
+    float xe = dot(q, discE);
+    float xr = dot(q, r);
+    float a = discAxes.x;
+    float b = discAxes.y;
+    float rho = sqrt((xe / a) * (xe / a) + (xr / b) * (xr / b));
+    float ge = xe / (a * a);
+    float gr = xr / (b * b);
+    float gNorm = length(vec2(ge, gr));
+    bool centred = rho < 1e-6 || gNorm < 1e-30;
+    vec2 n = centred ? r : (ge * discE + gr * r) / gNorm;
+    float dist = centred ? b : (1.0 - rho) * rho / gNorm;
+    vec3 g = footprintGaussian;
+    float blurVariance = lobeVariance + g.x * n.x * n.x + 2.0 * g.y * n.x * n.y + g.z * n.y * n.y
+            + (footprintHalfWidth.x * footprintHalfWidth.x * n.x * n.x
+            + footprintHalfWidth.y * footprintHalfWidth.y * n.y * n.y) / 3.0;
+    float s = sqrt(blurVariance);
+    float edgeWeight = smoothstep(DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE, b / s);
+    // the curved rim moved in by s^2 kappa / 2 (DiscFootprint.average)
+    float cosT = centred ? 0.0 : xe / (a * rho);
+    float sinT = centred ? 1.0 : xr / (b * rho);
+    float kappa = a * b / pow(a * a * sinT * sinT + b * b * cosT * cosT, 1.5);
+    dist -= 0.5 * blurVariance * kappa;
+    // the direction that puts the lobe on the pixel's centre, brought onto the rim from outside
+    vec2 d = -(centre + min(1.0, 1.0 / max(rho, 1e-30)) * q) - discWr.xy;
+    float dz2 = 1.0 - dot(d, d);
+    float dz = sqrt(max(1e-12, dz2));
+    float gain = dz2 > 0.0 && discCentreGain > 0.0 ? gainTimesShadowing(vec3(d, dz), discWr) / discCentreGain : 0.0;
+    float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * normalCdf(dist / s);
+    // the small disc's Gaussian (LobeGeometry.averagedLobe): a map pixel's box exactly with the Gaussian's diagonal,
+    // a surface pixel's Gaussian in full
+    vec3 spread = g + discCovariance();
+#ifdef LOBES_BOX
+    float gaussian = lobeAxis(sigmaUv, lobeVariance + spread.x, mu.x, centre.x, footprintHalfWidth.x)
+            * lobeAxis(sigmaUv, lobeVariance + spread.z, mu.y, centre.y, footprintHalfWidth.y);
+#else
+    vec3 full = spread + vec3(lobeVariance, 0.0, lobeVariance);
+    float det = full.x * full.z - full.y * full.y;
+    vec2 dc = centre - mu;
+    float quad = (full.z * dc.x * dc.x - 2.0 * full.y * dc.x * dc.y + full.x * dc.y * dc.y) / det;
+    float gaussian = sigmaUv * sigmaUv / (2.0 * sqrt(det)) * exp(-0.5 * quad);
+#endif
+    return vec2(gain * mix(gaussian, edge, edgeWeight), -(dz + discWr.z));
 }
 #endif
 

@@ -105,8 +105,12 @@ bool lobeReaches(ivec2 m, float w, float fromNm, float toNm, float peak) {
     if (lobeCutoff == 0.0) {
         return true;
     }
-    float k = 6.28318531 * abs(w) * 1e3;
-    return weightBound(m, k / toNm, k / fromNm) * peak >= lobeCutoff;
+    float spread = 0.0;
+#ifdef LIGHT_DISC
+    spread = discOn ? discAxes.x : 0.0; // a disc's directions move w by at most sin R about its centre's
+#endif
+    float k = 6.28318531 * 1e3;
+    return weightBound(m, k * max(0.0, abs(w) - spread) / toNm, k * (abs(w) + spread) / fromNm) * peak >= lobeCutoff;
 }
 
 // LobeSpectrum.Shape.peak: the largest average over the footprint a lobe of peak 1 can have (sigma_uv the widest).
@@ -150,24 +154,36 @@ vec2 texelRange(float u, float reach, float extentUm, float shortestUm, float lo
     return vec2(min(a / shortestUm, a / longestUm), max(b / shortestUm, b / longestUm));
 }
 
-// LobeSpectrum.spacingNm: the passage's width in nm over the nodes per sigma, on the hat levels or below 1 nm.
-float nodeSpacingNm(vec2 c, float fromNm) {
-    float lobeVariance = 0.5 * pow(fromNm * 1e-3 * sigmaFPerUm(), 2.0);
-    float width = 1e30;
-    if (c.x != 0.0) {
-        width = min(width, sqrt(lobeVariance + footprintGaussian.x) / abs(c.x) * 1e3);
-    }
-    if (c.y != 0.0) {
-        width = min(width, sqrt(lobeVariance + footprintGaussian.z) / abs(c.y) * 1e3);
-    }
-    // never wider than the band; below 1 nm a whole number of steps across it (LobeSpectrum.spacingNm)
+// LobeSpectrum.spacingOnLevels: a target spacing rounded down onto the hat levels (1, 2, 4, 8, 16 nm), or below 1 nm
+// a whole part of the band.
+float spacingOnLevels(float target) {
     float bandNm = lambdaMaxNm - lambdaMinNm;
-    float target = min(min(width / lobeNodesPerSigma, lobeMaxStepNm), bandNm);
     if (target >= 1.0) {
         return exp2(floor(log2(target) + 1e-6));
     }
     return bandNm / ceil(bandNm / max(target, 1e-3) - 1e-4);
 }
+
+// LobeSpectrum.spacingNm: the passage's width in nm over the nodes per sigma, on the hat levels or below 1 nm.
+float nodeSpacingNm(vec2 c, float fromNm) {
+    float lobeVariance = 0.5 * pow(fromNm * 1e-3 * sigmaFPerUm(), 2.0);
+    vec2 box = vec2(0.0);
+#ifdef LIGHT_DISC
+    // under a disc the rims are the passage's edges, as wide as the lobe and the box across them
+    box = discOn ? footprintHalfWidth * footprintHalfWidth / 3.0 : vec2(0.0);
+#endif
+    float width = 1e30;
+    if (c.x != 0.0) {
+        width = min(width, sqrt(lobeVariance + footprintGaussian.x + box.x) / abs(c.x) * 1e3);
+    }
+    if (c.y != 0.0) {
+        width = min(width, sqrt(lobeVariance + footprintGaussian.z + box.y) / abs(c.y) * 1e3);
+    }
+    // never wider than the band; below 1 nm a whole number of steps across it (LobeSpectrum.spacingNm)
+    float bandNm = lambdaMaxNm - lambdaMinNm;
+    return spacingOnLevels(min(min(width / lobeNodesPerSigma, lobeMaxStepNm), bandNm));
+}
+
 
 // LobeSpectrum.lastNode: the last node within the passage, or, for hats ending at the band's end, the first at or
 // beyond lambda_max (its hat still covers the band's last part).
@@ -224,9 +240,21 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
         reached = j;
         float lambdaNm = lambdaMinNm + float(j) * spacing;
         float lambdaUm = lambdaNm * 1e-3;
-        float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * uvw.z);
-        xyz += weight * averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy)
-                * spectralWeight(lambdaNm, spacing, levelBase) * nodeEndWeight(lambdaNm, spacing);
+        float w = uvw.z;
+        float average;
+#ifdef LIGHT_DISC
+        if (discOn) {
+            vec2 disc = discAverage(lambdaUm * sigmaF, lambdaUm * c, uvw.xy);
+            average = disc.x;
+            w = disc.y;
+        } else {
+            average = averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy);
+        }
+#else
+        average = averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy);
+#endif
+        float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * w);
+        xyz += weight * average * spectralWeight(lambdaNm, spacing, levelBase) * nodeEndWeight(lambdaNm, spacing);
     }
     lobesLeftOut = lobesLeftOut || reached < j1;
     return xyz;
@@ -249,6 +277,17 @@ vec3 spectralXyz(vec3 uvw) {
     vec3 full = footprintGaussian + (box ? lightRankOne : vec3(0.0));
     vec2 reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz);
     float peak = footprintPeak(widest);
+#ifdef LIGHT_DISC
+    if (discOn) {
+        // LobeSpectrum.Shape with a disc: its support, the box, and the blur of the lobe and the box; its plateau or
+        // small-disc peak, with 2 of slack for the gain
+        vec2 box = footprintHalfWidth * footprintHalfWidth / 3.0;
+        reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz + box);
+        vec3 s = full + discCovariance() + vec3(widest, 0.0, widest);
+        float gaussianPeak = 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
+        peak = 2.0 * max(3.14159265 * 2.0 * widest * discPeakDensity(-uvw - discWr), gaussianPeak);
+    }
+#endif
     float shortest = lambdaMinNm * 1e-3;
     float longest = lambdaMaxNm * 1e-3;
     vec2 xRange = texelRange(uv.x, reach.x, patchExtentUm.x, shortest, longest);

@@ -43,9 +43,10 @@ uniform float environmentLightAngularDiameterDeg[ENVIRONMENT_LIGHTS];
 #endif
 
 // sigma_a of the key light: the settings' light size for the lobes method (lobes_footprint.glsl), which the baked
-// table of the lobes method holds already; unused by the variants that do not filter.
+// table of the lobes method holds already; unused by the variants that do not filter, and 0 for a disc, which the
+// lobes method averages over as itself (setDisc).
 float keyLightSigmaRad() {
-#if defined(FILTERED) && !defined(BAKED_FILTERED)
+#if defined(FILTERED) && !defined(BAKED_FILTERED) && !defined(LIGHT_DISC)
     return lightSigmaRad;
 #else
     return 0.0;
@@ -105,17 +106,25 @@ vec3 toFrame(SurfaceFrame f, vec3 v) {
 }
 
 // One directional light of linear RGB irradiance `rgb`: its structural colour (exposure x the BRDF's XYZ, in linear
-// sRGB) and, for the key light, the fraction of it that enters the skin and is scattered by the pigment (Algorithm
+// sRGB) and, for the key light (keyLight), the fraction of it that enters the skin and is scattered by the pigment (Algorithm
 // 4's (1 - alpha) cos); the environment's lights reach the pigment through its irradiance instead (counted once).
 // uvDerivatives: the light's (u, v) = -(omega_i + omega_r).xy across the pixel (dFdx in .xy, dFdy in .zw), taken in
 // uniform control flow for the footprint of a filtering variant; sigmaRad: the light's sigma_a = D / 4.
-void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigmentToo, vec4 uvDerivatives,
+void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool keyLight, vec4 uvDerivatives,
               float sigmaRad, inout vec3 structural, inout vec3 diffuse) {
     vec3 l = safeNormalize(towardsWorld);
     if (dot(l, f.base) <= 0.0) {
         return; // behind the body
     }
     vec3 wi = toFrame(f, l);
+#ifdef LIGHT_DISC
+    // the key light is the settings' disc; the environment's lights stay Gaussian
+    if (keyLight) {
+        setDisc(wi, wr);
+    } else {
+        discOn = false;
+    }
+#endif
 #if defined(ENVIRONMENT_TABLE)
     // a light wider than the lobes method takes reads the table (lobes_spectrum.glsl)
     footprintFromTable = sigmaRad > TABLE_BEYOND_SIGMA_RAD;
@@ -134,7 +143,7 @@ void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool pigment
 #else
     structural += rgb * max(linearSrgbFromXyz(exposure * diffractionXyz(wi, wr)), vec3(0.0));
 #endif
-    if (pigmentToo) {
+    if (keyLight) {
         diffuse += rgb * (1.0 - clamp(fresnel, 0.0, 1.0)) * max(wi.z, 0.0);
     }
 }

@@ -329,7 +329,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         if (!brdf.auto() && !light.accepted()) {
             throw new UserInputException(OptionNames.of(light.quantity()) + ": " + light.reason().orElseThrow()
                     + (light.quantity() == diffract.optics.Quantity.LIGHT_SIZE && !lightSource.isDisc()
-                    ? " (--variant lobes)" : " (--variant reference)"));
+                    ? " (--variant lobes)" : " (--variant lobes or reference)"));
         }
         return where;
     }

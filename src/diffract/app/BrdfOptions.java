@@ -146,7 +146,8 @@ final class BrdfOptions {
         @Option(names = "--light-profile", paramLabel = "P", completionCandidates = OptionTypes.LightProfileNames.class,
                 description = "${COMPLETION-CANDIDATES}: the light of --light-size-deg as a Gaussian of sigma D/4 per "
                         + "axis, linearised about its centre (default: the model the fast methods filter by) or a "
-                        + "uniform disc of diameter D, every direction integrated (the reference only).")
+                        + "uniform disc of diameter D (the reference integrates every direction; lobes averages over "
+                        + "the disc with C, S and w per direction; baked draws the Gaussian).")
         LightProfile lightProfile;
     }
 

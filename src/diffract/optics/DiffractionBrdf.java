@@ -220,7 +220,7 @@ public final class DiffractionBrdf {
         }
         if (lobes != null) {
             double[] v = lobes.xyz(-wi.x() - wr.x(), -wi.y() - wr.y(), -wi.z() - wr.z(),
-                    Footprint.POINT.plus(illumination.light().uvCovariance(wi)));
+                    Footprint.POINT.plus(illumination.light().uvCovariance(wi)), discOf(wi, wr));
             return new Xyz(gain * v[0], gain * v[1], gain * v[2]);
         }
         double u = -wi.x() - wr.x();
@@ -262,8 +262,16 @@ public final class DiffractionBrdf {
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }
-        double[] v = lobes.xyz(-wi.x() - x, -wi.y() - y, -wi.z() - wr.z(), Footprint.mapPixel(size).plus(light));
+        double[] v = lobes.xyz(-wi.x() - x, -wi.y() - y, -wi.z() - wr.z(), Footprint.mapPixel(size).plus(light),
+                discOf(wi, wr));
         return new Xyz(gain * v[0], gain * v[1], gain * v[2]);
+    }
+
+    /** The lobes method's view of a disc light from omega_r ({@link DiscFootprint}); null for a point or Gaussian. */
+    private DiscFootprint discOf(Direction wi, Direction wr) {
+        LightSource light = illumination.light();
+        return light.isDisc() ? new DiscFootprint(light, wi, wr, illumination.refractiveIndex(), illumination.fresnel())
+                : null;
     }
 
     /** The light, pixel filter and Fresnel model this BRDF evaluates with. */

@@ -100,9 +100,11 @@ public final class LobeSpectrum {
         if (!TexelCoefficients.inBand(twiceCx / 2, twiceCy / 2, table.rows(), table.cols())) {
             return false;
         }
-        double k = 2 * Math.PI * Math.abs(w) * 1e3;
-        double bound = table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2, k / toNm,
-                k / fromNm);
+        // a disc's directions move w by at most sin R about its centre's
+        double spread = shape.disc == null ? 0 : shape.disc.semiAxisE();
+        double k = 2 * Math.PI * 1e3;
+        double bound = table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2,
+                k * Math.max(0, Math.abs(w) - spread) / toNm, k * (Math.abs(w) + spread) / fromNm);
         return bound * shape.peak >= quadrature.cutoff();
     }
 
@@ -148,10 +150,35 @@ public final class LobeSpectrum {
         /** The largest average over the footprint a lobe of peak 1 can have (at the longest wavelength). */
         final double peak;
 
+        /** The disc light the footprint averages over, or null (a point or Gaussian light, in the Gaussian). */
+        final DiscFootprint disc;
+
         Shape(Footprint footprint, LobeQuadrature quadrature, double widestLobeVariance) {
+            this(footprint, quadrature, widestLobeVariance, null);
+        }
+
+        Shape(Footprint footprint, LobeQuadrature quadrature, double widestLobeVariance, DiscFootprint disc) {
+            this.disc = disc;
             hx = footprint.halfWidthU();
             hy = footprint.halfWidthV();
             Covariance2 g = footprint.gaussian();
+            if (disc != null) {
+                gaussian = g;
+                shiftU = new double[] {0};
+                shiftV = new double[] {0};
+                shiftWeight = new double[] {1};
+                reachU = hx + disc.reach(0) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx()
+                        + hx * hx / 3);
+                reachV = hy + disc.reach(1) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy()
+                        + hy * hy / 3);
+                // the rim's plateau at the disc's densest direction, or the small disc's Gaussian peak; the gain
+                // relative to the centre's can exceed 1 across the disc (a factor 2 of slack for the cutoff)
+                double sigma2 = 2 * widestLobeVariance;
+                Covariance2 s = g.plus(disc.covariance()).plus(Covariance2.isotropic(widestLobeVariance));
+                double gaussianPeak = sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
+                peak = 2 * Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak);
+                return;
+            }
             if (footprint.hasBox() && !g.isDiagonal()) {
                 double[] split = g.diagonalPlusRankOne();
                 gaussian = new Covariance2(split[0], 0, split[1]);
@@ -201,8 +228,17 @@ public final class LobeSpectrum {
      * and shadowing: {X, Y, Z}, D65 white at Y = 1.
      */
     public double[] xyz(double u, double v, double w, Footprint footprint) {
+        return xyz(u, v, w, footprint, null);
+    }
+
+    /**
+     * As {@link #xyz(double, double, double, Footprint)} under a disc light ({@link DiscFootprint}; null: the light is
+     * the footprint's Gaussian or none): (u, v, w) at the light's centre, and the result relative to the gain factor
+     * and shadowing there, which the disc's directions carry in proportion.
+     */
+    public double[] xyz(double u, double v, double w, Footprint footprint, DiscFootprint disc) {
         double widest = 0.5 * square(lambdaMaxNm * 1e-3 * sigmaFPerUm);
-        Shape shape = new Shape(footprint, quadrature, widest);
+        Shape shape = new Shape(footprint, quadrature, widest, disc);
         double[] total = new double[3];
         double[] node = new double[3];
         int step = lobes.hasPairs() ? 1 : 2;
@@ -274,6 +310,24 @@ public final class LobeSpectrum {
         if (j1 < j0) {
             return;
         }
+        if (shape.disc != null) {
+            double[] disc = new double[2];
+            for (int j = j0; j <= j1; j++) {
+                double lambdaNm = lambdaMinNm + j * spacing;
+                double lambdaUm = lambdaNm * 1e-3;
+                shape.disc.average(lambdaUm * sigmaFPerUm, lambdaUm * cx, lambdaUm * cy, shape.hx, shape.hy,
+                        shape.gaussian, fastErf, disc);
+                if (disc[0] == 0) {
+                    continue;
+                }
+                spectral.weight(lambdaNm, spacing, node);
+                double scale = weight(lobe, disc[1], lambdaNm) * disc[0] * endWeight(lambdaNm, spacing);
+                total[0] += scale * node[0];
+                total[1] += scale * node[1];
+                total[2] += scale * node[2];
+            }
+            return;
+        }
         double step = table == null ? quadrature.weightStepNm() : 0;
         double first = lambdaMinNm + j0 * spacing;
         double last = lambdaMinNm + j1 * spacing;
@@ -340,16 +394,25 @@ public final class LobeSpectrum {
      */
     private double spacingNm(double cx, double cy, Shape shape, double fromNm) {
         double lobeVariance = 0.5 * square(fromNm * 1e-3 * sigmaFPerUm);
+        // under a disc the rims are the passage's edges, as wide as the lobe and the box across them
+        double boxU = shape.disc == null ? 0 : shape.hx * shape.hx / 3;
+        double boxV = shape.disc == null ? 0 : shape.hy * shape.hy / 3;
         double widthNm = Double.POSITIVE_INFINITY;
         if (cx != 0) {
-            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.xx()) / Math.abs(cx) * 1e3);
+            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.xx() + boxU) / Math.abs(cx) * 1e3);
         }
         if (cy != 0) {
-            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.yy()) / Math.abs(cy) * 1e3);
+            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.yy() + boxV) / Math.abs(cy) * 1e3);
         }
         // never wider than the band: a band narrower than the nodes' spacing would be seen through one node
         double bandNm = lambdaMaxNm - lambdaMinNm;
         double target = Math.min(Math.min(widthNm / quadrature.nodesPerSigma(), quadrature.maxStepNm()), bandNm);
+        return spacingOnLevels(target);
+    }
+
+    /** A target spacing rounded down onto the hat levels (1, 2, 4, 8, 16 nm), or below 1 nm a whole part of the band. */
+    private double spacingOnLevels(double target) {
+        double bandNm = lambdaMaxNm - lambdaMinNm;
         if (target >= 1) {
             return Math.pow(2, Math.floor(Math.log(target) / Math.log(2) + 1e-12));
         }
@@ -375,8 +438,13 @@ public final class LobeSpectrum {
 
     /** |P|^2 at one wavelength averaged over the footprint: sum over lobes of W_c A_c (monochromatic maps). */
     public double power(double u, double v, double w, double lambdaNm, Footprint footprint) {
+        return power(u, v, w, lambdaNm, footprint, null);
+    }
+
+    /** As above under a disc light (null: none), relative to the gain at the light's centre. */
+    public double power(double u, double v, double w, double lambdaNm, Footprint footprint, DiscFootprint disc) {
         double lambdaUm = lambdaNm * 1e-3;
-        Shape shape = new Shape(footprint, quadrature, 0.5 * square(lambdaUm * sigmaFPerUm));
+        Shape shape = new Shape(footprint, quadrature, 0.5 * square(lambdaUm * sigmaFPerUm), disc);
         int step = lobes.hasPairs() ? 1 : 2;
         double a = 2 * Math.PI / lambdaUm * w;
         double sum = 0;
@@ -388,7 +456,16 @@ public final class LobeSpectrum {
                 if (lobe == null) {
                     continue;
                 }
-                sum += lobe.at(a) * averaged(lambdaUm, 0.5 * tx / extentXUm, 0.5 * ty / extentYUm, u, v, shape);
+                double cx = 0.5 * tx / extentXUm;
+                double cy = 0.5 * ty / extentYUm;
+                if (disc != null) {
+                    double[] at = new double[2];
+                    disc.average(lambdaUm * sigmaFPerUm, lambdaUm * cx, lambdaUm * cy, shape.hx, shape.hy,
+                            shape.gaussian, fastErf, at);
+                    sum += lobe.at(2 * Math.PI / lambdaUm * at[1]) * at[0];
+                    continue;
+                }
+                sum += lobe.at(a) * averaged(lambdaUm, cx, cy, u, v, shape);
             }
         }
         return sum;

@@ -224,6 +224,9 @@ public final class DiffractionMaterials {
                 .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
                 .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
         setLobesLight(m, light.uvCovariance(Direction.fromSphericalDeg(0, 0)), q);
+        if (DiffractionShaders.lightDisc(settings)) {
+            m.setFloat("lightHalfAngleRad", (float) light.halfAngleRad());
+        }
     }
 
     /** 1 where surface pixels average over their footprint (PixelFilter.BOX), 0 where they take its centre. */

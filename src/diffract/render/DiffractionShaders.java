@@ -214,7 +214,15 @@ public final class DiffractionShaders {
             // the table holds cell- and light-averaged samples with mip levels: look up over the pixel's footprint
             defines.put("BAKED_FILTERED", "1");
         }
+        if (lightDisc(settings)) {
+            defines.put("LIGHT_DISC", "1");
+        }
         return defines;
+    }
+
+    /** Whether the lobes method averages over a disc light (lobes_footprint.glsl's LIGHT_DISC, DiscFootprint). */
+    static boolean lightDisc(BrdfSettings settings) {
+        return settings.variant() == Variant.LOBES && settings.illumination().light().isDisc();
     }
 
     /**
