@@ -42,11 +42,20 @@ void setMapPixel(float halfWidth) {
 #endif
 }
 
+#ifdef LIGHT_DISC
+void setTableDisc();
+#endif
+
 // A sample of the baked table (baked.frag's bake pass): the box of its cell, half-width halfWidth in u and v, and the
-// light as an isotropic Gaussian of sigma_a (its spread at normal incidence: the table does not know omega_i).
+// light as an isotropic Gaussian of sigma_a, or a disc, about the normal (the table does not know omega_i).
 void setTableCell(float halfWidth) {
     footprintHalfWidth = vec2(halfWidth);
+#ifdef LIGHT_DISC
+    footprintGaussian = vec3(0.0);
+    setTableDisc();
+#else
     footprintGaussian = vec3(lightSigmaRad * lightSigmaRad, 0.0, lightSigmaRad * lightSigmaRad);
+#endif
     footprintShiftCount = 1;
 }
 
@@ -110,6 +119,7 @@ uniform float lightHalfAngleRad;
 const float DISC_GAUSSIAN_BELOW = 1.0; // DiscFootprint.GAUSSIAN_BELOW
 const float DISC_EDGE_ABOVE = 3.0;    // DiscFootprint.EDGE_ABOVE
 bool discOn = false;
+bool discTable = false; // a baked table's disc: about the normal, its C, S and w left to the lookup (setTableDisc)
 vec2 discCentreOffset; // the ellipse's centre less the pixel's (u, v) at the light's centre
 vec2 discE;            // the unit axis across the plane of incidence (r = (e.y, -e.x))
 vec2 discAxes;         // (a, b) = (sin R, sin R cos theta_i)
@@ -129,6 +139,22 @@ void setDisc(vec3 wi, vec3 wr) {
     discSolidAngle = 6.28318531 * (1.0 - cosR);
     discWr = wr;
     discCentreGain = gainTimesShadowing(wi, wr);
+    discOn = lightHalfAngleRad > 0.0;
+}
+
+// A baked table's disc, which knows no omega_i (as the table's Gaussian light, the light is taken at normal
+// incidence): DiscFootprint's circle of radius sin R about the sample, its density 1 / (Omega d_z) at d.xy = the offset
+// from its centre; the gain factor, the shadowing and w are the sample's, which the table's lookup applies.
+void setTableDisc() {
+    float cosR = cos(lightHalfAngleRad);
+    float sinR = sin(lightHalfAngleRad);
+    discE = vec2(0.0, 1.0);
+    discAxes = vec2(sinR);
+    discCentreOffset = vec2(0.0);
+    discSolidAngle = 6.28318531 * (1.0 - cosR);
+    discWr = vec3(0.0, 0.0, 1.0);
+    discCentreGain = 1.0;
+    discTable = true;
     discOn = lightHalfAngleRad > 0.0;
 }
 
@@ -152,10 +178,11 @@ float discPeakDensity(vec3 wi) {
     return 1.0 / (discSolidAngle * lowest);
 }
 
-// DiscFootprint.average: the lobe of spread sigmaUv at mu averaged over the disc from the pixel at uv (its (u, v) at
+// DiscFootprint.average: the lobe of spread sigmaUv at mu averaged over the disc from the pixel at uvw (its (u, v, w) at
 // the light's centre), with the footprint's box and Gaussian: (the average relative to the centre's gain, w at the
 // direction that puts the lobe on the pixel's centre).
-vec2 discAverage(float sigmaUv, vec2 mu, vec2 uv) {
+vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
+    vec2 uv = uvw.xy;
     float lobeVariance = 0.5 * sigmaUv * sigmaUv;
     vec2 centre = uv + discCentreOffset;
     vec2 q = mu - centre;
@@ -183,10 +210,12 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec2 uv) {
     float kappa = a * b / pow(a * a * sinT * sinT + b * b * cosT * cosT, 1.5);
     dist -= 0.5 * blurVariance * kappa;
     // the direction that puts the lobe on the pixel's centre, brought onto the rim from outside
-    vec2 d = -(centre + min(1.0, 1.0 / max(rho, 1e-30)) * q) - discWr.xy;
+    vec2 onDisc = min(1.0, 1.0 / max(rho, 1e-30)) * q;
+    vec2 d = discTable ? onDisc : -(centre + onDisc) - discWr.xy;
     float dz2 = 1.0 - dot(d, d);
     float dz = sqrt(max(1e-12, dz2));
-    float gain = dz2 > 0.0 && discCentreGain > 0.0 ? gainTimesShadowing(vec3(d, dz), discWr) / discCentreGain : 0.0;
+    float gain = discTable ? 1.0 : dz2 > 0.0 && discCentreGain > 0.0
+            ? gainTimesShadowing(vec3(d, dz), discWr) / discCentreGain : 0.0;
     float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * normalCdf(dist / s);
     // the small disc's Gaussian (LobeGeometry.averagedLobe): a map pixel's box exactly with the Gaussian's diagonal,
     // a surface pixel's Gaussian in full
@@ -201,7 +230,7 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec2 uv) {
     float quad = (full.z * dc.x * dc.x - 2.0 * full.y * dc.x * dc.y + full.x * dc.y * dc.y) / det;
     float gaussian = sigmaUv * sigmaUv / (2.0 * sqrt(det)) * exp(-0.5 * quad);
 #endif
-    return vec2(gain * mix(gaussian, edge, edgeWeight), -(dz + discWr.z));
+    return vec2(gain * mix(gaussian, edge, edgeWeight), discTable ? uvw.z : -(dz + discWr.z));
 }
 #endif
 

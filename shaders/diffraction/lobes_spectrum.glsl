@@ -244,7 +244,7 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
         float average;
 #ifdef LIGHT_DISC
         if (discOn) {
-            vec2 disc = discAverage(lambdaUm * sigmaF, lambdaUm * c, uvw.xy);
+            vec2 disc = discAverage(lambdaUm * sigmaF, lambdaUm * c, uvw);
             average = disc.x;
             w = disc.y;
         } else {
@@ -285,7 +285,7 @@ vec3 spectralXyz(vec3 uvw) {
         reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz + box);
         vec3 s = full + discCovariance() + vec3(widest, 0.0, widest);
         float gaussianPeak = 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
-        peak = 2.0 * max(3.14159265 * 2.0 * widest * discPeakDensity(-uvw - discWr), gaussianPeak);
+        peak = 2.0 * max(3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr), gaussianPeak);
     }
 #endif
     float shortest = lambdaMinNm * 1e-3;

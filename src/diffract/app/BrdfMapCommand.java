@@ -328,8 +328,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         LightPolicy light = LightPolicy.of(settings);
         if (!brdf.auto() && !light.accepted()) {
             throw new UserInputException(OptionNames.of(light.quantity()) + ": " + light.reason().orElseThrow()
-                    + (light.quantity() == diffract.optics.Quantity.LIGHT_SIZE && !lightSource.isDisc()
-                    ? " (--variant lobes)" : " (--variant lobes or reference)"));
+                    + " (--variant lobes)");
         }
         return where;
     }

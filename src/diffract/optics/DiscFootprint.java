@@ -175,8 +175,8 @@ public final class DiscFootprint {
         }
         if (edgeWeight < 1) {
             Covariance2 spread = g.plus(covariance());
-            // a map pixel's box exactly, with the Gaussian's diagonal (exact where the light's plane of incidence and
-            // the lobe's motion follow the map's axes, as in the bench's maps); a surface pixel's Gaussian in full
+            // a map pixel's box exactly, with the Gaussian's diagonal (exact where the light's plane of incidence
+            // follows one of the map's axes, as in the bench's maps); a surface pixel's Gaussian in full
             Covariance2 gaussian = hx > 0 || hy > 0 ? new Covariance2(spread.xx(), 0, spread.yy()) : spread;
             value += (1 - edgeWeight) * LobeGeometry.averagedLobe(sigmaUv, muU, muV, centreU, centreV, hx, hy,
                     gaussian, fast);

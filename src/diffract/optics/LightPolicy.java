@@ -7,9 +7,8 @@ import java.util.Optional;
  * viewer and the bench ask for. A point light suits every method. A light of finite size needs a method that averages
  * the BRDF over the light's directions ({@link Variant#filtersLight}: the lobes method and its baked table) or the
  * reference, which integrates it exactly; FLSS, NMM and PQ sample the light at its centre (the thesis' model). A
- * {@link LightProfile#DISC} light is taken by the reference and the lobes method ({@link DiscFootprint}); the baked
- * table filters by the Gaussian profile, and where a scene asks it for a disc it draws the Gaussian of the same
- * diameter.
+ * {@link LightProfile#DISC} light is taken by the same three: the reference integrates it, the lobes method averages
+ * each lobe over it ({@link DiscFootprint}), the baked table bakes it in about the normal.
  *
  * <p>Where the user named both the method and the light (brdfmap, the library), such a pair is refused with
  * {@link #reason}; where the light comes from a scene (scene files, the viewer's keys), it is drawn as a point light
@@ -24,13 +23,8 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
     public static LightPolicy of(BrdfSettings settings) {
         Variant v = settings.variant();
         LightSource light = settings.illumination().light();
-        if (light.isPoint() || v == Variant.REFERENCE || v == Variant.LOBES || (v.filtersLight() && !light.isDisc())) {
+        if (light.isPoint() || v == Variant.REFERENCE || v.filtersLight()) {
             return new LightPolicy(settings, settings, Optional.empty());
-        }
-        if (v.filtersLight()) {
-            return new LightPolicy(settings, settings.with(b -> b.lightProfile(LightProfile.GAUSSIAN)), Optional.of(
-                    v.label() + " filters by the Gaussian light profile: a disc light needs the lobes method or the "
-                    + "reference (or the gaussian profile)"));
         }
         return new LightPolicy(settings, settings.with(b -> b.lightSizeDeg(0)), Optional.of(v.label()
                 + " samples the light at its centre only: a light of "
@@ -39,10 +33,9 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
                 : " degrees needs the lobes variant, the reference or the baked table (or a point light, 0 degrees)")));
     }
 
-    /** The quantity a refusal is about: the light's profile where only the disc is refused, else its size. */
+    /** The quantity a refusal is about: the light's size. */
     public Quantity quantity() {
-        return asked.illumination().light().isDisc() && asked.variant().filtersLight() ? Quantity.LIGHT_PROFILE
-                : Quantity.LIGHT_SIZE;
+        return Quantity.LIGHT_SIZE;
     }
 
     /** Whether the method takes the light as asked. */
@@ -60,11 +53,6 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
 
     /** What a scene or the viewer says when it draws {@link #usable} instead of what was asked; empty if nothing. */
     public Optional<String> notice() {
-        if (quantity() == Quantity.LIGHT_PROFILE) {
-            return reason.map(r -> asked.variant().label() + " filters by the Gaussian light profile: the "
-                    + InvalidSettingException.number(asked.illumination().light().angularDiameterDeg())
-                    + "-degree disc is drawn as the Gaussian of the same diameter (lobes and the reference take the disc)");
-        }
         return reason.map(r -> asked.variant().label() + " samples the light at its centre: the "
                 + InvalidSettingException.number(asked.illumination().light().angularDiameterDeg())
                 + "-degree light is drawn as a point light (lobes and baked filter by its size)");

@@ -4,8 +4,9 @@ package diffract.optics;
  * A distant light of angular diameter D (the sun: 0.53 degrees; a lamp or a window: several) and its profile.
  *
  * <p>{@link LightProfile#DISC}: uniform radiance over the cone of half-angle D / 2 around omega_i, what a scene's
- * light is; only the reference takes it, averaging the relative BRDF over the cone's directions, each evaluated
- * exactly ({@link DiscLightAverage}).
+ * light is. The reference averages the relative BRDF over the cone's directions, each evaluated exactly
+ * ({@link DiscLightAverage}); the lobes method averages each lobe over the cone's ellipse in (u, v) with C, S and w
+ * per direction ({@link DiscFootprint}).
  *
  * <p>{@link LightProfile#GAUSSIAN} (the default, the model the fast methods filter by): a Gaussian over the light's
  * directions in the tangent plane of the unit sphere at its centre omega_i, with per-axis angular standard deviation

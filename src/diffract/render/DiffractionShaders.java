@@ -250,6 +250,9 @@ public final class DiffractionShaders {
         Map<String, String> defines = defines(settings, highestOrder, radii, null, Target.BRDF_MAP, false, false);
         if (lobes) {
             defines.put("LOBES_BOX", "1"); // every sample averages over its cell
+            if (lightDisc(settings)) {
+                defines.put("LIGHT_DISC", "1"); // and over the disc about the normal (setTableCell)
+            }
             return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
         }
         defines.put("BAKE", "1");

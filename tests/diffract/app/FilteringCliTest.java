@@ -43,6 +43,36 @@ class FilteringCliTest {
         assertTrue(sum > 0, "the map is lit");
     }
 
+    /** A disc light on the lobes method draws on the CPU and the GPU alike; FLSS refuses it, naming who takes it. */
+    @Test
+    void lobesTakeADiscOnEitherEngineAndFlssSaysWhoDoes() throws Exception {
+        float[][] maps = new float[2][];
+        String[] engines = {"cpu", "gpu"};
+        for (int e = 0; e < 2; e++) {
+            if (e == 1 && diffract.jrtr.HeadlessGL.problem().isPresent()) {
+                continue;
+            }
+            Path pfm = dir.resolve("disc-" + engines[e] + ".pfm");
+            Object[] result = CliTest.run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant",
+                    "lobes", "--light-size-deg", "10", "--light-profile", "disc", "--engine", engines[e], "--size", "16",
+                    "-o", dir.resolve("disc-" + engines[e] + ".png").toString(), "--pfm", pfm.toString());
+            assertEquals(0, result[0], (String) result[2]);
+            maps[e] = ImageFiles.readPfm(pfm, new int[3]);
+        }
+        double largest = 0;
+        for (float v : maps[0]) {
+            largest = Math.max(largest, v);
+        }
+        assertTrue(largest > 0, "the map is lit");
+        if (maps[1] != null) {
+            for (int k = 0; k < maps[0].length; k++) {
+                assertEquals(maps[0][k], maps[1][k], 1e-4 * largest, "value " + k);
+            }
+        }
+        assertOneLine(run("--variant", "flss", "--light-size-deg", "10", "--light-profile", "disc"),
+                "lobes method or the reference");
+    }
+
     @Test
     void badFilteringOptionsEndWithOneLine() {
         assertOneLine(run("--variant", "flss", "--light-size-deg", "2"), "lobes variant");

@@ -163,19 +163,16 @@ class DiscLightTest {
     }
 
     @Test
-    void theReferenceAndTheLobesMethodTakeADisc() {
-        assertTrue(LightPolicy.of(settings(2, LightProfile.DISC).with(b -> b.variant(Variant.LOBES))).accepted());
-        assertTrue(LightPolicy.of(settings(2, LightProfile.DISC)).accepted());
-        BrdfSettings baked = settings(2, LightProfile.DISC).with(b -> b.variant(Variant.BAKED));
-        LightPolicy policy = LightPolicy.of(baked);
+    void theReferenceTheLobesMethodAndItsTableTakeADisc() {
+        for (Variant v : new Variant[] {Variant.REFERENCE, Variant.LOBES, Variant.BAKED}) {
+            assertTrue(LightPolicy.of(settings(2, LightProfile.DISC).with(b -> b.variant(v))).accepted(), v.label());
+        }
+        BrdfSettings flss = settings(2, LightProfile.DISC).with(b -> b.variant(Variant.FLSS));
+        LightPolicy policy = LightPolicy.of(flss);
         assertTrue(!policy.accepted());
-        assertEquals(Quantity.LIGHT_PROFILE, policy.quantity());
-        assertEquals(LightProfile.GAUSSIAN, policy.usable().illumination().light().profile());
-        assertEquals(2, policy.usable().illumination().light().angularDiameterDeg());
+        assertEquals(0, policy.usable().illumination().light().angularDiameterDeg());
         InvalidSettingException e = assertThrows(InvalidSettingException.class, policy::requireAccepted);
         assertTrue(!e.getMessage().contains("\n") && e.getMessage().contains("lobes"), e.getMessage());
-        BrdfSettings flss = settings(2, LightProfile.DISC).with(b -> b.variant(Variant.FLSS));
-        assertEquals(0, LightPolicy.of(flss).usable().illumination().light().angularDiameterDeg());
         // the profile survives a change of size, and a point light is the same under both
         BrdfSettings resized = settings(2, LightProfile.DISC).with(b -> b.lightSizeDeg(5));
         assertEquals(LightProfile.DISC, resized.illumination().light().profile());

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# The lobes method under a disc light against the reference's exact disc (docs/filtering.md, section 9, "The lobes
+# method under a disc"): runs DiscLobesTest with the long tests (the blazed grating at a 10 um coherence length,
+# 64 x 64 maps at theta_i = 30 degrees, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores)
+# and GpuDiscLobesTest (GPU = CPU), and writes their measurements into docs/bench/disc-lobes.md. From anywhere:
+# bash docs/disc-lobes.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rm -f target/test-reports/DiscLobesTest.txt target/test-reports/GpuDiscLobesTest.txt
+mvn -B -ntp -q test -Dtest='DiscLobesTest,GpuDiscLobesTest' -Ddiffract.excludedGroups=none
+out=docs/bench/disc-lobes.md
+{
+    echo "# The lobes method under a disc light"
+    echo
+    echo "Made by \`bash docs/disc-lobes.sh\` (\`DiscLobesTest\` with the long tests, \`GpuDiscLobesTest\`): CIEDE2000"
+    echo "mean / p95 over the lit pixels at the reference's auto exposure; the lobes method under the disc and under the"
+    echo "Gaussian profile of the same diameter, both against the reference's disc (\`DiscLightAverage\`)."
+    echo
+    echo "| patch | coherence | map | disc (deg) | lit px | lobes, disc | lobes, Gaussian profile | reference s | lobes s (CPU) |"
+    echo "|---|---|---|---|---|---|---|---|---|"
+    perl -ne 'print "| blazed | $1 um | $2 x $2, the 2 rows of the orders | $3 | $6 | $4 / $5 | $7 / $8 | $9 | $10 |\n"
+        if /^blazed, (\d+) um, (\d+) px, ([\d.]+)-degree disc: lobes .*?lit: mean ([\d.]+), p95 ([\d.]+),.*? over (\d+) pixels.*?; the Gaussian profile .*?lit: mean ([\d.]+), p95 ([\d.]+),.*?; reference ([\d.]+) s, lobes ([\d.]+) s/' \
+        target/test-reports/DiscLobesTest.txt
+    echo
+    echo "Pixels of one row (the fast test):"
+    echo
+    grep -E 'pixels of row' target/test-reports/DiscLobesTest.txt | sed 's/^/- /'
+    echo
+    echo "GPU against CPU:"
+    echo
+    sed 's/^/- /' target/test-reports/GpuDiscLobesTest.txt
+    echo
+    echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
+} >"$out"
+cat "$out"

@@ -1,0 +1,71 @@
+package diffract.render;
+
+import diffract.jrtr.GlTestSupport;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.LightProfile;
+import diffract.optics.PixelFilter;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.util.TestReport;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+
+import java.util.Arrays;
+
+/**
+ * What a disc light costs the lobes shader, a measurement run on request (docs/disc-lobes.sh,
+ * {@code -Ddiffract.measure=disc-speed}): GL time per 64 x 64 map at the thesis' 65 um coherence, theta_i = 30
+ * degrees, of the lobes method under a disc and under the Gaussian profile of the same diameter, against FLSS in the
+ * thesis' configuration on the same context, in alternating rounds (the median of each), so that the machine's load
+ * moves all alike. No assertion: speed is reported, never tested.
+ */
+class DiscLobesSpeedMeasurement {
+    static final int SIZE = 64;
+    static final int ROUNDS = 3;
+    static final int FRAMES = 3;
+
+    @Test
+    void lobesUnderADiscAgainstTheGaussianProfileAndFlss() {
+        Assumptions.assumeTrue("disc-speed".equals(System.getProperty("diffract.measure")), "measurement on request");
+        GlTestSupport.assumeOffscreenGl();
+        measure("blazed", RenderTestSupport.BLAZED);
+        measure("elaphe-like", RenderTestSupport.ELAPHE_LIKE);
+    }
+
+    private static void measure(String name, HeightField patch) {
+        TaylorTerms terms = RenderTestSupport.terms(patch);
+        Direction wi = RenderTestSupport.light(patch, 30);
+        BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS);
+        for (double lightDeg : new double[] {0.53, 2, 10, 20}) {
+            BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
+                    .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
+            BrdfSettings gaussian = disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
+            double[] discMs = new double[ROUNDS];
+            double[] gaussianMs = new double[ROUNDS];
+            double[] flssMs = new double[ROUNDS];
+            try (GpuBrdfMap d = new GpuBrdfMap(terms, disc); GpuBrdfMap g = new GpuBrdfMap(terms, gaussian);
+                 GpuBrdfMap f = new GpuBrdfMap(terms, flss)) {
+                for (int r = 0; r < ROUNDS; r++) {
+                    discMs[r] = d.medianMsPerFrame(wi, SIZE, 1, FRAMES);
+                    gaussianMs[r] = g.medianMsPerFrame(wi, SIZE, 1, FRAMES);
+                    flssMs[r] = f.medianMsPerFrame(wi, SIZE, 1, FRAMES);
+                }
+            }
+            double dm = median(discMs);
+            double gm = median(gaussianMs);
+            double fm = median(flssMs);
+            TestReport.line(DiscLobesSpeedMeasurement.class, String.format(java.util.Locale.ROOT,
+                    "%s, 65 um, %d px, %.2f deg: lobes under the disc %.1f ms, under the Gaussian %.1f ms, FLSS "
+                            + "(thesis) %.1f ms: FLSS / disc %.1f, disc / Gaussian %.2f", name, SIZE, lightDeg, dm, gm,
+                    fm, fm / dm, dm / gm));
+        }
+    }
+
+    private static double median(double[] v) {
+        double[] s = v.clone();
+        Arrays.sort(s);
+        return s[s.length / 2];
+    }
+}
