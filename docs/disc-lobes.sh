@@ -2,12 +2,16 @@
 # The lobes method under a disc light against the reference's exact disc (docs/filtering.md, section 9, "The lobes
 # method under a disc"): runs DiscLobesTest with the long tests (the blazed grating at a 10 um coherence length,
 # 64 x 64 maps at theta_i = 30 degrees, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores)
-# and GpuDiscLobesTest (GPU = CPU), and writes their measurements into docs/bench/disc-lobes.md. From anywhere:
-# bash docs/disc-lobes.sh
+# GpuDiscLobesTest (GPU = CPU, the baked table) and DiscLobesSpeedMeasurement (GL time of the lobes shader under the
+# disc and under the Gaussian profile against FLSS, 64 x 64 maps at 65 um), and writes their measurements into
+# docs/bench/disc-lobes.md. About 15 minutes on 2 cores; from anywhere: bash docs/disc-lobes.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-rm -f target/test-reports/DiscLobesTest.txt target/test-reports/GpuDiscLobesTest.txt
+rm -f target/test-reports/DiscLobesTest.txt target/test-reports/GpuDiscLobesTest.txt \
+    target/test-reports/DiscLobesSpeedMeasurement.txt
 mvn -B -ntp -q test -Dtest='DiscLobesTest,GpuDiscLobesTest' -Ddiffract.excludedGroups=none
+# the GL times alone, after the CPU work, so that nothing else runs beside them
+mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-speed
 out=docs/bench/disc-lobes.md
 {
     echo "# The lobes method under a disc light"
@@ -26,9 +30,13 @@ out=docs/bench/disc-lobes.md
     echo
     grep -E 'pixels of row' target/test-reports/DiscLobesTest.txt | sed 's/^/- /'
     echo
-    echo "GPU against CPU:"
+    echo "GPU against CPU, and the baked table against the CPU lobes method:"
     echo
     sed 's/^/- /' target/test-reports/GpuDiscLobesTest.txt
+    echo
+    echo "GL time per 64 x 64 map (llvmpipe; medians of alternating rounds):"
+    echo
+    sed 's/^/- /' target/test-reports/DiscLobesSpeedMeasurement.txt
     echo
     echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
 } >"$out"

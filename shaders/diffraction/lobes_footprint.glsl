@@ -126,6 +126,7 @@ vec2 discAxes;         // (a, b) = (sin R, sin R cos theta_i)
 float discSolidAngle;
 vec3 discWr;
 float discCentreGain;
+vec2 discPassage; // variances (u, v) that widen a lobe's passage for the node spacing (LobeSpectrum.Shape.passageU)
 
 // DiscFootprint's constructor for the pixel at omega_r under the disc about omega_i.
 void setDisc(vec3 wi, vec3 wr) {

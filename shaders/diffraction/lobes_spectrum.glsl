@@ -169,8 +169,9 @@ float nodeSpacingNm(vec2 c, float fromNm) {
     float lobeVariance = 0.5 * pow(fromNm * 1e-3 * sigmaFPerUm(), 2.0);
     vec2 box = vec2(0.0);
 #ifdef LIGHT_DISC
-    // under a disc the rims are the passage's edges, as wide as the lobe and the box across them
-    box = discOn ? footprintHalfWidth * footprintHalfWidth / 3.0 : vec2(0.0);
+    // under a disc the rims are the passage's edges, as wide as the lobe and the box across them (a disc without
+    // rims: as wide as its Gaussian; LobeSpectrum.Shape.passageU)
+    box = discOn ? discPassage : vec2(0.0);
 #endif
     float width = 1e30;
     if (c.x != 0.0) {
@@ -279,13 +280,24 @@ vec3 spectralXyz(vec3 uvw) {
     float peak = footprintPeak(widest);
 #ifdef LIGHT_DISC
     if (discOn) {
-        // LobeSpectrum.Shape with a disc: its support, the box, and the blur of the lobe and the box; its plateau or
-        // small-disc peak, with 2 of slack for the gain
+        // LobeSpectrum.Shape with a disc: with rims (the disc wider than the narrowest blur) its support, the box,
+        // and the blur of the lobe and the box; without, its Gaussian's reach; its plateau or small-disc peak, with 2
+        // of slack for the gain
         vec2 box = footprintHalfWidth * footprintHalfWidth / 3.0;
-        reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz + box);
+        float narrowest = min(full.x, full.z) + min(box.x, box.y);
+        vec3 discGaussian = discCovariance();
+        bool rims = discAxes.y > DISC_GAUSSIAN_BELOW * sqrt(narrowest);
+        if (rims) {
+            reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz + box);
+            discPassage = box;
+        } else {
+            reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz + discGaussian.xz);
+            discPassage = discGaussian.xz;
+        }
         vec3 s = full + discCovariance() + vec3(widest, 0.0, widest);
         float gaussianPeak = 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
-        peak = 2.0 * max(3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr), gaussianPeak);
+        float plateau = 3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr);
+        peak = 2.0 * (rims ? max(plateau, gaussianPeak) : gaussianPeak);
     }
 #endif
     float shortest = lambdaMinNm * 1e-3;

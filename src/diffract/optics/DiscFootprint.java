@@ -105,6 +105,14 @@ public final class DiscFootprint {
         return Math.abs(offset) + Math.sqrt(a * a * e * e + b * b * rr * rr);
     }
 
+    /**
+     * Whether any lobe sees a rim: b at least {@link #GAUSSIAN_BELOW} times the narrowest blur's standard deviation
+     * (its variance given); otherwise the disc is its Gaussian ({@link #covariance}) for every lobe.
+     */
+    public boolean hasRims(double narrowestBlurVariance) {
+        return b > GAUSSIAN_BELOW * Math.sqrt(narrowestBlurVariance);
+    }
+
     /** The disc's Gaussian of equal covariance in (u, v): a^2 / 4 along e, b^2 / 4 along r. */
     public Covariance2 covariance() {
         return Covariance2.along(eU, eV, a * a / 4).plus(Covariance2.along(eV, -eU, b * b / 4));

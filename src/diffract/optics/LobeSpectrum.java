@@ -152,6 +152,12 @@ public final class LobeSpectrum {
 
         /** The disc light the footprint averages over, or null (a point or Gaussian light, in the Gaussian). */
         final DiscFootprint disc;
+        /**
+         * Variances (u, v) that widen a lobe's passage beyond its own for the node spacing: a disc's box where it has
+         * rims, its Gaussian's where it has none (a Gaussian light is in {@link #gaussian} already).
+         */
+        final double passageU;
+        final double passageV;
 
         Shape(Footprint footprint, LobeQuadrature quadrature, double widestLobeVariance) {
             this(footprint, quadrature, widestLobeVariance, null);
@@ -167,18 +173,37 @@ public final class LobeSpectrum {
                 shiftU = new double[] {0};
                 shiftV = new double[] {0};
                 shiftWeight = new double[] {1};
-                reachU = hx + disc.reach(0) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx()
-                        + hx * hx / 3);
-                reachV = hy + disc.reach(1) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy()
-                        + hy * hy / 3);
+                // rims wherever the disc can be wider than the narrowest blur (the thinner side of the box and the
+                // Gaussian, the lobe left out to be safe); else the disc is its Gaussian throughout, reached and
+                // sampled as a Gaussian light is
+                double narrowest = Math.min(g.xx(), g.yy()) + Math.min(hx * hx, hy * hy) / 3;
+                Covariance2 discGaussian = disc.covariance();
+                boolean rims = disc.hasRims(narrowest);
+                if (rims) {
+                    reachU = hx + disc.reach(0) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx()
+                            + hx * hx / 3);
+                    reachV = hy + disc.reach(1) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy()
+                            + hy * hy / 3);
+                    passageU = hx * hx / 3;
+                    passageV = hy * hy / 3;
+                } else {
+                    reachU = hx + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx()
+                            + discGaussian.xx());
+                    reachV = hy + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy()
+                            + discGaussian.yy());
+                    passageU = discGaussian.xx();
+                    passageV = discGaussian.yy();
+                }
                 // the rim's plateau at the disc's densest direction, or the small disc's Gaussian peak; the gain
                 // relative to the centre's can exceed 1 across the disc (a factor 2 of slack for the cutoff)
                 double sigma2 = 2 * widestLobeVariance;
                 Covariance2 s = g.plus(disc.covariance()).plus(Covariance2.isotropic(widestLobeVariance));
                 double gaussianPeak = sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
-                peak = 2 * Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak);
+                peak = 2 * (rims ? Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak) : gaussianPeak);
                 return;
             }
+            passageU = 0;
+            passageV = 0;
             if (footprint.hasBox() && !g.isDiagonal()) {
                 double[] split = g.diagonalPlusRankOne();
                 gaussian = new Covariance2(split[0], 0, split[1]);
@@ -394,9 +419,10 @@ public final class LobeSpectrum {
      */
     private double spacingNm(double cx, double cy, Shape shape, double fromNm) {
         double lobeVariance = 0.5 * square(fromNm * 1e-3 * sigmaFPerUm);
-        // under a disc the rims are the passage's edges, as wide as the lobe and the box across them
-        double boxU = shape.disc == null ? 0 : shape.hx * shape.hx / 3;
-        double boxV = shape.disc == null ? 0 : shape.hy * shape.hy / 3;
+        // under a disc the rims are the passage's edges, as wide as the lobe and the box across them (a disc without
+        // rims: as wide as its Gaussian)
+        double boxU = shape.passageU;
+        double boxV = shape.passageV;
         double widthNm = Double.POSITIVE_INFINITY;
         if (cx != 0) {
             widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.xx() + boxU) / Math.abs(cx) * 1e3);

@@ -23,8 +23,8 @@ import java.util.Arrays;
  */
 class DiscLobesSpeedMeasurement {
     static final int SIZE = 64;
-    static final int ROUNDS = 3;
-    static final int FRAMES = 3;
+    static final int ROUNDS = 2;
+    static final int FRAMES = 10;
 
     @Test
     void lobesUnderADiscAgainstTheGaussianProfileAndFlss() {
