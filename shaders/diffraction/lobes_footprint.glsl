@@ -170,7 +170,8 @@ vec3 discCovariance() {
     vec2 r = vec2(discE.y, -discE.x);
     float ea = 0.25 * discAxes.x * discAxes.x;
     float rb = 0.25 * discAxes.y * discAxes.y;
-    return ea * vec3(discE.x * discE.x, discE.x * discE.y, discE.y * discE.y) + rb * vec3(r.x * r.x, r.x * r.y, r.y * r.y);
+    return ea * vec3(discE.x * discE.x, discE.x * discE.y, discE.y * discE.y)
+            + rb * vec3(r.x * r.x, r.x * r.y, r.y * r.y);
 }
 
 // DiscFootprint.peakDensity: 1 / (Omega d_z) at the disc's lowest direction (theta_i + R).
@@ -179,8 +180,8 @@ float discPeakDensity(vec3 wi) {
     return 1.0 / (discSolidAngle * lowest);
 }
 
-// DiscFootprint.average: the lobe of spread sigmaUv at mu averaged over the disc from the pixel at uvw (its (u, v, w) at
-// the light's centre), with the footprint's box and Gaussian: (the average relative to the centre's gain, w at the
+// DiscFootprint.average: the lobe of spread sigmaUv at mu averaged over the disc from the pixel at uvw (its (u, v, w)
+// at the light's centre), with the footprint's box and Gaussian: (the average relative to the centre's gain, w at the
 // direction that puts the lobe on the pixel's centre).
 vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     vec2 uv = uvw.xy;

@@ -106,8 +106,9 @@ vec3 toFrame(SurfaceFrame f, vec3 v) {
 }
 
 // One directional light of linear RGB irradiance `rgb`: its structural colour (exposure x the BRDF's XYZ, in linear
-// sRGB) and, for the key light (keyLight), the fraction of it that enters the skin and is scattered by the pigment (Algorithm
-// 4's (1 - alpha) cos); the environment's lights reach the pigment through its irradiance instead (counted once).
+// sRGB) and, for the key light (keyLight), the fraction of it that enters the skin and is scattered by the pigment
+// (Algorithm 4's (1 - alpha) cos); the environment's lights reach the pigment through its irradiance instead (counted
+// once).
 // uvDerivatives: the light's (u, v) = -(omega_i + omega_r).xy across the pixel (dFdx in .xy, dFdy in .zw), taken in
 // uniform control flow for the footprint of a filtering variant; sigmaRad: the light's sigma_a = D / 4.
 void addLight(SurfaceFrame f, vec3 towardsWorld, vec3 rgb, vec3 wr, bool keyLight, vec4 uvDerivatives,

@@ -436,7 +436,7 @@ public final class LobeSpectrum {
         return spacingOnLevels(target);
     }
 
-    /** A target spacing rounded down onto the hat levels (1, 2, 4, 8, 16 nm), or below 1 nm a whole part of the band. */
+    /** A target spacing rounded down onto the hat levels (1, 2, 4, 8, 16 nm), or below 1 nm a part of the band. */
     private double spacingOnLevels(double target) {
         double bandNm = lambdaMaxNm - lambdaMinNm;
         if (target >= 1) {

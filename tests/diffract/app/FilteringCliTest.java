@@ -54,8 +54,8 @@ class FilteringCliTest {
             }
             Path pfm = dir.resolve("disc-" + engines[e] + ".pfm");
             Object[] result = CliTest.run("brdfmap", "--patch", grating.toString(), "--theta-i", "30", "--variant",
-                    "lobes", "--light-size-deg", "10", "--light-profile", "disc", "--engine", engines[e], "--size", "16",
-                    "-o", dir.resolve("disc-" + engines[e] + ".png").toString(), "--pfm", pfm.toString());
+                    "lobes", "--light-size-deg", "10", "--light-profile", "disc", "--engine", engines[e], "--size",
+                    "16", "-o", dir.resolve("disc-" + engines[e] + ".png").toString(), "--pfm", pfm.toString());
             assertEquals(0, result[0], (String) result[2]);
             maps[e] = ImageFiles.readPfm(pfm, new int[3]);
         }

@@ -49,11 +49,12 @@ class GpuDiscLobesTest {
         BrdfMapDifference d = RenderTestSupport.difference(cpu, gpu, SIZE, wi);
         BrdfMapDifference g = RenderTestSupport.difference(cpu, gaussian, SIZE, wi);
         String where = String.format(java.util.Locale.ROOT, "elaphe-like, %d px, %.0f-degree disc: GPU against CPU %s;"
-                + " the Gaussian profile on the GPU against the CPU's disc %s", SIZE, lightDeg, d.summary(), g.summary());
+                + " the Gaussian profile on the GPU against the CPU's disc %s", SIZE, lightDeg, d.summary(),
+                g.summary());
         TestReport.line(GpuDiscLobesTest.class, where);
         assertTrue(d.litPixels() >= 10, where);
-        assertTrue(d.lit().mean() <= GpuCpuAgreementTest.MAX_LIT_MEAN && d.lit().p99() <= GpuCpuAgreementTest.MAX_LIT_P99,
-                where);
+        assertTrue(d.lit().mean() <= GpuCpuAgreementTest.MAX_LIT_MEAN
+                && d.lit().p99() <= GpuCpuAgreementTest.MAX_LIT_P99, where);
         if (lightDeg >= 10) {
             assertTrue(g.lit().mean() > 10 * GpuCpuAgreementTest.MAX_LIT_MEAN, where);
         }
