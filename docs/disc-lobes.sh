@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The lobes method under a disc light against the reference's exact disc (docs/filtering.md, section 9, "The lobes
-# method under a disc"): runs DiscLobesTest with the long tests (the blazed grating at a 10 um coherence length,
+# method under a disc"): runs DiscLobesTest's measurement (the blazed grating at a 10 um coherence length,
 # 64 x 64 maps at theta_i = 30 degrees, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores)
 # GpuDiscLobesTest (GPU = CPU, the baked table) and DiscLobesSpeedMeasurement (GL time of the lobes shader under the
 # disc and under the Gaussian profile against FLSS, 64 x 64 maps at 65 um), and writes their measurements into
@@ -9,7 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 rm -f target/test-reports/DiscLobesTest.txt target/test-reports/GpuDiscLobesTest.txt \
     target/test-reports/DiscLobesSpeedMeasurement.txt
-mvn -B -ntp -q test -Dtest='DiscLobesTest,GpuDiscLobesTest' -Ddiffract.excludedGroups=none
+mvn -B -ntp -q test -Dtest='DiscLobesTest#lobesFollowTheDiscWhereTheGaussianProfileDoesNot+lobesUnderADiscAreWithinOneOfTheReferencesDisc,GpuDiscLobesTest' \
+    -Ddiffract.measure=disc-maps
 # the GL times alone, after the CPU work, so that nothing else runs beside them
 mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-speed
 out=docs/bench/disc-lobes.md
@@ -23,7 +24,7 @@ out=docs/bench/disc-lobes.md
     echo "| patch | coherence | map | disc (deg) | lit px | lobes, disc | lobes, Gaussian profile | reference s | lobes s (CPU) |"
     echo "|---|---|---|---|---|---|---|---|---|"
     perl -ne 'print "| blazed | $1 um | $2 x $2, the 2 rows of the orders | $3 | $6 | $4 / $5 | $7 / $8 | $9 | $10 |\n"
-        if /^blazed, (\d+) um, (\d+) px, ([\d.]+)-degree disc: lobes .*?lit: mean ([\d.]+), p95 ([\d.]+),.*? over (\d+) pixels.*?; the Gaussian profile .*?lit: mean ([\d.]+), p95 ([\d.]+),.*?; reference ([\d.]+) s, lobes ([\d.]+) s/' \
+        if /^blazed, (\d+) um, (\d+) px, ([\d.]+)-degree disc, 2 rows: lobes .*?lit: mean ([\d.]+), p95 ([\d.]+),.*? over (\d+) pixels.*?; the Gaussian profile .*?lit: mean ([\d.]+), p95 ([\d.]+),.*?; reference ([\d.]+) s, lobes ([\d.]+) s/' \
         target/test-reports/DiscLobesTest.txt
     echo
     echo "Pixels of one row (the fast test):"
