@@ -99,7 +99,6 @@ float normalCdf(float z) {
     return z >= 0.0 ? 1.0 - tail : tail;
 }
 
-
 #ifdef LOBES_BOX
 // LobeGeometry.axis with a box: sqrt(pi) sigmaUv times the average over [u - h, u + h] of N(mu, variance).
 float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
@@ -147,16 +146,8 @@ void setDisc(vec3 wi, vec3 wr) {
 // incidence): DiscFootprint's circle of radius sin R about the sample, its density 1 / (Omega d_z) at d.xy = the offset
 // from its centre; the gain factor, the shadowing and w are the sample's, which the table's lookup applies.
 void setTableDisc() {
-    float cosR = cos(lightHalfAngleRad);
-    float sinR = sin(lightHalfAngleRad);
-    discE = vec2(0.0, 1.0);
-    discAxes = vec2(sinR);
-    discCentreOffset = vec2(0.0);
-    discSolidAngle = 6.28318531 * (1.0 - cosR);
-    discWr = vec3(0.0, 0.0, 1.0);
-    discCentreGain = 1.0;
+    setDisc(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0)); // the circle about the normal; its gain is not used
     discTable = true;
-    discOn = lightHalfAngleRad > 0.0;
 }
 
 // DiscFootprint.reach: the ellipse's support along u and v plus its centre's offset.

@@ -185,7 +185,6 @@ float nodeSpacingNm(vec2 c, float fromNm) {
     return spacingOnLevels(min(min(width / lobeNodesPerSigma, lobeMaxStepNm), bandNm));
 }
 
-
 // LobeSpectrum.lastNode: the last node within the passage, or, for hats ending at the band's end, the first at or
 // beyond lambda_max (its hat still covers the band's last part).
 int lastNodeIndex(float toNm, float spacing) {

@@ -101,7 +101,7 @@ public final class DiscFootprint {
     public double reach(int axis) {
         double e = axis == 0 ? eU : eV;
         double rr = axis == 0 ? eV : -eU; // r = (e.v, -e.u)
-        double offset = axis == 0 ? centreU - (-wi.x() - wr.x()) : centreV - (-wi.y() - wr.y());
+        double offset = (1 - cosR) * (axis == 0 ? wi.x() : wi.y());
         return Math.abs(offset) + Math.sqrt(a * a * e * e + b * b * rr * rr);
     }
 

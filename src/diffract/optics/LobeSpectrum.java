@@ -197,7 +197,7 @@ public final class LobeSpectrum {
                 // the rim's plateau at the disc's densest direction, or the small disc's Gaussian peak; the gain
                 // relative to the centre's can exceed 1 across the disc (a factor 2 of slack for the cutoff)
                 double sigma2 = 2 * widestLobeVariance;
-                Covariance2 s = g.plus(disc.covariance()).plus(Covariance2.isotropic(widestLobeVariance));
+                Covariance2 s = g.plus(discGaussian).plus(Covariance2.isotropic(widestLobeVariance));
                 double gaussianPeak = sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
                 peak = 2 * (rims ? Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak) : gaussianPeak);
                 return;
@@ -420,15 +420,15 @@ public final class LobeSpectrum {
     private double spacingNm(double cx, double cy, Shape shape, double fromNm) {
         double lobeVariance = 0.5 * square(fromNm * 1e-3 * sigmaFPerUm);
         // under a disc the rims are the passage's edges, as wide as the lobe and the box across them (a disc without
-        // rims: as wide as its Gaussian)
-        double boxU = shape.passageU;
-        double boxV = shape.passageV;
+        // rims: as wide as its Gaussian); 0 otherwise
         double widthNm = Double.POSITIVE_INFINITY;
         if (cx != 0) {
-            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.xx() + boxU) / Math.abs(cx) * 1e3);
+            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.xx() + shape.passageU) / Math.abs(cx)
+                    * 1e3);
         }
         if (cy != 0) {
-            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.yy() + boxV) / Math.abs(cy) * 1e3);
+            widthNm = Math.min(widthNm, Math.sqrt(lobeVariance + shape.gaussian.yy() + shape.passageV) / Math.abs(cy)
+                    * 1e3);
         }
         // never wider than the band: a band narrower than the nodes' spacing would be seen through one node
         double bandNm = lambdaMaxNm - lambdaMinNm;
@@ -473,6 +473,7 @@ public final class LobeSpectrum {
         Shape shape = new Shape(footprint, quadrature, 0.5 * square(lambdaUm * sigmaFPerUm), disc);
         int step = lobes.hasPairs() ? 1 : 2;
         double a = 2 * Math.PI / lambdaUm * w;
+        double[] at = new double[2];
         double sum = 0;
         for (int tx = first((u - shape.reachU) * extentXUm / lambdaUm, step);
              tx <= Math.ceil(2 * (u + shape.reachU) * extentXUm / lambdaUm); tx += step) {
@@ -485,7 +486,6 @@ public final class LobeSpectrum {
                 double cx = 0.5 * tx / extentXUm;
                 double cy = 0.5 * ty / extentYUm;
                 if (disc != null) {
-                    double[] at = new double[2];
                     disc.average(lambdaUm * sigmaFPerUm, lambdaUm * cx, lambdaUm * cy, shape.hx, shape.hy,
                             shape.gaussian, fastErf, at);
                     sum += lobe.at(2 * Math.PI / lambdaUm * at[1]) * at[0];

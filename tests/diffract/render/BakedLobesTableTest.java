@@ -69,12 +69,8 @@ class BakedLobesTableTest {
         TaylorTerms terms = RenderTestSupport.terms(patch);
         Direction wi = RenderTestSupport.light(patch, thetaI);
         float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(lobes(LIGHT_DEG), patch, terms), wi, SIZE, Reporter.SILENT);
-        float[] gpu;
         BrdfSettings baked = lobes(tableLightDeg).with(b -> b.variant(Variant.BAKED)
                 .bakedSamples(UV_SAMPLES, W_SAMPLES));
-        try (GpuBrdfMap map = new GpuBrdfMap(terms, baked)) {
-            gpu = map.xyz(wi, SIZE);
-        }
-        return RenderTestSupport.difference(cpu, gpu, SIZE, wi);
+        return RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, baked, wi, SIZE), SIZE, wi);
     }
 }

@@ -34,20 +34,13 @@ class GpuDiscLobesTest {
         GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
-                .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
+        BrdfSettings disc = lobesUnderADisc(lightDeg);
         Direction wi = RenderTestSupport.light(patch, 30);
         float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, SIZE, Reporter.SILENT);
-        float[] gpu;
-        float[] gaussian;
-        try (GpuBrdfMap map = new GpuBrdfMap(terms, disc)) {
-            gpu = map.xyz(wi, SIZE);
-        }
-        try (GpuBrdfMap map = new GpuBrdfMap(terms, disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN)))) {
-            gaussian = map.xyz(wi, SIZE);
-        }
-        BrdfMapDifference d = RenderTestSupport.difference(cpu, gpu, SIZE, wi);
-        BrdfMapDifference g = RenderTestSupport.difference(cpu, gaussian, SIZE, wi);
+        BrdfMapDifference d = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, disc, wi, SIZE), SIZE,
+                wi);
+        BrdfMapDifference g = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, gaussian(disc), wi,
+                SIZE), SIZE, wi);
         String where = String.format(java.util.Locale.ROOT, "elaphe-like, %d px, %.0f-degree disc: GPU against CPU %s;"
                 + " the Gaussian profile on the GPU against the CPU's disc %s", SIZE, lightDeg, d.summary(),
                 g.summary());
@@ -78,22 +71,15 @@ class GpuDiscLobesTest {
         TaylorTerms terms = RenderTestSupport.terms(patch);
         int size = BakedLobesTableTest.SIZE;
         for (double thetaI : new double[] {0, 30}) {
-            BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
-                    .lightSizeDeg(10).lightProfile(LightProfile.DISC));
+            BrdfSettings disc = lobesUnderADisc(10);
             Direction wi = RenderTestSupport.light(patch, thetaI);
             float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, size, Reporter.SILENT);
             BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(BakedLobesTableTest.UV_SAMPLES,
                     BakedLobesTableTest.W_SAMPLES));
-            float[] table;
-            float[] gaussianTable;
-            try (GpuBrdfMap map = new GpuBrdfMap(terms, baked)) {
-                table = map.xyz(wi, size);
-            }
-            try (GpuBrdfMap map = new GpuBrdfMap(terms, baked.with(b -> b.lightProfile(LightProfile.GAUSSIAN)))) {
-                gaussianTable = map.xyz(wi, size);
-            }
-            BrdfMapDifference d = RenderTestSupport.difference(cpu, table, size, wi);
-            BrdfMapDifference g = RenderTestSupport.difference(cpu, gaussianTable, size, wi);
+            BrdfMapDifference d = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, baked, wi, size),
+                    size, wi);
+            BrdfMapDifference g = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, gaussian(baked), wi,
+                    size), size, wi);
             String where = String.format(java.util.Locale.ROOT, "elaphe-like, %d px, theta_i %.0f, 10-degree disc: "
                     + "the baked table against the CPU lobes method %s; the table of the Gaussian profile %s", size,
                     thetaI, d.summary(), g.summary());
@@ -101,5 +87,16 @@ class GpuDiscLobesTest {
             assertTrue(d.lit().mean() <= MAX_TABLE_LIT_MEAN && d.lit().p95() <= MAX_TABLE_LIT_P95, where);
             assertTrue(g.lit().mean() > 1.5 * d.lit().mean(), where);
         }
+    }
+
+    /** The lobes method's map under a disc of {@code lightDeg}, its pixels boxes. */
+    private static BrdfSettings lobesUnderADisc(double lightDeg) {
+        return BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX).lightSizeDeg(lightDeg)
+                .lightProfile(LightProfile.DISC));
+    }
+
+    /** The same settings under the Gaussian profile of the same diameter. */
+    private static BrdfSettings gaussian(BrdfSettings disc) {
+        return disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
     }
 }

@@ -67,6 +67,13 @@ final class RenderTestSupport {
         return diffract.optics.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
     }
 
+    /** The XYZ of a size x size BRDF map drawn by the GPU under {@code settings}, in a GL context of its own. */
+    static float[] gpuXyz(TaylorTerms terms, BrdfSettings settings, Direction wi, int size) {
+        try (GpuBrdfMap map = new GpuBrdfMap(terms, settings)) {
+            return map.xyz(wi, size);
+        }
+    }
+
     static String name(HeightField patch) {
         return patch == ELAPHE_LIKE ? "elaphe-like" : patch == WIDE ? "48 um scan" : "blazed";
     }
