@@ -144,10 +144,10 @@ final class BrdfOptions {
         Double lightSizeDeg;
 
         @Option(names = "--light-profile", paramLabel = "P", completionCandidates = OptionTypes.LightProfileNames.class,
-                description = "${COMPLETION-CANDIDATES}: the light of --light-size-deg as a Gaussian of sigma D/4 per "
-                        + "axis, linearised about its centre (default: the model the fast methods filter by) or a "
-                        + "uniform disc of diameter D (the reference integrates every direction; lobes averages over "
-                        + "the disc with C, S and w per direction; baked draws the Gaussian).")
+                description = "${COMPLETION-CANDIDATES}: the light of --light-size-deg as a uniform disc of diameter D "
+                        + "(default: the reference integrates every direction; lobes averages each lobe over the disc "
+                        + "with C, S and w per direction; baked bakes it about the normal) or a Gaussian of sigma D/4 "
+                        + "per axis linearised about its centre (for comparisons).")
         LightProfile lightProfile;
     }
 

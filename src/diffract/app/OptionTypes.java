@@ -214,7 +214,7 @@ final class OptionTypes {
     static final class LightProfileNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return List.of(LightProfile.GAUSSIAN.label(), LightProfile.DISC.label()).iterator();
+            return List.of(LightProfile.DISC.label(), LightProfile.GAUSSIAN.label()).iterator();
         }
     }
 

@@ -28,9 +28,9 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
         }
         return new LightPolicy(settings, settings.with(b -> b.lightSizeDeg(0)), Optional.of(v.label()
                 + " samples the light at its centre only: a light of "
-                + InvalidSettingException.number(light.angularDiameterDeg()) + (light.isDisc()
-                ? " degrees with the disc profile needs the lobes method or the reference (or a point light, 0 degrees)"
-                : " degrees needs the lobes variant, the reference or the baked table (or a point light, 0 degrees)")));
+                + InvalidSettingException.number(light.angularDiameterDeg()) + " degrees ("
+                + light.profile().label() + ") needs the lobes variant, the baked table or the reference (or a point "
+                + "light, 0 degrees)"));
     }
 
     /** The quantity a refusal is about: the light's size. */

@@ -9,12 +9,13 @@ import java.util.Locale;
 public enum LightProfile {
     /**
      * Uniform radiance over the cone of half-angle D / 2 around the light's direction: what a scene's sun or lamp
-     * is. Only the reference integrates it, every direction exactly ({@link DiscLightAverage}).
+     * is, and the default. The reference integrates it, every direction exactly ({@link DiscLightAverage}); the
+     * lobes method averages each lobe over it ({@link DiscFootprint}), its baked table about the normal.
      */
     DISC,
     /**
      * A Gaussian of per-axis angular standard deviation D / 4 (the disc's), linearised about the light's centre
-     * ({@link LightSource#uvCovariance}): the model every fast method filters by, kept as the default.
+     * ({@link LightSource#uvCovariance}): kept for comparisons, and the profile of an environment's lights.
      */
     GAUSSIAN;
 
@@ -31,6 +32,6 @@ public enum LightProfile {
             }
         }
         throw new InvalidSettingException(Quantity.LIGHT_PROFILE, "unknown light profile '" + text
-                + "': use gaussian (sigma D/4 per axis, the default) or disc (uniform over the diameter)");
+                + "': use disc (uniform over the diameter, the default) or gaussian (sigma D/4 per axis)");
     }
 }

@@ -3,12 +3,12 @@ package diffract.optics;
 /**
  * A distant light of angular diameter D (the sun: 0.53 degrees; a lamp or a window: several) and its profile.
  *
- * <p>{@link LightProfile#DISC}: uniform radiance over the cone of half-angle D / 2 around omega_i, what a scene's
- * light is. The reference averages the relative BRDF over the cone's directions, each evaluated exactly
+ * <p>{@link LightProfile#DISC} (the default): uniform radiance over the cone of half-angle D / 2 around omega_i, what
+ * a scene's sun, lamp or softbox is. The reference averages the relative BRDF over the cone's directions, each evaluated exactly
  * ({@link DiscLightAverage}); the lobes method averages each lobe over the cone's ellipse in (u, v) with C, S and w
  * per direction ({@link DiscFootprint}).
  *
- * <p>{@link LightProfile#GAUSSIAN} (the default, the model the fast methods filter by): a Gaussian over the light's
+ * <p>{@link LightProfile#GAUSSIAN} (kept for comparisons, and the profile of an environment's lights): a Gaussian over the light's
  * directions in the tangent plane of the unit sphere at its centre omega_i, with per-axis angular standard deviation
  * sigma_a = D / 4, the standard deviation of a uniform disk of diameter D along any axis. A direction offset by
  * (a, b) along the polar basis vector e_theta = (cos t cos p, cos t sin p, -sin t) and the azimuthal one
@@ -36,9 +36,9 @@ public record LightSource(double angularDiameterDeg, LightProfile profile) {
         }
     }
 
-    /** A Gaussian light (the default profile) of angular diameter D degrees. */
+    /** A disc light (the default profile) of angular diameter D degrees. */
     public LightSource(double angularDiameterDeg) {
-        this(angularDiameterDeg, LightProfile.GAUSSIAN);
+        this(angularDiameterDeg, LightProfile.DISC);
     }
 
     /** This light's diameter with {@code p}. */

@@ -58,7 +58,7 @@ public final class SceneFile {
     /** {@code material.exposure}'s word for {@link RadiometricGain}. */
     static final String RADIOMETRIC = "radiometric";
     static final List<String> PIXEL_FILTERS = List.of("box", "point");
-    static final List<String> LIGHT_PROFILES = List.of("gaussian", "disc");
+    static final List<String> LIGHT_PROFILES = List.of("disc", "gaussian");
     static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed", "local");
     /** The catalogue's names and their camelCase spellings. */
     static final List<String> PROCEDURAL_NAMES = proceduralNames();
@@ -195,8 +195,7 @@ public final class SceneFile {
         String spectrum = light.choice("spectrum", List.of("D65"), "D65");
         double sizeDeg = light.number("angularDiameterDeg", SceneObject.Range.closed(0, LightSource.MAX_DIAMETER_DEG),
                 LightSource.SUN_DEG);
-        // gaussian stays the default: the fast methods filter by it, and a disc is the reference's only
-        source[0] = new LightSource(sizeDeg, LightProfile.parse(light.choice("profile", LIGHT_PROFILES, "gaussian")));
+        source[0] = new LightSource(sizeDeg, LightProfile.parse(light.choice("profile", LIGHT_PROFILES, "disc")));
         light.finish();
         return new Scene.LightSpec(towards, spectrum);
     }

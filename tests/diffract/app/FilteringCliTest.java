@@ -70,12 +70,13 @@ class FilteringCliTest {
             }
         }
         assertOneLine(run("--variant", "flss", "--light-size-deg", "10", "--light-profile", "disc"),
-                "lobes method or the reference");
+                "(disc) needs the lobes variant, the baked table or the reference");
     }
 
     @Test
     void badFilteringOptionsEndWithOneLine() {
-        assertOneLine(run("--variant", "flss", "--light-size-deg", "2"), "lobes variant");
+        assertOneLine(run("--variant", "flss", "--light-size-deg", "2", "--light-profile", "gaussian"),
+                "(gaussian) needs the lobes variant");
         assertOneLine(run("--variant", "lobes", "--fresnel", "squared"), "--fresnel");
         assertOneLine(run("--variant", "lobes", "--light-size-deg", "25"), "angular diameter");
         assertOneLine(run("--variant", "lobes", "--light-size-deg", "1", "--lambda", "550"), "--light-size-deg");

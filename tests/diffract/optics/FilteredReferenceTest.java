@@ -69,7 +69,7 @@ class FilteredReferenceTest {
         FilteredReference reference = reference(patch);
         ExactSpectrum exact = new ExactSpectrum(patch, WINDOW);
         Direction wi = Direction.fromSphericalDeg(30, phiOf(name));
-        Covariance2 light = new LightSource(2.0).uvCovariance(wi);
+        Covariance2 light = new LightSource(2.0, LightProfile.GAUSSIAN).uvCovariance(wi);
         int[] pixel = brightestOnTheLineOfOrders(reference, wi, phiOf(name), 1).get(0);
         Direction wr = Direction.fromProjected(BrdfMap.xOf(pixel[0], SIZE), BrdfMap.yOf(pixel[1], SIZE));
         double[] filtered = reference.at(wi, wr, new Footprint(0, 0, light));
@@ -87,7 +87,7 @@ class FilteredReferenceTest {
         HeightField patch = patch("blazed");
         FilteredReference reference = reference(patch);
         Direction wi = Direction.fromSphericalDeg(30, 30);
-        Covariance2 light = new LightSource(2.0).uvCovariance(wi);
+        Covariance2 light = new LightSource(2.0, LightProfile.GAUSSIAN).uvCovariance(wi);
         assertTrue(Math.abs(light.xy()) > 0.1 * light.xx());
         // the first order at 550 nm, lambda / d = 0.22 along x from the mirror direction
         int column = (int) Math.floor((-wi.x() + 0.22 + 1) * SIZE / 2);

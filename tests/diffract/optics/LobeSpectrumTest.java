@@ -159,7 +159,7 @@ class LobeSpectrumTest {
         CoherenceWindow window = CoherenceWindow.thesis();
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
         BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
-                .lightSizeDeg(2));
+                .lightSizeDeg(2).lightProfile(LightProfile.GAUSSIAN));
         DiffractionBrdf lobes = DiffractionBrdf.create(settings, patch, terms);
         DiffractionBrdf reference = DiffractionBrdf.create(settings.with(b -> b.variant(Variant.REFERENCE)), patch, null);
         Direction wi = Direction.fromSphericalDeg(30, 30);

@@ -66,7 +66,7 @@ class LobesAccuracyTest {
         int size = SIZE_PX;
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
         BrdfSettings settings = BrdfSettings.thesis(Variant.REFERENCE).with(b -> b.pixelFilter(PixelFilter.BOX)
-                .lightSizeDeg(lightDeg));
+                .lightSizeDeg(lightDeg).lightProfile(LightProfile.GAUSSIAN));
         Direction wi = Direction.fromSphericalDeg(30, phiDeg);
         float[] reference = strip(DiffractionBrdf.create(settings, patch, null), wi, phiDeg, size);
         float[] lobes = strip(DiffractionBrdf.create(settings.with(b -> b.variant(Variant.LOBES)

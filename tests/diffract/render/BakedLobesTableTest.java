@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
+import diffract.optics.LightProfile;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -36,7 +37,7 @@ class BakedLobesTableTest {
 
     static BrdfSettings lobes(double lightDeg) {
         return RenderTestSupport.settings(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
-                .lightSizeDeg(lightDeg));
+                .lightSizeDeg(lightDeg).lightProfile(LightProfile.GAUSSIAN));
     }
 
     @Test

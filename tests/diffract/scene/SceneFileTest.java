@@ -61,15 +61,15 @@ class SceneFileTest {
         assertEquals(diffract.optics.Variant.FLSS, SceneFile.load(file).material().settings().variant());
     }
 
-    /** light.profile gives the light's profile, gaussian by default; an unknown one is a one-line error. */
+    /** light.profile gives the light's profile, disc by default; an unknown one is a one-line error. */
     @Test
-    void theLightsProfileIsGaussianUnlessTheSceneSaysDisc() throws IOException {
+    void theLightsProfileIsADiscUnlessTheSceneSaysGaussian() throws IOException {
         Path file = dir.resolve("ok.json");
         Files.writeString(file, valid(""));
-        assertEquals(diffract.optics.LightProfile.GAUSSIAN,
-                SceneFile.load(file).material().settings().illumination().light().profile());
-        Files.writeString(file, valid("").replace("\"thetaDeg\": 30", "\"thetaDeg\": 30, \"profile\": \"disc\""));
         assertEquals(diffract.optics.LightProfile.DISC,
+                SceneFile.load(file).material().settings().illumination().light().profile());
+        Files.writeString(file, valid("").replace("\"thetaDeg\": 30", "\"thetaDeg\": 30, \"profile\": \"gaussian\""));
+        assertEquals(diffract.optics.LightProfile.GAUSSIAN,
                 SceneFile.load(file).material().settings().illumination().light().profile());
         String m = message(valid("").replace("\"thetaDeg\": 30", "\"thetaDeg\": 30, \"profile\": \"tophat\""));
         assertTrue(m.startsWith("3: light.profile"), m);
