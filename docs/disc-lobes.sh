@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The lobes method under a disc light against the reference's exact disc (docs/filtering.md, section 9, "The lobes
 # method under a disc"): runs DiscLobesTest's measurement (the blazed grating at a 10 um coherence length,
-# 64 x 64 maps at theta_i = 30 degrees, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores)
+# 64 x 64 maps at theta_i = 30 degrees, 0.53, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores)
 # GpuDiscLobesTest (GPU = CPU, the baked table) and DiscLobesSpeedMeasurement (GL time of the lobes shader under the
 # disc and under the Gaussian profile against FLSS, 64 x 64 maps at 65 um), and writes their measurements into
 # docs/bench/disc-lobes.md. About 15 minutes on 2 cores; from anywhere: bash docs/disc-lobes.sh

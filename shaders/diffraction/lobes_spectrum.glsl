@@ -293,8 +293,12 @@ vec3 spectralXyz(vec3 uvw) {
             reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz + discGaussian.xz);
             discPassage = discGaussian.xz;
         }
-        vec3 s = full + discCovariance() + vec3(widest, 0.0, widest);
-        float gaussianPeak = 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
+        vec3 spread = full + discGaussian;
+        vec3 s = spread + vec3(widest, 0.0, widest);
+        float sigma = sqrt(2.0 * widest);
+        float gaussianPeak = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0
+                ? axisPeak(sigma, footprintHalfWidth.x, spread.x) * axisPeak(sigma, footprintHalfWidth.y, spread.z)
+                : 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
         float plateau = 3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr);
         peak = 2.0 * (rims ? max(plateau, gaussianPeak) : gaussianPeak);
     }

@@ -194,11 +194,16 @@ public final class LobeSpectrum {
                     passageU = discGaussian.xx();
                     passageV = discGaussian.yy();
                 }
-                // the rim's plateau at the disc's densest direction, or the small disc's Gaussian peak; the gain
-                // relative to the centre's can exceed 1 across the disc (a factor 2 of slack for the cutoff)
+                // the rim's plateau at the disc's densest direction, or the small disc's Gaussian peak (with a box:
+                // per axis the box's bound and the widened lobe's, as DiscFootprint.average takes the box with the
+                // Gaussian's diagonal); the gain relative to the centre's can exceed 1 across the disc (a factor 2
+                // of slack for the cutoff)
                 double sigma2 = 2 * widestLobeVariance;
-                Covariance2 s = g.plus(discGaussian).plus(Covariance2.isotropic(widestLobeVariance));
-                double gaussianPeak = sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
+                Covariance2 spread = g.plus(discGaussian);
+                Covariance2 s = spread.plus(Covariance2.isotropic(widestLobeVariance));
+                double gaussianPeak = footprint.hasBox()
+                        ? axisPeak(Math.sqrt(sigma2), hx, spread.xx()) * axisPeak(Math.sqrt(sigma2), hy, spread.yy())
+                        : sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
                 peak = 2 * (rims ? Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak) : gaussianPeak);
                 return;
             }
