@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
 # The lobes method under a disc light against the reference's exact disc (docs/filtering.md, section 9, "The lobes
 # method under a disc"): runs DiscLobesTest's measurement (the blazed grating at a 10 um coherence length,
-# 64 x 64 maps at theta_i = 30 degrees, 0.53, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores)
-# GpuDiscLobesTest (GPU = CPU, the baked table) and DiscLobesSpeedMeasurement (GL time of the lobes shader under the
-# disc and under the Gaussian profile against FLSS, 64 x 64 maps at 65 um), and writes their measurements into
-# docs/bench/disc-lobes.md. About 15 minutes on 2 cores; from anywhere: bash docs/disc-lobes.sh
+# 64 x 64 maps at theta_i = 30 degrees, 0.53, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores),
+# GpuDiscLobesTest (GPU = CPU, the baked table), BakedDiscMeasurement (the baked table by its grid) and
+# DiscLobesSpeedMeasurement (GL time of the lobes shader under the disc and under the Gaussian profile against FLSS,
+# 64 x 64 maps at 65 um), and writes their measurements into docs/bench/disc-lobes.md. About 20 minutes on 2 cores;
+# from anywhere: bash docs/disc-lobes.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 rm -f target/test-reports/DiscLobesTest.txt target/test-reports/GpuDiscLobesTest.txt \
-    target/test-reports/DiscLobesSpeedMeasurement.txt
+    target/test-reports/DiscLobesSpeedMeasurement.txt target/test-reports/BakedDiscMeasurement.txt
 mvn -B -ntp -q test -Dtest='DiscLobesTest#lobesFollowTheDiscWhereTheGaussianProfileDoesNot+lobesUnderADiscAreWithinOneOfTheReferencesDisc,GpuDiscLobesTest' \
     -Ddiffract.measure=disc-maps
+mvn -B -ntp -q test -Dtest=BakedDiscMeasurement -Ddiffract.measure=baked-disc
 # the GL times alone, after the CPU work, so that nothing else runs beside them
 mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-speed
 out=docs/bench/disc-lobes.md
@@ -34,6 +36,11 @@ out=docs/bench/disc-lobes.md
     echo "GPU against CPU, and the baked table against the CPU lobes method:"
     echo
     sed 's/^/- /' target/test-reports/GpuDiscLobesTest.txt
+    echo
+    echo "The baked table under a disc against the CPU lobes method, by its grid (\`BakedDiscMeasurement\`; the commands"
+    echo "take 513 samples along u and v at 65 um):"
+    echo
+    sed 's/^/- /' target/test-reports/BakedDiscMeasurement.txt
     echo
     echo "GL time per 64 x 64 map (llvmpipe; medians of alternating rounds):"
     echo
