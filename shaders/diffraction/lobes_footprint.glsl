@@ -99,6 +99,46 @@ float normalCdf(float z) {
     return z >= 0.0 ? 1.0 - tail : tail;
 }
 
+#ifdef LIGHT_DISC
+// (Phi(z), phi(z)) with one exponential: erfcPositive's Abramowitz-Stegun form shares phi's exp(-z^2 / 2).
+vec2 normalCdfAndPdf(float z) {
+    float e = exp(-0.5 * z * z);
+    float t = 1.0 / (1.0 + 0.3275911 * 0.70710678 * abs(z));
+    float tail = 0.5 * t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027
+            + t * 1.061405429)))) * e;
+    return vec2(z >= 0.0 ? 1.0 - tail : tail, 0.39894228 * e);
+}
+
+// BoxedEdge.psi1, psi2: the first and second antiderivatives of Phi.
+float normalPsi1(float z) {
+    vec2 f = normalCdfAndPdf(z);
+    return z * f.x + f.y;
+}
+
+float normalPsi2(float z) {
+    vec2 f = normalCdfAndPdf(z);
+    return 0.5 * ((z * z + 1.0) * f.x + z * f.y);
+}
+
+// BoxedEdge.average: Phi((d + n . t) / s) averaged over t in a box whose projection onto n is the sum of two uniforms
+// of half-widths ha and hb (a trapezoid), evaluated on the side d <= 0 and mirrored.
+float boxedNormalCdf(float d, float ha, float hb, float s) {
+    float a = max(ha, hb) / s;
+    float b = min(ha, hb) / s;
+    float z = -abs(d) / s;
+    float lower;
+    if (a < 1e-3) {          // BoxedEdge.POINT_BELOW
+        lower = normalCdf(z);
+    } else if (b < 1e-2 * a) { // BoxedEdge.UNIFORM_BELOW
+        lower = max(0.0, (normalPsi1(z + a) - normalPsi1(z - a)) / (2.0 * a));
+    } else {
+        lower = max(0.0, (normalPsi2(z + a + b) - normalPsi2(z - a + b) - normalPsi2(z + a - b)
+                + normalPsi2(z - a - b)) / (4.0 * a * b));
+    }
+    return d <= 0.0 ? lower : 1.0 - lower;
+}
+#endif
+
 #ifdef LOBES_BOX
 // LobeGeometry.axis with a box: sqrt(pi) sigmaUv times the average over [u - h, u + h] of N(mu, variance).
 float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
@@ -192,8 +232,8 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     vec2 n = centred ? r : (ge * discE + gr * r) / gNorm;
     float dist = centred ? b : (1.0 - rho) * rho / gNorm;
     vec3 g = footprintGaussian;
-    float blurVariance = lobeVariance + g.x * n.x * n.x + 2.0 * g.y * n.x * n.y + g.z * n.y * n.y
-            + (footprintHalfWidth.x * footprintHalfWidth.x * n.x * n.x
+    float gaussianVariance = lobeVariance + g.x * n.x * n.x + 2.0 * g.y * n.x * n.y + g.z * n.y * n.y;
+    float blurVariance = gaussianVariance + (footprintHalfWidth.x * footprintHalfWidth.x * n.x * n.x
             + footprintHalfWidth.y * footprintHalfWidth.y * n.y * n.y) / 3.0;
     float s = sqrt(blurVariance);
     float edgeWeight = smoothstep(DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE, b / s);
@@ -209,7 +249,9 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     float dz = sqrt(max(1e-12, dz2));
     float gain = discTable ? 1.0 : dz2 > 0.0 && discCentreGain > 0.0
             ? gainTimesShadowing(vec3(d, dz), discWr) / discCentreGain : 0.0;
-    float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * normalCdf(dist / s);
+    // the rim blurred by the lobe and the footprint's Gaussian, seen through the box exactly (BoxedEdge)
+    float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * boxedNormalCdf(dist,
+            footprintHalfWidth.x * abs(n.x), footprintHalfWidth.y * abs(n.y), sqrt(gaussianVariance));
     // the small disc's Gaussian (LobeGeometry.averagedLobe): a map pixel's box exactly with the Gaussian's diagonal,
     // a surface pixel's Gaussian in full
     vec3 spread = g + discCovariance();

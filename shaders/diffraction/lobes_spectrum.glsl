@@ -280,14 +280,15 @@ vec3 spectralXyz(vec3 uvw) {
 #ifdef LIGHT_DISC
     if (discOn) {
         // LobeSpectrum.Shape with a disc: with rims (the disc wider than the narrowest blur) its support, the box,
-        // and the blur of the lobe and the box; without, its Gaussian's reach; its plateau or small-disc peak, with 2
-        // of slack for the gain
+        // and the lobe's blur; without, its Gaussian's reach; its plateau or small-disc peak, with 2 of slack for the
+        // gain
         vec2 box = footprintHalfWidth * footprintHalfWidth / 3.0;
         float narrowest = min(full.x, full.z) + min(box.x, box.y);
         vec3 discGaussian = discCovariance();
         bool rims = discAxes.y > DISC_GAUSSIAN_BELOW * sqrt(narrowest);
         if (rims) {
-            reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz + box);
+            // the box and the disc end where they end (BoxedEdge); the lobe and the Gaussian blur beyond
+            reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz);
             discPassage = box;
         } else {
             reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz + discGaussian.xz);

@@ -19,8 +19,8 @@ package diffract.optics;
  * </pre>
  * dist the signed distance from mu to the ellipse's rim (positive inside), to first order in the rim's curvature,
  * (1 - rho) / |grad rho| with rho the ellipse's normalised radius, and s the blur across the rim along its normal n:
- * the lobe's sigma_uv^2 / 2, the footprint's Gaussian and a map pixel's box as the Gaussian of its variance
- * (h^2 / 3 per axis). The disc's other quantities are taken at d_mu, the
+ * the lobe's sigma_uv^2 / 2 and the footprint's Gaussian; a map pixel's box is averaged over exactly, its projection
+ * onto n a trapezoid ({@link BoxedEdge}). The disc's other quantities are taken at d_mu, the
  * direction that puts the lobe on the pixel's centre: d_mu.xy = -mu - omega_r.xy (brought onto the rim from outside):
  * its w = -(d_z + omega_r.z) for the lobe's weight W(k w), and its gain times shadowing C S(d_mu, omega_r), given
  * relative to the pixel's gain at the light's centre (by which the caller multiplies). So C, S and w follow the
@@ -154,8 +154,8 @@ public final class DiscFootprint {
             nv = (ge * eV - gr * eU) / gNorm;
             dist = (1 - rho) * rho / gNorm;
         }
-        double blurVariance = lobeVariance + g.xx() * nu * nu + 2 * g.xy() * nu * nv + g.yy() * nv * nv
-                + (hx * hx * nu * nu + hy * hy * nv * nv) / 3;
+        double gaussianVariance = lobeVariance + g.xx() * nu * nu + 2 * g.xy() * nu * nv + g.yy() * nv * nv;
+        double blurVariance = gaussianVariance + (hx * hx * nu * nu + hy * hy * nv * nv) / 3;
         double s = Math.sqrt(blurVariance);
         double edgeWeight = smoothstep(GAUSSIAN_BELOW, EDGE_ABOVE, b / s);
         // a blurred curved rim holds less inside than a straight one: the rim moved in by s^2 kappa / 2 (kappa its
@@ -179,7 +179,9 @@ public final class DiscFootprint {
         double value = 0;
         if (edgeWeight > 0) {
             double density = 1 / (solidAngle * dz);
-            value += edgeWeight * Math.PI * sigmaUv * sigmaUv * density * normalCdf(dist / s, fast);
+            // the rim blurred by the lobe and the footprint's Gaussian, seen through the box exactly
+            value += edgeWeight * Math.PI * sigmaUv * sigmaUv * density * BoxedEdge.average(dist, hx * Math.abs(nu),
+                    hy * Math.abs(nv), Math.sqrt(gaussianVariance), fast);
         }
         if (edgeWeight < 1) {
             Covariance2 spread = g.plus(covariance());

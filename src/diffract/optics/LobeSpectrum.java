@@ -180,10 +180,9 @@ public final class LobeSpectrum {
                 Covariance2 discGaussian = disc.covariance();
                 boolean rims = disc.hasRims(narrowest);
                 if (rims) {
-                    reachU = hx + disc.reach(0) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx()
-                            + hx * hx / 3);
-                    reachV = hy + disc.reach(1) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy()
-                            + hy * hy / 3);
+                    // the box and the disc end where they end (BoxedEdge); the lobe and the Gaussian blur beyond
+                    reachU = hx + disc.reach(0) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.xx());
+                    reachV = hy + disc.reach(1) + quadrature.reachSigmas() * Math.sqrt(widestLobeVariance + g.yy());
                     passageU = hx * hx / 3;
                     passageV = hy * hy / 3;
                 } else {
