@@ -30,6 +30,7 @@ class DiscLobesSpeedMeasurement {
     void lobesUnderADiscAgainstTheGaussianProfileAndFlss() {
         Assumptions.assumeTrue("disc-speed".equals(System.getProperty("diffract.measure")), "measurement on request");
         GlTestSupport.assumeOffscreenGl();
+        measure("blazed", RenderTestSupport.BLAZED);
         measure("elaphe-like", RenderTestSupport.ELAPHE_LIKE);
     }
 
@@ -37,7 +38,7 @@ class DiscLobesSpeedMeasurement {
         TaylorTerms terms = RenderTestSupport.terms(patch);
         Direction wi = RenderTestSupport.light(patch, 30);
         BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS);
-        for (double lightDeg : new double[] {2, 10}) {
+        for (double lightDeg : new double[] {0.53, 2, 10, 20}) {
             BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                     .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
             BrdfSettings gaussian = disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
