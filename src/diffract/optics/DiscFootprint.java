@@ -29,8 +29,9 @@ package diffract.optics;
  * <p><b>Small discs.</b> The straight rim needs b well above s. Below, the uniform ellipse is replaced by the Gaussian
  * of its covariance (a^2 / 4 along e, b^2 / 4 along r: the Gaussian profile of the same diameter, measured within
  * CIEDE2000 0.11 of the disc at 2 degrees on the reference), blended smoothly for b / s between
- * {@link #GAUSSIAN_BELOW} and {@link #EDGE_ABOVE}; a map pixel's box is then averaged over exactly (erf per axis,
- * {@link LobeGeometry#averagedLobe}) with the Gaussian's diagonal, where the rim takes it as its variance.
+ * {@link #GAUSSIAN_BELOW} and {@link #EDGE_ABOVE} (s there holds the box's variance h^2 / 3 too); a map pixel's box
+ * is then averaged over exactly (erf per axis, {@link LobeGeometry#averagedLobe}) with the Gaussian's diagonal, as the
+ * rim averages it exactly across its normal ({@link BoxedEdge}).
  *
  * <p><b>The wavelength nodes.</b> Along a lobe's passage A(lambda) has a plateau and two rims, each as wide in
  * wavelength as the lobe and the pixel's box across it over the lobe's speed; the passage's nodes follow that width
