@@ -77,11 +77,16 @@ void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
 #endif
 }
 
+// erfc(x) exp(x^2) for x >= 0: the Abramowitz-Stegun 7.1.26 polynomial, which erfcPositive multiplies by exp(-x^2)
+// (and normalCdfAndPdf by the exponential it shares with phi).
+float erfcOverGaussian(float x) {
+    float t = 1.0 / (1.0 + 0.3275911 * x);
+    return t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+}
+
 // ErrorFunction.fastErfc for x >= 0: Abramowitz and Stegun 7.1.26, absolute error below 1.5e-7.
 float erfcPositive(float x) {
-    float t = 1.0 / (1.0 + 0.3275911 * x);
-    return t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))))
-            * exp(-x * x);
+    return erfcOverGaussian(x) * exp(-x * x);
 }
 
 // ErrorFunction.fastMassInInterval: (erf(b) - erf(a)) / 2 on the side where it does not cancel, from erfc(|a|) and
@@ -100,12 +105,10 @@ float normalCdf(float z) {
 }
 
 #ifdef LIGHT_DISC
-// (Phi(z), phi(z)) with one exponential: erfcPositive's Abramowitz-Stegun form shares phi's exp(-z^2 / 2).
+// (Phi(z), phi(z)) with one exponential: erfcPositive's exp(-x^2) at x = |z| / sqrt 2 is phi's exp(-z^2 / 2).
 vec2 normalCdfAndPdf(float z) {
     float e = exp(-0.5 * z * z);
-    float t = 1.0 / (1.0 + 0.3275911 * 0.70710678 * abs(z));
-    float tail = 0.5 * t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027
-            + t * 1.061405429)))) * e;
+    float tail = 0.5 * erfcOverGaussian(0.70710678 * abs(z)) * e;
     return vec2(z >= 0.0 ? 1.0 - tail : tail, 0.39894228 * e);
 }
 

@@ -282,14 +282,14 @@ vec3 spectralXyz(vec3 uvw) {
         // LobeSpectrum.Shape with a disc: with rims (the disc wider than the narrowest blur) its support, the box,
         // and the lobe's blur; without, its Gaussian's reach; its plateau or small-disc peak, with 2 of slack for the
         // gain
-        vec2 box = footprintHalfWidth * footprintHalfWidth / 3.0;
-        float narrowest = min(full.x, full.z) + min(box.x, box.y);
+        vec2 boxVariance = footprintHalfWidth * footprintHalfWidth / 3.0;
+        float narrowest = min(full.x, full.z) + min(boxVariance.x, boxVariance.y);
         vec3 discGaussian = discCovariance();
         bool rims = discAxes.y > DISC_GAUSSIAN_BELOW * sqrt(narrowest);
         if (rims) {
             // the box and the disc end where they end (BoxedEdge); the lobe and the Gaussian blur beyond
             reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz);
-            discPassage = box;
+            discPassage = boxVariance;
         } else {
             reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz + discGaussian.xz);
             discPassage = discGaussian.xz;
@@ -297,7 +297,7 @@ vec3 spectralXyz(vec3 uvw) {
         vec3 spread = full + discGaussian;
         vec3 s = spread + vec3(widest, 0.0, widest);
         float sigma = sqrt(2.0 * widest);
-        float gaussianPeak = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0
+        float gaussianPeak = box
                 ? axisPeak(sigma, footprintHalfWidth.x, spread.x) * axisPeak(sigma, footprintHalfWidth.y, spread.z)
                 : 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
         float plateau = 3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr);

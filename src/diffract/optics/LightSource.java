@@ -4,14 +4,14 @@ package diffract.optics;
  * A distant light of angular diameter D (the sun: 0.53 degrees; a lamp or a window: several) and its profile.
  *
  * <p>{@link LightProfile#DISC} (the default): uniform radiance over the cone of half-angle D / 2 around omega_i, what
- * a scene's sun, lamp or softbox is. The reference averages the relative BRDF over the cone's directions, each evaluated exactly
- * ({@link DiscLightAverage}); the lobes method averages each lobe over the cone's ellipse in (u, v) with C, S and w
- * per direction ({@link DiscFootprint}).
+ * a scene's sun, lamp or softbox is. The reference averages the relative BRDF over the cone's directions, each
+ * evaluated exactly ({@link DiscLightAverage}); the lobes method averages each lobe over the cone's ellipse in (u, v)
+ * with C, S and w per direction ({@link DiscFootprint}).
  *
- * <p>{@link LightProfile#GAUSSIAN} (kept for comparisons, and the profile of an environment's lights): a Gaussian over the light's
- * directions in the tangent plane of the unit sphere at its centre omega_i, with per-axis angular standard deviation
- * sigma_a = D / 4, the standard deviation of a uniform disk of diameter D along any axis. A direction offset by
- * (a, b) along the polar basis vector e_theta = (cos t cos p, cos t sin p, -sin t) and the azimuthal one
+ * <p>{@link LightProfile#GAUSSIAN} (kept for comparisons, and the profile of an environment's lights): a Gaussian over
+ * the light's directions in the tangent plane of the unit sphere at its centre omega_i, with per-axis angular
+ * standard deviation sigma_a = D / 4, the standard deviation of a uniform disk of diameter D along any axis. A
+ * direction offset by (a, b) along the polar basis vector e_theta = (cos t cos p, cos t sin p, -sin t) and the azimuthal one
  * e_phi = (-sin p, cos p, 0) moves (u, v) = -omega_i.xy - omega_r.xy by -(a e_theta.xy + b e_phi.xy): to first
  * order a Gaussian in (u, v) of covariance sigma_a^2 J J^T, J = [e_theta.xy, e_phi.xy] = sigma_a^2 (cos^2 t r r^T +
  * e e^T), r = (cos p, sin p), e = (-sin p, cos p): an ellipse cos(theta_i) times shorter in the plane of incidence.

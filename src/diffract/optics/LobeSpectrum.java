@@ -200,8 +200,9 @@ public final class LobeSpectrum {
                 double sigma2 = 2 * widestLobeVariance;
                 Covariance2 spread = g.plus(discGaussian);
                 Covariance2 s = spread.plus(Covariance2.isotropic(widestLobeVariance));
+                double sigma = Math.sqrt(sigma2);
                 double gaussianPeak = footprint.hasBox()
-                        ? axisPeak(Math.sqrt(sigma2), hx, spread.xx()) * axisPeak(Math.sqrt(sigma2), hy, spread.yy())
+                        ? axisPeak(sigma, hx, spread.xx()) * axisPeak(sigma, hy, spread.yy())
                         : sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
                 peak = 2 * (rims ? Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak) : gaussianPeak);
                 return;
