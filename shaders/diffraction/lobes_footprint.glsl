@@ -158,8 +158,7 @@ float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
 // e = (-sin phi_i, cos phi_i) and sin R cos theta_i along r, of density 1 / (Omega d_z) per unit (u, v). setDisc places
 // it for one pixel (diffractionXyz); discOn is false for lights other than the disc (a stage's environment lights).
 uniform float lightHalfAngleRad;
-const float DISC_GAUSSIAN_BELOW = 1.0; // DiscFootprint.GAUSSIAN_BELOW
-const float DISC_EDGE_ABOVE = 3.0;    // DiscFootprint.EDGE_ABOVE
+// DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE and DISC_RING_SAMPLES: DiscFootprint's, defined by DiffractionShaders
 bool discOn = false;
 bool discTable = false; // a baked table's disc: about the normal, its C, S and w left to the lookup (setTableDisc)
 vec2 discCentreOffset; // the ellipse's centre less the pixel's (u, v) at the light's centre
@@ -168,7 +167,32 @@ vec2 discAxes;         // (a, b) = (sin R, sin R cos theta_i)
 float discSolidAngle;
 vec3 discWr;
 float discCentreGain;
+float discGainBound; // DiscFootprint.gainBound: a bound on the gain relative to the centre's across the disc
 vec2 discPassage; // variances (u, v) that widen a lobe's passage for the node spacing (LobeSpectrum.Shape.passageU)
+
+// DiscFootprint.gainBound: the largest gain ratio at the centre (1) and at DISC_RING_SAMPLES directions on the rim
+// and on the ring at half its radius, plus half the range of those samples; 1 where the centre's gain is 0.
+float discGainBoundAt(vec3 wi, vec3 wr) {
+    if (discCentreGain <= 0.0) {
+        return 1.0;
+    }
+    vec2 r = vec2(discE.y, -discE.x);
+    vec2 centre = -wi.xy - wr.xy + discCentreOffset;
+    float largest = 1.0;
+    float smallest = 1.0;
+    for (int ring = 1; ring <= 2; ring++) {
+        float scale = 1.0 / float(ring);
+        for (int k = 0; k < DISC_RING_SAMPLES; k++) {
+            float beta = 6.28318531 * (float(k) + 0.5 * float(ring - 1)) / float(DISC_RING_SAMPLES);
+            vec2 d = -(centre + scale * (discAxes.x * cos(beta) * discE + discAxes.y * sin(beta) * r)) - wr.xy;
+            float dz2 = 1.0 - dot(d, d);
+            float ratio = dz2 > 0.0 ? gainTimesShadowing(vec3(d, sqrt(dz2)), wr) / discCentreGain : 0.0;
+            largest = max(largest, ratio);
+            smallest = min(smallest, ratio);
+        }
+    }
+    return largest + 0.5 * (largest - smallest);
+}
 
 // DiscFootprint's constructor for the pixel at omega_r under the disc about omega_i.
 void setDisc(vec3 wi, vec3 wr) {
@@ -183,6 +207,7 @@ void setDisc(vec3 wi, vec3 wr) {
     discWr = wr;
     discCentreGain = gainTimesShadowing(wi, wr);
     discOn = lightHalfAngleRad > 0.0;
+    discGainBound = discGainBoundAt(wi, wr);
 }
 
 // A baked table's disc, which knows no omega_i (as the table's Gaussian light, the light is taken at normal
@@ -191,6 +216,7 @@ void setDisc(vec3 wi, vec3 wr) {
 void setTableDisc() {
     setDisc(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0)); // the circle about the normal; its gain is not used
     discTable = true;
+    discGainBound = 1.0;
 }
 
 // DiscFootprint.reach: the ellipse's support along u and v plus its centre's offset.

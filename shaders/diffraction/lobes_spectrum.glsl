@@ -280,8 +280,8 @@ vec3 spectralXyz(vec3 uvw) {
 #ifdef LIGHT_DISC
     if (discOn) {
         // LobeSpectrum.Shape with a disc: with rims (the disc wider than the narrowest blur) its support, the box,
-        // and the lobe's blur; without, its Gaussian's reach; its plateau or small-disc peak, with 2 of slack for the
-        // gain
+        // and the lobe's blur; without, its Gaussian's reach; its plateau or small-disc peak times the bound on the
+        // gain across the disc
         vec2 boxVariance = footprintHalfWidth * footprintHalfWidth / 3.0;
         float narrowest = min(full.x, full.z) + min(boxVariance.x, boxVariance.y);
         vec3 discGaussian = discCovariance();
@@ -301,7 +301,7 @@ vec3 spectralXyz(vec3 uvw) {
                 ? axisPeak(sigma, footprintHalfWidth.x, spread.x) * axisPeak(sigma, footprintHalfWidth.y, spread.z)
                 : 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
         float plateau = 3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr);
-        peak = 2.0 * (rims ? max(plateau, gaussianPeak) : gaussianPeak);
+        peak = discGainBound * (rims ? max(plateau, gaussianPeak) : gaussianPeak);
     }
 #endif
     float shortest = lambdaMinNm * 1e-3;

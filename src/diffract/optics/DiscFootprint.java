@@ -114,6 +114,45 @@ public final class DiscFootprint {
         return b > GAUSSIAN_BELOW * Math.sqrt(narrowestBlurVariance);
     }
 
+    /** Directions per ring that {@link #gainBound} samples, on the rim and on the ring at half its radius. */
+    public static final int RING_SAMPLES = 8;
+
+    /**
+     * A bound on the gain relative to the centre's ({@link #average}'s factor) over the disc, for the lobes method's
+     * cutoff: the largest of the ratios at the centre (1) and at {@link #RING_SAMPLES} directions on each of two rings
+     * (the rim and half its radius, offset by half a step), plus half the range of all those samples, the most the
+     * ratio can rise between samples where it changes no faster than across them; 1 where the centre's gain is 0
+     * (every direction's share is then 0).
+     */
+    public double gainBound() {
+        if (centreGain <= 0) {
+            return 1;
+        }
+        double rU = eV;
+        double rV = -eU;
+        double largest = 1;
+        double smallest = 1;
+        for (int ring = 1; ring <= 2; ring++) {
+            double scale = 1.0 / ring;
+            for (int k = 0; k < RING_SAMPLES; k++) {
+                double beta = 2 * Math.PI * (k + 0.5 * (ring - 1)) / RING_SAMPLES;
+                double onU = scale * (a * Math.cos(beta) * eU + b * Math.sin(beta) * rU);
+                double onV = scale * (a * Math.cos(beta) * eV + b * Math.sin(beta) * rV);
+                double dx = -(centreU + onU) - wr.x();
+                double dy = -(centreV + onV) - wr.y();
+                double dz2 = 1 - dx * dx - dy * dy;
+                double ratio = 0;
+                if (dz2 > 0) {
+                    Direction d = new Direction(dx, dy, Math.sqrt(dz2));
+                    ratio = GainFactor.gainTimesShadowing(d, wr, refractiveIndex, fresnel) / centreGain;
+                }
+                largest = Math.max(largest, ratio);
+                smallest = Math.min(smallest, ratio);
+            }
+        }
+        return largest + 0.5 * (largest - smallest);
+    }
+
     /** The disc's Gaussian of equal covariance in (u, v): a^2 / 4 along e, b^2 / 4 along r. */
     public Covariance2 covariance() {
         return Covariance2.along(eU, eV, a * a / 4).plus(Covariance2.along(eV, -eU, b * b / 4));

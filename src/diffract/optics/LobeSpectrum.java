@@ -195,8 +195,7 @@ public final class LobeSpectrum {
                 }
                 // the rim's plateau at the disc's densest direction, or the small disc's Gaussian peak (with a box:
                 // per axis the box's bound and the widened lobe's, as DiscFootprint.average takes the box with the
-                // Gaussian's diagonal); the gain relative to the centre's can exceed 1 across the disc (a factor 2
-                // of slack for the cutoff)
+                // Gaussian's diagonal), times the bound on the gain relative to the centre's across the disc
                 double sigma2 = 2 * widestLobeVariance;
                 Covariance2 spread = g.plus(discGaussian);
                 Covariance2 s = spread.plus(Covariance2.isotropic(widestLobeVariance));
@@ -204,7 +203,8 @@ public final class LobeSpectrum {
                 double gaussianPeak = footprint.hasBox()
                         ? axisPeak(sigma, hx, spread.xx()) * axisPeak(sigma, hy, spread.yy())
                         : sigma2 / (2 * Math.sqrt(s.xx() * s.yy() - s.xy() * s.xy()));
-                peak = 2 * (rims ? Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak) : gaussianPeak);
+                peak = disc.gainBound() * (rims ? Math.max(Math.PI * sigma2 * disc.peakDensity(), gaussianPeak)
+                        : gaussianPeak);
                 return;
             }
             passageU = 0;

@@ -4,6 +4,7 @@ import diffract.colour.Srgb;
 import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
+import diffract.optics.DiscFootprint;
 import diffract.optics.WindowPlacement;
 import diffract.optics.FresnelModel;
 import diffract.optics.InvalidSettingException;
@@ -106,6 +107,10 @@ public final class DiffractionShaders {
         }
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
         defines.put("LIGHT_NODES_MAX", Integer.toString(DiffractionMaterials.LIGHT_NODES_MAX));
+        // the disc's constants, from DiscFootprint (lobes_footprint.glsl)
+        defines.put("DISC_RING_SAMPLES", Integer.toString(DiscFootprint.RING_SAMPLES));
+        defines.put("DISC_GAUSSIAN_BELOW", Float.toString((float) DiscFootprint.GAUSSIAN_BELOW));
+        defines.put("DISC_EDGE_ABOVE", Float.toString((float) DiscFootprint.EDGE_ABOVE));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
         if (settings.illumination().fresnel() == FresnelModel.THESIS) {
