@@ -9,6 +9,7 @@ import diffract.colour.Xyz;
 import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
+import diffract.optics.Methods;
 import diffract.optics.CoherenceWindow;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
@@ -303,11 +304,11 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         Engine where = engines.engine != null ? engines.engine : brdf.auto() ? Engine.GPU : Engine.CPU;
         Variant named = requested();
         if (where == Engine.GPU && !named.runsOnGpu()) {
-            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY + " (--engine cpu)");
+            throw new UserInputException(DiffractionShaders.cpuOnly(named) + " (--engine cpu)");
         }
         if (where == Engine.CPU && !named.runsOnCpu()) {
-            throw new UserInputException("the baked variant is a table on the GPU (--engine gpu); on the CPU use "
-                    + "--variant flss, which it tabulates");
+            throw new UserInputException("the " + named.label() + " variant runs on the GPU only (--engine gpu); the "
+                    + "CPU evaluates " + Methods.listed(Variant::runsOnCpu, "and"));
         }
         if (named == Variant.BAKED && light.lambdaNm != null) {
             throw new UserInputException(GpuBrdfMap.BAKED_HAS_NO_MONOCHROMATIC + " (--lambda)");

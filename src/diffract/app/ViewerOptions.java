@@ -199,9 +199,9 @@ final class ViewerOptions {
         }
         patch.validate();
         brdf.validate();
-        if (brdf.variantOr(defaultVariant) == Variant.REFERENCE) {
-            throw new UserInputException(DiffractionShaders.REFERENCE_IS_CPU_ONLY
-                    + " (the reference is drawn by ./diffract brdfmap)");
+        if (!brdf.variantOr(defaultVariant).runsOnGpu()) {
+            throw new UserInputException(DiffractionShaders.cpuOnly(brdf.variantOr(defaultVariant))
+                    + " (./diffract brdfmap draws it)");
         }
         BrdfSettings checked = brdf.apply(parsedScene != null ? parsedScene.material().settings() : defaults());
         if (checked.window().placement() == WindowPlacement.LOCAL && !checked.window().tiling().given()) {

@@ -27,7 +27,7 @@ public final class SweepPlan {
      * Variants left out of {@code --quick} and of auto's calibration: the baked table first bakes, 30 to 70 s per
      * patch on llvmpipe (docs/baked.md), which alone would exceed the quick sweep's budget of a few minutes.
      */
-    static final Set<Variant> NOT_IN_QUICK = EnumSet.of(Variant.BAKED);
+    static final Set<Variant> NOT_IN_QUICK = Set.of(Variant.BAKED);
 
     /**
      * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (docs/baked.md

@@ -22,7 +22,7 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
                 || lobes == null || gpu == null) {
             throw new NullPointerException("the variant and every group of settings are required");
         }
-        if (window.placement() == WindowPlacement.LOCAL && variant != Variant.FLSS && variant != Variant.NMM) {
+        if (window.placement() == WindowPlacement.LOCAL && !variant.drawsLocalWindow()) {
             throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, DiffractionBrdf.LOCAL_NEEDS_FLSS_OR_NMM);
         }
     }

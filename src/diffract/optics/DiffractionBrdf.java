@@ -55,27 +55,22 @@ public final class DiffractionBrdf {
      * and the lobes method; flss, nmm and pq point-sample pixels and refuse an extended light.
      */
     public static DiffractionBrdf create(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
-        IlluminationSettings illumination = settings.illumination();
         requireNotLocal(settings);
         LightPolicy.of(settings).requireAccepted();
-        if (settings.variant() == Variant.REFERENCE) {
-            ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
-            SpectralSettings spectral = settings.spectral();
-            FilteredReference filtered = illumination.filters() ? new FilteredReference(exact,
-                    settings.coherenceWindow(), spectral, illumination.refractiveIndex(), illumination.fresnel())
-                    : null;
-            return new DiffractionBrdf(exact, WavelengthSampling.uniform(spectral.lambdaMinNm(),
-                    spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM, spectral.normalisation()),
-                    illumination, filtered, null);
-        }
-        if (settings.variant() == Variant.BAKED) {
-            throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
-        }
-        if (settings.variant() == Variant.LOBES) {
-            return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.taylor().highestOrder(),
-                    settings.coherenceWindow(), settings.spectral(), settings.lobes()));
-        }
-        return withSampling(settings, taylorSpectrum(settings, terms, settings.taylor().highestOrder()));
+        return settings.variant().cpuBrdf(settings, meanSubtracted, terms);
+    }
+
+    /** The exact reference ({@link ReferenceMethod}): exp(i k w h) transformed at 1 nm, filtered where asked. */
+    static DiffractionBrdf reference(BrdfSettings settings, HeightField meanSubtracted) {
+        IlluminationSettings illumination = settings.illumination();
+        ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
+        SpectralSettings spectral = settings.spectral();
+        FilteredReference filtered = illumination.filters() ? new FilteredReference(exact,
+                settings.coherenceWindow(), spectral, illumination.refractiveIndex(), illumination.fresnel())
+                : null;
+        return new DiffractionBrdf(exact, WavelengthSampling.uniform(spectral.lambdaMinNm(),
+                spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM, spectral.normalisation()),
+                illumination, filtered, null);
     }
 
     /**
@@ -85,16 +80,8 @@ public final class DiffractionBrdf {
      */
     public static DiffractionBrdf createPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
         requireNotLocal(settings);
-        if (settings.variant() == Variant.REFERENCE) {
-            throw new IllegalArgumentException("the reference needs no Taylor expansion");
-        }
         LightPolicy.of(settings).requireAccepted();
-        if (settings.variant() == Variant.LOBES) {
-            return withLobes(settings, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(), settings.spectral(),
-                    settings.lobes()));
-        }
-        int orders = terms.centres().highestOrder();
-        return withSampling(settings, new PhaseCentredSpectrum(terms, t -> taylorSpectrum(settings, t, orders)));
+        return settings.variant().cpuBrdfPhaseCentred(settings, terms);
     }
 
     /**
@@ -102,14 +89,14 @@ public final class DiffractionBrdf {
      * ({@link LocalWindow}): the CPU's exact counterpart of a mesh's fragment under {@link WindowPlacement#LOCAL}.
      */
     public static DiffractionBrdf createLocal(BrdfSettings settings, TaylorTerms terms, LocalWindow local) {
-        if (settings.variant() != Variant.FLSS && settings.variant() != Variant.NMM) {
+        if (!settings.variant().drawsLocalWindow()) {
             throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, LOCAL_NEEDS_FLSS_OR_NMM);
         }
         LightPolicy.of(settings).requireAccepted();
         TaylorGaussianSpectrum spectrum = new TaylorGaussianSpectrum(terms, settings.taylor().highestOrder(),
                 settings.windowRadii(terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm()),
                 settings.taylor().tolerance(), settings.coherenceWindow());
-        return withSampling(settings, spectrum.under(local));
+        return settings.variant().cpuBrdfLocal(settings, spectrum.under(local));
     }
 
     /** One line when the local window is asked of something without a surface point. */
@@ -127,7 +114,8 @@ public final class DiffractionBrdf {
         }
     }
 
-    private static DiffractionBrdf withLobes(BrdfSettings settings, LobeSpectrum lobes) {
+    /** The lobes method ({@link LobesMethod}) over its spectrum, its footprints and lights its own. */
+    static DiffractionBrdf withLobes(BrdfSettings settings, LobeSpectrum lobes) {
         PatchSpectrum point = new PatchSpectrum() {
             @Override
             public double power(double u, double v, double w, double lambdaUm) {
@@ -147,40 +135,39 @@ public final class DiffractionBrdf {
         return new DiffractionBrdf(point, null, settings.illumination(), null, lobes);
     }
 
-    /** The variant's Taylor-series spectrum over float32 terms: Gaussian window (FLSS, NMM) or sinc (PQ). */
-    private static PatchSpectrum taylorSpectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
-        CoherenceWindow window = settings.coherenceWindow();
-        WindowRadii radii = settings.windowRadii(terms.cols() * terms.pixelSizeXUm(),
-                terms.rows() * terms.pixelSizeYUm());
-        double tolerance = settings.taylor().tolerance();
-        switch (settings.variant()) {
-            case FLSS:
-            case NMM:
-                return new TaylorGaussianSpectrum(terms, highestOrder, radii, tolerance, window);
-            case PQ: {
-                double extentX = terms.cols() * terms.pixelSizeXUm();
-                double extentY = terms.rows() * terms.pixelSizeYUm();
-                return new TaylorSincSpectrum(terms, highestOrder, radii, tolerance,
-                        settings.window().replicas(window, extentX), settings.window().replicas(window, extentY),
-                        window.placement());
-            }
-            case BAKED:
-                throw new InvalidSettingException(Quantity.VARIANT, BAKED_IS_GPU_ONLY);
-            default:
-                throw new IllegalStateException("unhandled variant " + settings.variant());
-        }
+    /** The Taylor series over float32 terms under the Gaussian window of FLSS and NMM (003 eq. 1.10). */
+    static PatchSpectrum gaussianWindowSpectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
+        return new TaylorGaussianSpectrum(terms, highestOrder, radii(settings, terms), settings.taylor().tolerance(),
+                settings.coherenceWindow());
     }
 
-    /** The variant's wavelengths: NMM's nodes, or the uniform grid of FLSS and PQ. */
-    private static DiffractionBrdf withSampling(BrdfSettings settings, PatchSpectrum s) {
+    /** The Taylor series over float32 terms, periodically replicated and sinc-interpolated (PQ, 003 sec. 1.5.3). */
+    static PatchSpectrum sincSpectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
+        CoherenceWindow window = settings.coherenceWindow();
+        double extentX = terms.cols() * terms.pixelSizeXUm();
+        double extentY = terms.rows() * terms.pixelSizeYUm();
+        return new TaylorSincSpectrum(terms, highestOrder, radii(settings, terms), settings.taylor().tolerance(),
+                settings.window().replicas(window, extentX), settings.window().replicas(window, extentY),
+                window.placement());
+    }
+
+    private static WindowRadii radii(BrdfSettings settings, TaylorTerms terms) {
+        return settings.windowRadii(terms.cols() * terms.pixelSizeXUm(), terms.rows() * terms.pixelSizeYUm());
+    }
+
+    /** {@code s} at the uniform wavelength grid of the settings (FLSS, PQ). */
+    static DiffractionBrdf uniformlySampled(BrdfSettings settings, PatchSpectrum s) {
         SpectralSettings spectral = settings.spectral();
-        double min = spectral.lambdaMinNm();
-        double max = spectral.lambdaMaxNm();
-        WavelengthSampling sampling = settings.variant() == Variant.NMM
-                ? WavelengthSampling.nmm(min, max, spectral.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES,
-                        spectral.normalisation())
-                : WavelengthSampling.uniform(min, max, spectral.lambdaStepNm(), spectral.normalisation());
-        return new DiffractionBrdf(s, sampling, settings.illumination(), null, null);
+        return new DiffractionBrdf(s, WavelengthSampling.uniform(spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
+                spectral.lambdaStepNm(), spectral.normalisation()), settings.illumination(), null, null);
+    }
+
+    /** {@code s} at NMM's nodes, the wavelengths that land on texel centres (003 sec. 1.5.2). */
+    static DiffractionBrdf sampledOnTexelCentres(BrdfSettings settings, PatchSpectrum s) {
+        SpectralSettings spectral = settings.spectral();
+        return new DiffractionBrdf(s, WavelengthSampling.nmm(spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
+                spectral.lambdaStepNm(), s.extentXUm(), s.extentYUm(), NMM_MAX_NODES, spectral.normalisation()),
+                settings.illumination(), null, null);
     }
 
     /** One line for the CLI and the API when the baked table is asked of the CPU. */

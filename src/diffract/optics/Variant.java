@@ -1,65 +1,108 @@
 package diffract.optics;
 
+import java.util.List;
 import java.util.Locale;
 
 /**
- * How the BRDF is evaluated: the exact reference, one of the thesis' three shader approximations, a baked table of
- * FLSS, or the filtered lobes method. A new variant is a constant here, its CPU spectrum in
- * {@link DiffractionBrdf#create} (or {@link #runsOnCpu} false), its fragment shader
- * {@code shaders/diffraction/<name>.frag}, and, where it ignores a swept axis, a line in the bench's
- * {@code SweepPlan.IGNORED_AXES}.
+ * A way of evaluating the diffraction BRDF: one class per method, found by its {@link #label()} in {@link Methods}.
+ * The methods: {@link ReferenceMethod} (the exact reference), {@link FlssMethod}, {@link NmmMethod} and
+ * {@link PqMethod} (the thesis' three shader approximations), {@link BakedMethod} (a baked table, GPU only) and
+ * {@link LobesMethod} (the filtered lobes method).
+ *
+ * <p>What a method says about itself (every method answers; the defaults are those of a GPU shader that samples the
+ * light at its centre and has no CPU twin):
+ *
+ * <table>
+ *   <caption>A method's capabilities</caption>
+ *   <tr><th>method</th><th>what it answers</th><th>default</th></tr>
+ *   <tr><td>{@link #label}</td><td>the name on the command line, in scene files and in tables</td><td>-</td></tr>
+ *   <tr><td>{@link #runsOnCpu}</td><td>whether {@link #cpuBrdf} evaluates it</td><td>false</td></tr>
+ *   <tr><td>{@link #runsOnGpu}</td><td>whether a fragment shader {@code shaders/diffraction/<label>.frag} draws it
+ *       </td><td>true</td></tr>
+ *   <tr><td>{@link #filtersLight}</td><td>whether it averages over an extended light's directions</td>
+ *       <td>false</td></tr>
+ *   <tr><td>{@link #drawsLocalWindow}</td><td>whether it sums a local window's texels per fragment</td>
+ *       <td>false</td></tr>
+ *   <tr><td>{@link #viewerKey}</td><td>the viewer's key that selects it</td><td>none</td></tr>
+ * </table>
+ *
+ * <p>A new method is a class implementing this interface, registered with {@link Methods#register}; the commands,
+ * scene files and the bench then find it by its label.
  */
-public enum Variant {
-    /** exp(i k w h) exactly, window until weights < 1e-12, lambda at 1 nm: the yardstick. */
-    REFERENCE,
-    /** Full lambda-space sampling (003 Algorithm 3): uniform lambda steps, N Taylor terms, Gaussian window. */
-    FLSS,
-    /** n_min/n_max (003 section 1.5.2): only the wavelengths that land on DFT texel centres, with the Jacobian. */
-    NMM,
-    /** Periodic replication and sinc interpolation (003 section 1.5.3, 004 "PQ factors"). */
-    PQ,
-    /**
-     * FLSS baked into a 3-D table XYZ(u, v, w) once per patch and settings, looked up trilinearly per fragment
-     * (after Dhillon and Ghosh 2016, Toisoul and Ghosh 2017). GPU only.
-     */
-    BAKED,
-    /**
-     * The windowed spectrum's Gaussian lobes, each widened by the pixel's footprint and the light and integrated
-     * over wavelength by a rule fitted to its passage (LobeSpectrum, lobes.frag): valid at the true coherence length.
-     */
-    LOBES;
+public interface Variant {
+    Variant REFERENCE = new ReferenceMethod();
+    Variant FLSS = new FlssMethod();
+    Variant NMM = new NmmMethod();
+    Variant PQ = new PqMethod();
+    Variant BAKED = new BakedMethod();
+    Variant LOBES = new LobesMethod();
 
-    /** Whether DiffractionBrdf evaluates it on the CPU (the baked table exists on the GPU only). */
-    public boolean runsOnCpu() {
-        return this != BAKED;
+    /** reference, flss, nmm, pq, baked, lobes: the name on the command line, in scene files and in tables. */
+    String label();
+
+    /** Whether {@link #cpuBrdf} evaluates it (the baked table exists on the GPU only). */
+    default boolean runsOnCpu() {
+        return false;
+    }
+
+    /** Whether it runs as a GPU shader, {@code shaders/diffraction/<label>.frag} (all but the reference). */
+    default boolean runsOnGpu() {
+        return true;
     }
 
     /**
      * Whether it averages over an extended light's directions (the lobes method and its baked table); the reference
      * does too but draws no scenes, and the others sample the light at its centre.
      */
-    public boolean filtersLight() {
-        return this == LOBES || this == BAKED;
+    default boolean filtersLight() {
+        return false;
     }
 
-    /** Whether it runs as a GPU shader (all but the reference). */
-    public boolean runsOnGpu() {
-        return this != REFERENCE;
+    /** Whether it sums the window's texels per fragment and so can place the window under each surface point. */
+    default boolean drawsLocalWindow() {
+        return false;
     }
 
-    /** reference, flss, nmm, pq, baked, lobes: the name on the command line, in scene files and in tables. */
-    public String label() {
-        return name().toLowerCase(Locale.ROOT);
+    /** The viewer's key that switches to it ('1' to '4' for FLSS, NMM, PQ and lobes), 0 for none. */
+    default char viewerKey() {
+        return 0;
     }
 
-    /** The variant of a {@link #label()} (any case). */
-    public static Variant parse(String text) {
-        for (Variant v : values()) {
-            if (v.label().equalsIgnoreCase(text.trim())) {
-                return v;
-            }
-        }
-        throw new InvalidSettingException(Quantity.VARIANT, "unknown variant '" + text
-                + "': use reference, flss, nmm, pq, baked or lobes");
+    /**
+     * The BRDF on the CPU for {@code settings} (whose variant is this one): {@code terms} are the precomputed
+     * float32 Taylor terms, {@code meanSubtracted} the height field (the reference's). The light policy and the
+     * window's placement are checked by {@link DiffractionBrdf#create} before it is asked.
+     */
+    default DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+        throw new InvalidSettingException(Quantity.VARIANT, label() + " has no CPU evaluation");
+    }
+
+    /** As {@link #cpuBrdf} summed around the nearest phase centre ({@link PhaseCentredSpectrum}). */
+    default DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
+        throw new InvalidSettingException(Quantity.VARIANT, label() + " has no phase-centred expansion");
+    }
+
+    /**
+     * As {@link #cpuBrdf} with the window under one surface point ({@link DiffractionBrdf#createLocal}): {@code local}
+     * is the Gaussian window's spectrum there, which a method that {@link #drawsLocalWindow} samples in wavelength.
+     */
+    default DiffractionBrdf cpuBrdfLocal(BrdfSettings settings, PatchSpectrum local) {
+        throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, DiffractionBrdf.LOCAL_NEEDS_FLSS_OR_NMM);
+    }
+
+    /** The label in capitals, as the methods' constants are named (FLSS, LOBES). */
+    default String name() {
+        return label().toUpperCase(Locale.ROOT);
+    }
+
+    /** Every registered method, the built-in ones first ({@link Methods#all}). */
+    static Variant[] values() {
+        List<Variant> all = Methods.all();
+        return all.toArray(new Variant[0]);
+    }
+
+    /** The method of a {@link #label()} (any case), or a refusal that lists the registered ones. */
+    static Variant parse(String text) {
+        return Methods.named(text);
     }
 }

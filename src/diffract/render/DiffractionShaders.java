@@ -5,6 +5,7 @@ import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.DiscFootprint;
+import diffract.optics.Methods;
 import diffract.optics.WindowPlacement;
 import diffract.optics.FresnelModel;
 import diffract.optics.InvalidSettingException;
@@ -41,9 +42,11 @@ public final class DiffractionShaders {
         SURFACE
     }
 
-    /** Why the exact reference cannot be asked of the GPU. */
-    public static final String REFERENCE_IS_CPU_ONLY =
-            "the reference variant runs on the CPU only; the GPU renders flss, nmm, pq, baked and lobes";
+    /** Why a method without a shader (the exact reference) cannot be asked of the GPU, and what can. */
+    public static String cpuOnly(Variant variant) {
+        return "the " + variant.label() + " variant runs on the CPU only; the GPU renders "
+                + Methods.listed(Variant::runsOnGpu, "and");
+    }
 
     private DiffractionShaders() {
     }
@@ -51,7 +54,7 @@ public final class DiffractionShaders {
     /** The variant's fragment shader under {@code /shaders}; the reference has none. */
     public static String fragmentPath(Variant variant) {
         if (!variant.runsOnGpu()) {
-            throw new InvalidSettingException(Quantity.VARIANT, REFERENCE_IS_CPU_ONLY);
+            throw new InvalidSettingException(Quantity.VARIANT, cpuOnly(variant));
         }
         return "diffraction/" + variant.label() + ".frag";
     }

@@ -64,7 +64,7 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     private static BrdfSettings requireGpuVariant(BrdfSettings settings) {
         if (!settings.variant().runsOnGpu()) {
-            throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+            throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.cpuOnly(settings.variant()));
         }
         return LightPolicy.of(settings).requireAccepted();
     }

@@ -46,9 +46,10 @@ import java.util.Map;
  * exist (paths are relative to the scene file's folder). Nothing else escapes, whatever the text.
  */
 public final class SceneFile {
-    /** The variants a scene can draw: those with a GPU shader. */
-    static final List<String> VARIANTS = Arrays.stream(Variant.values()).filter(Variant::runsOnGpu)
-            .map(Variant::label).toList();
+    /** The variants a scene can draw: the registered methods with a GPU shader. */
+    static List<String> variants() {
+        return Arrays.stream(Variant.values()).filter(Variant::runsOnGpu).map(Variant::label).toList();
+    }
     static final List<String> EXPANSIONS = List.of("auto", "plain", "centred");
     static final List<String> TERM_FORMATS = List.of("rg32f", "rg16f", "rg8");
     static final List<String> MODES = List.of("surface", "brdfMap");
@@ -285,7 +286,7 @@ public final class SceneFile {
     private static Scene.MaterialSpec material(SceneObject material, LightSource lightSource,
                                                 Scene.ShapeSpec shape) {
         Scene.PatchSpec patch = patch(material.object("patch"));
-        BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", VARIANTS, "lobes")));
+        BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", variants(), "lobes")));
         boolean radiometric = radiometric(material);
         Double tolerance = null;
         try {

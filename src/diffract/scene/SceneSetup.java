@@ -46,7 +46,7 @@ public record SceneSetup(DiffractionPipeline pipeline, Shape shape, BufferedImag
             }
         }
         if (!settings.variant().runsOnGpu()) {
-            throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.REFERENCE_IS_CPU_ONLY);
+            throw new InvalidSettingException(Quantity.VARIANT, DiffractionShaders.cpuOnly(settings.variant()));
         }
         if (!(exposure > 0) || !Double.isFinite(exposure)) {
             throw new UserInputException("exposure must be a positive number, got " + exposure);

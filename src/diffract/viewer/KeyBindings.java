@@ -48,15 +48,22 @@ public final class KeyBindings {
     public record Binding(String input, String action, String brief, List<Trigger> triggers) {
     }
 
+    /** The methods' own keys ({@link Variant#viewerKey}), as one row: "1 / 2 / 3 / 4", "variant flss / ... ". */
+    private static Binding variantKeys() {
+        List<Variant> keyed = java.util.Arrays.stream(Variant.values()).filter(v -> v.viewerKey() != 0).toList();
+        List<Trigger> triggers = keyed.stream().map(v -> Trigger.character(v.viewerKey(), c -> c.selectVariant(v)))
+                .toList();
+        String keys = String.join(" / ", keyed.stream().map(v -> String.valueOf(v.viewerKey())).toList());
+        String labels = String.join(" / ", keyed.stream().map(Variant::label).toList());
+        String brief = keyed.get(0).viewerKey() + "-" + keyed.get(keyed.size() - 1).viewerKey() + " variant";
+        return new Binding(keys, "variant " + labels, brief, triggers);
+    }
+
     public static final List<Binding> ALL = List.of(
             new Binding("left drag", "orbit the camera (the shading follows it)", "drag orbit", List.of()),
             new Binding("wheel", "zoom", "wheel zoom", List.of()),
             new Binding("right drag", "move the light (theta_i up/down, phi_i left/right)", "right-drag light", List.of()),
-            new Binding("1 / 2 / 3 / 4", "variant FLSS / NMM / PQ / lobes", "1-4 variant", List.of(
-                    Trigger.character('1', c -> c.selectVariant(Variant.FLSS)),
-                    Trigger.character('2', c -> c.selectVariant(Variant.NMM)),
-                    Trigger.character('3', c -> c.selectVariant(Variant.PQ)),
-                    Trigger.character('4', c -> c.selectVariant(Variant.LOBES)))),
+            variantKeys(),
             new Binding("+ / -", "Taylor terms N up / down; more terms than precomputed start a background precompute",
                     "+/- N", List.of(
                     Trigger.code(KeyEvent.VK_ADD, c -> c.changeTaylorOrderBy(1)),

@@ -15,7 +15,6 @@ import diffract.render.GpuBrdfMap;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
 
-import java.util.EnumSet;
 import java.util.Set;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -29,7 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * the viewer's keys are held by ViewerModelTest.
  */
 class LightPolicyTest {
-    static final Set<Variant> TAKE_A_WIDE_LIGHT = EnumSet.of(Variant.REFERENCE, Variant.LOBES, Variant.BAKED);
+    static final Set<Variant> TAKE_A_WIDE_LIGHT = Set.of(Variant.REFERENCE, Variant.LOBES, Variant.BAKED);
     static final HeightField PATCH = SyntheticPatches.blazed(2.5, 0.2, 20, 4, 16).meanSubtracted();
 
     static BrdfSettings settings(Variant v, double lightDeg) {

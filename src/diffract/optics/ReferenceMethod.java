@@ -1,0 +1,45 @@
+package diffract.optics;
+
+/**
+ * The reference: exp(i k w h) transformed exactly, the window summed until its weights fall below 1e-12, the
+ * wavelengths at 1 nm, a pixel's box and the light integrated where the illumination asks (the yardstick every other
+ * method is measured against). CPU only.
+ *
+ * <table>
+ *   <caption>Capabilities</caption>
+ *   <tr><th>label</th><td>reference</td></tr>
+ *   <tr><th>CPU / GPU</th><td>yes / no</td></tr>
+ *   <tr><th>extended lights</th><td>integrated exactly (a disc per direction, {@link DiscLightAverage})</td></tr>
+ * </table>
+ */
+final class ReferenceMethod implements Variant {
+    @Override
+    public String label() {
+        return "reference";
+    }
+
+    @Override
+    public boolean runsOnCpu() {
+        return true;
+    }
+
+    @Override
+    public boolean runsOnGpu() {
+        return false;
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+        return DiffractionBrdf.reference(settings, meanSubtracted);
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
+        throw new IllegalArgumentException("the reference needs no Taylor expansion");
+    }
+
+    @Override
+    public String toString() {
+        return name();
+    }
+}

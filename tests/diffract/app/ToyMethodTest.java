@@ -1,0 +1,127 @@
+package diffract.app;
+
+import diffract.colour.D65;
+import diffract.optics.BrdfMap;
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Direction;
+import diffract.optics.HeightField;
+import diffract.optics.Methods;
+import diffract.optics.PatchSpectrum;
+import diffract.optics.SpectralSettings;
+import diffract.optics.SyntheticPatches;
+import diffract.optics.TaylorTerms;
+import diffract.optics.Variant;
+import diffract.optics.WavelengthSampling;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import javax.imageio.ImageIO;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.nio.file.Path;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * A method is one class: a toy method, defined here and registered from the tests ({@link Methods#register}), is
+ * found by its label, drawn by {@code brdfmap} on the CPU and refused, naming itself, where it has no shader
+ * (the GPU, a scene), without a line changed elsewhere.
+ */
+class ToyMethodTest {
+    /** |P|^2 the same at every (u, v, w) and wavelength: white light, reflected as white times the gain factor. */
+    static final class ConstantMethod implements Variant {
+        static final double POWER = 0.02;
+
+        @Override
+        public String label() {
+            return "constant";
+        }
+
+        @Override
+        public boolean runsOnCpu() {
+            return true;
+        }
+
+        @Override
+        public boolean runsOnGpu() {
+            return false;
+        }
+
+        @Override
+        public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+            PatchSpectrum flat = new PatchSpectrum() {
+                @Override
+                public double power(double u, double v, double w, double lambdaUm) {
+                    return POWER;
+                }
+
+                @Override
+                public double extentXUm() {
+                    return meanSubtracted.cols() * meanSubtracted.pixelSizeXUm();
+                }
+
+                @Override
+                public double extentYUm() {
+                    return meanSubtracted.rows() * meanSubtracted.pixelSizeYUm();
+                }
+            };
+            SpectralSettings s = settings.spectral();
+            return new DiffractionBrdf(flat, WavelengthSampling.uniform(s.lambdaMinNm(), s.lambdaMaxNm(),
+                    s.lambdaStepNm(), s.normalisation()), settings.illumination().refractiveIndex(),
+                    settings.illumination().fresnel());
+        }
+    }
+
+    @Test
+    void aMethodRegisteredFromTheTestsIsFoundDrawnAndRefusedByItsName(@TempDir Path dir) throws IOException {
+        ConstantMethod toy = new ConstantMethod();
+        Methods.register(toy);
+        try {
+            assertSame(toy, Variant.parse("Constant"));
+            HeightField patch = SyntheticPatches.blazed(2.5, 0.13, 10, 4, 4).meanSubtracted();
+            // its map through the API: every lit pixel D65's chromaticity, its luminance the gain factor's share
+            DiffractionBrdf brdf = DiffractionBrdf.create(BrdfSettings.thesis(toy), patch, null);
+            Direction wi = Direction.fromSphericalDeg(30, 0);
+            float[] xyz = BrdfMap.xyz(brdf, wi, 16, Reporter.SILENT);
+            diffract.colour.Xyz d65 = D65.whiteXyz();
+            double[] white = {d65.x() / (d65.x() + d65.y() + d65.z()), d65.y() / (d65.x() + d65.y() + d65.z())};
+            int lit = 0;
+            for (int p = 0; p < 16 * 16; p++) {
+                double sum = xyz[3 * p] + xyz[3 * p + 1] + xyz[3 * p + 2];
+                if (sum > 0) {
+                    lit++;
+                    assertEquals(white[0], xyz[3 * p] / sum, 1e-4, "x at pixel " + p);
+                    assertEquals(white[1], xyz[3 * p + 1] / sum, 1e-4, "y at pixel " + p);
+                }
+            }
+            assertTrue(lit > 100, lit + " lit pixels");
+            // through brdfmap on the CPU: a grey map inside the unit disk, black outside
+            Path png = dir.resolve("constant.png");
+            Object[] drawn = CliTest.run("brdfmap", "--synthetic", "blazed", "--variant", "constant", "--engine",
+                    "cpu", "--theta-i", "30", "--size", "16", "--light-size-deg", "0", "-q", "-o", png.toString());
+            assertEquals(0, drawn[0], (String) drawn[2]);
+            BufferedImage map = ImageIO.read(png.toFile());
+            int centre = map.getRGB(8, 8);
+            int r = centre >> 16 & 0xff;
+            int g = centre >> 8 & 0xff;
+            int b = centre & 0xff;
+            assertTrue(g > 0 && Math.abs(r - g) <= 3 && Math.abs(b - g) <= 3, "centre pixel " + r + " " + g + " " + b);
+            assertEquals(0, map.getRGB(0, 0) & 0xffffff, "outside the unit disk");
+            // where it has no shader it is refused by its own name
+            Object[] gpu = CliTest.run("brdfmap", "--synthetic", "blazed", "--variant", "constant", "--engine",
+                    "gpu", "--size", "16", "-o", dir.resolve("gpu.png").toString());
+            assertEquals(2, gpu[0]);
+            assertTrue(((String) gpu[2]).contains("the constant variant runs on the CPU only"), (String) gpu[2]);
+        } finally {
+            Methods.unregister(toy);
+        }
+        Object[] gone = CliTest.run("brdfmap", "--synthetic", "blazed", "--variant", "constant", "-o",
+                dir.resolve("gone.png").toString());
+        assertEquals(2, gone[0]);
+        assertTrue(((String) gone[2]).contains("unknown variant 'constant'"), (String) gone[2]);
+    }
+}
