@@ -194,8 +194,8 @@ float discGainBoundAt(vec3 wi, vec3 wr) {
     return largest + 0.5 * (largest - smallest);
 }
 
-// DiscFootprint's constructor for the pixel at omega_r under the disc about omega_i.
-void setDisc(vec3 wi, vec3 wr) {
+// The disc's ellipse, density and centre's gain for the pixel at omega_r under the disc about omega_i.
+void placeDisc(vec3 wi, vec3 wr) {
     float cosR = cos(lightHalfAngleRad);
     float sinR = sin(lightHalfAngleRad);
     float sinTheta = length(wi.xy);
@@ -207,6 +207,11 @@ void setDisc(vec3 wi, vec3 wr) {
     discWr = wr;
     discCentreGain = gainTimesShadowing(wi, wr);
     discOn = lightHalfAngleRad > 0.0;
+}
+
+// DiscFootprint's constructor for the pixel at omega_r under the disc about omega_i, with its gain bound.
+void setDisc(vec3 wi, vec3 wr) {
+    placeDisc(wi, wr);
     discGainBound = discGainBoundAt(wi, wr);
 }
 
@@ -214,9 +219,9 @@ void setDisc(vec3 wi, vec3 wr) {
 // incidence): DiscFootprint's circle of radius sin R about the sample, its density 1 / (Omega d_z) at d.xy = the offset
 // from its centre; the gain factor, the shadowing and w are the sample's, which the table's lookup applies.
 void setTableDisc() {
-    setDisc(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0)); // the circle about the normal; its gain is not used
+    placeDisc(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0)); // the circle about the normal; its gain is not used
     discTable = true;
-    discGainBound = 1.0;
+    discGainBound = 1.0; // the gain is the lookup's
 }
 
 // DiscFootprint.reach: the ellipse's support along u and v plus its centre's offset.
