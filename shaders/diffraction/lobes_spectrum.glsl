@@ -39,7 +39,10 @@ bool spectrumTruncated() {
 }
 const int MAX_MARCH = 4096;  // texels along the major axis (a guard: 2 x 2048 texels)
 const int MAX_LOBES = 1 << 16;        // lobes integrated per fragment (a guard)
-const int MAX_MARCH_STEPS = 1 << 20;  // march steps between two lobes (a guard)
+const int MAX_MARCH_STEPS = 1 << 20;  // march steps between two batches of lobes (a guard)
+// Lobes found before they are integrated: the march runs on until a batch is full, so that a SIMD group's fragments
+// march together between batches instead of between single lobes, and integrate a batch each in one loop.
+const int LOBE_BATCH = 16;
 
 // The Gaussian window (spectrum_gaussian.glsl's), for diffraction_common's windowed sum, which lobes do not use.
 float windowWeight(float offsetTexels, int axis) {
@@ -91,10 +94,13 @@ int weightBin(float p) {
 // LobeWeightTable.bound: the largest weight of texel m for p in [pLo, pHi].
 float weightBound(ivec2 m, float pLo, float pHi) {
     ivec2 texel = weightTexel(m);
+    int lo = weightBin(pLo);
+    int hi = weightBin(pHi);
     float bound = 0.0;
-    for (int b = weightBin(pLo); b <= weightBin(pHi); b++) {
-        vec2 pair = texelFetch(lobeWeights, ivec3(texel, lobeWeightSamples + b / 2), 0).rg;
-        bound = max(bound, (b & 1) == 0 ? pair.x : pair.y);
+    // bins 2j and 2j + 1 share layer K + j: one fetch per pair
+    for (int j = lo / 2; j <= hi / 2; j++) {
+        vec2 pair = texelFetch(lobeWeights, ivec3(texel, lobeWeightSamples + j), 0).rg;
+        bound = max(bound, max(2 * j >= lo ? pair.x : 0.0, 2 * j + 1 <= hi ? pair.y : 0.0));
     }
     return bound;
 }
@@ -260,9 +266,10 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
     return xyz;
 }
 
-// LobeSpectrum.xyz: the lobes whose texels lie near the segment s(lambda), marched along its major axis, each
-// integrated once it is found. The march runs as one loop that stops at the next lobe to integrate: a SIMD group of
-// fragments then integrates as many lobes as its busiest fragment, and culled candidates cost only the march.
+// LobeSpectrum.xyz: the lobes whose texels lie near the segment s(lambda), marched along its major axis, integrated
+// LOBE_BATCH at a time in the order they are found (the CPU's order: the same sum). The march stops when a batch is
+// full: a SIMD group of fragments then integrates as many lobes as its busiest fragment, and culled candidates cost
+// only the march.
 vec3 spectralXyz(vec3 uvw) {
 #ifdef ENVIRONMENT_TABLE
     if (footprintFromTable) {
@@ -320,16 +327,19 @@ vec3 spectralXyz(vec3 uvw) {
     int kLast = -1;
     vec3 xyz = vec3(0.0);
     bool marched = false; // the march passed its last major index
-    for (int lobe = 0; lobe < MAX_LOBES; lobe++) {
-        ivec2 m = ivec2(0);
-        vec2 interval = vec2(1.0, 0.0);
-        bool found = false;
+    ivec2 batch[LOBE_BATCH];
+    vec2 batchInterval[LOBE_BATCH];
+    for (int round = 0; round < MAX_LOBES / LOBE_BATCH; round++) {
+        // march until LOBE_BATCH lobes are found or the march ends
+        int count = 0;
+        bool stalled = true; // the steps ran out before either
         for (int step = 0; step < MAX_MARCH_STEPS; step++) {
             if (k > kLast) {
                 // the next major index: the minor texels its lobes can reach
                 i++;
                 if (i > last) {
                     marched = true;
+                    stalled = false;
                     break;
                 }
                 vec2 along = lambdaInterval(majorAxis * float(i) / patchExtentUm, uv * majorAxis, reachMajor);
@@ -343,17 +353,26 @@ vec3 spectralXyz(vec3 uvw) {
                 k++;
                 vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
                 if (weightInBand(candidate) && at.x < at.y && lobeReaches(candidate, uvw.z, at.x, at.y, peak)) {
-                    m = candidate;
-                    interval = at;
-                    found = true;
-                    break;
+                    batch[count] = candidate;
+                    batchInterval[count] = at;
+                    count++;
+                    if (count == LOBE_BATCH) {
+                        stalled = false;
+                        break;
+                    }
                 }
             }
         }
-        if (!found) {
+        int integrated = 0;
+        for (int b = 0; b < count; b++) {
+            xyz += integrateLobe(batch[b], vec2(batch[b]) / patchExtentUm, uvw, batchInterval[b].x,
+                    batchInterval[b].y);
+            integrated++;
+        }
+        lobesLeftOut = lobesLeftOut || integrated < count;
+        if (marched || stalled) {
             break;
         }
-        xyz += integrateLobe(m, vec2(m) / patchExtentUm, uvw, interval.x, interval.y);
     }
     lobesLeftOut = lobesLeftOut || !marched;
     return xyz;
