@@ -10,17 +10,13 @@ package diffract.optics;
  *   <tr><th>CPU / GPU</th><td>yes / {@code flss.frag}</td></tr>
  *   <tr><th>extended lights</th><td>sampled at their centre</td></tr>
  *   <tr><th>local window</th><td>yes</td></tr>
+ *   <tr><th>viewer key</th><td>1</td></tr>
  * </table>
  */
-final class FlssMethod implements Variant {
+final class FlssMethod extends TaylorMethod {
     @Override
     public String label() {
         return "flss";
-    }
-
-    @Override
-    public boolean runsOnCpu() {
-        return true;
     }
 
     @Override
@@ -29,30 +25,17 @@ final class FlssMethod implements Variant {
     }
 
     @Override
-    public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
-        return DiffractionBrdf.uniformlySampled(settings,
-                DiffractionBrdf.gaussianWindowSpectrum(settings, terms, settings.taylor().highestOrder()));
-    }
-
-    @Override
-    public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
-        int orders = terms.centres().highestOrder();
-        return DiffractionBrdf.uniformlySampled(settings, new PhaseCentredSpectrum(terms,
-                t -> DiffractionBrdf.gaussianWindowSpectrum(settings, t, orders)));
-    }
-
-    @Override
-    public DiffractionBrdf cpuBrdfLocal(BrdfSettings settings, PatchSpectrum local) {
-        return DiffractionBrdf.uniformlySampled(settings, local);
-    }
-
-    @Override
     public char viewerKey() {
         return '1';
     }
 
     @Override
-    public String toString() {
-        return name();
+    PatchSpectrum spectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
+        return DiffractionBrdf.gaussianWindowSpectrum(settings, terms, highestOrder);
+    }
+
+    @Override
+    DiffractionBrdf sampled(BrdfSettings settings, PatchSpectrum spectrum) {
+        return DiffractionBrdf.uniformlySampled(settings, spectrum);
     }
 }

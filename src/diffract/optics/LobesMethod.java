@@ -10,6 +10,7 @@ package diffract.optics;
  *   <tr><th>label</th><td>lobes</td></tr>
  *   <tr><th>CPU / GPU</th><td>yes / {@code lobes.frag}</td></tr>
  *   <tr><th>extended lights</th><td>averaged over (a Gaussian, or a disc per lobe, {@link DiscFootprint})</td></tr>
+ *   <tr><th>viewer key</th><td>4</td></tr>
  * </table>
  */
 final class LobesMethod implements Variant {

@@ -68,11 +68,6 @@ public final class Methods {
         return v;
     }
 
-    /** The registered labels, in order. */
-    public static synchronized List<String> labels() {
-        return BY_LABEL.keySet().stream().toList();
-    }
-
     /**
      * The labels of the registered methods that {@code which} accepts, as a sentence lists them: "flss, nmm and pq"
      * with {@code conjunction} "and".

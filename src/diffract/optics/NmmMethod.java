@@ -10,17 +10,13 @@ package diffract.optics;
  *   <tr><th>CPU / GPU</th><td>yes / {@code nmm.frag}</td></tr>
  *   <tr><th>extended lights</th><td>sampled at their centre</td></tr>
  *   <tr><th>local window</th><td>yes</td></tr>
+ *   <tr><th>viewer key</th><td>2</td></tr>
  * </table>
  */
-final class NmmMethod implements Variant {
+final class NmmMethod extends TaylorMethod {
     @Override
     public String label() {
         return "nmm";
-    }
-
-    @Override
-    public boolean runsOnCpu() {
-        return true;
     }
 
     @Override
@@ -29,30 +25,17 @@ final class NmmMethod implements Variant {
     }
 
     @Override
-    public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
-        return DiffractionBrdf.sampledOnTexelCentres(settings,
-                DiffractionBrdf.gaussianWindowSpectrum(settings, terms, settings.taylor().highestOrder()));
-    }
-
-    @Override
-    public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
-        int orders = terms.centres().highestOrder();
-        return DiffractionBrdf.sampledOnTexelCentres(settings, new PhaseCentredSpectrum(terms,
-                t -> DiffractionBrdf.gaussianWindowSpectrum(settings, t, orders)));
-    }
-
-    @Override
-    public DiffractionBrdf cpuBrdfLocal(BrdfSettings settings, PatchSpectrum local) {
-        return DiffractionBrdf.sampledOnTexelCentres(settings, local);
-    }
-
-    @Override
     public char viewerKey() {
         return '2';
     }
 
     @Override
-    public String toString() {
-        return name();
+    PatchSpectrum spectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
+        return DiffractionBrdf.gaussianWindowSpectrum(settings, terms, highestOrder);
+    }
+
+    @Override
+    DiffractionBrdf sampled(BrdfSettings settings, PatchSpectrum spectrum) {
+        return DiffractionBrdf.sampledOnTexelCentres(settings, spectrum);
     }
 }

@@ -9,30 +9,13 @@ package diffract.optics;
  *   <tr><th>label</th><td>pq</td></tr>
  *   <tr><th>CPU / GPU</th><td>yes / {@code pq.frag}</td></tr>
  *   <tr><th>extended lights</th><td>sampled at their centre</td></tr>
+ *   <tr><th>viewer key</th><td>3</td></tr>
  * </table>
  */
-final class PqMethod implements Variant {
+final class PqMethod extends TaylorMethod {
     @Override
     public String label() {
         return "pq";
-    }
-
-    @Override
-    public boolean runsOnCpu() {
-        return true;
-    }
-
-    @Override
-    public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
-        return DiffractionBrdf.uniformlySampled(settings,
-                DiffractionBrdf.sincSpectrum(settings, terms, settings.taylor().highestOrder()));
-    }
-
-    @Override
-    public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
-        int orders = terms.centres().highestOrder();
-        return DiffractionBrdf.uniformlySampled(settings, new PhaseCentredSpectrum(terms,
-                t -> DiffractionBrdf.sincSpectrum(settings, t, orders)));
     }
 
     @Override
@@ -41,7 +24,12 @@ final class PqMethod implements Variant {
     }
 
     @Override
-    public String toString() {
-        return name();
+    PatchSpectrum spectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder) {
+        return DiffractionBrdf.sincSpectrum(settings, terms, highestOrder);
+    }
+
+    @Override
+    DiffractionBrdf sampled(BrdfSettings settings, PatchSpectrum spectrum) {
+        return DiffractionBrdf.uniformlySampled(settings, spectrum);
     }
 }

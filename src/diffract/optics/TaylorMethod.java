@@ -1,0 +1,43 @@
+package diffract.optics;
+
+/**
+ * The thesis' three shader approximations on the CPU (FLSS, NMM, PQ): the Taylor series over the float32 terms
+ * (003 eq. 1.5-1.10), under the method's window ({@link #spectrum}), at the method's wavelengths ({@link #sampled});
+ * around 0 or around the nearest phase centre ({@link PhaseCentredSpectrum}).
+ */
+abstract class TaylorMethod implements Variant {
+    /** The series of orders 0..highestOrder over {@code terms} under the method's window. */
+    abstract PatchSpectrum spectrum(BrdfSettings settings, TaylorTerms terms, int highestOrder);
+
+    /** {@code spectrum} integrated over the method's wavelengths. */
+    abstract DiffractionBrdf sampled(BrdfSettings settings, PatchSpectrum spectrum);
+
+    @Override
+    public boolean runsOnCpu() {
+        return true;
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+        return sampled(settings, spectrum(settings, terms, settings.taylor().highestOrder()));
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
+        int orders = terms.centres().highestOrder();
+        return sampled(settings, new PhaseCentredSpectrum(terms, t -> spectrum(settings, t, orders)));
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdfLocal(BrdfSettings settings, PatchSpectrum local) {
+        if (!drawsLocalWindow()) {
+            return Variant.super.cpuBrdfLocal(settings, local);
+        }
+        return sampled(settings, local);
+    }
+
+    @Override
+    public String toString() {
+        return name();
+    }
+}
