@@ -46,6 +46,17 @@ public record LightSource(double angularDiameterDeg, LightProfile profile) {
         return new LightSource(angularDiameterDeg, p);
     }
 
+    /**
+     * "LightSource[point]" for a point light, whose profile changes nothing, else the record's components: the form
+     * in which the disk cache's keys (IlluminationSettings in words) name the light, so that a point light's maps and
+     * tables are found whatever profile its settings carry.
+     */
+    @Override
+    public String toString() {
+        return isPoint() ? "LightSource[point]"
+                : "LightSource[angularDiameterDeg=" + angularDiameterDeg + ", profile=" + profile + "]";
+    }
+
     /** A light of finite size whose radiance is uniform over its disc (a point light is the same under both). */
     public boolean isDisc() {
         return profile == LightProfile.DISC && !isPoint();

@@ -1,6 +1,7 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.LightProfile;
 import diffract.optics.SyntheticPatches;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
@@ -17,6 +18,7 @@ import java.util.stream.Stream;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -58,6 +60,17 @@ class ReferenceMapsTest {
         new ReferenceMaps(DiskCache.at(root), Reporter.SILENT).timed(GRATING, 30, SIZE, BASE.with(b ->
                 b.coherenceLengthUm(20)));
         assertEquals(3, entries(root).size(), "another light or coherence, another entry");
+    }
+
+    @Test
+    void aPointLightsMapHasOneKeyWhateverItsProfileAndASizedLightOnePerProfile() {
+        BrdfSettings disc = BASE.with(b -> b.lightSizeDeg(0).lightProfile(LightProfile.DISC));
+        BrdfSettings gaussian = BASE.with(b -> b.lightSizeDeg(0).lightProfile(LightProfile.GAUSSIAN));
+        assertEquals(ReferenceMaps.key(GRATING, 30, SIZE, disc), ReferenceMaps.key(GRATING, 30, SIZE, gaussian));
+        BrdfSettings wideDisc = disc.with(b -> b.lightSizeDeg(2));
+        BrdfSettings wideGaussian = gaussian.with(b -> b.lightSizeDeg(2));
+        assertNotEquals(ReferenceMaps.key(GRATING, 30, SIZE, wideDisc),
+                ReferenceMaps.key(GRATING, 30, SIZE, wideGaussian));
     }
 
     @Test
