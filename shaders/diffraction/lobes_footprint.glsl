@@ -170,6 +170,13 @@ float discCentreGain;
 float discGainBound; // DiscFootprint.gainBound: a bound on the gain relative to the centre's across the disc
 vec2 discPassage; // variances (u, v) that widen a lobe's passage for the node spacing (LobeSpectrum.Shape.passageU)
 
+// DiscFootprint.gainRatio: C S at the direction (d, d_z), d_z^2 = dz2, relative to the centre's; 0 below the horizon
+// or where the centre's gain is 0.
+float discGainRatio(vec2 d, float dz2) {
+    return dz2 > 0.0 && discCentreGain > 0.0
+            ? gainTimesShadowing(vec3(d, sqrt(max(1e-12, dz2))), discWr) / discCentreGain : 0.0;
+}
+
 // DiscFootprint.gainBound: the largest gain ratio at the centre (1) and at DISC_RING_SAMPLES directions on the rim
 // and on the ring at half its radius, plus half the range of those samples; 1 where the centre's gain is 0.
 float discGainBoundAt(vec3 wi, vec3 wr) {
@@ -185,8 +192,7 @@ float discGainBoundAt(vec3 wi, vec3 wr) {
         for (int k = 0; k < DISC_RING_SAMPLES; k++) {
             float beta = 6.28318531 * (float(k) + 0.5 * float(ring - 1)) / float(DISC_RING_SAMPLES);
             vec2 d = -(centre + scale * (discAxes.x * cos(beta) * discE + discAxes.y * sin(beta) * r)) - wr.xy;
-            float dz2 = 1.0 - dot(d, d);
-            float ratio = dz2 > 0.0 ? gainTimesShadowing(vec3(d, sqrt(dz2)), wr) / discCentreGain : 0.0;
+            float ratio = discGainRatio(d, 1.0 - dot(d, d));
             largest = max(largest, ratio);
             smallest = min(smallest, ratio);
         }
@@ -281,8 +287,7 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     vec2 d = discTable ? onDisc : -(centre + onDisc) - discWr.xy;
     float dz2 = 1.0 - dot(d, d);
     float dz = sqrt(max(1e-12, dz2));
-    float gain = discTable ? 1.0 : dz2 > 0.0 && discCentreGain > 0.0
-            ? gainTimesShadowing(vec3(d, dz), discWr) / discCentreGain : 0.0;
+    float gain = discTable ? 1.0 : discGainRatio(d, dz2);
     // the rim blurred by the lobe and the footprint's Gaussian, seen through the box exactly (BoxedEdge)
     float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * boxedNormalCdf(dist,
             footprintHalfWidth.x * abs(n.x), footprintHalfWidth.y * abs(n.y), sqrt(gaussianVariance));

@@ -45,7 +45,7 @@ public final class BoxedEdge {
     /** E for z at most 0. */
     private static double lower(double z, double a, double b, boolean fast) {
         if (a < POINT_BELOW) {
-            return DiscFootprint.normalCdf(z, fast);
+            return ErrorFunction.normalCdf(z, fast);
         }
         if (b < UNIFORM_BELOW * a) {
             return Math.max(0, (psi1(z + a, fast) - psi1(z - a, fast)) / (2 * a));
@@ -56,11 +56,11 @@ public final class BoxedEdge {
 
     /** Psi_1(z) = z Phi(z) + phi(z), the antiderivative of Phi. */
     static double psi1(double z, boolean fast) {
-        return z * DiscFootprint.normalCdf(z, fast) + INV_SQRT_TWO_PI * Math.exp(-0.5 * z * z);
+        return z * ErrorFunction.normalCdf(z, fast) + INV_SQRT_TWO_PI * Math.exp(-0.5 * z * z);
     }
 
     /** Psi_2(z) = ((z^2 + 1) Phi(z) + z phi(z)) / 2, the antiderivative of Psi_1. */
     static double psi2(double z, boolean fast) {
-        return 0.5 * ((z * z + 1) * DiscFootprint.normalCdf(z, fast) + z * INV_SQRT_TWO_PI * Math.exp(-0.5 * z * z));
+        return 0.5 * ((z * z + 1) * ErrorFunction.normalCdf(z, fast) + z * INV_SQRT_TWO_PI * Math.exp(-0.5 * z * z));
     }
 }

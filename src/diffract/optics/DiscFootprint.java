@@ -140,12 +140,7 @@ public final class DiscFootprint {
                 double onV = scale * (a * Math.cos(beta) * eV + b * Math.sin(beta) * rV);
                 double dx = -(centreU + onU) - wr.x();
                 double dy = -(centreV + onV) - wr.y();
-                double dz2 = 1 - dx * dx - dy * dy;
-                double ratio = 0;
-                if (dz2 > 0) {
-                    Direction d = new Direction(dx, dy, Math.sqrt(dz2));
-                    ratio = GainFactor.gainTimesShadowing(d, wr, refractiveIndex, fresnel) / centreGain;
-                }
+                double ratio = gainRatio(dx, dy, 1 - dx * dx - dy * dy);
                 largest = Math.max(largest, ratio);
                 smallest = Math.min(smallest, ratio);
             }
@@ -211,11 +206,7 @@ public final class DiscFootprint {
         double dy = -(centreV + t * qv) - wr.y();
         double dz2 = 1 - dx * dx - dy * dy;
         double dz = Math.sqrt(Math.max(1e-12, dz2));
-        double gain = 0;
-        if (dz2 > 0 && centreGain > 0) {
-            Direction d = new Direction(dx, dy, dz);
-            gain = GainFactor.gainTimesShadowing(d, wr, refractiveIndex, fresnel) / centreGain;
-        }
+        double gain = gainRatio(dx, dy, dz2);
         double value = 0;
         if (edgeWeight > 0) {
             double density = 1 / (solidAngle * dz);
@@ -235,11 +226,16 @@ public final class DiscFootprint {
         out[1] = -(dz + wr.z());
     }
 
-    /** Phi(z) from erfc on whichever side does not cancel (lobes_footprint.glsl's normalCdf). */
-    static double normalCdf(double z, boolean fast) {
-        double x = Math.abs(z) / Math.sqrt(2);
-        double tail = 0.5 * (fast ? ErrorFunction.fastErfc(x) : ErrorFunction.erfc(x));
-        return z >= 0 ? 1 - tail : tail;
+    /**
+     * C S at the direction (dx, dy, d_z) relative to the centre's, d_z^2 = dz2: 0 below the horizon (dz2 <= 0) or
+     * where the centre's gain is 0 (lobes_footprint.glsl's discGainRatio).
+     */
+    private double gainRatio(double dx, double dy, double dz2) {
+        if (dz2 <= 0 || centreGain <= 0) {
+            return 0;
+        }
+        Direction d = new Direction(dx, dy, Math.sqrt(Math.max(1e-12, dz2)));
+        return GainFactor.gainTimesShadowing(d, wr, refractiveIndex, fresnel) / centreGain;
     }
 
     private static double smoothstep(double lo, double hi, double x) {

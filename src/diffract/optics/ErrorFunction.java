@@ -98,6 +98,13 @@ public final class ErrorFunction {
         return poly * Math.exp(-x * x);
     }
 
+    /** Phi(z) from erfc on whichever side does not cancel, {@link #fastErfc} where {@code fast} (the shader's). */
+    static double normalCdf(double z, boolean fast) {
+        double x = Math.abs(z) / Math.sqrt(2);
+        double tail = 0.5 * (fast ? fastErfc(x) : erfc(x));
+        return z >= 0 ? 1 - tail : tail;
+    }
+
     /** {@link #massInInterval} with {@link #fastErfc}: what the shader computes. */
     public static double fastMassInInterval(double a, double b) {
         if (a >= 0) {

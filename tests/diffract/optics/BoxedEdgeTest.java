@@ -17,7 +17,7 @@ class BoxedEdgeTest {
             double x = ha * (-1 + (2 * i + 1.0) / n);
             for (int j = 0; j < n; j++) {
                 double y = hb * (-1 + (2 * j + 1.0) / n);
-                sum += DiscFootprint.normalCdf((d + x + y) / s, false);
+                sum += ErrorFunction.normalCdf((d + x + y) / s, false);
             }
         }
         return sum / ((double) n * n);
@@ -46,7 +46,7 @@ class BoxedEdgeTest {
         double beyond = -(h + 0.006 + 5 * s);
         assertEquals(0, BoxedEdge.average(beyond, h, 0.006, s, false), 1e-6);
         assertEquals(1, BoxedEdge.average(-beyond, h, 0.006, s, false), 1e-6);
-        double gaussianBox = DiscFootprint.normalCdf(beyond / Math.sqrt(s * s + (h * h + 0.006 * 0.006) / 3), false);
+        double gaussianBox = ErrorFunction.normalCdf(beyond / Math.sqrt(s * s + (h * h + 0.006 * 0.006) / 3), false);
         assertTrue(gaussianBox > 3e-4, "the Gaussian of the box's variance leaks " + gaussianBox);
     }
 }
