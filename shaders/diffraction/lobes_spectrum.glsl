@@ -266,6 +266,8 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
     return xyz;
 }
 
+#include "lobes_sum.glsl"
+
 // LobeSpectrum.xyz: the lobes whose texels lie near the segment s(lambda), marched along its major axis, integrated
 // LOBE_BATCH at a time in the order they are found (the CPU's order: the same sum). The march stops when a batch is
 // full: a SIMD group of fragments then integrates as many lobes as its busiest fragment, and culled candidates cost
@@ -276,6 +278,13 @@ vec3 spectralXyz(vec3 uvw) {
         return tableXyz(uvw, tableFootprint);
     }
 #endif
+    bool sums = lobeSums && sumsFit();
+#ifdef LIGHT_DISC
+    sums = sums && !discOn; // a disc's rims are marched lobe by lobe
+#endif
+    if (sums) {
+        return summedXyz(uvw);
+    }
     vec2 uv = uvw.xy;
     float sigmaF = sigmaFPerUm();
     float widest = 0.5 * pow(lambdaMaxNm * 1e-3 * sigmaF, 2.0);

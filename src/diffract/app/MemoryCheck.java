@@ -4,6 +4,7 @@ import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.ExactSpectrum;
 import diffract.optics.HeightField;
+import diffract.optics.LobeSumTable;
 import diffract.optics.LobeWeightTable;
 import diffract.optics.Variant;
 import diffract.util.MemoryEstimate;
@@ -45,6 +46,14 @@ final class MemoryCheck {
                 // the lobes method's weights per texel over the phase (the baked table bakes the lobes method)
                 estimate.plus("the lobes' weight table", LobeWeightTable.bytes(field.rows(), field.cols(),
                         field.maxAbsHeightUm(), settings.spectral().lambdaMinNm(), settings.lobes().weightTolerance()));
+                if (LobeSumTable.applies(settings.coherenceWindow(), settings.lobes(), field.widthUm(),
+                        field.heightExtentUm())) {
+                    estimate.plus("the lobes' texel sums", LobeSumTable.bytes(field.rows(), field.cols(),
+                            LobeWeightTable.samples(field.maxAbsHeightUm(), settings.spectral().lambdaMinNm(),
+                                    settings.lobes().weightTolerance()),
+                            settings.coherenceWindow().sigmaTexels(field.widthUm()),
+                            settings.coherenceWindow().sigmaTexels(field.heightExtentUm())));
+                }
             }
             if (settings.variant() == Variant.BAKED) {
                 BakedGrid grid = BakedGrid.of(settings, field.maxAbsHeightUm());

@@ -156,7 +156,7 @@ final class OptionTypes {
      */
     record LobeQuadratureChange(java.util.Map<String, Double> values) {
         static final List<String> KEYS = List.of("pairThreshold", "nodesPerSigma", "maxStepNm", "reachSigmas",
-                "weightStepNm", "lightNodes", "cutoff", "weightTolerance");
+                "weightStepNm", "lightNodes", "cutoff", "weightTolerance", "sumNodesPerBox");
 
         LobeQuadrature applyTo(LobeQuadrature q) {
             java.util.function.Function<String, Double> v = values::get;
@@ -164,7 +164,8 @@ final class OptionTypes {
                     or(v.apply("nodesPerSigma"), q.nodesPerSigma()), or(v.apply("maxStepNm"), q.maxStepNm()),
                     or(v.apply("reachSigmas"), q.reachSigmas()), or(v.apply("weightStepNm"), q.weightStepNm()),
                     values.containsKey("lightNodes") ? (int) Math.round(values.get("lightNodes")) : q.lightNodes(),
-                    or(v.apply("cutoff"), q.cutoff()), or(v.apply("weightTolerance"), q.weightTolerance()));
+                    or(v.apply("cutoff"), q.cutoff()), or(v.apply("weightTolerance"), q.weightTolerance()),
+                    or(v.apply("sumNodesPerBox"), q.sumNodesPerBox()));
         }
 
         private static double or(Double given, double fallback) {

@@ -11,8 +11,9 @@ import java.util.List;
 
 /**
  * A GL_TEXTURE_2D_ARRAY of two-channel floats: width x height texels per layer, one layer per {@code float[]}
- * slice of width * height * 2 values (RG interleaved, row 0 first, row 0 = texel y 0). Nearest filtering so
- * shaders read exact values with {@code texelFetch(sampler, ivec3(x, y, layer), 0)}.
+ * slice of width * height * 2 values (RG interleaved, row 0 first, row 0 = texel y 0). Nearest filtering by default,
+ * so shaders read exact values with {@code texelFetch(sampler, ivec3(x, y, layer), 0)}; linear filtering within a
+ * layer on request ({@link #linear}), for tables a shader interpolates with {@code texture}.
  */
 public final class FloatTextureArray extends Texture {
     /** Storage precision on the GPU. */
@@ -47,22 +48,36 @@ public final class FloatTextureArray extends Texture {
     private final int height;
     private final List<float[]> layers;
     private final Precision precision;
+    /** 2 (RG) or 4 (RGBA, float32 only). */
+    private final int channels;
+    private boolean linear;
 
     public FloatTextureArray(int width, int height, List<float[]> layers, Precision precision) {
+        this(width, height, layers, precision, 2);
+    }
+
+    /** Four float32 channels per texel (RGBA interleaved), for tables a shader reads four values of at once. */
+    public static FloatTextureArray rgba(int width, int height, List<float[]> layers) {
+        return new FloatTextureArray(width, height, layers, Precision.FLOAT32, 4);
+    }
+
+    private FloatTextureArray(int width, int height, List<float[]> layers, Precision precision, int channels) {
         if (width <= 0 || height <= 0 || layers.isEmpty()) {
             throw new IllegalArgumentException("need width, height and layer count > 0, got " + width + "x" + height
                     + "x" + layers.size());
         }
         for (int i = 0; i < layers.size(); i++) {
-            if (layers.get(i).length != width * height * 2) {
-                throw new IllegalArgumentException("layer " + i + ": expected " + width * height * 2
-                        + " floats (" + width + "x" + height + " x RG), got " + layers.get(i).length);
+            if (layers.get(i).length != width * height * channels) {
+                throw new IllegalArgumentException("layer " + i + ": expected " + width * height * channels
+                        + " floats (" + width + "x" + height + " x " + channels + " channels), got "
+                        + layers.get(i).length);
             }
         }
         this.width = width;
         this.height = height;
         this.layers = List.copyOf(layers);
         this.precision = precision;
+        this.channels = channels;
     }
 
     public int width() {
@@ -81,6 +96,12 @@ public final class FloatTextureArray extends Texture {
         return precision;
     }
 
+    /** Linear filtering between the texels of a layer (s and t clamped to the edge), set before the first upload. */
+    public FloatTextureArray linear() {
+        this.linear = true;
+        return this;
+    }
+
     @Override
     public int glTarget() {
         return GL2ES3.GL_TEXTURE_2D_ARRAY;
@@ -97,8 +118,9 @@ public final class FloatTextureArray extends Texture {
         }
         // allocate once, then copy layer by layer, so no buffer of the whole array is ever needed
         GLErrors.check(gl, "before allocating " + this);
-        gl.glTexImage3D(target, 0, precision.internalFormat(), width, height, layers.size(), 0,
-                GL2ES2.GL_RG, GL.GL_FLOAT, null);
+        int format = channels == 4 ? GL.GL_RGBA : GL2ES2.GL_RG;
+        gl.glTexImage3D(target, 0, channels == 4 ? GL.GL_RGBA32F : precision.internalFormat(), width, height,
+                layers.size(), 0, format, GL.GL_FLOAT, null);
         int error = gl.glGetError();
         if (error != GL.GL_NO_ERROR) {
             // a driver may cap one texture's size (Mesa's llvmpipe at 1 GiB): a texture it did not allocate would
@@ -106,18 +128,19 @@ public final class FloatTextureArray extends Texture {
             throw new diffract.util.UserInputException(String.format(java.util.Locale.ROOT, "the GPU refused a %d x %d"
                     + " x %d texture of %s (%s): the data is too large for this GL; use a smaller or coarser height "
                     + "field, fewer layers or half precision", width, height, layers.size(),
-                    diffract.util.MemoryEstimate.size((long) width * height * layers.size() * precision.bytesPerTexel()),
+                    diffract.util.MemoryEstimate.size((long) width * height * layers.size() * precision.bytesPerTexel()
+                            * channels / 2),
                     GLErrors.name(error)));
         }
         if (precision == Precision.UNORM8) {
             fillBytes(gl, target);
         } else {
             for (int layer = 0; layer < layers.size(); layer++) {
-                gl.glTexSubImage3D(target, 0, 0, 0, layer, width, height, 1, GL2ES2.GL_RG, GL.GL_FLOAT,
+                gl.glTexSubImage3D(target, 0, 0, 0, layer, width, height, 1, format, GL.GL_FLOAT,
                         FloatBuffer.wrap(layers.get(layer)));
             }
         }
-        nearestClamp(gl, target);
+        clampWithoutMipmaps(gl, target, linear ? GL.GL_LINEAR : GL.GL_NEAREST);
     }
 
     /**
@@ -147,6 +170,7 @@ public final class FloatTextureArray extends Texture {
 
     @Override
     public String toString() {
-        return "FloatTextureArray[" + width + "x" + height + "x" + layers.size() + " " + precision + "]";
+        return "FloatTextureArray[" + width + "x" + height + "x" + layers.size() + " " + (channels == 4 ? "RGBA "
+                : "") + precision + "]";
     }
 }

@@ -27,11 +27,18 @@ import diffract.colour.HatFilteredSpectrum;
  * @param weightTolerance the interpolation error of the tabulated lobe weights W_m(k w) ({@link LobeWeightTable}),
  *                       relative to a texel's largest weight, in [0, 1e-2]; 0 sums the coefficients at every
  *                       evaluation instead (CPU only: the shader reads the table)
+ * @param sumNodesPerBox where the lobes are at least as wide as a texel's cell ({@link LobeSumTable#applies}: scans
+ *                       wider than about two thirds of the coherence length) and the light is not a disc, the texels
+ *                       under the footprint are summed from {@link LobeSumTable} at wavelength nodes spaced so that a
+ *                       lobe's passage through the footprint (the box's width and the lobe's) is seen by this many
+ *                       nodes; in [0, 16], 0 marches over the lobes one by one everywhere
  */
 public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
-                             double weightStepNm, int lightNodes, double cutoff, double weightTolerance) {
+                             double weightStepNm, int lightNodes, double cutoff, double weightTolerance,
+                             double sumNodesPerBox) {
     public static final double DEFAULT_CUTOFF = 1e-6;
     public static final double DEFAULT_WEIGHT_TOLERANCE = 1e-4;
+    public static final double DEFAULT_SUM_NODES_PER_BOX = 2;
     public static final LobeQuadrature DEFAULT = new LobeQuadrature(1e-4, 0.67, 8, 4.0, 8, 3);
 
     /** With the default cutoff and weight table. */
@@ -39,6 +46,19 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
                           double weightStepNm, int lightNodes) {
         this(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, DEFAULT_CUTOFF,
                 DEFAULT_WEIGHT_TOLERANCE);
+    }
+
+    /** With the default sums over texels for wide scans. */
+    public LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
+                          double weightStepNm, int lightNodes, double cutoff, double weightTolerance) {
+        this(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff, weightTolerance,
+                DEFAULT_SUM_NODES_PER_BOX);
+    }
+
+    /** The same knobs, with the texel sums at this many nodes per lobe's passage (0: never summed). */
+    public LobeQuadrature withSumNodesPerBox(double nodes) {
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes,
+                cutoff, weightTolerance, nodes);
     }
 
     public LobeQuadrature {
@@ -69,6 +89,10 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
         }
         if (!(weightTolerance >= 0 && weightTolerance <= 1e-2)) {
             throw invalid("the weight tolerance must be in [0, 1e-2] (0: no table), got " + weightTolerance);
+        }
+        if (!(sumNodesPerBox >= 0 && sumNodesPerBox <= 16)) {
+            throw invalid("the sum's nodes per passage must be in [0, 16] (0: march over the lobes), got "
+                    + sumNodesPerBox);
         }
     }
 

@@ -45,6 +45,9 @@ public final class LobeSpectrum {
     private final boolean fastErf;
     /** The tabulated weights of whole-texel lobes, or null (pairs, or a weight tolerance of 0). */
     private final LobeWeightTable table;
+    /** The texels' sums where lobes are at least as wide as a cell ({@link LobeSumTable#applies}), or null. */
+    private final LobeSumTable sums;
+
 
     /**
      * Over the band and with the mirror's normalisation of {@code spectral} (its step is the quadrature's).
@@ -68,6 +71,17 @@ public final class LobeSpectrum {
         this.table = quadrature.weightTolerance() > 0 && !lobes.hasPairs()
                 ? new LobeWeightTable(coefficients, lambdaMinNm, quadrature.weightTolerance())
                 : null;
+        this.sums = table != null && LobeSumTable.applies(window, quadrature, extentXUm, extentYUm)
+                ? new LobeSumTable(table, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm))
+                : null;
+    }
+
+    /**
+     * Whether footprints without a disc light that span a texel's cell sum the texels under them
+     * ({@link LobeSumTable}).
+     */
+    public boolean sumsTexels() {
+        return sums != null;
     }
 
     /** A lobe's weight W_c(a) = W_c(k w): from the table, or summed from its texels' coefficients. */
@@ -267,6 +281,9 @@ public final class LobeSpectrum {
      * and shadowing there, which the disc's directions carry in proportion.
      */
     public double[] xyz(double u, double v, double w, Footprint footprint, DiscFootprint disc) {
+        if (sums != null && disc == null && sumsFit(footprint)) {
+            return summedXyz(u, v, w, footprint);
+        }
         double widest = 0.5 * square(lambdaMaxNm * 1e-3 * sigmaFPerUm);
         Shape shape = new Shape(footprint, quadrature, widest, disc);
         double[] total = new double[3];
@@ -308,6 +325,86 @@ public final class LobeSpectrum {
         }
         return total;
     }
+
+    /**
+     * The footprint's spectrum from the texels' sums ({@link LobeSumTable}): at wavelength nodes lambda_j the lobes'
+     * integral over the footprint's box in texels, pi (lambda sigma_f)^2 / (4 h_u h_v) sum_m W_m |box &#8745; cell_m|,
+     * weighted by the hat-filtered spectrum. A Gaussian part of the footprint (the light, or a surface pixel's whole
+     * footprint) widens the box to the same variance per axis, h^2 + 3 Sigma_ii. The nodes are spaced so that every
+     * lobe's passage through the box is seen by {@link LobeQuadrature#sumNodesPerBox} nodes where the box moves fastest
+     * (at lambda_min), on the hat levels or below 1 nm, and at most {@link LobeQuadrature#maxStepNm} apart.
+     */
+    private double[] summedXyz(double u, double v, double w, Footprint footprint) {
+        double hu = summedHalfWidthU(footprint);
+        double hv = summedHalfWidthV(footprint);
+        double shortestUm = lambdaMinNm * 1e-3;
+        double spacing = summedSpacingNm(nodeTravel(u, hu, extentXUm, shortestUm, sigmaFPerUm * extentXUm),
+                nodeTravel(v, hv, extentYUm, shortestUm, sigmaFPerUm * extentYUm));
+        int last = lastNode(lambdaMaxNm, spacing);
+        double[] total = new double[3];
+        double[] node = new double[3];
+        double edgeX = sums.cellsX() - 0.5;
+        double edgeY = sums.cellsY() - 0.5;
+        for (int j = 0; j <= last; j++) {
+            double lambdaNm = lambdaMinNm + j * spacing;
+            double lambdaUm = lambdaNm * 1e-3;
+            double x0 = (u - hu) * extentXUm / lambdaUm;
+            double x1 = (u + hu) * extentXUm / lambdaUm;
+            double y0 = (v - hv) * extentYUm / lambdaUm;
+            double y1 = (v + hv) * extentYUm / lambdaUm;
+            if (x0 >= edgeX || x1 <= -edgeX - 1 || y0 >= edgeY || y1 <= -edgeY - 1) {
+                continue; // beyond the grid's texels
+            }
+            double box = sums.boxSum(x0, x1, y0, y1, 2 * Math.PI / lambdaUm * w);
+            double sigmaUv = lambdaUm * sigmaFPerUm;
+            spectral.weight(lambdaNm, spacing, node);
+            double scale = Math.PI * sigmaUv * sigmaUv / (4 * hu * hv) * box * endWeight(lambdaNm, spacing);
+            total[0] += scale * node[0];
+            total[1] += scale * node[1];
+            total[2] += scale * node[2];
+        }
+        return total;
+    }
+
+    /**
+     * The node spacing (nm) one axis allows: the nm in which the box, at lambda_min where it moves fastest, moves by
+     * its own width plus a lobe's (two standard deviations, sqrt(2) sigma_f), over the nodes asked per such width.
+     */
+    private double nodeTravel(double u, double h, double extentUm, double shortestUm, double sigmaTexels) {
+        double speed = (Math.abs(u) + h) * extentUm / (shortestUm * shortestUm) * 1e-3; // texels per nm
+        double width = 2 * h * extentUm / shortestUm + Math.sqrt(2) * sigmaTexels;
+        return width / (quadrature.sumNodesPerBox() * speed);
+    }
+
+    /** The texel sums' node spacing from the axes' (nodeTravel): on the hat levels or below 1 nm, at most maxStepNm. */
+    private double summedSpacingNm(double travelXNm, double travelYNm) {
+        double bandNm = lambdaMaxNm - lambdaMinNm;
+        double target = Math.min(Math.min(Math.min(travelXNm, travelYNm), quadrature.maxStepNm()), bandNm);
+        return spacingOnLevels(Math.max(target, bandNm / MAX_SUM_NODES));
+    }
+
+    /** The box's half-width along u in the texel sums: the footprint's box widened by its Gaussian's variance. */
+    private static double summedHalfWidthU(Footprint footprint) {
+        return Math.sqrt(square(footprint.halfWidthU()) + 3 * footprint.gaussian().xx());
+    }
+
+    private static double summedHalfWidthV(Footprint footprint) {
+        return Math.sqrt(square(footprint.halfWidthV()) + 3 * footprint.gaussian().yy());
+    }
+
+    /**
+     * Whether the texel sums take this footprint: its box spans at least one texel's cell on both axes at every
+     * wavelength (at lambda_max, where it is narrowest), so that what it averages is a lobe's mass and centre, which the
+     * cells' spread keeps, not the lobe's shape, which only the march over lobes follows (narrower footprints, as a
+     * 256 x 256 map's pixels on a 52 um scan, are marched).
+     */
+    private boolean sumsFit(Footprint footprint) {
+        double longestUm = lambdaMaxNm * 1e-3;
+        return 2 * summedHalfWidthU(footprint) * extentXUm / longestUm >= 1
+                && 2 * summedHalfWidthV(footprint) * extentYUm / longestUm >= 1;
+    }
+    /** The most wavelength nodes a footprint's sums take (a guard: a 200 um scan needs about 1200 at the default). */
+    static final int MAX_SUM_NODES = 4096;
 
     /** The lobe centres (texels) one axis can reach over wavelengths [shortest, longest] um: {lo, hi}. */
     private static double[] range(double u, double reach, double extentUm, double shortestUm, double longestUm) {

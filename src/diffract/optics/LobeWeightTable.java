@@ -52,10 +52,14 @@ public final class LobeWeightTable {
      * the constructor chooses them, and its bounds, as float32 pairs), for the estimates made before the work.
      */
     public static long bytes(int rows, int cols, double maxAbsHeightUm, double lambdaMinNm, double tolerance) {
+        return 8L * rows * cols * (samples(maxAbsHeightUm, lambdaMinNm, tolerance) + BINS / 2);
+    }
+
+    /** K, the samples of the phase a table of a patch of this max|h| takes (as the constructor chooses them). */
+    public static long samples(double maxAbsHeightUm, double lambdaMinNm, double tolerance) {
         double maxPhase = maxPhasePerUm(lambdaMinNm);
         double wanted = maxAbsHeightUm > 0 ? Math.pow(384 * tolerance, 0.25) / (2 * maxAbsHeightUm) : maxPhase;
-        long samples = Math.max(2, (long) Math.ceil(maxPhase / wanted - 1e-9) + 1);
-        return 8L * rows * cols * (samples + BINS / 2);
+        return Math.max(2, (long) Math.ceil(maxPhase / wanted - 1e-9) + 1);
     }
 
     /** p_max = 2 k_max = 4 pi / lambda_min, um^-1 (|w| &lt;= 2). */

@@ -16,6 +16,7 @@ import diffract.optics.GaussHermite;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LightSource;
 import diffract.optics.LobeQuadrature;
+import diffract.optics.LobeSumTable;
 import diffract.optics.LobeWeightTable;
 import diffract.optics.PhaseCentres;
 import diffract.optics.PixelFilter;
@@ -214,6 +215,13 @@ public final class DiffractionMaterials {
                 .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
                 .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
                 .setFloat("lobeCutoff", (float) q.cutoff());
+        java.util.Optional<LobeSumTable> sums = textures.lobeSumTable(settings, q);
+        m.setTexture("lobeSumTable", textures.lobeSums(settings, q))
+                .setInt("lobeSums", sums.isPresent() ? 1 : 0)
+                .setVec2("lobeSumCells", sums.map(LobeSumTable::cellsX).orElse(0),
+                        sums.map(LobeSumTable::cellsY).orElse(0))
+                .setFloat("lobeSumCellTexels", sums.map(LobeSumTable::cellTexels).orElse(1))
+                .setFloat("lobeSumNodesPerBox", (float) q.sumNodesPerBox());
         m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings.spectral()))
                 .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings.spectral()))
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())

@@ -12,6 +12,7 @@ import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LobeQuadrature;
+import diffract.optics.LobeSumTable;
 import diffract.optics.LobeWeightTable;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
@@ -76,6 +77,8 @@ public final class DiffractionTextures {
     /** Bakes the lobes method's filtered table of these terms on request (null on the phase-centred path). */
     private java.util.function.Function<Reporter, BakedTable> lobesTableSource;
     private FloatTextureArray lobeWeights;
+    private LobeSumTable lobeSumTable;
+    private FloatTextureArray lobeSums;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
                                 FloatTexture1D spectralTable, double spectralTableFirstNm, TaylorTerms source,
@@ -271,6 +274,42 @@ public final class DiffractionTextures {
                     FloatTextureArray.Precision.FLOAT32);
         }
         return lobeWeights;
+    }
+
+    /**
+     * The lobes method's texel sums ({@link LobeSumTable}) over its weight table, made on first use where they apply
+     * to these textures' extent under the settings ({@link LobeSumTable#applies}); empty elsewhere. One RGBA32F texture
+     * array, filtered linearly within a layer.
+     */
+    public synchronized java.util.Optional<LobeSumTable> lobeSumTable(BrdfSettings settings, LobeQuadrature quadrature) {
+        if (!LobeSumTable.applies(settings.coherenceWindow(), quadrature, extentXUm(), extentYUm())) {
+            return java.util.Optional.empty();
+        }
+        if (lobeSumTable == null) {
+            lobeSumTable = new LobeSumTable(lobeWeightTable(settings, quadrature),
+                    settings.coherenceWindow().sigmaTexels(extentXUm()),
+                    settings.coherenceWindow().sigmaTexels(extentYUm()));
+        }
+        return java.util.Optional.of(lobeSumTable);
+    }
+
+    /**
+     * The texture of {@link #lobeSumTable}, or one texel of 0 where the sums do not apply (the sampler still needs a
+     * texture of its type).
+     */
+    public synchronized FloatTextureArray lobeSums(BrdfSettings settings, LobeQuadrature quadrature) {
+        boolean applies = lobeSumTable(settings, quadrature).isPresent();
+        if (lobeSums != null && applies != (lobeSums.width() > 1)) {
+            throw new IllegalStateException("these textures hold the lobes' texel sums for other settings; make new "
+                    + "textures");
+        }
+        if (lobeSums == null) {
+            lobeSums = lobeSumTable(settings, quadrature)
+                    .map(t -> FloatTextureArray.rgba(t.width(), t.height(), t.layers()))
+                    .orElseGet(() -> FloatTextureArray.rgba(1, 1, java.util.List.of(new float[4])))
+                    .linear();
+        }
+        return lobeSums;
     }
 
     /** The table behind {@link #lobeWeights}. */

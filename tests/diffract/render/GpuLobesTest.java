@@ -11,7 +11,9 @@ import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;
+import diffract.optics.LightProfile;
 import diffract.optics.LightSource;
+import diffract.optics.LobeQuadrature;
 import diffract.optics.PixelFilter;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
@@ -77,6 +79,48 @@ class GpuLobesTest {
     }
 
     /**
+     * Where a scan is wider than about two thirds of the coherence length the shader sums the texels under each pixel
+     * from the texel sums (LobeSumTable) as the CPU does: the 52 um scan's maps equal the CPU's at 32 x 32 (under a
+     * point light and a Gaussian light 2 degrees wide, whose covariance widens the box) and at 8 x 8, where the march
+     * over lobes runs past llvmpipe's loop budget, with no pixel left short.
+     */
+    @Test
+    void texelSumsOfAScanWiderThanTheWindowEqualTheCpu() {
+        GlTestSupport.assumeOffscreenGl();
+        HeightField scan = SyntheticPatches.elapheScan(512, 50, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L)
+                .meanSubtracted();
+        TaylorTerms terms = TaylorTermComputer.compute(scan, 20, Reporter.SILENT);
+        Direction wi = Direction.fromSphericalDeg(30, 90);
+        BrdfSettings point = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
+                .pixelFilter(PixelFilter.BOX));
+        BrdfSettings gaussian = point.with(b -> b.lightSizeDeg(2).lightProfile(LightProfile.GAUSSIAN));
+        for (BrdfSettings settings : java.util.List.of(point, gaussian)) {
+            DiffractionBrdf brdf = DiffractionBrdf.create(settings, scan, terms);
+            try (GpuBrdfMap map = new GpuBrdfMap(terms, settings)) {
+                for (int size : new int[] {32, 8}) {
+                    float[] cpu = BrdfMap.xyz(brdf, wi, size, Reporter.SILENT);
+                    float[] gpu = map.xyz(wi, size);
+                    String where = "52 um scan, texel sums, " + settings.illumination().light() + ", " + size + " x "
+                            + size;
+                    assertEquals(0, map.truncatedPixels(), where);
+                    if (size == 32) {
+                        BrdfMapDifference d = RenderTestSupport.difference(cpu, gpu, size, wi);
+                        where += ": " + d.summary();
+                        assertTrue(d.lit().mean() <= GpuCpuAgreementTest.MAX_LIT_MEAN
+                                && d.lit().p99() <= GpuCpuAgreementTest.MAX_LIT_P99, where);
+                    } else {
+                        for (int p = 0; p < size * size; p++) {
+                            assertEquals(cpu[3 * p + 1], gpu[3 * p + 1], 1e-3 * cpu[3 * p + 1] + 1e-9,
+                                    where + ": pixel " + p);
+                        }
+                    }
+                    TestReport.line(GpuLobesTest.class, where);
+                }
+            }
+        }
+    }
+
+    /**
      * A map whose pixels reach more lobes than the GL lets one fragment sum says which pixels its loops left short:
      * every pixel it does not flag equals the CPU's, every flagged one is darker than the CPU's or as bright (lobes
      * left out only take light away). The 52 um scan on a 32 x 32 map (a pixel's box 6 texels wide, its segment 60
@@ -89,8 +133,9 @@ class GpuLobesTest {
         HeightField scan = SyntheticPatches.elapheScan(512, 50, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L)
                 .meanSubtracted();
         TaylorTerms terms = TaylorTermComputer.compute(scan, 20, Reporter.SILENT);
+        // the march over lobes, which this scan's texel sums (texelSumsOfAScanWiderThanTheWindowEqualTheCpu) avoid
         BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
-                .pixelFilter(PixelFilter.BOX));
+                .pixelFilter(PixelFilter.BOX).lobes(LobeQuadrature.DEFAULT.withSumNodesPerBox(0)));
         Direction wi = Direction.fromSphericalDeg(30, 90);
         DiffractionBrdf brdf = DiffractionBrdf.create(settings, scan, terms);
         try (GpuBrdfMap map = new GpuBrdfMap(terms, settings)) {
