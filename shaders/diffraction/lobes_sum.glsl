@@ -16,8 +16,8 @@ uniform vec2 lobeSumCells;
 uniform float lobeSumCellTexels;
 uniform float lobeSumNodesPerBox;
 
-// The most wavelength nodes a footprint takes (a guard; the default spacing needs about 1200 for a 200 um scan).
-const float MAX_SUM_NODES = 4096.0;
+// MAX_SUM_NODES: the most wavelength nodes a footprint takes, a define from LobeSpectrum.MAX_SUM_NODES
+// (DiffractionShaders).
 
 // LobeSumTable.axisPieces: the parts of [lo, hi] (texels) in the halves m >= 0 (.xy) and m < 0 (.zw) of an axis, in
 // each half's coordinate t = +-(s + 1/2) / c (cells) clamped to [0, cells]; an empty part has inner >= outer.
@@ -105,7 +105,7 @@ vec3 summedXyz(vec3 uvw) {
     vec2 travel = width / (lobeSumNodesPerBox * speed);
     float bandNm = lambdaMaxNm - lambdaMinNm;
     float target = min(min(min(travel.x, travel.y), lobeMaxStepNm), bandNm);
-    float spacing = spacingOnLevels(max(target, bandNm / MAX_SUM_NODES));
+    float spacing = spacingOnLevels(max(target, bandNm / float(MAX_SUM_NODES)));
     int last = lastNodeIndex(lambdaMaxNm, spacing);
     int levelBase = spectralLevelBase(spacing);
     vec2 edge = lobeSumCells - 0.5;

@@ -403,8 +403,11 @@ public final class LobeSpectrum {
         return 2 * summedHalfWidthU(footprint) * extentXUm / longestUm >= 1
                 && 2 * summedHalfWidthV(footprint) * extentYUm / longestUm >= 1;
     }
-    /** The most wavelength nodes a footprint's sums take (a guard: a 200 um scan needs about 1200 at the default). */
-    static final int MAX_SUM_NODES = 4096;
+    /**
+     * The most wavelength nodes a footprint's sums take (a guard: a 200 um scan needs about 1200 at the default); the
+     * shader's define of the same name.
+     */
+    public static final int MAX_SUM_NODES = 4096;
 
     /** The lobe centres (texels) one axis can reach over wavelengths [shortest, longest] um: {lo, hi}. */
     private static double[] range(double u, double reach, double extentUm, double shortestUm, double longestUm) {

@@ -5,6 +5,7 @@ import diffract.jrtr.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.DiscFootprint;
+import diffract.optics.LobeSpectrum;
 import diffract.optics.Methods;
 import diffract.optics.WindowPlacement;
 import diffract.optics.FresnelModel;
@@ -114,6 +115,8 @@ public final class DiffractionShaders {
         defines.put("DISC_RING_SAMPLES", Integer.toString(DiscFootprint.RING_SAMPLES));
         defines.put("DISC_GAUSSIAN_BELOW", Float.toString((float) DiscFootprint.GAUSSIAN_BELOW));
         defines.put("DISC_EDGE_ABOVE", Float.toString((float) DiscFootprint.EDGE_ABOVE));
+        // the texel sums' guard on their wavelength nodes (lobes_sum.glsl)
+        defines.put("MAX_SUM_NODES", Integer.toString(LobeSpectrum.MAX_SUM_NODES));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
         if (settings.illumination().fresnel() == FresnelModel.THESIS) {
