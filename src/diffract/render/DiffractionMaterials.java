@@ -4,27 +4,16 @@ import diffract.jrtr.Material;
 import diffract.jrtr.Texture2D;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.CoherenceWindow;
 import diffract.optics.Covariance2;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.Quantity;
 import diffract.optics.ScanTiling;
 import diffract.optics.WindowPlacement;
-import diffract.optics.Covariance2;
 import diffract.optics.Direction;
-import diffract.optics.GaussHermite;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.LightSource;
-import diffract.optics.LobeQuadrature;
-import diffract.optics.LobeSumTable;
-import diffract.optics.LobeWeightTable;
 import diffract.optics.PhaseCentres;
 import diffract.optics.PixelFilter;
-import diffract.optics.Quantity;
-import diffract.optics.Variant;
 import diffract.util.Reporter;
 
-import java.util.Locale;
 import java.util.Optional;
 
 /**
@@ -166,79 +155,12 @@ public final class DiffractionMaterials {
      */
     public static Material setLight(Material brdfMap, Direction wi, BrdfSettings settings) {
         brdfMap.setVec3("omegaI", (float) wi.x(), (float) wi.y(), (float) wi.z());
-        if (settings.variant() == Variant.LOBES) {
-            setLobesLight(brdfMap, settings.illumination().light().uvCovariance(wi), settings.lobes());
-        }
+        GpuMethods.of(settings.variant()).setLight(brdfMap, wi, settings);
         return brdfMap;
     }
 
-    /** The shader's light arrays hold this many Gauss-Hermite shifts (lobes_footprint.glsl, the define LIGHT_NODES_MAX). */
-    static final int LIGHT_NODES_MAX = 8;
-
-    private static void setLobesLight(Material m, Covariance2 c, LobeQuadrature q) {
-        double[] split = c.isDiagonal() ? new double[] {c.xx(), c.yy(), 1, 0, 0} : c.diagonalPlusRankOne();
-        m.setVec2("lightDiagonal", (float) split[0], (float) split[1]);
-        m.setVec3("lightRankOne", (float) (split[4] * split[2] * split[2]),
-                (float) (split[4] * split[2] * split[3]), (float) (split[4] * split[3] * split[3]));
-        float[] shifts = new float[3 * LIGHT_NODES_MAX];
-        int count = 0;
-        if (split[4] > 0) {
-            double sigma = Math.sqrt(split[4]);
-            double[] nodes = GaussHermite.nodes(q.lightNodes());
-            double[] weights = GaussHermite.weights(q.lightNodes());
-            for (int k = 0; k < nodes.length; k++) {
-                shifts[3 * k] = (float) (sigma * nodes[k] * split[2]);
-                shifts[3 * k + 1] = (float) (sigma * nodes[k] * split[3]);
-                shifts[3 * k + 2] = (float) weights[k];
-            }
-            count = nodes.length;
-        }
-        m.setFloatArray("lightShifts", shifts).setInt("lightShiftCount", count);
-    }
-
-    /**
-     * The lobes method's uniforms ({@code lobes_spectrum.glsl}, {@code lobes_footprint.glsl}): spectral weights,
-     * quadrature, pixel filter, the light's size and, until {@link #setLight} places it, the light of normal
-     * incidence. The shader sums whole texels only: a patch whose window keeps pairs of texels at the quadrature's
-     * threshold is refused.
-     */
-    private static void lobes(Material m, DiffractionTextures textures, BrdfSettings settings) {
-        LobeQuadrature q = settings.lobes();
-        LobeQuadrature.wholeTexelsRefusal(settings, textures.extentXUm(), textures.extentYUm()).ifPresent(why -> {
-            throw new InvalidSettingException(Quantity.COHERENCE_LENGTH, why + "; render it with the lobes variant on "
-                    + "the CPU, with flss or the reference, with a longer coherence length or a smaller patch");
-        });
-        LightSource light = settings.illumination().light();
-        LobeWeightTable table = textures.lobeWeightTable(settings, q);
-        m.setTexture("lobeWeights", textures.lobeWeights(settings, q))
-                .setInt("lobeWeightSamples", table.samples())
-                .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
-                .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
-                .setFloat("lobeCutoff", (float) q.cutoff());
-        java.util.Optional<LobeSumTable> sums = textures.lobeSumTable(settings, q);
-        m.setTexture("lobeSumTable", textures.lobeSums(settings, q))
-                .setInt("lobeSums", sums.isPresent() ? 1 : 0)
-                .setVec2("lobeSumCells", sums.map(LobeSumTable::cellsX).orElse(0),
-                        sums.map(LobeSumTable::cellsY).orElse(0))
-                .setFloat("lobeSumCellTexels", sums.map(LobeSumTable::cellTexels).orElse(1))
-                .setFloat("lobeSumNodesPerBox", (float) q.sumNodesPerBox());
-        m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings.spectral()))
-                .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings.spectral()))
-                .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
-                .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
-                .setFloat("lobeReachSigmas", (float) q.reachSigmas())
-                .setFloat("pixelFootprintScale", pixelFootprintScale(settings))
-                .setFloat("lightSigmaRad", (float) light.sigmaRad())
-                .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
-                .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
-        setLobesLight(m, light.uvCovariance(Direction.fromSphericalDeg(0, 0)), q);
-        if (DiffractionShaders.lightDisc(settings)) {
-            m.setFloat("lightHalfAngleRad", (float) light.halfAngleRad());
-        }
-    }
-
     /** 1 where surface pixels average over their footprint (PixelFilter.BOX), 0 where they take its centre. */
-    private static float pixelFootprintScale(BrdfSettings settings) {
+    static float pixelFootprintScale(BrdfSettings settings) {
         return settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f;
     }
 
@@ -253,18 +175,12 @@ public final class DiffractionMaterials {
     }
 
     /**
-     * The uniforms of the variant's program, each set once, by the include that declares it: the window
-     * ({@code spectrum_gaussian.glsl} or PQ's {@code spectrum_sinc.glsl}), the wavelengths
-     * ({@code wavelengths_uniform.glsl}, and NMM's {@code wavelengths_nmm.glsl} over it), the lobes method's
-     * ({@link #lobes}), the terms or the baked table, and the shared ones of {@code diffraction_common.glsl}.
+     * The uniforms of the variant's program, each set once, by the include that declares it: the method's own
+     * ({@link GpuMethod}: its window, wavelengths and tables), the terms or the baked table, and the shared ones of
+     * {@code diffraction_common.glsl}.
      */
     private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings) {
-        if (settings.variant() == Variant.LOBES) {
-            lobes(m, textures, settings);
-        }
-        double extentX = textures.extentXUm();
-        double extentY = textures.extentYUm();
-        CoherenceWindow window = settings.coherenceWindow();
+        GpuMethods.of(settings.variant()).setUniforms(m, textures, settings);
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             if (textures.baked().filtered()) {
@@ -278,23 +194,8 @@ public final class DiffractionMaterials {
         } else {
             m.setTexture("taylorTerms", textures.terms());
         }
-        if (settings.variant() != Variant.LOBES) {
-            m.setTexture("uniformNodeTable", textures.uniformNodeTable()); // NMM's fallback grid too
-        }
-        if (settings.variant() == Variant.NMM) {
-            m.setTexture("spectralTable", textures.spectralTable())
-                    .setFloat("spectralTableFirstNm", (float) textures.spectralTableFirstNm())
-                    .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
-                    .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
-        }
         if (textures.baked() == null && textures.normalisedTerms()) {
             m.setTexture("termExtrema", textures.termExtrema());
-        }
-        if (settings.variant() == Variant.PQ) {
-            // the replica counts of DiffractionBrdf.create(PQ)
-            m.setVec2("pqReplicas", settings.window().replicas(window, extentX), settings.window().replicas(window, extentY));
-        } else {
-            m.setVec2("sigmaTexels", (float) window.sigmaTexels(extentX), (float) window.sigmaTexels(extentY));
         }
         PhaseCentres centres = textures.phaseCentres();
         if (centres != null) { // taylor_centred.glsl
@@ -302,7 +203,7 @@ public final class DiffractionMaterials {
         }
         return m.setFloat("taylorTolerance", (float) settings.taylor().tolerance())
                 .setFloat("maxAbsHeightUm", (float) textures.maxAbsHeightUm())
-                .setVec2("patchExtentUm", (float) extentX, (float) extentY)
+                .setVec2("patchExtentUm", (float) textures.extentXUm(), (float) textures.extentYUm())
                 .setFloat("refractiveIndex", (float) settings.illumination().refractiveIndex());
     }
 }

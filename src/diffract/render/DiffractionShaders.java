@@ -12,7 +12,6 @@ import diffract.optics.FresnelModel;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LightSource;
 import diffract.optics.PhaseCentres;
-import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
 import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
@@ -110,7 +109,7 @@ public final class DiffractionShaders {
             defines.put("WINDOW_LOCAL", "1");
         }
         defines.put("NMM_MAX_NODES", Integer.toString(DiffractionBrdf.NMM_MAX_NODES));
-        defines.put("LIGHT_NODES_MAX", Integer.toString(DiffractionMaterials.LIGHT_NODES_MAX));
+        defines.put("LIGHT_NODES_MAX", Integer.toString(LobesGpu.LIGHT_NODES_MAX));
         // the disc's constants, from DiscFootprint (lobes_footprint.glsl)
         defines.put("DISC_RING_SAMPLES", Integer.toString(DiscFootprint.RING_SAMPLES));
         defines.put("DISC_GAUSSIAN_BELOW", Float.toString((float) DiscFootprint.GAUSSIAN_BELOW));
@@ -169,7 +168,8 @@ public final class DiffractionShaders {
 
     /** As above, for the variant and the angular diameter of the widest environment light (degrees, 0: none). */
     static boolean environmentTableNeeded(Variant variant, double widestEnvironmentLightDeg) {
-        return variant == Variant.LOBES && LightSource.sigmaRadOf(widestEnvironmentLightDeg) > TABLE_BEYOND_SIGMA_RAD;
+        return GpuMethods.of(variant).tablesWideEnvironmentLights()
+                && LightSource.sigmaRadOf(widestEnvironmentLightDeg) > TABLE_BEYOND_SIGMA_RAD;
     }
 
     /**
@@ -177,7 +177,8 @@ public final class DiffractionShaders {
      * light ({@link SkyTable}): a filtered table under an environment.
      */
     public static boolean skyTableNeeded(BrdfSettings settings, DiffractionTextures textures, Stage stage) {
-        return settings.variant() == Variant.BAKED && textures.baked() != null && textures.baked().filtered()
+        return GpuMethods.of(settings.variant()).readsSkyTables() && textures.baked() != null
+                && textures.baked().filtered()
                 && stage.environment() != null && !stage.environment().lights().isEmpty()
                 && stage.glossyAlpha() == null;
     }
@@ -216,24 +217,12 @@ public final class DiffractionShaders {
             // the term lookup de-normalises 8-bit [0, 1] terms with the per-term extrema (NormalisedTerms)
             defines.put("TERMS_UNORM8", "1");
         }
-        if (settings.variant() == Variant.LOBES && target == Target.BRDF_MAP
-                && settings.illumination().pixelFilter() == PixelFilter.BOX) {
-            // the lobes shader's map pixels are boxes (lobes_footprint.glsl compiles one footprint, not both)
-            defines.put("LOBES_BOX", "1");
-        }
         if (textures.baked() != null && textures.baked().filtered()) {
             // the table holds cell- and light-averaged samples with mip levels: look up over the pixel's footprint
             defines.put("BAKED_FILTERED", "1");
         }
-        if (lightDisc(settings)) {
-            defines.put("LIGHT_DISC", "1");
-        }
+        GpuMethods.of(settings.variant()).addDefines(defines, settings, target == Target.BRDF_MAP);
         return defines;
-    }
-
-    /** Whether the lobes method averages over a disc light (lobes_footprint.glsl's LIGHT_DISC, DiscFootprint). */
-    static boolean lightDisc(BrdfSettings settings) {
-        return settings.variant() == Variant.LOBES && settings.illumination().light().isDisc();
     }
 
     /**
@@ -261,7 +250,7 @@ public final class DiffractionShaders {
         Map<String, String> defines = defines(settings, highestOrder, radii, null, Target.BRDF_MAP, false, false);
         if (lobes) {
             defines.put("LOBES_BOX", "1"); // every sample averages over its cell
-            if (lightDisc(settings)) {
+            if (LobesGpu.averagesOverDisc(settings)) {
                 defines.put("LIGHT_DISC", "1"); // and over the disc about the normal (setTableCell)
             }
             return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);

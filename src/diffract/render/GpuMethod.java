@@ -1,0 +1,47 @@
+package diffract.render;
+
+import diffract.jrtr.Material;
+import diffract.optics.BrdfSettings;
+import diffract.optics.Direction;
+
+/**
+ * A diffraction method's GPU side: the uniforms and textures its fragment shader declares beyond the ones every
+ * diffraction shader shares ({@link DiffractionMaterials}: the patch, the terms or the baked table, the refractive
+ * index), set from the settings and the patch's textures, and what it reads of a BRDF map's light. One class per
+ * method, found by {@link GpuMethods}; its program is {@code shaders/diffraction/<label>.frag}
+ * ({@link DiffractionShaders}).
+ */
+public interface GpuMethod {
+    /** Its own uniforms and textures, each once. */
+    void setUniforms(Material m, DiffractionTextures textures, BrdfSettings settings);
+
+    /** The light of a BRDF map at omega_i (towards the light), beyond {@code omegaI}: none unless it reads more. */
+    default void setLight(Material brdfMap, Direction wi, BrdfSettings settings) {
+    }
+
+    /**
+     * Defines its program takes beyond the shared ones, from the settings, for a BRDF map's program or a surface's:
+     * none unless it compiles variants of its code.
+     */
+    default void addDefines(java.util.Map<String, String> defines, BrdfSettings settings, boolean brdfMap) {
+    }
+
+    /**
+     * Whether a staged surface of this method reads the lobes method's baked table over the footprints of environment
+     * lights wider than it sums ({@link DiffractionShaders#TABLE_BEYOND_SIGMA_RAD}).
+     */
+    default boolean tablesWideEnvironmentLights() {
+        return false;
+    }
+
+    /** Whether a staged surface of this method reads environment lights from tables spread by each light ({@link SkyTable}). */
+    default boolean readsSkyTables() {
+        return false;
+    }
+
+    /** The Gaussian coherence window in texels per axis ({@code spectrum_gaussian.glsl}'s sigmaTexels). */
+    static void gaussianWindow(Material m, DiffractionTextures textures, BrdfSettings settings) {
+        m.setVec2("sigmaTexels", (float) settings.coherenceWindow().sigmaTexels(textures.extentXUm()),
+                (float) settings.coherenceWindow().sigmaTexels(textures.extentYUm()));
+    }
+}
