@@ -13,6 +13,8 @@ import diffract.optics.SyntheticPatches;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.optics.WavelengthSampling;
+import diffract.jrtr.GlTestSupport;
+import diffract.render.GpuMethods;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -29,7 +31,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * A method is one class: a toy method, defined here and registered from the tests ({@link Methods#register}), is
  * found by its label, drawn by {@code brdfmap} on the CPU and refused, naming itself, where it has no shader
- * (the GPU, a scene), without a line changed elsewhere.
+ * (the GPU, a scene), without a line changed elsewhere; given a shader and its GPU side, it draws on the GPU too.
  */
 class ToyMethodTest {
     /** |P|^2 the same at every (u, v, w) and wavelength: white light, reflected as white times the gain factor. */
@@ -48,7 +50,13 @@ class ToyMethodTest {
 
         @Override
         public boolean runsOnGpu() {
-            return false;
+            return gpu;
+        }
+
+        private final boolean gpu;
+
+        ConstantMethod(boolean gpu) {
+            this.gpu = gpu;
         }
 
         @Override
@@ -76,9 +84,50 @@ class ToyMethodTest {
         }
     }
 
+    /**
+     * With a shader ({@code tests/shaders/diffraction/constant.frag}, on the test classpath) and its GPU side
+     * registered ({@link GpuMethods#register}: the one texture it reads), the same toy draws on the GPU as on the
+     * CPU, through {@code brdfmap}.
+     */
+    @Test
+    void aMethodWithAShaderDrawsOnTheGpuAsOnTheCpu(@TempDir Path dir) throws IOException {
+        GlTestSupport.assumeOffscreenGl();
+        ConstantMethod toy = new ConstantMethod(true);
+        Methods.register(toy);
+        GpuMethods.register(toy, (m, textures, settings) -> m.setTexture("uniformNodeTable",
+                textures.uniformNodeTable()));
+        try {
+            Path cpuPng = dir.resolve("cpu.png");
+            Path gpuPng = dir.resolve("gpu.png");
+            for (String engine : new String[] {"cpu", "gpu"}) {
+                Object[] drawn = CliTest.run("brdfmap", "--synthetic", "blazed", "--variant", "constant", "--engine",
+                        engine, "--theta-i", "30", "--size", "16", "--light-size-deg", "0", "-q", "-o",
+                        (engine.equals("cpu") ? cpuPng : gpuPng).toString());
+                assertEquals(0, drawn[0], engine + ": " + drawn[1] + " / " + drawn[2]);
+            }
+            BufferedImage cpu = ImageIO.read(cpuPng.toFile());
+            BufferedImage gpu = ImageIO.read(gpuPng.toFile());
+            int grey = 0;
+            for (int y = 0; y < 16; y++) {
+                for (int x = 0; x < 16; x++) {
+                    int a = cpu.getRGB(x, y);
+                    int b = gpu.getRGB(x, y);
+                    for (int shift = 0; shift <= 16; shift += 8) {
+                        assertEquals(a >> shift & 0xff, b >> shift & 0xff, 1, "pixel " + x + ", " + y);
+                    }
+                    grey += (a & 0xff) > 0 ? 1 : 0;
+                }
+            }
+            assertTrue(grey > 100, grey + " lit pixels");
+        } finally {
+            GpuMethods.unregister(toy);
+            Methods.unregister(toy);
+        }
+    }
+
     @Test
     void aMethodRegisteredFromTheTestsIsFoundDrawnAndRefusedByItsName(@TempDir Path dir) throws IOException {
-        ConstantMethod toy = new ConstantMethod();
+        ConstantMethod toy = new ConstantMethod(false);
         Methods.register(toy);
         try {
             assertSame(toy, Variant.parse("Constant"));
