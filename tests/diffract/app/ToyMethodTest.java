@@ -31,7 +31,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * A method is one class: a toy method, defined here and registered from the tests ({@link Methods#register}), is
  * found by its label, drawn by {@code brdfmap} on the CPU and refused, naming itself, where it has no shader
- * (the GPU, a scene), without a line changed elsewhere; given a shader and its GPU side, it draws on the GPU too.
+ * (the GPU, a scene), without a line changed elsewhere; given a shader and its GPU side, it draws on the GPU and in a
+ * scene too.
  */
 class ToyMethodTest {
     /** |P|^2 the same at every (u, v, w) and wavelength: white light, reflected as white times the gain factor. */
@@ -87,7 +88,7 @@ class ToyMethodTest {
     /**
      * With a shader ({@code tests/shaders/diffraction/constant.frag}, on the test classpath) and its GPU side
      * registered ({@link GpuMethods#register}: the one texture it reads), the same toy draws on the GPU as on the
-     * CPU, through {@code brdfmap}.
+     * CPU, through {@code brdfmap}, and a scene of its material renders.
      */
     @Test
     void aMethodWithAShaderDrawsOnTheGpuAsOnTheCpu(@TempDir Path dir) throws IOException {
@@ -119,6 +120,24 @@ class ToyMethodTest {
                 }
             }
             assertTrue(grey > 100, grey + " lit pixels");
+            // and in a scene: a plane of the toy material under the scene's light
+            Path scene = dir.resolve("constant-plane.json");
+            java.nio.file.Files.writeString(scene, """
+                    {"image": {"width": 32, "height": 24}, "camera": {"eye": [0, 0, 3.5]},
+                     "light": {"thetaDeg": 30, "phiDeg": 0}, "shape": {"kind": "plane"},
+                     "material": {"patch": {"procedural": "blazed"}, "variant": "constant", "exposure": 40}}
+                    """);
+            Path rendered = dir.resolve("scene.png");
+            Object[] drawn = CliTest.run("render", scene.toString(), "-q", "-o", rendered.toString());
+            assertEquals(0, drawn[0], drawn[1] + " / " + drawn[2]);
+            BufferedImage picture = ImageIO.read(rendered.toFile());
+            int centre = picture.getRGB(16, 12);
+            int r = centre >> 16 & 0xff;
+            int g = centre >> 8 & 0xff;
+            int b = centre & 0xff;
+            // lit, and white light reflected white: grey
+            assertTrue(g > 100 && Math.abs(r - g) <= 3 && Math.abs(b - g) <= 3, "the plane's centre: " + r + " " + g
+                    + " " + b);
         } finally {
             GpuMethods.unregister(toy);
             Methods.unregister(toy);
