@@ -31,8 +31,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * A method is one class: a toy method, defined here and registered from the tests ({@link Methods#register}), is
  * found by its label, drawn by {@code brdfmap} on the CPU and refused, naming itself, where it has no shader
- * (the GPU, a scene), without a line changed elsewhere; given a shader and its GPU side, it draws on the GPU and in a
- * scene too.
+ * (the GPU, a scene), without a line changed elsewhere; given a shader and its GPU side, it draws on the GPU, in a
+ * scene and in the bench too.
  */
 class ToyMethodTest {
     /** |P|^2 the same at every (u, v, w) and wavelength: white light, reflected as white times the gain factor. */
@@ -88,7 +88,7 @@ class ToyMethodTest {
     /**
      * With a shader ({@code tests/shaders/diffraction/constant.frag}, on the test classpath) and its GPU side
      * registered ({@link GpuMethods#register}: the one texture it reads), the same toy draws on the GPU as on the
-     * CPU, through {@code brdfmap}, and a scene of its material renders.
+     * CPU, through {@code brdfmap}, a scene of its material renders and the bench's sweep measures it.
      */
     @Test
     void aMethodWithAShaderDrawsOnTheGpuAsOnTheCpu(@TempDir Path dir) throws IOException {
@@ -138,6 +138,15 @@ class ToyMethodTest {
             // lit, and white light reflected white: grey
             assertTrue(g > 100 && Math.abs(r - g) <= 3 && Math.abs(b - g) <= 3, "the plane's centre: " + r + " " + g
                     + " " + b);
+            // and in the bench's sweep: a row of its own, timed and compared with the reference
+            Path bench = dir.resolve("bench");
+            Object[] swept = CliTest.run("bench", "--variants", "constant", "--patches", "blazed", "--sizes", "16",
+                    "--error-size", "16", "--large-size", "16", "--frames", "10", "--no-cache", "-q", "-o",
+                    bench.toString());
+            assertEquals(0, swept[0], swept[1] + " / " + swept[2]);
+            String results = java.nio.file.Files.readString(bench.resolve("results.csv"));
+            assertTrue(results.contains("constant"), results);
+            diffract.util.TestReport.line(ToyMethodTest.class, "the toy in the bench's sweep:\n" + results);
         } finally {
             GpuMethods.unregister(toy);
             Methods.unregister(toy);
