@@ -30,7 +30,7 @@ package diffract.optics;
  * <p><b>Layout</b> (the GPU's, {@code lobes_sum.glsl}): one RGBA layer per interval [k, k + 1] of samples, its T of
  * (W, delta dW/dp) at k and at k + 1, 2 (n_x + 2) x 2 (n_y + 2) texels,
  * the quadrant (q_x, q_y) (0: m &gt;= 0, 1: m &lt; 0) at (q_x (n_x + 2), q_y (n_y + 2)); corner I of the quadrant's
- * local coordinate t = +-(s + 1/2) at texel I, so that linear filtering between corners integrates the cells exactly;
+ * local coordinate t = +-(s + 1/2) / c (in cells) at texel I, so that linear filtering between corners integrates the cells exactly;
  * T = 0 at I = n_x and n_x + 1 (and along y), where every quadrant's texels end, so that the filter's neighbour of a
  * clamped corner is 0 and never the next quadrant's. Values are rounded to float32 here; the CPU reads the same
  * numbers ({@link #boxSum}).
