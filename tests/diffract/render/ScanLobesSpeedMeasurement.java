@@ -38,8 +38,9 @@ class ScanLobesSpeedMeasurement {
         LobeQuadrature d = LobeQuadrature.DEFAULT;
         try (GpuBrdfMap f = new GpuBrdfMap(terms, flss)) {
             for (double cutoff : new double[] {d.cutoff(), 1e-5, 1e-4, 1e-3}) {
+                // the march over lobes, whose cost the cutoff sets (the texel sums, the default here, have none)
                 LobeQuadrature q = new LobeQuadrature(d.pairThreshold(), d.nodesPerSigma(), d.maxStepNm(),
-                        d.reachSigmas(), d.weightStepNm(), d.lightNodes(), cutoff, d.weightTolerance());
+                        d.reachSigmas(), d.weightStepNm(), d.lightNodes(), cutoff, d.weightTolerance(), 0);
                 BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                         .lightSizeDeg(0).lobes(q));
                 try (GpuBrdfMap l = new GpuBrdfMap(terms, lobes)) {
