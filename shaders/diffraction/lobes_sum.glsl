@@ -72,15 +72,6 @@ float lobeBoxSum(vec2 lo, vec2 hi, float a) {
     return dot(ends, basis);
 }
 
-// spectralWeight for the summed nodes: one fetch on the hat levels (whole nanometres from lambda_min).
-vec3 summedNodeWeight(float lambdaNm, float spacing, int levelBase) {
-    if (levelBase >= 0) {
-        int i = int(floor(lambdaNm - lambdaMinNm + 0.5));
-        return i < lobeTablePositions ? spacing * texelFetch(lobeSpectralTable, levelBase + i, 0).xyz : vec3(0.0);
-    }
-    return spectralWeight(lambdaNm, spacing, levelBase);
-}
-
 // LobeSpectrum.summedHalfWidthU/V: the footprint's box widened by its Gaussian's variance.
 vec2 summedHalfWidth() {
     bool box = footprintHalfWidth.x > 0.0 || footprintHalfWidth.y > 0.0;
@@ -123,7 +114,7 @@ vec3 summedXyz(vec3 uvw) {
         }
         float sum = lobeBoxSum(lo, hi, waveNumberPerUm(lambdaNm) * uvw.z);
         float sigmaUv = lambdaUm * sigmaF;
-        xyz += scale * sigmaUv * sigmaUv * sum * summedNodeWeight(lambdaNm, spacing, levelBase)
+        xyz += scale * sigmaUv * sigmaUv * sum * spectralWeight(lambdaNm, spacing, levelBase)
                 * nodeEndWeight(lambdaNm, spacing);
     }
     return xyz;

@@ -48,7 +48,6 @@ public final class LobeSpectrum {
     /** The texels' sums where lobes are at least as wide as a cell ({@link LobeSumTable#applies}), or null. */
     private final LobeSumTable sums;
 
-
     /**
      * Over the band and with the mirror's normalisation of {@code spectral} (its step is the quadrature's).
      *
@@ -74,14 +73,6 @@ public final class LobeSpectrum {
         this.sums = table != null && LobeSumTable.applies(window, quadrature, extentXUm, extentYUm)
                 ? new LobeSumTable(table, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm))
                 : null;
-    }
-
-    /**
-     * Whether footprints without a disc light that span a texel's cell sum the texels under them
-     * ({@link LobeSumTable}).
-     */
-    public boolean sumsTexels() {
-        return sums != null;
     }
 
     /** A lobe's weight W_c(a) = W_c(k w): from the table, or summed from its texels' coefficients. */
@@ -403,6 +394,7 @@ public final class LobeSpectrum {
         return 2 * summedHalfWidthU(footprint) * extentXUm / longestUm >= 1
                 && 2 * summedHalfWidthV(footprint) * extentYUm / longestUm >= 1;
     }
+
     /**
      * The most wavelength nodes a footprint's sums take (a guard: a 200 um scan needs about 1200 at the default); the
      * shader's define of the same name.

@@ -345,15 +345,7 @@ public final class LobeSumTable {
         return height;
     }
 
-    /** K, the samples of p (the weight table's). */
-    public int samples() {
-        return samples;
-    }
 
-    /** The sample spacing in p, um^-1 (the weight table's). */
-    public double stepPerUm() {
-        return stepPerUm;
-    }
 
     /** The GPU's RGBA layers, one per interval of samples (see the class comment). */
     public java.util.List<float[]> layers() {

@@ -298,13 +298,13 @@ public final class DiffractionTextures {
      * texture of its type).
      */
     public synchronized FloatTextureArray lobeSums(BrdfSettings settings, LobeQuadrature quadrature) {
-        boolean applies = lobeSumTable(settings, quadrature).isPresent();
-        if (lobeSums != null && applies != (lobeSums.width() > 1)) {
+        java.util.Optional<LobeSumTable> sums = lobeSumTable(settings, quadrature);
+        if (lobeSums != null && sums.isPresent() != (lobeSums.width() > 1)) {
             throw new IllegalStateException("these textures hold the lobes' texel sums for other settings; make new "
                     + "textures");
         }
         if (lobeSums == null) {
-            lobeSums = lobeSumTable(settings, quadrature)
+            lobeSums = sums
                     .map(t -> FloatTextureArray.rgba(t.width(), t.height(), t.layers()))
                     .orElseGet(() -> FloatTextureArray.rgba(1, 1, java.util.List.of(new float[4])))
                     .linear();

@@ -39,6 +39,13 @@ class ToyMethodTest {
     static final class ConstantMethod implements Variant {
         static final double POWER = 0.02;
 
+        private final boolean gpu;
+
+        /** @param gpu whether it claims to run on the GPU (a shader and a GPU side are registered for it) */
+        ConstantMethod(boolean gpu) {
+            this.gpu = gpu;
+        }
+
         @Override
         public String label() {
             return "constant";
@@ -52,12 +59,6 @@ class ToyMethodTest {
         @Override
         public boolean runsOnGpu() {
             return gpu;
-        }
-
-        private final boolean gpu;
-
-        ConstantMethod(boolean gpu) {
-            this.gpu = gpu;
         }
 
         @Override

@@ -87,8 +87,7 @@ class GpuLobesTest {
     @Test
     void texelSumsOfAScanWiderThanTheWindowEqualTheCpu() {
         GlTestSupport.assumeOffscreenGl();
-        HeightField scan = SyntheticPatches.elapheScan(512, 50, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L)
-                .meanSubtracted();
+        HeightField scan = scan52();
         TaylorTerms terms = TaylorTermComputer.compute(scan, 20, Reporter.SILENT);
         Direction wi = Direction.fromSphericalDeg(30, 90);
         BrdfSettings point = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
@@ -130,8 +129,7 @@ class GpuLobesTest {
     @Test
     void pixelsWhoseLoopsWereEndedEarlyAreFlaggedAndTheOthersEqualTheCpu() {
         GlTestSupport.assumeOffscreenGl();
-        HeightField scan = SyntheticPatches.elapheScan(512, 50, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L)
-                .meanSubtracted();
+        HeightField scan = scan52();
         TaylorTerms terms = TaylorTermComputer.compute(scan, 20, Reporter.SILENT);
         // the march over lobes, which this scan's texel sums (texelSumsOfAScanWiderThanTheWindowEqualTheCpu) avoid
         BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
@@ -205,5 +203,10 @@ class GpuLobesTest {
             }
             assertTrue(brightest > 1e-4, "the averaged window draws the patch: " + brightest);
         }
+    }
+
+    /** The 52 um scan of these tests: 512 samples, 50 ridges of the Elaphe-like relief. */
+    private static HeightField scan52() {
+        return SyntheticPatches.elapheScan(512, 50, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 1L).meanSubtracted();
     }
 }
