@@ -105,18 +105,146 @@ float weightBound(ivec2 m, float pLo, float pHi) {
     return bound;
 }
 
-// LobeSpectrum.reaches: whether texel m's lobe over [fromNm, toNm] at w can add at least the cutoff, given the
-// footprint's peak average of a lobe.
-bool lobeReaches(ivec2 m, float w, float fromNm, float toNm, float peak) {
+// LobeWeightTable.blockBound: bins 2j and 2j + 1 of block b's bounds in layer j of lobeBlockBounds.
+uniform sampler2DArray lobeBlockBounds;
+
+float blockBound(ivec2 block, float pLo, float pHi) {
+    int lo = weightBin(pLo);
+    int hi = weightBin(pHi);
+    float bound = 0.0;
+    for (int j = lo / 2; j <= hi / 2; j++) {
+        vec2 pair = texelFetch(lobeBlockBounds, ivec3(block, j), 0).rg;
+        bound = max(bound, max(2 * j >= lo ? pair.x : 0.0, 2 * j + 1 <= hi ? pair.y : 0.0));
+    }
+    return bound;
+}
+
+// LobeGeometry.axisBoxInterval: the lambda (nm) at which some centre in [c0, c1] (per um) comes within reach of u on
+// one axis; empty when .x > .y.
+vec2 axisBoxInterval(float c0, float c1, float u, float reach) {
+    float lo = 0.0;
+    float hi = 1e30;
+    float upper = u + reach;
+    if (c0 > 0.0) {
+        hi = upper / c0 * 1e3;
+    } else if (c0 < 0.0) {
+        lo = upper < 0.0 ? upper / c0 * 1e3 : 0.0;
+    } else if (upper < 0.0) {
+        return vec2(1.0, 0.0);
+    }
+    float lower = u - reach;
+    if (c1 > 0.0) {
+        lo = max(lo, lower / c1 * 1e3);
+    } else if (c1 < 0.0) {
+        if (lower > 0.0) {
+            return vec2(1.0, 0.0);
+        }
+        hi = min(hi, lower / c1 * 1e3);
+    } else if (lower > 0.0) {
+        return vec2(1.0, 0.0);
+    }
+    return vec2(lo, hi);
+}
+
+// LobeGeometry.boxLambdaIntervalNm: the wavelengths at which some lobe centred in the box [c0, c1] comes within reach
+// of uv, clipped to the band and widened by a few float ulps; empty when .x >= .y.
+vec2 boxLambdaInterval(vec2 c0, vec2 c1, vec2 uv, vec2 reach) {
+    vec2 x = axisBoxInterval(c0.x, c1.x, uv.x, reach.x);
+    vec2 y = axisBoxInterval(c0.y, c1.y, uv.y, reach.y);
+    if (x.x > x.y || y.x > y.y) {
+        return vec2(1.0, 0.0);
+    }
+    return vec2(max(lambdaMinNm, max(x.x, y.x) * (1.0 - 1e-6)), min(lambdaMaxNm, min(x.y, y.y) * (1.0 + 1e-6)));
+}
+
+// HatFilteredSpectrum.rangeMaxRgba: level-major (lobeTablePositions per level), in R the largest spectral weight per
+// nanometre of any channel and hat level over positions p .. p + 2^level - 1.
+uniform sampler1D lobeDensityMax;
+
+// HatFilteredSpectrum.maxDensity(fromNm, toNm): the largest weight per nanometre of a passage's nodes (the first
+// beyond the band one hat further, and the next nanometre below 1 nm), from two overlapping windows.
+float passageDensity(float fromNm, float toNm) {
+    int a = clamp(int(floor(fromNm - lambdaMinNm)) - 1, 0, lobeTablePositions - 1);
+    int b = clamp(int(ceil(toNm - lambdaMinNm)) + WIDEST_HAT_NM + 1, a, lobeTablePositions - 1);
+    int level = int(floor(log2(float(b - a + 1)))); // exact below 2^20 (a window one level wider bounds as well)
+    return max(texelFetch(lobeDensityMax, level * lobeTablePositions + a, 0).r,
+            texelFetch(lobeDensityMax, level * lobeTablePositions + max(0, b - (1 << level) + 1), 0).r);
+}
+// HatFilteredSpectrum.bandWeight: what a lobe of peak average 1 adds at most over any passage.
+uniform float lobeBandWeight;
+// The footprint Gaussian's largest eigenvalue (LobeSpectrum.Shape.gaussianMax), set by spectralXyz.
+float footprintGaussianMax = 0.0;
+
+// LobeSpectrum.phaseLo and phaseHi: |k w| over a passage [fromNm, toNm]; a disc's directions move w by at most sin R.
+vec2 passagePhases(float w, float fromNm, float toNm) {
+    float spread = 0.0;
+#ifdef LIGHT_DISC
+    spread = discOn ? discAxes.x : 0.0;
+#endif
+    float k = 6.28318531 * 1e3;
+    return vec2(k * max(0.0, abs(w) - spread) / toNm, k * (abs(w) + spread) / fromNm);
+}
+
+// LobeSpectrum.lineMass: the line form of a passage's bound, for lobes moving at least at speed (per um) and passing
+// the footprint's box at least across away from it; the length form where less (or under a disc, or at rest).
+float lineMass(float speed, float across, float fromNm, float toNm, float peak) {
+    float widestStep = max(1.0, lobeMaxStepNm);
+    float mass = peak * (toNm - fromNm + widestStep);
+    bool line = speed > 0.0;
+#ifdef LIGHT_DISC
+    line = line && !discOn;
+#endif
+    if (!line) {
+        return mass;
+    }
+    float s = 0.5 * pow(toNm * 1e-3 * sigmaFPerUm(), 2.0) + footprintGaussianMax;
+    float e = exp(-across * across / (2.0 * s));
+    float step = max(1.0, min(1e3 * sqrt(2.0 * s) / (speed * lobeNodesPerSigma), widestStep));
+    return min(mass, 1e3 * sqrt(6.28318531 * s) * e / speed + min(peak, e) * step);
+}
+
+// LobeSpectrum.passageMass: a bound on the lobe's footprint average of peak 1 summed over its nodes in [fromNm,
+// toNm], the lobe centred at lambda c: the peak held over the passage and one node more, or, without a disc, the
+// integral along its line past the footprint plus one node of its largest value.
+float passageMass(vec2 c, vec2 uv, float fromNm, float toNm, float peak) {
+    float speed = length(c);
+    float across = speed > 0.0 ? max(0.0, (abs(uv.x * c.y - uv.y * c.x)
+            - footprintHalfWidth.x * abs(c.y) - footprintHalfWidth.y * abs(c.x)) / speed) : 0.0;
+    return lineMass(speed, across, fromNm, toNm, peak);
+}
+
+// LobeSpectrum.blockPassageMass: passageMass of every lobe centred in the box [c0, c1] (per um) over [fromNm, toNm].
+float blockPassageMass(vec2 c0, vec2 c1, vec2 uv, float fromNm, float toNm, float peak) {
+    float speed = length(clamp(vec2(0.0), c0, c1));
+    vec2 corners[4] = vec2[4](c0, vec2(c1.x, c0.y), c1, vec2(c0.x, c1.y));
+    float across = 1e30;
+    bool below = false;
+    bool above = false;
+    for (int corner = 0; corner < 4; corner++) {
+        float cross = uv.x * corners[corner].y - uv.y * corners[corner].x;
+        below = below || cross <= 0.0;
+        above = above || cross >= 0.0;
+        across = min(across, abs(cross) / max(length(corners[corner]), 1e-30));
+    }
+    across = below && above ? 0.0 : max(0.0, across - length(footprintHalfWidth));
+    return lineMass(speed, across, fromNm, toNm, peak);
+}
+
+// The vector whose component along the major axis is a and along the other b.
+vec2 onAxes(int major, float a, float b) {
+    return major == 0 ? vec2(a, b) : vec2(b, a);
+}
+
+// LobeSpectrum.reaches: whether texel m's lobe over [fromNm, toNm] at w can add at least the cutoff to the pixel at
+// uv, given the footprint's peak average of a lobe: its weights' bound times the spectral density's times the bound on
+// its footprint average over its nodes, or its peak times the band's weight where less.
+bool lobeReaches(ivec2 m, vec2 uv, float w, float fromNm, float toNm, float peak) {
     if (lobeCutoff == 0.0) {
         return true;
     }
-    float spread = 0.0;
-#ifdef LIGHT_DISC
-    spread = discOn ? discAxes.x : 0.0; // a disc's directions move w by at most sin R about its centre's
-#endif
-    float k = 6.28318531 * 1e3;
-    return weightBound(m, k * max(0.0, abs(w) - spread) / toNm, k * (abs(w) + spread) / fromNm) * peak >= lobeCutoff;
+    vec2 phases = passagePhases(w, fromNm, toNm);
+    return weightBound(m, phases.x, phases.y) * min(peak * lobeBandWeight, passageDensity(fromNm, toNm)
+            * passageMass(vec2(m) / patchExtentUm, uv, fromNm, toNm, peak)) >= lobeCutoff;
 }
 
 // LobeSpectrum.Shape.peak: the largest average over the footprint a lobe of peak 1 can have (sigma_uv the widest).
@@ -293,6 +421,7 @@ vec3 spectralXyz(vec3 uvw) {
     vec3 full = footprintGaussian + (box ? lightRankOne : vec3(0.0));
     vec2 reach = footprintHalfWidth + lobeReachSigmas * sqrt(widest + full.xz);
     float peak = footprintPeak(widest);
+    footprintGaussianMax = 0.5 * (full.x + full.z) + length(vec2(0.5 * (full.x - full.z), full.y));
 #ifdef LIGHT_DISC
     if (discOn) {
         // LobeSpectrum.Shape with a disc: with rims (the disc wider than the narrowest blur) its support, the box,
@@ -327,15 +456,28 @@ vec3 spectralXyz(vec3 uvw) {
     int major = xRange.y - xRange.x >= yRange.y - yRange.x ? 0 : 1;
     int minor = 1 - major;
     vec2 majorRange = major == 0 ? xRange : yRange;
-    vec2 majorAxis = vec2(major == 0 ? 1.0 : 0.0, major == 1 ? 1.0 : 0.0);
-    vec2 reachMajor = mix(vec2(1e30), reach, majorAxis);
-    int first = int(floor(majorRange.x));
-    int last = min(int(ceil(majorRange.y)), first + MAX_MARCH);
-    int i = first - 1; // the march: major index i, minor index k of kLast
-    int k = 0;
+    ivec2 grid = textureSize(lobeWeights, 0).xy;
+    ivec2 gridHalf = grid / 2;
+    // LobeSpectrum.marchBlocks: blocks of LOBE_BLOCK texels along the major axis, the blocks across it that the
+    // segment reaches there, each block tested against its bound, and the texels of a block that passes one by one
+    int iFirst = max(int(floor(majorRange.x)), -gridHalf[major]);
+    int iLast = min(min(int(ceil(majorRange.y)), iFirst + MAX_MARCH), grid[major] - 1 - gridHalf[major]);
+    int biLast = (iLast + gridHalf[major]) / LOBE_BLOCK;
+    int bi = iFirst > iLast ? biLast + 1 : (iFirst + gridHalf[major]) / LOBE_BLOCK - 1; // the major block
+    int i0 = 0;       // its major texels
+    int i1 = -1;
+    int kFirst = 0;   // the minor texels its lobes can reach
     int kLast = -1;
+    int bk = 0;       // the minor block
+    int bkLast = -1;
+    int k0 = 0;       // its minor texels
+    int k1 = -1;
+    bool inBlock = false;
+    int i = 0;        // the major texel in the block
+    int m = 0;        // the minor texel, up to mLast
+    int mLast = -1;
     vec3 xyz = vec3(0.0);
-    bool marched = false; // the march passed its last major index
+    bool marched = false; // the march passed its last block
     ivec2 batch[LOBE_BATCH];
     vec2 batchInterval[LOBE_BATCH];
     for (int round = 0; round < MAX_LOBES / LOBE_BATCH; round++) {
@@ -343,33 +485,75 @@ vec3 spectralXyz(vec3 uvw) {
         int count = 0;
         bool stalled = true; // the steps ran out before either
         for (int step = 0; step < MAX_MARCH_STEPS; step++) {
-            if (k > kLast) {
-                // the next major index: the minor texels its lobes can reach
-                i++;
-                if (i > last) {
+            if (m <= mLast || inBlock && i < i1) {
+                if (m > mLast) {
+                    // the next major texel of the block: its minor texels within the block
+                    i++;
+                    vec2 along = lambdaInterval(float(i) / patchExtentUm[major] * vec2(major == 0, major == 1),
+                            uv * vec2(major == 0, major == 1), mix(vec2(1e30), reach, vec2(major == 0, major == 1)));
+                    vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3,
+                            along.y * 1e-3);
+                    bool any = along.x < along.y;
+                    m = any ? max(k0, int(floor(minorRange.x))) : 0;
+                    mLast = any ? min(k1, int(ceil(minorRange.y))) : -1;
+                }
+                // the row's texels, while the batch has room: a step takes a row, so that the fragments of a SIMD
+                // group test their candidates together rather than in turn with their blocks' tests
+                for (int n = 0; n < LOBE_BLOCK && m <= mLast && count < LOBE_BATCH; n++) {
+                    ivec2 candidate = major == 0 ? ivec2(i, m) : ivec2(m, i);
+                    m++;
+                    vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
+                    if (at.x < at.y && lobeReaches(candidate, uv, uvw.z, at.x, at.y, peak)) {
+                        batch[count] = candidate;
+                        batchInterval[count] = at;
+                        count++;
+                    }
+                }
+                if (count == LOBE_BATCH) {
+                    stalled = false;
+                    break;
+                }
+            } else if (bk < bkLast) {
+                // the next minor block: tested against its bound over the wavelengths its lobes come within reach
+                bk++;
+                k0 = max(kFirst, bk * LOBE_BLOCK - gridHalf[minor]);
+                k1 = min(kLast, bk * LOBE_BLOCK + LOBE_BLOCK - 1 - gridHalf[minor]);
+                vec2 lo = onAxes(major, float(i0), float(k0)) / patchExtentUm;
+                vec2 hi = onAxes(major, float(i1), float(k1)) / patchExtentUm;
+                vec2 at = boxLambdaInterval(lo, hi, uv, reach);
+                ivec2 block = major == 0 ? ivec2(bi, bk) : ivec2(bk, bi);
+                // at least each texel's lobeReaches: their passages lie within the block's
+                vec2 phases = passagePhases(uvw.z, at.x, at.y);
+                inBlock = at.x < at.y && (lobeCutoff == 0.0 || blockBound(block, phases.x, phases.y)
+                        * min(peak * lobeBandWeight, passageDensity(at.x, at.y)
+                        * blockPassageMass(lo, hi, uv, at.x, at.y, peak)) >= lobeCutoff);
+                i = i0 - 1;
+                m = 0; // no row: texel indices run negative, so emptiness is m > mLast, not a sentinel
+                mLast = -1;
+            } else {
+                // the next major block: the minor blocks its lobes can reach
+                bi++;
+                if (bi > biLast) {
                     marched = true;
                     stalled = false;
                     break;
                 }
-                vec2 along = lambdaInterval(majorAxis * float(i) / patchExtentUm, uv * majorAxis, reachMajor);
+                i0 = max(iFirst, bi * LOBE_BLOCK - gridHalf[major]);
+                i1 = min(iLast, bi * LOBE_BLOCK + LOBE_BLOCK - 1 - gridHalf[major]);
+                vec2 along = boxLambdaInterval(onAxes(major, float(i0), 0.0) / patchExtentUm,
+                        onAxes(major, float(i1), 0.0) / patchExtentUm, onAxes(major, uv[major], 0.0),
+                        onAxes(major, reach[major], 1.0));
+                bool any = along.x < along.y;
                 vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3,
                         along.y * 1e-3);
-                bool any = along.x < along.y;
-                k = any ? int(floor(minorRange.x)) : 0;
-                kLast = any ? int(ceil(minorRange.y)) : -1;
-            } else {
-                ivec2 candidate = major == 0 ? ivec2(i, k) : ivec2(k, i);
-                k++;
-                vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
-                if (weightInBand(candidate) && at.x < at.y && lobeReaches(candidate, uvw.z, at.x, at.y, peak)) {
-                    batch[count] = candidate;
-                    batchInterval[count] = at;
-                    count++;
-                    if (count == LOBE_BATCH) {
-                        stalled = false;
-                        break;
-                    }
-                }
+                kFirst = max(int(floor(minorRange.x)), -gridHalf[minor]);
+                kLast = min(int(ceil(minorRange.y)), grid[minor] - 1 - gridHalf[minor]);
+                any = any && kFirst <= kLast;
+                bk = any ? (kFirst + gridHalf[minor]) / LOBE_BLOCK - 1 : 0;
+                bkLast = any ? (kLast + gridHalf[minor]) / LOBE_BLOCK : -1;
+                inBlock = false;
+                m = 0;
+                mLast = -1;
             }
         }
         int integrated = 0;

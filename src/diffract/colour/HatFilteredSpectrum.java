@@ -30,6 +30,8 @@ public final class HatFilteredSpectrum {
     private final double[][][] table;
     private final double normaliser;
     private final MirrorNormalisation normalisation;
+    /** Range maxima of the node weights per nanometre ({@link #maxDensity(double, double)}). */
+    private final double[][] rangeMax;
 
     /** The thesis' weighting ({@link MirrorNormalisation#PEAK}). */
     public HatFilteredSpectrum(double lambdaMinNm, double lambdaMaxNm) {
@@ -70,6 +72,7 @@ public final class HatFilteredSpectrum {
                 }
             }
         }
+        this.rangeMax = rangeMaxima(table, positions);
     }
 
     /** S ybar at whole nanometres, linear in between: the normaliser's integrand, without the mirror's factor. */
@@ -190,6 +193,83 @@ public final class HatFilteredSpectrum {
             throw new IllegalArgumentException("hat spacings are 1, 2, 4, 8 or 16 nm, got " + spacingNm);
         }
         return level;
+    }
+
+    /**
+     * The largest weight per nanometre of any channel at any level over the band's nodes: a node's weight is at most
+     * its spacing times this, so that a lobe's weighted sum over a passage is bounded before its weights are read.
+     */
+    public double maxDensity() {
+        return maxDensity(lambdaMinNm, lambdaMaxNm);
+    }
+
+    /**
+     * As {@link #maxDensity()} for the nodes of a passage [fromNm, toNm]: every node a passage takes lies within it,
+     * or is the first at or beyond lambda_max (one hat more), and below 1 nm interpolates the next nanometre. One
+     * range-maximum query (the largest of two overlapping power-of-two windows).
+     */
+    public double maxDensity(double fromNm, double toNm) {
+        int a = Math.max(0, Math.min(positions - 1, (int) Math.floor(fromNm - lambdaMinNm) - 1));
+        int b = Math.max(a, Math.min(positions - 1, (int) Math.ceil(toNm - lambdaMinNm) + WIDEST_HAT_NM + 1));
+        int k = 31 - Integer.numberOfLeadingZeros(b - a + 1);
+        return Math.max(rangeMax[k][a], rangeMax[k][b - (1 << k) + 1]);
+    }
+
+    /**
+     * A bound on the sum of any set of one spacing's node weights in any channel: the hats of a spacing sum to one on
+     * the band, so a whole grid's weights sum to the density's integral, and a passage's nodes are part of a grid.
+     * The largest channel's integral (1 nm trapezoids of the table) with 2 % to spare for spacings below 1 nm, whose
+     * trapezoids on the interpolated density differ from it by less.
+     */
+    public double bandWeight() {
+        double max = 0;
+        for (int c = 0; c < 3; c++) {
+            double sum = 0;
+            for (int p = 0; p < positions; p++) {
+                sum += table[0][p][c];
+            }
+            max = Math.max(max, sum);
+        }
+        return 1.02 * max;
+    }
+
+    /** The levels of {@link #rangeMaxRgba}: windows of 1, 2, 4, ... positions up to the whole table. */
+    public int rangeMaxLevels() {
+        return rangeMax.length;
+    }
+
+    /**
+     * The range maxima for the GPU: RGBA32F texels, level-major ({@link #positions} per level), the largest weight of
+     * any channel and hat level over positions p .. p + 2^level - 1 in R.
+     */
+    public float[] rangeMaxRgba() {
+        float[] out = new float[4 * rangeMax.length * positions];
+        for (int level = 0; level < rangeMax.length; level++) {
+            for (int p = 0; p < positions; p++) {
+                out[4 * (level * positions + p)] = (float) rangeMax[level][p];
+            }
+        }
+        return out;
+    }
+
+    /** rangeMax[k][p]: the largest entry of any channel and level at positions p .. p + 2^k - 1 (clipped). */
+    private static double[][] rangeMaxima(double[][][] table, int positions) {
+        int levels = 32 - Integer.numberOfLeadingZeros(positions);
+        double[][] max = new double[levels][positions];
+        for (int p = 0; p < positions; p++) {
+            for (double[][] level : table) {
+                for (double v : level[p]) {
+                    max[0][p] = Math.max(max[0][p], v);
+                }
+            }
+        }
+        for (int k = 1; k < levels; k++) {
+            int half = 1 << (k - 1);
+            for (int p = 0; p < positions; p++) {
+                max[k][p] = Math.max(max[k - 1][p], p + half < positions ? max[k - 1][p + half] : 0);
+            }
+        }
+        return max;
     }
 
     /** Table entries per level (every nanometre from lambda_min to lambda_max + 16 nm). */

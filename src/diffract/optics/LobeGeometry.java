@@ -52,6 +52,54 @@ final class LobeGeometry {
             (int) Math.ceil(2 * yHi)};
     }
 
+    /**
+     * The wavelengths (nm) at which some lobe centred in the box [cx0, cx1] x [cy0, cy1] (per um) comes within reach of
+     * (u, v), clipped to the band: an interval that holds {@link #lambdaIntervalNm} of every centre in the box (the
+     * axes' conditions meet for each centre, so their intersection is wider than the union it bounds); null when
+     * empty. Widened by a relative 1e-9, so that rounding never leaves out a centre on the box's edge.
+     */
+    static double[] boxLambdaIntervalNm(double cx0, double cx1, double cy0, double cy1, double u, double v,
+                                        double reachU, double reachV, double lambdaMinNm, double lambdaMaxNm) {
+        double[] x = axisBoxInterval(cx0, cx1, u, reachU);
+        double[] y = x == null ? null : axisBoxInterval(cy0, cy1, v, reachV);
+        if (y == null) {
+            return null;
+        }
+        double lo = Math.max(lambdaMinNm, Math.max(x[0], y[0]) * (1 - 1e-9));
+        double hi = Math.min(lambdaMaxNm, Math.min(x[1], y[1]) * (1 + 1e-9));
+        return lo < hi ? new double[] {lo, hi} : null;
+    }
+
+    /**
+     * The lambda (nm, &gt; 0) at which some centre c in [c0, c1] has |lambda_um c - u| &lt;= reach: lambda c ranges over
+     * [lambda c0, lambda c1], which meets [u - reach, u + reach] where lambda c0 &lt;= u + reach and lambda c1 &gt;=
+     * u - reach; null when no lambda does.
+     */
+    private static double[] axisBoxInterval(double c0, double c1, double u, double reach) {
+        double lo = 0;
+        double hi = Double.POSITIVE_INFINITY;
+        double upper = u + reach;
+        if (c0 > 0) {
+            hi = upper / c0 * 1e3;
+        } else if (c0 < 0) {
+            lo = upper < 0 ? upper / c0 * 1e3 : 0;
+        } else if (upper < 0) {
+            return null;
+        }
+        double lower = u - reach;
+        if (c1 > 0) {
+            lo = Math.max(lo, lower / c1 * 1e3);
+        } else if (c1 < 0) {
+            if (lower > 0) {
+                return null;
+            }
+            hi = Math.min(hi, lower / c1 * 1e3);
+        } else if (lower > 0) {
+            return null;
+        }
+        return lo <= hi ? new double[] {lo, hi} : null;
+    }
+
     /** The lambda (nm) with |lambda_um c - u| &lt;= reach: all of them, none (null) or an interval. */
     private static double[] axisInterval(double c, double u, double reach) {
         if (c == 0) {

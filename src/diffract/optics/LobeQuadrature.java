@@ -22,8 +22,10 @@ import diffract.colour.HatFilteredSpectrum;
  * @param lightNodes     Gauss-Hermite nodes along the part of a light's covariance that a BRDF-map pixel's box
  *                       cannot average analytically (lights off the axes of the patch), 1..8
  * @param cutoff         a lobe is skipped, before its weight is read, when it can add at most this much to a pixel's
- *                       tristimulus values (D65 white = 1): its weight table's bound over the lobe's phases times the
- *                       footprint's largest average of a lobe; in [0, 1e-2], 0 keeps every lobe
+ *                       tristimulus values (D65 white = 1, before the gain factor): its weight table's bound over the
+ *                       lobe's phases times the spectral weights' bound over its wavelengths times a bound on its
+ *                       footprint average summed over its nodes (docs/filtering.md, "The march and the cutoff");
+ *                       in [0, 1e-2], 0 keeps every lobe
  * @param weightTolerance the interpolation error of the tabulated lobe weights W_m(k w) ({@link LobeWeightTable}),
  *                       relative to a texel's largest weight, in [0, 1e-2]; 0 sums the coefficients at every
  *                       evaluation instead (CPU only: the shader reads the table)

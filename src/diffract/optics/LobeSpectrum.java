@@ -36,6 +36,8 @@ public final class LobeSpectrum {
 
     private final GaussianLobes lobes;
     private final HatFilteredSpectrum spectral;
+    /** {@link HatFilteredSpectrum#bandWeight}: what a lobe of peak average 1 adds at most over any passage. */
+    private final double bandWeight;
     private final LobeQuadrature quadrature;
     private final double extentXUm;
     private final double extentYUm;
@@ -45,6 +47,8 @@ public final class LobeSpectrum {
     private final boolean fastErf;
     /** The tabulated weights of whole-texel lobes, or null (pairs, or a weight tolerance of 0). */
     private final LobeWeightTable table;
+    /** Whether the march skips blocks of texels by their bound ({@link #marchBlocks}); off only to test it. */
+    private boolean blockMarch = true;
     /** The texels' sums where lobes are at least as wide as a cell ({@link LobeSumTable#applies}), or null. */
     private final LobeSumTable sums;
 
@@ -62,6 +66,7 @@ public final class LobeSpectrum {
         this.lobes = new GaussianLobes(coefficients, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm),
                 window.averaged() ? GaussianLobes.WHOLE_TEXELS : quadrature.pairThreshold());
         this.spectral = new HatFilteredSpectrum(lambdaMinNm, lambdaMaxNm, spectral.normalisation());
+        this.bandWeight = this.spectral.bandWeight();
         this.quadrature = quadrature;
         this.sigmaFPerUm = window.sigmaFrequencyPerUm();
         this.lambdaMinNm = lambdaMinNm;
@@ -96,21 +101,103 @@ public final class LobeSpectrum {
 
     /**
      * Whether the lobe of whole texel (twiceCx, twiceCy) / 2, over wavelengths [fromNm, toNm] at w, can add at least
-     * the cutoff to the pixel: its table bound over those phases times the footprint's peak average of a lobe.
+     * the cutoff to the pixel at (u, v): its table bound over those phases times the largest spectral weight per
+     * nanometre of its nodes ({@link HatFilteredSpectrum#maxDensity(double, double)}) times a bound on the lobe's
+     * footprint average summed over its nodes ({@link #passageMass}), or, where less, its peak average times the
+     * band's weight ({@link HatFilteredSpectrum#bandWeight}).
      */
-    private boolean reaches(int twiceCx, int twiceCy, double w, double fromNm, double toNm, Shape shape) {
+    private boolean reaches(int twiceCx, int twiceCy, double u, double v, double w, double fromNm, double toNm,
+                            Shape shape) {
         if (table == null || quadrature.cutoff() == 0) {
             return true;
         }
         if (!TexelCoefficients.inBand(twiceCx / 2, twiceCy / 2, table.rows(), table.cols())) {
             return false;
         }
-        // a disc's directions move w by at most sin R about its centre's
+        return bound(twiceCx, twiceCy, u, v, w, fromNm, toNm, shape) >= quadrature.cutoff();
+    }
+
+    /** The bound {@link #reaches} compares with the cutoff, of a texel in the table's band. */
+    private double bound(int twiceCx, int twiceCy, double u, double v, double w, double fromNm, double toNm,
+                         Shape shape) {
+        return table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2, phaseLo(w, toNm, shape),
+                phaseHi(w, fromNm, shape)) * Math.min(shape.peak * bandWeight, spectral.maxDensity(fromNm, toNm)
+                * passageMass(0.5 * twiceCx / extentXUm, 0.5 * twiceCy / extentYUm, u, v, fromNm, toNm, shape));
+    }
+
+    /** The smallest |k w| of a passage ending at toNm: a disc's directions move w by at most sin R about its centre's. */
+    private static double phaseLo(double w, double toNm, Shape shape) {
         double spread = shape.disc == null ? 0 : shape.disc.semiAxisE();
-        double k = 2 * Math.PI * 1e3;
-        double bound = table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2,
-                k * Math.max(0, Math.abs(w) - spread) / toNm, k * (Math.abs(w) + spread) / fromNm);
-        return bound * shape.peak >= quadrature.cutoff();
+        return 2 * Math.PI * 1e3 * Math.max(0, Math.abs(w) - spread) / toNm;
+    }
+
+    /** The largest |k w| of a passage starting at fromNm. */
+    private static double phaseHi(double w, double fromNm, Shape shape) {
+        double spread = shape.disc == null ? 0 : shape.disc.semiAxisE();
+        return 2 * Math.PI * 1e3 * (Math.abs(w) + spread) / fromNm;
+    }
+
+    /**
+     * {@link #passageMass} of every lobe centred in the box [cx0, cx1] x [cy0, cy1] over [fromNm, toNm]: the line form
+     * with the box's nearest centre to the origin (the smallest |c|), the smallest distance of the lines through the
+     * origin and its corners from (u, v) (0 where they pass on both sides; the extreme lines through a box pass its
+     * corners) less the footprint box's half-diagonal.
+     */
+    private double blockPassageMass(double cx0, double cx1, double cy0, double cy1, double u, double v,
+                                    double fromNm, double toNm, Shape shape) {
+        double c = Math.hypot(Math.max(cx0, Math.min(0, cx1)), Math.max(cy0, Math.min(0, cy1)));
+        double[] xs = {cx0, cx1, cx1, cx0};
+        double[] ys = {cy0, cy0, cy1, cy1};
+        double across = Double.POSITIVE_INFINITY;
+        boolean below = false;
+        boolean above = false;
+        for (int corner = 0; corner < 4; corner++) {
+            double cross = u * ys[corner] - v * xs[corner];
+            below |= cross <= 0;
+            above |= cross >= 0;
+            across = Math.min(across, Math.abs(cross) / Math.max(Math.hypot(xs[corner], ys[corner]), 1e-300));
+        }
+        across = below && above ? 0 : Math.max(0, across - Math.hypot(shape.hx, shape.hy));
+        return lineMass(c, across, fromNm, toNm, shape);
+    }
+
+    /**
+     * A bound on sum_j h_j a(lambda_j), the footprint average a of a lobe of peak 1 centred at lambda c (c per um)
+     * summed over its nodes (spacing h, nm) in [fromNm, toNm], for a unimodal a: at most the integral plus one node
+     * times the largest value. Two bounds, the smaller taken:
+     * <ul>
+     *   <li>the largest average held over the passage and one node more, peak (to - from + h_max);</li>
+     *   <li>without a disc and for c != 0: the lobe (variance at most S = (lambda_to sigma_f)^2 / 2 plus the
+     *       footprint Gaussian's largest eigenvalue, peak at most 1) moves along the line lambda c through the
+     *       origin, which passes at distance d = |u c_y - v c_x| / |c| from the footprint's centre, d - h_n from its
+     *       box (h_n the box's half-width across the line). Its integral along the line is at most sqrt(2 pi S)
+     *       e, e = exp(-(d - h_n)^2 / (2 S)), per |c| um of wavelength; its largest value is at most min(peak, e);
+     *       and the node spacing is at most sqrt(2 S) / (|c| nodesPerSigma) (the passage's width on its faster axis),
+     *       1 nm or the widest step.</li>
+     * </ul>
+     */
+    private double passageMass(double cx, double cy, double u, double v, double fromNm, double toNm, Shape shape) {
+        double c = Math.hypot(cx, cy);
+        double across = c > 0 ? Math.max(0, (Math.abs(u * cy - v * cx) - shape.hx * Math.abs(cy)
+                - shape.hy * Math.abs(cx)) / c) : 0;
+        return lineMass(c, across, fromNm, toNm, shape);
+    }
+
+    /**
+     * The bound of {@link #passageMass} for lobes moving at least at speed c (per um) whose lines pass at least
+     * {@code across} from the footprint's box: the line form, or the length form where less (always under a disc, or
+     * for a lobe at rest).
+     */
+    private double lineMass(double c, double across, double fromNm, double toNm, Shape shape) {
+        double widestStep = Math.max(1, quadrature.maxStepNm());
+        double mass = shape.peak * (toNm - fromNm + widestStep);
+        if (shape.disc != null || c == 0) {
+            return mass;
+        }
+        double s = 0.5 * square(toNm * 1e-3 * sigmaFPerUm) + shape.gaussianMax;
+        double e = Math.exp(-across * across / (2 * s));
+        double step = Math.max(1, Math.min(1e3 * Math.sqrt(2 * s) / (c * quadrature.nodesPerSigma()), widestStep));
+        return Math.min(mass, 1e3 * Math.sqrt(2 * Math.PI * s) * e / c + Math.min(shape.peak, e) * step);
     }
 
     /** Over the float32 Taylor terms, the plain series to {@code highestOrder}: what the shader reads. */
@@ -154,6 +241,8 @@ public final class LobeSpectrum {
         final double reachV;
         /** The largest average over the footprint a lobe of peak 1 can have (at the longest wavelength). */
         final double peak;
+        /** The footprint Gaussian's largest eigenvalue (the whole Gaussian, the rank-one part with a box included). */
+        final double gaussianMax;
 
         /** The disc light the footprint averages over, or null (a point or Gaussian light, in the Gaussian). */
         final DiscFootprint disc;
@@ -173,6 +262,7 @@ public final class LobeSpectrum {
             hx = footprint.halfWidthU();
             hy = footprint.halfWidthV();
             Covariance2 g = footprint.gaussian();
+            gaussianMax = 0.5 * (g.xx() + g.yy()) + Math.hypot(0.5 * (g.xx() - g.yy()), g.xy());
             if (disc != null) {
                 gaussian = g;
                 shiftU = new double[] {0};
@@ -286,6 +376,22 @@ public final class LobeSpectrum {
         double[] yRange = range(v, shape.reachV, extentYUm, shortest, longest);
         boolean majorIsX = (xRange[1] - xRange[0]) >= (yRange[1] - yRange[0]);
         double[] major = majorIsX ? xRange : yRange;
+        if (step == 2 && table != null && blockMarch) {
+            marchBlocks(u, v, w, shape, majorIsX, major, node, total);
+            return total;
+        }
+        marchTexels(u, v, shape, step, majorIsX, major, (tx, ty) -> addLobe(tx, ty, u, v, w, shape, node, total));
+        return total;
+    }
+
+    /** A lobe centre the march reaches, as doubled coordinates. */
+    private interface Visit {
+        void at(int tx, int ty);
+    }
+
+    /** The march over lattice points (step 2: whole texels; 1: pairs' midpoints too) near the segment s(lambda). */
+    private void marchTexels(double u, double v, Shape shape, int step, boolean majorIsX, double[] major,
+                             Visit visit) {
         for (int tMajor = first(major[0], step); tMajor <= Math.ceil(2 * major[1]); tMajor += step) {
             double[] along = majorIsX
                     ? LobeGeometry.lambdaIntervalNm(0.5 * tMajor / extentXUm, 0, u, 0, shape.reachU, 1, lambdaMinNm,
@@ -298,23 +404,137 @@ public final class LobeSpectrum {
             double[] minor = majorIsX ? range(v, shape.reachV, extentYUm, along[0] * 1e-3, along[1] * 1e-3)
                     : range(u, shape.reachU, extentXUm, along[0] * 1e-3, along[1] * 1e-3);
             for (int tMinor = first(minor[0], step); tMinor <= Math.ceil(2 * minor[1]); tMinor += step) {
-                int tx = majorIsX ? tMajor : tMinor;
-                int ty = majorIsX ? tMinor : tMajor;
-                double cx = 0.5 * tx / extentXUm;
-                double cy = 0.5 * ty / extentYUm;
-                double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, shape.reachU, shape.reachV,
-                        lambdaMinNm, lambdaMaxNm);
-                if (interval == null || !reaches(tx, ty, w, interval[0], interval[1], shape)) {
-                    continue;
-                }
-                Weight lobe = weightOf(tx, ty);
-                if (lobe == null) {
-                    continue;
-                }
-                integrate(lobe, cx, cy, u, v, w, shape, interval[0], interval[1], node, total);
+                visit.at(majorIsX ? tMajor : tMinor, majorIsX ? tMinor : tMajor);
             }
         }
-        return total;
+    }
+
+    /**
+     * Every whole texel's lobe within reach of (u, v) under a footprint (no disc), without the cutoff: what it adds
+     * (its largest channel, integrated as {@link #xyz} integrates it) and the bound the cutoff compares
+     * ({@link #reaches}), {added, bound} per lobe. For the tests of the bound.
+     */
+    java.util.List<double[]> lobeBounds(double u, double v, double w, Footprint footprint) {
+        if (table == null) {
+            throw new IllegalStateException("the bounds are the weight table's");
+        }
+        Shape shape = new Shape(footprint, quadrature, 0.5 * square(lambdaMaxNm * 1e-3 * sigmaFPerUm));
+        double[] xRange = range(u, shape.reachU, extentXUm, lambdaMinNm * 1e-3, lambdaMaxNm * 1e-3);
+        double[] yRange = range(v, shape.reachV, extentYUm, lambdaMinNm * 1e-3, lambdaMaxNm * 1e-3);
+        boolean majorIsX = (xRange[1] - xRange[0]) >= (yRange[1] - yRange[0]);
+        java.util.List<double[]> out = new java.util.ArrayList<>();
+        double[] node = new double[3];
+        marchTexels(u, v, shape, 2, majorIsX, majorIsX ? xRange : yRange, (tx, ty) -> {
+            double cx = 0.5 * tx / extentXUm;
+            double cy = 0.5 * ty / extentYUm;
+            double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, shape.reachU, shape.reachV, lambdaMinNm,
+                    lambdaMaxNm);
+            Weight lobe = weightOf(tx, ty);
+            if (interval == null || lobe == null
+                    || !TexelCoefficients.inBand(tx / 2, ty / 2, table.rows(), table.cols())) {
+                return;
+            }
+            double[] added = new double[3];
+            integrate(lobe, cx, cy, u, v, w, shape, interval[0], interval[1], node, added);
+            out.add(new double[] {Math.max(added[0], Math.max(added[1], added[2])),
+                bound(tx, ty, u, v, w, interval[0], interval[1], shape)});
+        });
+        return out;
+    }
+
+    /** This spectrum, marching texel by texel: the sum {@link #marchBlocks} must equal. */
+    LobeSpectrum withoutBlocks() {
+        blockMarch = false;
+        return this;
+    }
+
+    /** Adds the lobe of doubled centre (tx, ty) where it reaches the footprint and the cutoff. */
+    private void addLobe(int tx, int ty, double u, double v, double w, Shape shape, double[] node, double[] total) {
+        double cx = 0.5 * tx / extentXUm;
+        double cy = 0.5 * ty / extentYUm;
+        double[] interval = LobeGeometry.lambdaIntervalNm(cx, cy, u, v, shape.reachU, shape.reachV, lambdaMinNm,
+                lambdaMaxNm);
+        if (interval == null || !reaches(tx, ty, u, v, w, interval[0], interval[1], shape)) {
+            return;
+        }
+        Weight lobe = weightOf(tx, ty);
+        if (lobe != null) {
+            integrate(lobe, cx, cy, u, v, w, shape, interval[0], interval[1], node, total);
+        }
+    }
+
+    /**
+     * The march over whole texels in blocks of the weight table ({@link LobeWeightTable#BLOCK}): along the major axis
+     * block by block, across it the blocks the footprint's segment can reach there; a block whose bound over the
+     * wavelengths any of its lobes comes within reach cannot reach the cutoff is skipped, and in the others every
+     * texel is tested as the plain march tests it. The same lobes as the plain march, in the shader's order.
+     */
+    private void marchBlocks(double u, double v, double w, Shape shape, boolean majorIsX, double[] major,
+                             double[] node, double[] total) {
+        int block = LobeWeightTable.BLOCK;
+        int majorHalf = majorIsX ? table.cols() / 2 : table.rows() / 2;
+        int minorHalf = majorIsX ? table.rows() / 2 : table.cols() / 2;
+        int majorCount = majorIsX ? table.cols() : table.rows();
+        int minorCount = majorIsX ? table.rows() : table.cols();
+        double majorExtent = majorIsX ? extentXUm : extentYUm;
+        double minorExtent = majorIsX ? extentYUm : extentXUm;
+        double majorUv = majorIsX ? u : v;
+        double minorUv = majorIsX ? v : u;
+        double majorReach = majorIsX ? shape.reachU : shape.reachV;
+        double minorReach = majorIsX ? shape.reachV : shape.reachU;
+        // the texels of the plain march, within the grid (a texel outside it has no weight)
+        int iFirst = Math.max(first(major[0], 2) / 2, -majorHalf);
+        int iLast = Math.min(Math.floorDiv((int) Math.ceil(2 * major[1]), 2), majorCount - 1 - majorHalf);
+        for (int bi = Math.floorDiv(iFirst + majorHalf, block); bi <= Math.floorDiv(iLast + majorHalf, block); bi++) {
+            int i0 = Math.max(iFirst, bi * block - majorHalf);
+            int i1 = Math.min(iLast, bi * block + block - 1 - majorHalf);
+            double[] along = LobeGeometry.boxLambdaIntervalNm(i0 / majorExtent, i1 / majorExtent, 0, 0, majorUv, 0,
+                    majorReach, 1, lambdaMinNm, lambdaMaxNm);
+            if (along == null) {
+                continue;
+            }
+            double[] minor = range(minorUv, minorReach, minorExtent, along[0] * 1e-3, along[1] * 1e-3);
+            int kFirst = Math.max(first(minor[0], 2) / 2, -minorHalf);
+            int kLast = Math.min(Math.floorDiv((int) Math.ceil(2 * minor[1]), 2), minorCount - 1 - minorHalf);
+            for (int bk = Math.floorDiv(kFirst + minorHalf, block); bk <= Math.floorDiv(kLast + minorHalf, block);
+                 bk++) {
+                int k0 = Math.max(kFirst, bk * block - minorHalf);
+                int k1 = Math.min(kLast, bk * block + block - 1 - minorHalf);
+                double[] at = majorIsX
+                        ? LobeGeometry.boxLambdaIntervalNm(i0 / majorExtent, i1 / majorExtent, k0 / minorExtent,
+                        k1 / minorExtent, u, v, shape.reachU, shape.reachV, lambdaMinNm, lambdaMaxNm)
+                        : LobeGeometry.boxLambdaIntervalNm(k0 / minorExtent, k1 / minorExtent, i0 / majorExtent,
+                        i1 / majorExtent, u, v, shape.reachU, shape.reachV, lambdaMinNm, lambdaMaxNm);
+                if (at == null) {
+                    continue;
+                }
+                // at least each texel's reaches(): their passages lie within the block's
+                double bound = majorIsX ? table.blockBound(bi, bk, phaseLo(w, at[1], shape), phaseHi(w, at[0], shape))
+                        : table.blockBound(bk, bi, phaseLo(w, at[1], shape), phaseHi(w, at[0], shape));
+                double mass = majorIsX
+                        ? blockPassageMass(i0 / majorExtent, i1 / majorExtent, k0 / minorExtent, k1 / minorExtent, u, v,
+                        at[0], at[1], shape)
+                        : blockPassageMass(k0 / minorExtent, k1 / minorExtent, i0 / majorExtent, i1 / majorExtent, u, v,
+                        at[0], at[1], shape);
+                if (bound * Math.min(shape.peak * bandWeight, spectral.maxDensity(at[0], at[1]) * mass)
+                        < quadrature.cutoff()) {
+                    continue;
+                }
+                for (int i = i0; i <= i1; i++) {
+                    double[] alongI = LobeGeometry.boxLambdaIntervalNm(i / majorExtent, i / majorExtent, 0, 0,
+                            majorUv, 0, majorReach, 1, lambdaMinNm, lambdaMaxNm);
+                    if (alongI == null) {
+                        continue;
+                    }
+                    double[] minorI = range(minorUv, minorReach, minorExtent, alongI[0] * 1e-3, alongI[1] * 1e-3);
+                    int m0 = Math.max(k0, first(minorI[0], 2) / 2);
+                    int m1 = Math.min(k1, Math.floorDiv((int) Math.ceil(2 * minorI[1]), 2));
+                    for (int m = m0; m <= m1; m++) {
+                        addLobe(majorIsX ? 2 * i : 2 * m, majorIsX ? 2 * m : 2 * i, u, v, w, shape, node, total);
+                    }
+                }
+            }
+        }
     }
 
     /**

@@ -15,7 +15,10 @@ package diffract.optics;
  *
  * <p><b>Bounds.</b> For each of {@link #BINS} equal bins of p the table also holds the largest value its interpolant
  * takes there (endpoints and the cubic's interior extrema, exactly), so the lobes method can skip a texel whose lobe
- * cannot reach a given size before reading its weight ({@link LobeQuadrature#cutoff}).
+ * cannot reach a given size before reading its weight ({@link LobeQuadrature#cutoff}). Blocks of {@link #BLOCK} x
+ * {@link #BLOCK} texels hold the largest of their texels' bounds per bin, so that a march over the texels skips a block
+ * none of whose lobes can reach the cutoff with one test instead of one per texel: a wide scan's halo is mostly such
+ * blocks.
  *
  * <p>Values are rounded to float32 once, here; the CPU ({@link #weight}) and the shader interpolate the same numbers.
  */
@@ -24,6 +27,8 @@ public final class LobeWeightTable {
     public static final int BINS = 8;
     /** The most samples a table may hold (the GPU keeps them as layers of a texture array, 2048 at least). */
     public static final int MAX_SAMPLES = 2048 - BINS / 2;
+    /** Texels per side of a block of bounds. */
+    public static final int BLOCK = 8;
 
     private final int rows;
     private final int cols;
@@ -36,6 +41,10 @@ public final class LobeWeightTable {
     private final float[][] layers;
     /** Per texel, BINS bounds. */
     private final float[] bounds;
+    private final int blockRows;
+    private final int blockCols;
+    /** Per block (row-major), BINS bounds: the largest of its texels'. */
+    private final float[] blockBounds;
 
     /** The table of the thesis' series over the float32 terms, orders 0..highestOrder (what the shader reads). */
     public static LobeWeightTable ofTerms(TaylorTerms terms, int highestOrder, double lambdaMinNm, double tolerance) {
@@ -52,7 +61,8 @@ public final class LobeWeightTable {
      * the constructor chooses them, and its bounds, as float32 pairs), for the estimates made before the work.
      */
     public static long bytes(int rows, int cols, double maxAbsHeightUm, double lambdaMinNm, double tolerance) {
-        return 8L * rows * cols * (samples(maxAbsHeightUm, lambdaMinNm, tolerance) + BINS / 2);
+        return 8L * rows * cols * (samples(maxAbsHeightUm, lambdaMinNm, tolerance) + BINS / 2)
+                + 4L * BINS * blocks(rows) * blocks(cols);
     }
 
     /** K, the samples of the phase a table of a patch of this max|h| takes (as the constructor chooses them). */
@@ -124,6 +134,23 @@ public final class LobeWeightTable {
                 }
             }
         }
+        this.blockRows = blocks(rows);
+        this.blockCols = blocks(cols);
+        this.blockBounds = new float[BINS * blockRows * blockCols];
+        for (int row = 0; row < rows; row++) {
+            for (int col = 0; col < cols; col++) {
+                int block = BINS * ((row / BLOCK) * blockCols + col / BLOCK);
+                int texel = BINS * (row * cols + col);
+                for (int b = 0; b < BINS; b++) {
+                    blockBounds[block + b] = Math.max(blockBounds[block + b], bounds[texel + b]);
+                }
+            }
+        }
+    }
+
+    /** Blocks along an axis of this many texels. */
+    static int blocks(int texels) {
+        return (texels + BLOCK - 1) / BLOCK;
     }
 
     private int bin(double p) {
@@ -192,6 +219,44 @@ public final class LobeWeightTable {
             max = Math.max(max, bounds[BINS * texel + b]);
         }
         return max;
+    }
+
+    /**
+     * The largest weight of any texel of block (blockCol, blockRow) (texels BLOCK blockCol.. and BLOCK blockRow.. of
+     * the grid) for p in [pLo, pHi]: at least {@link #bound} of each of them.
+     */
+    public double blockBound(int blockCol, int blockRow, double pLo, double pHi) {
+        int b0 = bin(pLo);
+        int b1 = bin(pHi);
+        int block = BINS * (blockRow * blockCols + blockCol);
+        double max = 0;
+        for (int b = b0; b <= b1; b++) {
+            max = Math.max(max, blockBounds[block + b]);
+        }
+        return max;
+    }
+
+    public int blockRows() {
+        return blockRows;
+    }
+
+    public int blockCols() {
+        return blockCols;
+    }
+
+    /** The GPU's RG layers of the block bounds: bins 2 j and 2 j + 1 of every block in layer j, blockCols x blockRows. */
+    public java.util.List<float[]> blockLayers() {
+        java.util.List<float[]> out = new java.util.ArrayList<>(BINS / 2);
+        int blocks = blockRows * blockCols;
+        for (int j = 0; j < BINS / 2; j++) {
+            float[] layer = new float[2 * blocks];
+            for (int block = 0; block < blocks; block++) {
+                layer[2 * block] = blockBounds[BINS * block + 2 * j];
+                layer[2 * block + 1] = blockBounds[BINS * block + 2 * j + 1];
+            }
+            out.add(layer);
+        }
+        return out;
     }
 
     public int rows() {

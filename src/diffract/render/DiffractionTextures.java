@@ -77,6 +77,8 @@ public final class DiffractionTextures {
     /** Bakes the lobes method's filtered table of these terms on request (null on the phase-centred path). */
     private java.util.function.Function<Reporter, BakedTable> lobesTableSource;
     private FloatTextureArray lobeWeights;
+    private FloatTextureArray lobeBlockBounds;
+    private FloatTexture1D lobeDensityMax;
     private LobeSumTable lobeSumTable;
     private FloatTextureArray lobeSums;
 
@@ -256,6 +258,24 @@ public final class DiffractionTextures {
         return lobeSpectralTable;
     }
 
+    /**
+     * The range maxima of {@link #lobeSpectralTable}'s weights per nanometre (HatFilteredSpectrum.rangeMaxRgba), for
+     * the lobes' cutoff.
+     */
+    public synchronized FloatTexture1D lobeDensityMax(SpectralSettings spectral) {
+        lobeSpectralTable(spectral);
+        if (lobeDensityMax == null) {
+            lobeDensityMax = new FloatTexture1D(lobeSpectrum.rangeMaxRgba());
+        }
+        return lobeDensityMax;
+    }
+
+    /** HatFilteredSpectrum.bandWeight of {@link #lobeSpectralTable}'s weights, for the lobes' cutoff. */
+    public synchronized double lobeBandWeight(SpectralSettings spectral) {
+        lobeSpectralTable(spectral);
+        return lobeSpectrum.bandWeight();
+    }
+
     /** Entries per level of {@link #lobeSpectralTable}. */
     public synchronized int lobeSpectralTablePositions(SpectralSettings spectral) {
         lobeSpectralTable(spectral);
@@ -274,6 +294,16 @@ public final class DiffractionTextures {
                     FloatTextureArray.Precision.FLOAT32);
         }
         return lobeWeights;
+    }
+
+    /** The block bounds of {@link #lobeWeights} ({@link LobeWeightTable#blockLayers}); one RG32F texture array. */
+    public synchronized FloatTextureArray lobeBlockBounds(BrdfSettings settings, LobeQuadrature quadrature) {
+        LobeWeightTable table = lobeWeightTable(settings, quadrature);
+        if (lobeBlockBounds == null) {
+            lobeBlockBounds = new FloatTextureArray(table.blockCols(), table.blockRows(), table.blockLayers(),
+                    FloatTextureArray.Precision.FLOAT32);
+        }
+        return lobeBlockBounds;
     }
 
     /**

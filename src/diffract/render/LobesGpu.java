@@ -21,10 +21,12 @@ import diffract.optics.Quantity;
  *   <caption>Uniforms</caption>
  *   <tr><th>uniform</th><th>from</th></tr>
  *   <tr><td>{@code lobeWeights}, {@code lobeWeightSamples}, {@code lobePhaseStepPerUm},
- *       {@code lobeMaxPhasePerUm}</td><td>the weight table over the phase (LobeWeightTable)</td></tr>
+ *       {@code lobeMaxPhasePerUm}, {@code lobeBlockBounds}</td><td>the weight table over the phase and its blocks'
+ *       bounds (LobeWeightTable)</td></tr>
  *   <tr><td>{@code lobeSumTable}, {@code lobeSums}, {@code lobeSumCells}, {@code lobeSumCellTexels},
  *       {@code lobeSumNodesPerBox}</td><td>the texel sums, where they apply (LobeSumTable)</td></tr>
- *   <tr><td>{@code lobeSpectralTable}, {@code lobeTablePositions}</td><td>the hat-filtered spectral weights</td></tr>
+ *   <tr><td>{@code lobeSpectralTable}, {@code lobeTablePositions}, {@code lobeDensityMax},
+ *       {@code lobeBandWeight}</td><td>the hat-filtered spectral weights and their bounds</td></tr>
  *   <tr><td>{@code lobeCutoff}, {@code lobeNodesPerSigma}, {@code lobeMaxStepNm}, {@code lobeReachSigmas}</td>
  *       <td>the quadrature (LobeQuadrature)</td></tr>
  *   <tr><td>{@code pixelFootprintScale}, {@code lightSigmaRad}, {@code lightHalfAngleRad}, {@code lightDiagonal},
@@ -78,6 +80,7 @@ final class LobesGpu implements GpuMethod {
                 .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
                 .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
                 .setFloat("lobeCutoff", (float) q.cutoff());
+        m.setTexture("lobeBlockBounds", textures.lobeBlockBounds(settings, q));
         java.util.Optional<LobeSumTable> sums = textures.lobeSumTable(settings, q);
         m.setTexture("lobeSumTable", textures.lobeSums(settings, q))
                 .setInt("lobeSums", sums.isPresent() ? 1 : 0)
@@ -87,6 +90,8 @@ final class LobesGpu implements GpuMethod {
                 .setFloat("lobeSumNodesPerBox", (float) q.sumNodesPerBox());
         m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings.spectral()))
                 .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings.spectral()))
+                .setTexture("lobeDensityMax", textures.lobeDensityMax(settings.spectral()))
+                .setFloat("lobeBandWeight", (float) textures.lobeBandWeight(settings.spectral()))
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
                 .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
                 .setFloat("lobeReachSigmas", (float) q.reachSigmas())

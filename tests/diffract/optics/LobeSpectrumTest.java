@@ -23,6 +23,12 @@ class LobeSpectrumTest {
     static final LobeQuadrature FINE = new LobeQuadrature(1e-13, 8, 0.05, 9, 0, LobeQuadrature.DEFAULT.lightNodes(), 0,
             0);
 
+    /** The default quadrature without its cutoff: every lobe within reach. */
+    static final LobeQuadrature RULE = new LobeQuadrature(LobeQuadrature.DEFAULT.pairThreshold(),
+            LobeQuadrature.DEFAULT.nodesPerSigma(), LobeQuadrature.DEFAULT.maxStepNm(), LobeQuadrature.DEFAULT.reachSigmas(),
+            LobeQuadrature.DEFAULT.weightStepNm(), LobeQuadrature.DEFAULT.lightNodes(), 0,
+            LobeQuadrature.DEFAULT.weightTolerance());
+
     /**
      * One lobe alone (a patch whose only texel is m = (3, 1), with the exact coefficient of a real texel), for window
      * widths sigma_f = 0.05, 0.3, 1 and 3 texels along x (0.7 of that along y): its wavelength integral at a point
@@ -109,7 +115,8 @@ class LobeSpectrumTest {
      * 0.01 nm over the same float32 terms (a window wide enough to hold every texel that matters), at 65 um and at
      * 10 um coherence. The two differ by their spectral densities (D65 times each CMF interpolated as a product
      * between whole nanometres here, separately there: up to 3e-4 where |P|^2 changes within a nanometre) and by the
- * default rule's error (1e-2 allowed).
+ * default rule's error (1e-2 allowed; without the cutoff, which LobeCutoffTest bounds: these directions between the
+     * orders are dimmer than the lobes it skips).
      */
     @Test
     void withoutFootprintItIsFlssIntegratedExactly() {
@@ -122,7 +129,7 @@ class LobeSpectrumTest {
             DiffractionBrdf flss = new DiffractionBrdf(new TaylorGaussianSpectrum(terms, 30, radius, window),
                     WavelengthSampling.uniform(380, 780, 0.01), 1.5);
             LobeSpectrum fine = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), FINE);
-            LobeSpectrum standard = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), LobeQuadrature.DEFAULT);
+            LobeSpectrum standard = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), RULE);
             Direction wi = Direction.fromSphericalDeg(30, 90);
             int lit = 0;
             for (int k = 0; k < 24; k++) {

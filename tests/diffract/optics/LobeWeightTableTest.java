@@ -12,7 +12,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The lobes' weight table against what the estimates before the work say it takes: the same number of samples of
- * the phase and the same bytes, for a low and a tall patch; and its lookups against the texel's coefficients summed
+ * the phase and the same bytes (its blocks' bounds included), for a low and a tall patch; and its lookups against the texel's coefficients summed
  * directly, within the stated tolerance of the texel's largest weight.
  */
 class LobeWeightTableTest {
@@ -26,6 +26,9 @@ class LobeWeightTableTest {
         List<float[]> layers = table.layers();
         long bytes = 0;
         for (float[] layer : layers) {
+            bytes += 4L * layer.length;
+        }
+        for (float[] layer : table.blockLayers()) {
             bytes += 4L * layer.length;
         }
         assertEquals(bytes, LobeWeightTable.bytes(terms.rows(), terms.cols(), terms.maxAbsHeightUm(), 380, tolerance));

@@ -124,21 +124,26 @@ class GpuLobesTest {
      * every pixel it does not flag equals the CPU's, every flagged one is darker than the CPU's or as bright (lobes
      * left out only take light away). The 52 um scan on a 32 x 32 map (a pixel's box 6 texels wide, its segment 60
      * long) equals the CPU everywhere (lit mean CIEDE2000 0.05, p99 0.5, as GpuCpuAgreementTest); on an 8 x 8 map,
-     * four times as wide a pixel, llvmpipe, which ends a SIMD group's loops after 65535 iterations, flags some pixels.
+     * four times as wide a pixel and without the cutoff (every lobe within reach summed), llvmpipe, which ends a SIMD
+     * group's loops after 65535 iterations, flags some pixels.
      */
     @Test
     void pixelsWhoseLoopsWereEndedEarlyAreFlaggedAndTheOthersEqualTheCpu() {
         GlTestSupport.assumeOffscreenGl();
         HeightField scan = scan52();
         TaylorTerms terms = TaylorTermComputer.compute(scan, 20, Reporter.SILENT);
-        // the march over lobes, which this scan's texel sums (texelSumsOfAScanWiderThanTheWindowEqualTheCpu) avoid
-        BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
-                .pixelFilter(PixelFilter.BOX).lobes(LobeQuadrature.DEFAULT.withSumNodesPerBox(0)));
+        // the march over lobes, which this scan's texel sums (texelSumsOfAScanWiderThanTheWindowEqualTheCpu) avoid; on
+        // the 8 x 8 map over every lobe, without the cutoff that skips most of this scan's halo
+        LobeQuadrature q = LobeQuadrature.DEFAULT.withSumNodesPerBox(0);
+        LobeQuadrature everyLobe = new LobeQuadrature(q.pairThreshold(), q.nodesPerSigma(), q.maxStepNm(),
+                q.reachSigmas(), q.weightStepNm(), q.lightNodes(), 0, q.weightTolerance(), 0);
         Direction wi = Direction.fromSphericalDeg(30, 90);
-        DiffractionBrdf brdf = DiffractionBrdf.create(settings, scan, terms);
-        try (GpuBrdfMap map = new GpuBrdfMap(terms, settings)) {
-            boolean llvmpipe = map.info().renderer().contains("llvmpipe");
-            for (int size : new int[] {32, 8}) {
+        for (int size : new int[] {32, 8}) {
+            BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
+                    .pixelFilter(PixelFilter.BOX).lobes(size == 8 ? everyLobe : q));
+            DiffractionBrdf brdf = DiffractionBrdf.create(settings, scan, terms);
+            try (GpuBrdfMap map = new GpuBrdfMap(terms, settings)) {
+                boolean llvmpipe = map.info().renderer().contains("llvmpipe");
                 float[] cpu = BrdfMap.xyz(brdf, wi, size, Reporter.SILENT);
                 float[] gpu = map.xyz(wi, size);
                 float[] unflagged = gpu.clone();

@@ -17,12 +17,13 @@ import org.junit.jupiter.api.Test;
 
 /**
  * What the lobes method's cutoff buys on the 52 um scan, a measurement run on request (docs/scans.md,
- * {@code -Ddiffract.measure=scan-cutoff}): GL time per 64 x 64 map at 65 um, theta_i = 30, a point light, of the
- * lobes method at its default cutoff (1e-6 of white) and at cutoffs up to 1e-3, against FLSS in the thesis'
- * configuration on the same context (medians of alternating rounds). No assertion: speed is reported, never tested.
+ * {@code -Ddiffract.measure=scan-cutoff}): GL time per 256 x 256 map (whose pixels are marched lobe by lobe) at 65 um,
+ * theta_i = 30, a point light, of the lobes method at its default cutoff (1e-6 of white) and at 3, 10 and 100 times
+ * it, against FLSS in the thesis' configuration on the same context (medians of alternating rounds). No
+ * assertion: speed is reported, never tested.
  */
 class ScanLobesSpeedMeasurement {
-    static final int SIZE = 64;
+    static final int SIZE = 256;
     static final int FRAMES = 10;
 
     @Test
@@ -37,8 +38,8 @@ class ScanLobesSpeedMeasurement {
                 .pixelFilter(PixelFilter.POINT));
         LobeQuadrature d = LobeQuadrature.DEFAULT;
         try (GpuBrdfMap f = new GpuBrdfMap(terms, flss)) {
-            for (double cutoff : new double[] {d.cutoff(), 1e-5, 1e-4, 1e-3}) {
-                // the march over lobes, whose cost the cutoff sets (the texel sums, the default here, have none)
+            for (double cutoff : new double[] {d.cutoff(), 3 * d.cutoff(), 10 * d.cutoff(), 100 * d.cutoff()}) {
+                // the march over lobes, whose cost the cutoff sets
                 LobeQuadrature q = new LobeQuadrature(d.pairThreshold(), d.nodesPerSigma(), d.maxStepNm(),
                         d.reachSigmas(), d.weightStepNm(), d.lightNodes(), cutoff, d.weightTolerance(), 0);
                 BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
