@@ -119,6 +119,11 @@ float blockBound(ivec2 block, float pLo, float pHi) {
     return bound;
 }
 
+// LobeWeightTable.orderLayer: per block its texels from the largest bound over all bins down, (offset in the block,
+// that bound) in slot j at texel (LOBE_BLOCK bc + j % LOBE_BLOCK, LOBE_BLOCK br + j / LOBE_BLOCK) of layer 0; (-1, 0)
+// past a block's last texel.
+uniform sampler2DArray lobeBlockOrder;
+
 // LobeGeometry.axisBoxInterval: the lambda (nm) at which some centre in [c0, c1] (per um) comes within reach of u on
 // one axis; empty when .x > .y.
 vec2 axisBoxInterval(float c0, float c1, float u, float reach) {
@@ -243,8 +248,11 @@ bool lobeReaches(ivec2 m, vec2 uv, float w, float fromNm, float toNm, float peak
         return true;
     }
     vec2 phases = passagePhases(w, fromNm, toNm);
-    return weightBound(m, phases.x, phases.y) * min(peak * lobeBandWeight, passageDensity(fromNm, toNm)
-            * passageMass(vec2(m) / patchExtentUm, uv, fromNm, toNm, peak)) >= lobeCutoff;
+    float bound = weightBound(m, phases.x, phases.y);
+    // the band's weight first: it needs no further fetch
+    return bound * peak * lobeBandWeight >= lobeCutoff
+            && bound * passageDensity(fromNm, toNm) * passageMass(vec2(m) / patchExtentUm, uv, fromNm, toNm, peak)
+            >= lobeCutoff;
 }
 
 // LobeSpectrum.Shape.peak: the largest average over the footprint a lobe of peak 1 can have (sigma_uv the widest).
@@ -459,7 +467,8 @@ vec3 spectralXyz(vec3 uvw) {
     ivec2 grid = textureSize(lobeWeights, 0).xy;
     ivec2 gridHalf = grid / 2;
     // LobeSpectrum.marchBlocks: blocks of LOBE_BLOCK texels along the major axis, the blocks across it that the
-    // segment reaches there, each block tested against its bound, and the texels of a block that passes one by one
+    // segment reaches there, each block tested against its bound, and the texels of a block that passes from the
+    // largest bound down
     int iFirst = max(int(floor(majorRange.x)), -gridHalf[major]);
     int iLast = min(min(int(ceil(majorRange.y)), iFirst + MAX_MARCH), grid[major] - 1 - gridHalf[major]);
     int biLast = (iLast + gridHalf[major]) / LOBE_BLOCK;
@@ -472,10 +481,10 @@ vec3 spectralXyz(vec3 uvw) {
     int bkLast = -1;
     int k0 = 0;       // its minor texels
     int k1 = -1;
-    bool inBlock = false;
-    int i = 0;        // the major texel in the block
-    int m = 0;        // the minor texel, up to mLast
-    int mLast = -1;
+    bool inBlock = false; // a block that passed its test, whose texels are being tested
+    ivec2 blockOrigin = ivec2(0); // its first texel in the table
+    float blockScale = 0.0; // its bound per unit of a texel's weight bound
+    int slot = 0;     // the next of its texels in their order
     vec3 xyz = vec3(0.0);
     bool marched = false; // the march passed its last block
     ivec2 batch[LOBE_BATCH];
@@ -485,28 +494,23 @@ vec3 spectralXyz(vec3 uvw) {
         int count = 0;
         bool stalled = true; // the steps ran out before either
         for (int step = 0; step < MAX_MARCH_STEPS; step++) {
-            if (m <= mLast || inBlock && i < i1) {
-                if (m > mLast) {
-                    // the next major texel of the block: its minor texels within the block
-                    i++;
-                    vec2 along = lambdaInterval(float(i) / patchExtentUm[major] * vec2(major == 0, major == 1),
-                            uv * vec2(major == 0, major == 1), mix(vec2(1e30), reach, vec2(major == 0, major == 1)));
-                    vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor], along.x * 1e-3,
-                            along.y * 1e-3);
-                    bool any = along.x < along.y;
-                    m = any ? max(k0, int(floor(minorRange.x))) : 0;
-                    mLast = any ? min(k1, int(ceil(minorRange.y))) : -1;
-                }
-                // the row's texels, while the batch has room: a step takes a row, so that the fragments of a SIMD
-                // group test their candidates together rather than in turn with their blocks' tests
-                for (int n = 0; n < LOBE_BLOCK && m <= mLast && count < LOBE_BATCH; n++) {
-                    ivec2 candidate = major == 0 ? ivec2(i, m) : ivec2(m, i);
-                    m++;
-                    vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
-                    if (at.x < at.y && lobeReaches(candidate, uv, uvw.z, at.x, at.y, peak)) {
-                        batch[count] = candidate;
-                        batchInterval[count] = at;
-                        count++;
+            if (inBlock) {
+                // the block's texels from the largest bound down (LobeWeightTable.orderedTexel) while the batch has
+                // room, until none left can reach the cutoff; those out of reach have no passage
+                for (int n = 0; n < LOBE_BLOCK && inBlock && count < LOBE_BATCH; n++) {
+                    vec2 entry = texelFetch(lobeBlockOrder, ivec3(blockOrigin + ivec2(slot % LOBE_BLOCK,
+                            slot / LOBE_BLOCK), 0), 0).rg;
+                    slot++;
+                    inBlock = slot < LOBE_BLOCK * LOBE_BLOCK && entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff;
+                    if (entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff) {
+                        int offset = int(entry.x);
+                        ivec2 candidate = blockOrigin + ivec2(offset % LOBE_BLOCK, offset / LOBE_BLOCK) - gridHalf;
+                        vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
+                        if (at.x < at.y && lobeReaches(candidate, uv, uvw.z, at.x, at.y, peak)) {
+                            batch[count] = candidate;
+                            batchInterval[count] = at;
+                            count++;
+                        }
                     }
                 }
                 if (count == LOBE_BATCH) {
@@ -524,12 +528,14 @@ vec3 spectralXyz(vec3 uvw) {
                 ivec2 block = major == 0 ? ivec2(bi, bk) : ivec2(bk, bi);
                 // at least each texel's lobeReaches: their passages lie within the block's
                 vec2 phases = passagePhases(uvw.z, at.x, at.y);
-                inBlock = at.x < at.y && (lobeCutoff == 0.0 || blockBound(block, phases.x, phases.y)
-                        * min(peak * lobeBandWeight, passageDensity(at.x, at.y)
-                        * blockPassageMass(lo, hi, uv, at.x, at.y, peak)) >= lobeCutoff);
-                i = i0 - 1;
-                m = 0; // no row: texel indices run negative, so emptiness is m > mLast, not a sentinel
-                mLast = -1;
+                float bound = at.x < at.y ? blockBound(block, phases.x, phases.y) : 0.0;
+                inBlock = at.x < at.y && bound * peak * lobeBandWeight >= lobeCutoff;
+                // the band's weight first: it needs no further fetch
+                blockScale = inBlock ? min(peak * lobeBandWeight, passageDensity(at.x, at.y)
+                        * blockPassageMass(lo, hi, uv, at.x, at.y, peak)) : 0.0;
+                inBlock = inBlock && bound * blockScale >= lobeCutoff;
+                blockOrigin = block * LOBE_BLOCK;
+                slot = 0;
             } else {
                 // the next major block: the minor blocks its lobes can reach
                 bi++;
@@ -552,8 +558,6 @@ vec3 spectralXyz(vec3 uvw) {
                 bk = any ? (kFirst + gridHalf[minor]) / LOBE_BLOCK - 1 : 0;
                 bkLast = any ? (kLast + gridHalf[minor]) / LOBE_BLOCK : -1;
                 inBlock = false;
-                m = 0;
-                mLast = -1;
             }
         }
         int integrated = 0;

@@ -466,8 +466,9 @@ public final class LobeSpectrum {
     /**
      * The march over whole texels in blocks of the weight table ({@link LobeWeightTable#BLOCK}): along the major axis
      * block by block, across it the blocks the footprint's segment can reach there; a block whose bound over the
-     * wavelengths any of its lobes comes within reach cannot reach the cutoff is skipped, and in the others every
-     * texel is tested as the plain march tests it. The same lobes as the plain march, in the shader's order.
+     * wavelengths any of its lobes comes within reach cannot reach the cutoff is skipped, and in the others its texels
+     * are tested as the plain march tests them, from the largest bound down ({@link LobeWeightTable#orderedTexel})
+     * until the bound left cannot reach the cutoff. The same lobes as the plain march, in the shader's order.
      */
     private void marchBlocks(double u, double v, double w, Shape shape, boolean majorIsX, double[] major,
                              double[] node, double[] total) {
@@ -516,22 +517,21 @@ public final class LobeSpectrum {
                         at[0], at[1], shape)
                         : blockPassageMass(k0 / minorExtent, k1 / minorExtent, i0 / majorExtent, i1 / majorExtent, u, v,
                         at[0], at[1], shape);
-                if (bound * Math.min(shape.peak * bandWeight, spectral.maxDensity(at[0], at[1]) * mass)
-                        < quadrature.cutoff()) {
+                double scale = Math.min(shape.peak * bandWeight, spectral.maxDensity(at[0], at[1]) * mass);
+                if (bound * scale < quadrature.cutoff()) {
                     continue;
                 }
-                for (int i = i0; i <= i1; i++) {
-                    double[] alongI = LobeGeometry.boxLambdaIntervalNm(i / majorExtent, i / majorExtent, 0, 0,
-                            majorUv, 0, majorReach, 1, lambdaMinNm, lambdaMaxNm);
-                    if (alongI == null) {
-                        continue;
+                // its texels from the largest bound down, until none left can reach the cutoff; those out of reach
+                // have no passage (addLobe)
+                int bc = majorIsX ? bi : bk;
+                int br = majorIsX ? bk : bi;
+                for (int slot = 0; slot < block * block; slot++) {
+                    int offset = table.orderedTexel(bc, br, slot);
+                    if (offset < 0 || table.orderedBound(bc, br, slot) * scale < quadrature.cutoff()) {
+                        break;
                     }
-                    double[] minorI = range(minorUv, minorReach, minorExtent, alongI[0] * 1e-3, alongI[1] * 1e-3);
-                    int m0 = Math.max(k0, first(minorI[0], 2) / 2);
-                    int m1 = Math.min(k1, Math.floorDiv((int) Math.ceil(2 * minorI[1]), 2));
-                    for (int m = m0; m <= m1; m++) {
-                        addLobe(majorIsX ? 2 * i : 2 * m, majorIsX ? 2 * m : 2 * i, u, v, w, shape, node, total);
-                    }
+                    addLobe(2 * (bc * block + offset % block - table.cols() / 2),
+                            2 * (br * block + offset / block - table.rows() / 2), u, v, w, shape, node, total);
                 }
             }
         }

@@ -45,6 +45,12 @@ public final class LobeWeightTable {
     private final int blockCols;
     /** Per block (row-major), BINS bounds: the largest of its texels'. */
     private final float[] blockBounds;
+    /**
+     * Per block, its texels from the largest bound over all bins down ({@link #orderedTexel}): (offset in the block,
+     * that bound) in slot j of block (bc, br) at texel (BLOCK bc + j % BLOCK, BLOCK br + j / BLOCK) of a grid of
+     * blockCols BLOCK x blockRows BLOCK; (-1, 0) past a block's last texel.
+     */
+    private final float[] order;
 
     /** The table of the thesis' series over the float32 terms, orders 0..highestOrder (what the shader reads). */
     public static LobeWeightTable ofTerms(TaylorTerms terms, int highestOrder, double lambdaMinNm, double tolerance) {
@@ -62,7 +68,7 @@ public final class LobeWeightTable {
      */
     public static long bytes(int rows, int cols, double maxAbsHeightUm, double lambdaMinNm, double tolerance) {
         return 8L * rows * cols * (samples(maxAbsHeightUm, lambdaMinNm, tolerance) + BINS / 2)
-                + 4L * BINS * blocks(rows) * blocks(cols);
+                + 4L * BINS * blocks(rows) * blocks(cols) + 8L * blocks(rows) * blocks(cols) * BLOCK * BLOCK;
     }
 
     /** K, the samples of the phase a table of a patch of this max|h| takes (as the constructor chooses them). */
@@ -143,6 +149,28 @@ public final class LobeWeightTable {
                 int texel = BINS * (row * cols + col);
                 for (int b = 0; b < BINS; b++) {
                     blockBounds[block + b] = Math.max(blockBounds[block + b], bounds[texel + b]);
+                }
+            }
+        }
+        this.order = new float[2 * blockRows * BLOCK * blockCols * BLOCK];
+        for (int br = 0; br < blockRows; br++) {
+            for (int bc = 0; bc < blockCols; bc++) {
+                java.util.List<float[]> texels = new java.util.ArrayList<>();
+                for (int r = br * BLOCK; r < Math.min(rows, (br + 1) * BLOCK); r++) {
+                    for (int c = bc * BLOCK; c < Math.min(cols, (bc + 1) * BLOCK); c++) {
+                        float largest = 0;
+                        for (int b = 0; b < BINS; b++) {
+                            largest = Math.max(largest, bounds[BINS * (r * cols + c) + b]);
+                        }
+                        texels.add(new float[] {(r - br * BLOCK) * BLOCK + (c - bc * BLOCK), largest});
+                    }
+                }
+                // brightest first; ties by offset, so that the order is the table's, not the sort's
+                texels.sort((a, b) -> a[1] != b[1] ? Float.compare(b[1], a[1]) : Float.compare(a[0], b[0]));
+                for (int slot = 0; slot < BLOCK * BLOCK; slot++) {
+                    int at = 2 * ((br * BLOCK + slot / BLOCK) * blockCols * BLOCK + bc * BLOCK + slot % BLOCK);
+                    order[at] = slot < texels.size() ? texels.get(slot)[0] : -1;
+                    order[at + 1] = slot < texels.size() ? texels.get(slot)[1] : 0;
                 }
             }
         }
@@ -234,6 +262,28 @@ public final class LobeWeightTable {
             max = Math.max(max, blockBounds[block + b]);
         }
         return max;
+    }
+
+    /**
+     * The texel in slot j (0..BLOCK^2 - 1) of block (blockCol, blockRow)'s order, from the largest bound over all bins
+     * down: its offset row * BLOCK + col within the block, or -1 past the block's last texel.
+     */
+    public int orderedTexel(int blockCol, int blockRow, int slot) {
+        return (int) order[orderIndex(blockCol, blockRow, slot)];
+    }
+
+    /** The bound over all bins of {@link #orderedTexel}: no later slot of the block has a larger one. */
+    public double orderedBound(int blockCol, int blockRow, int slot) {
+        return order[orderIndex(blockCol, blockRow, slot) + 1];
+    }
+
+    private int orderIndex(int blockCol, int blockRow, int slot) {
+        return 2 * ((blockRow * BLOCK + slot / BLOCK) * blockCols * BLOCK + blockCol * BLOCK + slot % BLOCK);
+    }
+
+    /** The GPU's RG layer of the blocks' orders, blockCols BLOCK x blockRows BLOCK texels ({@link #orderedTexel}). */
+    public float[] orderLayer() {
+        return order;
     }
 
     public int blockRows() {

@@ -78,6 +78,7 @@ public final class DiffractionTextures {
     private java.util.function.Function<Reporter, BakedTable> lobesTableSource;
     private FloatTextureArray lobeWeights;
     private FloatTextureArray lobeBlockBounds;
+    private FloatTextureArray lobeBlockOrder;
     private FloatTexture1D lobeDensityMax;
     private LobeSumTable lobeSumTable;
     private FloatTextureArray lobeSums;
@@ -256,6 +257,17 @@ public final class DiffractionTextures {
             lobeSpectralTable = new FloatTexture1D(lobeSpectrum.rgba());
         }
         return lobeSpectralTable;
+    }
+
+    /** The blocks' orders of {@link #lobeWeights}' texels ({@link LobeWeightTable#orderLayer}); one RG32F layer. */
+    public synchronized FloatTextureArray lobeBlockOrder(BrdfSettings settings, LobeQuadrature quadrature) {
+        LobeWeightTable table = lobeWeightTable(settings, quadrature);
+        if (lobeBlockOrder == null) {
+            lobeBlockOrder = new FloatTextureArray(table.blockCols() * LobeWeightTable.BLOCK,
+                    table.blockRows() * LobeWeightTable.BLOCK, java.util.List.of(table.orderLayer()),
+                    FloatTextureArray.Precision.FLOAT32);
+        }
+        return lobeBlockOrder;
     }
 
     /**

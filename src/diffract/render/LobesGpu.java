@@ -21,8 +21,8 @@ import diffract.optics.Quantity;
  *   <caption>Uniforms</caption>
  *   <tr><th>uniform</th><th>from</th></tr>
  *   <tr><td>{@code lobeWeights}, {@code lobeWeightSamples}, {@code lobePhaseStepPerUm},
- *       {@code lobeMaxPhasePerUm}, {@code lobeBlockBounds}</td><td>the weight table over the phase and its blocks'
- *       bounds (LobeWeightTable)</td></tr>
+ *       {@code lobeMaxPhasePerUm}, {@code lobeBlockBounds}, {@code lobeBlockOrder}</td><td>the weight table over the
+ *       phase, its blocks' bounds and their texels' order (LobeWeightTable)</td></tr>
  *   <tr><td>{@code lobeSumTable}, {@code lobeSums}, {@code lobeSumCells}, {@code lobeSumCellTexels},
  *       {@code lobeSumNodesPerBox}</td><td>the texel sums, where they apply (LobeSumTable)</td></tr>
  *   <tr><td>{@code lobeSpectralTable}, {@code lobeTablePositions}, {@code lobeDensityMax},
@@ -80,7 +80,8 @@ final class LobesGpu implements GpuMethod {
                 .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
                 .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
                 .setFloat("lobeCutoff", (float) q.cutoff());
-        m.setTexture("lobeBlockBounds", textures.lobeBlockBounds(settings, q));
+        m.setTexture("lobeBlockBounds", textures.lobeBlockBounds(settings, q))
+                .setTexture("lobeBlockOrder", textures.lobeBlockOrder(settings, q));
         java.util.Optional<LobeSumTable> sums = textures.lobeSumTable(settings, q);
         m.setTexture("lobeSumTable", textures.lobeSums(settings, q))
                 .setInt("lobeSums", sums.isPresent() ? 1 : 0)

@@ -20,7 +20,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * pixel of a BRDF map.
  */
 class LobeCutoffTest {
-    /** A point light and a light of 2 degrees' Gaussian (sigma D / 4) over a pixel, as (u, v) covariances. */
+    /**
+     * A point light, a light of 2 degrees' Gaussian (sigma D / 4) and a tilted elliptical Gaussian over a pixel, as
+     * (u, v) covariances.
+     */
     private static final Covariance2[] LIGHTS = {Covariance2.ZERO,
         Covariance2.isotropic(Math.pow(Math.toRadians(0.5), 2)), new Covariance2(4e-5, 2e-5, 6e-5)};
     private static HeightField scan;
@@ -57,8 +60,8 @@ class LobeCutoffTest {
 
     /**
      * Every lobe within reach of a pixel adds at most its bound, in every channel: over a 24 x 24 map's pixels (boxes
-     * of 1/12 in u and v) under a point light and under a light of 2 degrees' Gaussian, a hundred thousand lobes and
-     * more. The bound is not idly wide: the lobes closest to theirs add a tenth of it and more, the median lobe a
+     * of 1/12 in u and v) under a point light, a light of 2 degrees' Gaussian and a tilted elliptical one, over a
+     * hundred thousand lobes each. The bound is not idly wide: the lobes closest to theirs add a tenth of it and more, the median lobe a
      * ten-thousandth (most lobes within reach pass far from the footprint).
      */
     @Test
@@ -190,7 +193,36 @@ class LobeCutoffTest {
         }
     }
 
-    /** A block's bound in every bin is the largest of its texels' (so a block skipped holds no texel that reaches). */
+    /**
+     * A block's order lists each of its texels in the grid once, from the largest bound over all bins down, each with
+     * that bound, and then the end marker.
+     */
+    private static void assertOrdered(LobeWeightTable table, int bc, int br) {
+        int block = LobeWeightTable.BLOCK;
+        int texels = (Math.min(table.rows(), (br + 1) * block) - br * block)
+                * (Math.min(table.cols(), (bc + 1) * block) - bc * block);
+        java.util.Set<Integer> seen = new java.util.HashSet<>();
+        double previous = Double.POSITIVE_INFINITY;
+        for (int slot = 0; slot < block * block; slot++) {
+            int offset = table.orderedTexel(bc, br, slot);
+            if (slot >= texels) {
+                assertEquals(-1, offset, "past the block's last texel");
+                continue;
+            }
+            int col = bc * block + offset % block;
+            int row = br * block + offset / block;
+            assertTrue(seen.add(offset) && col < table.cols() && row < table.rows(), "slot " + slot);
+            double largest = table.bound(col, row, 0, table.maxPhasePerUm());
+            assertEquals(largest, table.orderedBound(bc, br, slot), 1e-7 * largest);
+            assertTrue(largest <= previous, "descending at slot " + slot);
+            previous = largest;
+        }
+    }
+
+    /**
+     * A block's bound in every bin is the largest of its texels' (so a block skipped holds no texel that reaches), and
+     * its texels' order is from the largest bound down.
+     */
     @Test
     void aBlocksBoundIsItsTexelsLargest() {
         LobeWeightTable table = LobeWeightTable.ofTerms(terms, 20, 380, 1e-4);
@@ -207,6 +239,9 @@ class LobeCutoffTest {
                         }
                     }
                     assertEquals(largest, table.blockBound(bc, br, lo, hi), 0, "block " + bc + ", " + br);
+                    if (bin == 0) {
+                        assertOrdered(table, bc, br);
+                    }
                 }
             }
         }

@@ -12,7 +12,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The lobes' weight table against what the estimates before the work say it takes: the same number of samples of
- * the phase and the same bytes (its blocks' bounds included), for a low and a tall patch; and its lookups against the texel's coefficients summed
+ * the phase and the same bytes (its blocks' bounds and orders included), for a low and a tall patch; and its lookups against the texel's coefficients summed
  * directly, within the stated tolerance of the texel's largest weight.
  */
 class LobeWeightTableTest {
@@ -31,6 +31,7 @@ class LobeWeightTableTest {
         for (float[] layer : table.blockLayers()) {
             bytes += 4L * layer.length;
         }
+        bytes += 4L * table.orderLayer().length;
         assertEquals(bytes, LobeWeightTable.bytes(terms.rows(), terms.cols(), terms.maxAbsHeightUm(), 380, tolerance));
 
         TexelCoefficients coefficients = new TaylorTexels(terms, 40);
