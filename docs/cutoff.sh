@@ -13,7 +13,7 @@ all() { ./diffract compare --exposure 30 "$1" "$2" | sed -n 's/^CIEDE2000 mean \
     echo "# The lobes method's cutoff"
     echo
     echo "Made by \`bash docs/cutoff.sh\`: \`brdfmap --variant lobes --engine gpu\` at theta_i = 30 under a point light,"
-    echo "the default cutoff (1e-6 of white) and 1e-5 each against no cutoff (\`--lobe-quadrature cutoff=0\`), CIEDE2000"
+    echo "the default cutoff (3e-6 of white) and 1e-5 each against no cutoff (\`--lobe-quadrature cutoff=0\`), CIEDE2000"
     echo "mean / p95 / max at an exposure of 30, over the whole map and over its lit pixels (Y above 1 % of white in"
     echo "either map); $(nproc) CPU cores, $(./diffract brdfmap --synthetic blazed --variant lobes --engine gpu --size 8 \
         -o "$out/gpu.png" 2>&1 | sed -n 's/^GPU: //p')."

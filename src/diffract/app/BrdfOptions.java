@@ -158,7 +158,7 @@ final class BrdfOptions {
                 description = "The lobes method's accuracy knobs (docs/filtering.md): nodesPerSigma (default 0.67), "
                         + "maxStepNm (1, 2, 4, 8 or 16; default 8), reachSigmas (2..10; default 4), weightStepNm "
                         + "(default 8), pairThreshold (default 1e-4), lightNodes (1..8; default 3), cutoff (a lobe's largest "
-                        + "contribution, of white, below which it is skipped; default 1e-6), weightTolerance (of the "
+                        + "contribution, of white, below which it is skipped; default 3e-6), weightTolerance (of the "
                         + "tabulated lobe weights; default 1e-4), sumNodesPerBox (wavelength nodes per lobe's passage through "
                         + "the pixel, where scans wider than the window are summed over texels; 0 marches lobe by lobe; "
                         + "default 2).")

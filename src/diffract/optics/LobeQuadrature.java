@@ -38,7 +38,7 @@ import diffract.colour.HatFilteredSpectrum;
 public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
                              double weightStepNm, int lightNodes, double cutoff, double weightTolerance,
                              double sumNodesPerBox) {
-    public static final double DEFAULT_CUTOFF = 1e-6;
+    public static final double DEFAULT_CUTOFF = 3e-6;
     public static final double DEFAULT_WEIGHT_TOLERANCE = 1e-4;
     public static final double DEFAULT_SUM_NODES_PER_BOX = 2;
     public static final LobeQuadrature DEFAULT = new LobeQuadrature(1e-4, 0.67, 8, 4.0, 8, 3);
