@@ -501,8 +501,9 @@ vec3 spectralXyz(vec3 uvw) {
                     vec2 entry = texelFetch(lobeBlockOrder, ivec3(blockOrigin + ivec2(slot % LOBE_BLOCK,
                             slot / LOBE_BLOCK), 0), 0).rg;
                     slot++;
-                    inBlock = slot < LOBE_BLOCK * LOBE_BLOCK && entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff;
-                    if (entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff) {
+                    bool reachable = entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff;
+                    inBlock = reachable && slot < LOBE_BLOCK * LOBE_BLOCK;
+                    if (reachable) {
                         int offset = int(entry.x);
                         ivec2 candidate = blockOrigin + ivec2(offset % LOBE_BLOCK, offset / LOBE_BLOCK) - gridHalf;
                         vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);

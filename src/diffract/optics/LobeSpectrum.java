@@ -370,11 +370,9 @@ public final class LobeSpectrum {
         double[] total = new double[3];
         double[] node = new double[3];
         int step = lobes.hasPairs() ? 1 : 2;
-        double shortest = lambdaMinNm * 1e-3;
-        double longest = lambdaMaxNm * 1e-3;
-        double[] xRange = range(u, shape.reachU, extentXUm, shortest, longest);
-        double[] yRange = range(v, shape.reachV, extentYUm, shortest, longest);
-        boolean majorIsX = (xRange[1] - xRange[0]) >= (yRange[1] - yRange[0]);
+        double[] xRange = range(u, shape.reachU, extentXUm, lambdaMinNm * 1e-3, lambdaMaxNm * 1e-3);
+        double[] yRange = range(v, shape.reachV, extentYUm, lambdaMinNm * 1e-3, lambdaMaxNm * 1e-3);
+        boolean majorIsX = majorIsX(xRange, yRange);
         double[] major = majorIsX ? xRange : yRange;
         if (step == 2 && table != null && blockMarch) {
             marchBlocks(u, v, w, shape, majorIsX, major, node, total);
@@ -382,6 +380,11 @@ public final class LobeSpectrum {
         }
         marchTexels(u, v, shape, step, majorIsX, major, (tx, ty) -> addLobe(tx, ty, u, v, w, shape, node, total));
         return total;
+    }
+
+    /** Whether the march runs along x: the longer of the footprint's texel ranges over the band. */
+    private static boolean majorIsX(double[] xRange, double[] yRange) {
+        return (xRange[1] - xRange[0]) >= (yRange[1] - yRange[0]);
     }
 
     /** A lobe centre the march reaches, as doubled coordinates. */
@@ -421,7 +424,7 @@ public final class LobeSpectrum {
         Shape shape = new Shape(footprint, quadrature, 0.5 * square(lambdaMaxNm * 1e-3 * sigmaFPerUm));
         double[] xRange = range(u, shape.reachU, extentXUm, lambdaMinNm * 1e-3, lambdaMaxNm * 1e-3);
         double[] yRange = range(v, shape.reachV, extentYUm, lambdaMinNm * 1e-3, lambdaMaxNm * 1e-3);
-        boolean majorIsX = (xRange[1] - xRange[0]) >= (yRange[1] - yRange[0]);
+        boolean majorIsX = majorIsX(xRange, yRange);
         java.util.List<double[]> out = new java.util.ArrayList<>();
         double[] node = new double[3];
         marchTexels(u, v, shape, 2, majorIsX, majorIsX ? xRange : yRange, (tx, ty) -> {
