@@ -19,6 +19,7 @@ import diffract.optics.Levelling;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.TermFormat;
 import diffract.optics.MapBand;
+import diffract.optics.Methods;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
 import diffract.util.OutputPaths;
@@ -280,15 +281,18 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
         // the thesis' settings except the wavelength range and the coherence length asked for
-        BrdfSettings base = BrdfSettings.thesis(Variant.FLSS).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
+        BrdfSettings base = BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
                 .coherenceLengthUm(coherenceLengthUm));
         Map<String, BenchPatch> patchMap = new LinkedHashMap<>();
         for (BenchPatch p : BenchPatch.named(patches)) {
             patchMap.put(p.name(), p);
         }
         List<Variant> variantList = variants == null ? SweepPlan.sweptVariants(quick) : variants;
-        if (variantList.contains(Variant.REFERENCE)) {
-            throw new UserInputException("the reference is what the bench measures against; sweep flss, nmm or pq");
+        for (Variant v : variantList) {
+            if (!v.runsOnGpu()) {
+                throw new UserInputException("the " + v.spec() + " is what the bench measures against; sweep "
+                        + Methods.listed(Variant::runsOnGpu, "or"));
+            }
         }
         List<BenchConfig> configs = SweepPlan.configs(new ArrayList<>(patchMap.keySet()), variantList, points(), base);
         return new Sweep(base, patchMap, configs);
@@ -482,7 +486,7 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
         }
         HeadlessGL.require();
         Files.createDirectories(outputDir);
-        BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
+        BrdfSettings lobes = BrdfSettings.thesis(Methods.Role.FILTERING.method()).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
                 .coherenceLengthUm(coherenceLengthUm));
         int bakedUv = bakedSamples == null ? FilteringTargets.DEFAULT_BAKED_UV_SAMPLES : bakedSamples.uv();
         int bakedW = bakedSamples == null ? 0 : bakedSamples.w();

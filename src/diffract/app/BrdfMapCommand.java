@@ -186,7 +186,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 : DiffractionPipeline.cached(named, settings.spectral().lambdaMinNm());
         CoherenceWindow window = settings.coherenceWindow();
         reporter.info(String.format(Locale.ROOT, "%s, %dx%d patch of %.3f x %.3f um, sigma_f = %.3f x %.3f texels",
-                settings.variant().label(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
+                settings.variant().spec(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
                 window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phi);
         if (tiles.tile != null) {
@@ -197,7 +197,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
         write(map, wi, settings, field.widthUm(), field.heightExtentUm(), reporter);
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, picture.size, picture.size,
-                settings.variant().label(), where == Engine.GPU ? ", gpu" : "",
+                settings.variant().spec(), where == Engine.GPU ? ", gpu" : "",
                 light.lambdaNm != null ? ", " + light.lambdaNm + " nm" : "", (System.nanoTime() - start) * 1e-9);
         return 0;
     }
@@ -310,7 +310,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             throw new UserInputException("the " + named.label() + " variant runs on the GPU only (--engine gpu); the "
                     + "CPU evaluates " + Methods.listed(Variant::runsOnCpu, "and"));
         }
-        if (named == Variant.BAKED && light.lambdaNm != null) {
+        if (named.drawsTable() && light.lambdaNm != null) {
             throw new UserInputException(GpuBrdfMap.BAKED_HAS_NO_MONOCHROMATIC + " (--lambda)");
         }
         if (engines.time && where != Engine.GPU) {
@@ -431,9 +431,12 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         return BrdfSettings.thesis(variant).with(b -> b.pixelFilter(PixelFilter.BOX));
     }
 
-    /** The variant asked for: the reference by default; with auto, FLSS stands in until the calibration chose. */
+    /**
+     * The variant asked for: the exact one by default; with auto, the thesis' method stands in until the calibration
+     * chose.
+     */
     Variant requested() {
-        return brdf.auto() ? Variant.FLSS : brdf.variantOr(Variant.REFERENCE);
+        return brdf.auto() ? Methods.Role.THESIS.method() : brdf.variantOr(Methods.Role.EXACT.method());
     }
 
     /** The thesis' settings with the options given; with auto, the configuration its calibration chose. */
@@ -443,7 +446,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             return settings;
         }
         // the calibration computes reference maps of this patch
-        MemoryCheck.brdfMap(field, settings.with(b -> b.variant(Variant.REFERENCE)), AutoCalibration.SIZE_PX, 0, null);
+        MemoryCheck.brdfMap(field, settings.with(b -> b.variant(Methods.Role.EXACT.method())), AutoCalibration.SIZE_PX,
+                0, null);
         AutoChoice choice = AutoVariant.choose(field, phiDeg, settings, brdf.maxDeltaE, reporter);
         System.out.println(choice.explanation());
         return AutoVariant.settings(choice, settings.taylor().expansion());
@@ -467,7 +471,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 double ms = light.lambdaNm != null ? map.medianMsPerFrameMonochromatic(wi, light.lambdaNm, picture.size, 2, 10)
                         : map.medianMsPerFrame(wi, picture.size, 2, 10);
                 System.out.printf(Locale.ROOT, "gpu %.1f ms/frame (%s, %dx%d, median of 10, %s, %s)%n", ms,
-                        settings.variant().label(), picture.size, picture.size, settings.gpu().termFormat().label(),
+                        settings.variant().spec(), picture.size, picture.size, settings.gpu().termFormat().label(),
                         map.info().renderer());
             }
             return values;

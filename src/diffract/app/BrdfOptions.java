@@ -30,8 +30,8 @@ final class BrdfOptions {
     @Option(names = "--variant", paramLabel = "V", converter = OptionTypes.VariantChoice.Converter.class,
             completionCandidates = OptionTypes.VariantChoice.Candidates.class,
             description = "${COMPLETION-CANDIDATES}: the exact CPU reference, the thesis' three shader "
-                    + "approximations, the baked table, the Gaussian lobes (pixel- and light-averaged, exact in "
-                    + "wavelength), or auto, the cheapest configuration whose measured error on this patch meets "
+                    + "approximations, the baked table (baked(of=lobes) or baked(of=flss) names the method it holds), "
+                    + "the Gaussian lobes (pixel- and light-averaged, exact in wavelength), or auto, the cheapest configuration whose measured error on this patch meets "
                     + "--max-delta-e (default: reference on brdfmap, lobes on view and render).")
     OptionTypes.VariantChoice variant;
 

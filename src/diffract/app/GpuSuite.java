@@ -10,6 +10,7 @@ import diffract.jrtr.GLInfo;
 import diffract.jrtr.OffscreenTarget;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.Methods;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.render.GpuBrdfMap;
@@ -51,6 +52,11 @@ import java.util.Map;
  * folder; the reference maps are kept in the disk cache ({@link DiskCache}).
  */
 final class GpuSuite {
+    /** The thesis' method: the suite's thesis row, and its converged maps under a point light (at 1 nm). */
+    private static final Variant THESIS = Methods.Role.THESIS.method();
+    /** The converged maps of the methods that filter the light. */
+    private static final Variant FILTERING = Methods.Role.FILTERING.method();
+
     static final int FULL_WIDTH = 1920;
     static final int FULL_HEIGHT = 1080;
     /** Software rasterisers get the suite at 1/8 of the full size in each direction. */
@@ -94,8 +100,11 @@ final class GpuSuite {
              boolean scenesOnly, Reporter reporter) {
         this.sceneFile = sceneFile;
         this.scenesOnly = scenesOnly;
-        if (variants.contains(Variant.REFERENCE)) {
-            throw new UserInputException("the reference is what the suite measures against; list GPU variants");
+        for (Variant v : variants) {
+            if (!v.runsOnGpu()) {
+                throw new UserInputException("the " + v.spec() + " runs on the CPU only: the suite measures the GPU"
+                        + " against it; list GPU variants");
+            }
         }
         this.variants = List.copyOf(variants);
         if (frames < 10) {
@@ -133,13 +142,13 @@ final class GpuSuite {
         for (Variant v : variants) {
             names.add(new String[] {"scene settings", v.label()});
         }
-        names.add(new String[] {"thesis", Variant.FLSS.label()});
+        names.add(new String[] {"thesis", THESIS.label()});
         return names;
     }
 
     /** Every variant the GPU draws. */
     static List<Variant> gpuVariants() {
-        return Arrays.stream(Variant.values()).filter(v -> v != Variant.REFERENCE).toList();
+        return Arrays.stream(Variant.values()).filter(Variant::runsOnGpu).toList();
     }
 
     /**
@@ -149,8 +158,8 @@ final class GpuSuite {
      */
     static BrdfSettings converged(BrdfSettings s) {
         int order = Math.max(REFERENCE_ORDER, s.taylor().highestOrder());
-        return s.variant().filtersLight() ? s.with(b -> b.variant(Variant.LOBES).highestOrder(order))
-                : s.with(b -> b.variant(Variant.FLSS).lambdaStepNm(1).highestOrder(order));
+        return s.variant().filtersLight() ? s.with(b -> b.variant(FILTERING).highestOrder(order))
+                : s.with(b -> b.variant(THESIS).lambdaStepNm(1).highestOrder(order));
     }
 
     private void writePng(String file, float[] rgb, int[] size) {
@@ -168,7 +177,7 @@ final class GpuSuite {
      */
     private static BrdfSettings settingsOf(String[] name, BrdfSettings scene) {
         if (name[0].equals("thesis")) {
-            return BrdfSettings.thesis(Variant.FLSS);
+            return BrdfSettings.thesis(THESIS);
         }
         Variant v = Variant.parse(name[1]);
         return v.filtersLight() ? scene.with(b -> b.variant(v))
@@ -215,8 +224,8 @@ final class GpuSuite {
             DeltaEStatistics error = DeltaEStatistics.of(Srgb.xyzOfDisplayRgb(reference), Srgb.xyzOfDisplayRgb(picture),
                     covered);
             rows.add(log(new Row("scene", name[0], settings, size[0], size[1], ms, size[0], error.mean(), error.p95(),
-                    error.pixels(), "gpu " + (settings.variant().filtersLight() ? "lobes" : "flss") + " N="
-                    + converged.taylor().highestOrder() + (settings.variant().filtersLight() ? "" : " 1 nm"))));
+                    error.pixels(), "gpu " + converged.variant().spec() + " N=" + converged.taylor().highestOrder()
+                    + (converged.variant().filtersLight() ? "" : " 1 nm"))));
         }
         if (base.stage().staged() && base.stage().glossyAlpha() == null && !rows.isEmpty()) {
             rows.add(log(glossyRow(base, rows.get(0).settings(), size)));

@@ -45,7 +45,10 @@ final class OptionTypes {
                 try {
                     return new VariantChoice(Variant.parse(text));
                 } catch (UserInputException e) {
-                    throw new TypeConversionException(e.getMessage() + " or auto");
+                    // an unknown name: the registry's list, with auto beside it
+                    String message = e.getMessage();
+                    throw new TypeConversionException(message.startsWith("unknown variant")
+                            ? message.replaceFirst(" or ([a-z0-9-]+)$", ", $1 or auto") : message);
                 }
             }
         }

@@ -142,7 +142,7 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
         System.out.printf(Locale.ROOT, "wrote %s (%s%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
                 frames == null ? "" : frames + " frames of ", image.width(), image.height(),
                 setup.mode() == DisplayMode.BRDF_MAP ? "BRDF map" : setup.shape().name(),
-                setup.settings().variant().label(), setup.settings().taylor().highestOrder(),
+                setup.settings().variant().spec(), setup.settings().taylor().highestOrder(),
                 setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
     }

@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
+import diffract.optics.Methods;
 import diffract.optics.Variant;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
@@ -59,7 +60,7 @@ final class ViewCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         // interactive: the baked table of the lobes method (one lookup per pixel, baked behind the preview)
-        options.defaultVariant(Variant.BAKED);
+        options.defaultVariant(Methods.Role.TABLE.method());
         options.validate();
         if (options.dumpedScene(WINDOW)) {
             return 0;

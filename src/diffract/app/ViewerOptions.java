@@ -14,6 +14,7 @@ import diffract.optics.ScanTiling;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.RadiometricGain;
+import diffract.optics.Methods;
 import diffract.optics.Variant;
 import diffract.render.DiffractionShaders;
 import diffract.scene.DisplayMode;
@@ -328,7 +329,7 @@ final class ViewerOptions {
     }
 
     /** The variant when none is given: {@link Variant#LOBES} unless the command says otherwise. */
-    private Variant defaultVariant = Variant.LOBES;
+    private Variant defaultVariant = Methods.Role.FILTERING.method();
 
     /** Sets the variant drawn when the options give none (before {@link #validate}). */
     void defaultVariant(Variant v) {

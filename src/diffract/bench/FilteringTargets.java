@@ -5,6 +5,7 @@ import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
+import diffract.optics.Methods;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.pipeline.DiffractionPipeline;
@@ -21,11 +22,12 @@ import java.util.Locale;
  * The filtering targets at the thesis' own coherence (docs/filtering.md): per patch and light size, a BRDF map at
  * theta_i = 30 degrees (light azimuth in the plane of the patch's period) whose pixels average their squares, from
  * <ul>
- *   <li>the filtered reference ({@link Variant#REFERENCE} with {@link PixelFilter#BOX} and the light's size, cached by
- *       {@link ReferenceMaps}): the yardstick;</li>
- *   <li>the lobes method on the GPU (the settings given, {@link Variant#LOBES});</li>
- *   <li>FLSS in the thesis' configuration (N = 30, 5 nm, 3 x 3 window), which point-samples pixel and light;</li>
- *   <li>the baked table of the lobes method ({@link Variant#BAKED}), where the patch allows it.</li>
+ *   <li>the filtered reference ({@link Methods.Role#EXACT} with {@link PixelFilter#BOX} and the light's size, cached
+ *       by {@link ReferenceMaps}): the yardstick;</li>
+ *   <li>the lobes method on the GPU (the settings given, {@link Methods.Role#FILTERING});</li>
+ *   <li>FLSS in the thesis' configuration (N = 30, 5 nm, 3 x 3 window, {@link Methods.Role#THESIS}), which
+ *       point-samples pixel and light;</li>
+ *   <li>the baked table ({@link Methods.Role#TABLE}), of the lobes method where the patch allows it.</li>
  * </ul>
  * Each error is CIEDE2000 (mean and 95th percentile) over the lit pixels at the reference's display exposure
  * ({@link BrdfMapDifference}). The lobes method and FLSS are timed on the same GL context in alternating rounds of
@@ -71,7 +73,7 @@ public final class FilteringTargets {
     public FilteringTargets(ReferenceMaps references, BrdfSettings lobes, int sizePx, int rounds, int framesPerRound,
                             int bakedSamples, int bakedWSamples, Reporter reporter) {
         this.references = references;
-        this.lobes = lobes.with(b -> b.variant(Variant.LOBES).pixelFilter(PixelFilter.BOX));
+        this.lobes = lobes.with(b -> b.variant(Methods.Role.FILTERING.method()).pixelFilter(PixelFilter.BOX));
         this.sizePx = sizePx;
         this.rounds = rounds;
         this.framesPerRound = framesPerRound;
@@ -82,7 +84,7 @@ public final class FilteringTargets {
 
     /** The thesis' configuration, point-sampled under a point light, at the same coherence and Fresnel model. */
     BrdfSettings flss() {
-        return BrdfSettings.thesis(Variant.FLSS).with(b -> b.coherenceLengthUm(lobes.illumination().coherenceLengthUm())
+        return BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b.coherenceLengthUm(lobes.illumination().coherenceLengthUm())
                 .fresnel(lobes.illumination().fresnel()).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
     }
 
@@ -102,7 +104,7 @@ public final class FilteringTargets {
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
         String bakedGrid = "-";
-        BrdfSettings baked = lobesHere.with(b -> b.variant(Variant.BAKED).bakedSamples(bakedSamples, bakedWSamples));
+        BrdfSettings baked = lobesHere.with(b -> b.variant(Methods.Role.TABLE.method()).bakedSamples(bakedSamples, bakedWSamples));
         try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
             // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
             bakeSeconds = map.bakedTable().bakeSeconds();

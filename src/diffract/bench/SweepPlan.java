@@ -1,6 +1,7 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.Quantity;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
@@ -14,36 +15,35 @@ import java.util.Set;
 
 /**
  * Which configurations the bench measures, table-driven: every GPU {@link Variant} (all but the CPU-only
- * reference) is swept over the same points, and {@link #IGNORED_AXES} says which axes a variant
+ * reference) is swept over the same points, and {@link Variant#unsweptSettings} says which axes a variant
  * ignores (their value stays the thesis' and duplicates are dropped). A new variant needs no line at all, or one
  * in that table.
  */
 public final class SweepPlan {
     /** The axes of a configuration. */
-    public enum Axis { TERMS, LAMBDA_STEP, WINDOW_RADIUS, TEXTURE_FORMAT, SIZE, LEAN }
+    public enum Axis {
+        TERMS(Quantity.HIGHEST_ORDER), LAMBDA_STEP(Quantity.LAMBDA_STEP), WINDOW_RADIUS(Quantity.WINDOW_RADIUS),
+        TEXTURE_FORMAT(Quantity.TERM_FORMAT), SIZE(null), LEAN(Quantity.TAYLOR_TOLERANCE);
 
+        /** The setting it sweeps (none for the map's size). */
+        private final Quantity quantity;
 
-    /**
-     * Variants left out of {@code --quick} and of auto's calibration: the baked table first bakes, 30 to 70 s per
-     * patch on llvmpipe (docs/baked.md), which alone would exceed the quick sweep's budget of a few minutes.
-     */
-    static final Set<Variant> NOT_IN_QUICK = Set.of(Variant.BAKED);
+        Axis(Quantity quantity) {
+            this.quantity = quantity;
+        }
+
+        /** Whether a sweep holds it at the thesis' value for {@code method} ({@link Variant#unsweptSettings}). */
+        boolean heldFor(Variant method) {
+            return quantity != null && method.unsweptSettings().contains(quantity);
+        }
+    }
+
 
     /**
      * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (docs/baked.md
      * measures 1e-4 as invisible in CIEDE2000 at 17-40 % less work), with the automatic window.
      */
     public static final double LEAN_TAYLOR_TOLERANCE = 1e-4;
-
-    /**
-     * Axes a variant does not use. NMM's wavelengths come from the patch (lambda = u L / m, 003 sec. 1.5.2); its
-     * lambda step only serves the fallback near the specular direction and stays at the thesis' 5 nm.
-     */
-    static final Map<Variant, Set<Axis>> IGNORED_AXES = Map.of(Variant.NMM, EnumSet.of(Axis.LAMBDA_STEP),
-            // the baked table tabulates FLSS at the thesis' point once per patch; its own grid is automatic
-            Variant.BAKED, EnumSet.of(Axis.TERMS, Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN),
-            // the lobes method integrates wavelength exactly, sums whole texels and reads a float32 weight table
-            Variant.LOBES, EnumSet.of(Axis.LAMBDA_STEP, Axis.WINDOW_RADIUS, Axis.TEXTURE_FORMAT, Axis.LEAN));
 
     /** The thesis' storage: float32 terms. */
     public static final TermFormat EXACT_FORMAT = TermFormat.RG32F;
@@ -87,11 +87,15 @@ public final class SweepPlan {
         return sweptVariants(false);
     }
 
-    /** The variants a sweep measures, in enum order; {@code quick} leaves out {@link #NOT_IN_QUICK}. */
+    /**
+     * The variants a sweep measures, in the registry's order. {@code quick} leaves out those that draw a table (and so
+     * left out of auto's calibration): a table first bakes, 30 to 70 s per patch on llvmpipe (docs/baked.md), which
+     * alone would exceed the quick sweep's budget of a few minutes.
+     */
     public static List<Variant> sweptVariants(boolean quick) {
         List<Variant> variants = new ArrayList<>();
         for (Variant v : Variant.values()) {
-            if (v.runsOnGpu() && !(quick && NOT_IN_QUICK.contains(v))) {
+            if (v.runsOnGpu() && !(quick && v.drawsTable())) {
                 variants.add(v);
             }
         }
@@ -158,13 +162,9 @@ public final class SweepPlan {
         return points;
     }
 
-    /**
-     * The Taylor expansion a swept variant sums: the thesis' series for the thesis' variants (what the sweep measures
-     * of them, the series' truncation included), the expansion the pipeline chooses for the lobes method (the
-     * phase-centred one where float32 cannot reach the series' accuracy, as on the tall patch), as scenes draw it.
-     */
+    /** The Taylor expansion a swept variant sums ({@link Variant#sweptExpansion}). */
     static TaylorExpansion expansionOf(Variant v) {
-        return v == Variant.LOBES ? TaylorExpansion.AUTO : TaylorExpansion.PLAIN;
+        return v.sweptExpansion();
     }
 
     /**
@@ -178,7 +178,12 @@ public final class SweepPlan {
         Map<String, BenchConfig> unique = new LinkedHashMap<>();
         for (String patch : patches) {
             for (Variant v : variants) {
-                Set<Axis> ignored = IGNORED_AXES.getOrDefault(v, EnumSet.noneOf(Axis.class));
+                Set<Axis> ignored = EnumSet.noneOf(Axis.class);
+                for (Axis axis : Axis.values()) {
+                    if (axis.heldFor(v)) {
+                        ignored.add(axis);
+                    }
+                }
                 Point thesis = thesis(0);
                 for (Point p : points) {
                     boolean lean = p.lean() && !ignored.contains(Axis.LEAN);

@@ -1,6 +1,7 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
+import diffract.optics.Methods;
 import diffract.optics.Variant;
 
 import java.util.ArrayList;
@@ -18,6 +19,9 @@ import java.util.function.Function;
  * exposures, lit pixels).
  */
 public final class Targets {
+    /** The thesis' method: its configuration is the baseline, and at 1 nm the yardstick of NMM's claim. */
+    private static final Variant THESIS = Methods.Role.THESIS.method();
+
     public static final double MAX_DELTA_E = 2.0;
     public static final double MIN_SPEED_UP = 10.0;
 
@@ -55,12 +59,12 @@ public final class Targets {
         for (String patch : results.stream().map(r -> r.config().patch()).distinct().toList()) {
             List<BenchResult> ofPatch = results.stream()
                     .filter(r -> r.config().patch().equals(patch) && r.config().sizePx() == sizePx).toList();
-            Optional<BenchResult> flssThesis = find(ofPatch, Variant.FLSS, 5);
+            Optional<BenchResult> flssThesis = find(ofPatch, THESIS, 5);
             if (flssThesis.isEmpty()) {
                 continue;
             }
             Optional<BenchResult> nmm = find(ofPatch, Variant.NMM, 5);
-            Optional<BenchResult> flss1nm = find(ofPatch, Variant.FLSS, 1);
+            Optional<BenchResult> flss1nm = find(ofPatch, THESIS, 1);
             MapError direct = null;
             if (nmm.isPresent() && flss1nm.isPresent() && maps.apply(nmm.get().config()) != null
                     && maps.apply(flss1nm.get().config()) != null) {
@@ -77,7 +81,7 @@ public final class Targets {
     public static boolean needsMaps(BenchConfig c) {
         Variant v = c.settings().variant();
         double step = c.settings().spectral().lambdaStepNm();
-        return (v == Variant.NMM && step == 5 || v == Variant.FLSS && step == 1) && isThesis(c);
+        return (v == Variant.NMM && step == 5 || v == THESIS && step == 1) && isThesis(c);
     }
 
     private static boolean isThesis(BenchConfig c) {

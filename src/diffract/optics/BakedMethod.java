@@ -1,26 +1,90 @@
 package diffract.optics;
 
+import java.util.Objects;
+import java.util.Optional;
+
 /**
  * A table XYZ(u, v, w) baked once per patch and settings and looked up trilinearly per fragment (after Dhillon and
- * Ghosh 2016, Toisoul and Ghosh 2017): of FLSS under a point light, of the lobes method where the illumination
- * filters. GPU only: on the CPU the method it tabulates is the one to ask.
+ * Ghosh 2016, Toisoul and Ghosh 2017): a method that takes another method as its parameter, the one whose spectrum
+ * the table holds ({@code baked(of=lobes)}, {@code baked(of=flss)}; any {@link Variant#bakeable} method). Plain
+ * {@code baked} chooses per scene: the lobes method where the illumination filters (a pixel box or a light) and the
+ * lobes shader takes the patch, else FLSS. GPU only: on the CPU the method it tabulates is the one to ask.
  *
  * <table>
  *   <caption>Capabilities</caption>
  *   <tr><th>label</th><td>baked</td></tr>
+ *   <tr><th>parameter</th><td>{@code of}: the tabulated method (flss or lobes); none chooses as above</td></tr>
  *   <tr><th>CPU / GPU</th><td>no / {@code baked.frag}</td></tr>
  *   <tr><th>extended lights</th><td>baked in about the normal (the lobes method's table)</td></tr>
  * </table>
  */
 final class BakedMethod implements Variant {
+    /** The tabulated method, or null: chosen per patch and settings. */
+    private final Variant of;
+
+    BakedMethod() {
+        this.of = null;
+    }
+
+    private BakedMethod(Variant of) {
+        this.of = of;
+    }
+
     @Override
     public String label() {
         return "baked";
     }
 
     @Override
+    public String spec() {
+        return of == null ? label() : label() + "(of=" + of.spec() + ")";
+    }
+
+    @Override
+    public Variant of(Variant inner) {
+        if (!inner.bakeable()) {
+            throw new InvalidSettingException(Quantity.VARIANT, "a baked table holds " + Methods.listed(
+                    Variant::bakeable, "or") + ", not " + inner.spec());
+        }
+        return new BakedMethod(inner);
+    }
+
+    @Override
     public boolean filtersLight() {
+        return of == null || of.filtersLight();
+    }
+
+    @Override
+    public boolean drawsTable() {
         return true;
+    }
+
+    @Override
+    public Optional<Variant> tabulated(BrdfSettings settings, double widthUm, double heightUm) {
+        if (of != null) {
+            return Optional.of(of);
+        }
+        boolean lobes = settings.illumination().filters()
+                && Variant.LOBES.patchRefusal(settings, widthUm, heightUm).isEmpty();
+        return Optional.of(lobes ? Variant.LOBES : Variant.FLSS);
+    }
+
+    @Override
+    public Optional<String> patchRefusal(BrdfSettings settings, double widthUm, double heightUm) {
+        return of == null ? Optional.empty() : of.patchRefusal(settings, widthUm, heightUm);
+    }
+
+    /**
+     * What its bake keeps (the tabulated method's heap; plain {@code baked}: the lobes method's, the larger) and the
+     * table's float32 host copy.
+     */
+    @Override
+    public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
+                                                    double fromNm, double toNm) {
+        Variant baking = of != null ? of : Variant.LOBES;
+        BakedGrid grid = BakedGrid.of(settings, field.maxAbsHeightUm());
+        return baking.heapMemory(field, settings, thetaIDeg, fromNm, toNm).plus(String.format(java.util.Locale.ROOT,
+                "baked table %d x %d x %d", grid.uvSamples(), grid.uvSamples(), grid.wSamples()), grid.bytes(12));
     }
 
     @Override
@@ -34,7 +98,24 @@ final class BakedMethod implements Variant {
     }
 
     @Override
+    public boolean equals(Object o) {
+        return o instanceof BakedMethod b && Objects.equals(b.of, of);
+    }
+
+    @Override
+    public int hashCode() {
+        return Objects.hashCode(of) * 31 + 7;
+    }
+
+    /** It tabulates its method at the thesis' point once per patch; its own grid is automatic. */
+    @Override
+    public java.util.Set<Quantity> unsweptSettings() {
+        return java.util.Set.of(Quantity.HIGHEST_ORDER, Quantity.LAMBDA_STEP, Quantity.WINDOW_RADIUS,
+                Quantity.TERM_FORMAT, Quantity.TAYLOR_TOLERANCE);
+    }
+
+    @Override
     public String toString() {
-        return name();
+        return of == null ? name() : name() + "(OF=" + of + ")";
     }
 }

@@ -60,7 +60,7 @@ public final class DiffractionBrdf {
         return settings.variant().cpuBrdf(settings, meanSubtracted, terms);
     }
 
-    /** The exact reference ({@link ReferenceMethod}): exp(i k w h) transformed at 1 nm, filtered where asked. */
+    /** The exact reference (called by its method class): exp(i k w h) transformed at 1 nm, filtered where asked. */
     static DiffractionBrdf reference(BrdfSettings settings, HeightField meanSubtracted) {
         IlluminationSettings illumination = settings.illumination();
         ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
@@ -114,7 +114,7 @@ public final class DiffractionBrdf {
         }
     }
 
-    /** The lobes method ({@link LobesMethod}) over its spectrum, its footprints and lights its own. */
+    /** The lobes method (called by its method class) over its spectrum, its footprints and lights its own. */
     static DiffractionBrdf withLobes(BrdfSettings settings, LobeSpectrum lobes) {
         PatchSpectrum point = new PatchSpectrum() {
             @Override

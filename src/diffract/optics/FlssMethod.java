@@ -25,6 +25,11 @@ final class FlssMethod extends TaylorMethod {
     }
 
     @Override
+    public boolean bakeable() {
+        return true;
+    }
+
+    @Override
     public char viewerKey() {
         return '1';
     }

@@ -53,7 +53,7 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
 
     /** What a scene or the viewer says when it draws {@link #usable} instead of what was asked; empty if nothing. */
     public Optional<String> notice() {
-        return reason.map(r -> asked.variant().label() + " samples the light at its centre: the "
+        return reason.map(r -> asked.variant().spec() + " samples the light at its centre: the "
                 + InvalidSettingException.number(asked.illumination().light().angularDiameterDeg())
                 + "-degree light is drawn as a point light (lobes and baked filter by its size)");
     }

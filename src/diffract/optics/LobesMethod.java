@@ -42,8 +42,49 @@ final class LobesMethod implements Variant {
     }
 
     @Override
+    public boolean bakeable() {
+        return true;
+    }
+
+    @Override
+    public java.util.Optional<String> patchRefusal(BrdfSettings settings, double widthUm, double heightUm) {
+        return LobeQuadrature.wholeTexelsRefusal(settings, widthUm, heightUm);
+    }
+
+    /** The Taylor terms, and the weights per texel over the phase, and the texel sums where they apply. */
+    @Override
+    public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
+                                                    double fromNm, double toNm) {
+        diffract.util.MemoryEstimate estimate = Variant.super.heapMemory(field, settings, thetaIDeg, fromNm, toNm);
+        estimate.plus("the lobes' weight table", LobeWeightTable.bytes(field.rows(), field.cols(),
+                field.maxAbsHeightUm(), settings.spectral().lambdaMinNm(), settings.lobes().weightTolerance()));
+        if (LobeSumTable.applies(settings.coherenceWindow(), settings.lobes(), field.widthUm(),
+                field.heightExtentUm())) {
+            estimate.plus("the lobes' texel sums", LobeSumTable.bytes(field.rows(), field.cols(),
+                    LobeWeightTable.samples(field.maxAbsHeightUm(), settings.spectral().lambdaMinNm(),
+                            settings.lobes().weightTolerance()),
+                    settings.coherenceWindow().sigmaTexels(field.widthUm()),
+                    settings.coherenceWindow().sigmaTexels(field.heightExtentUm())));
+        }
+        return estimate;
+    }
+
+    @Override
     public char viewerKey() {
         return '4';
+    }
+
+    /** It integrates wavelength exactly, sums whole texels and reads a float32 weight table. */
+    @Override
+    public java.util.Set<Quantity> unsweptSettings() {
+        return java.util.Set.of(Quantity.LAMBDA_STEP, Quantity.WINDOW_RADIUS, Quantity.TERM_FORMAT,
+                Quantity.TAYLOR_TOLERANCE);
+    }
+
+    /** As scenes draw it: phase-centred where float32 cannot reach the series' accuracy (the tall patch). */
+    @Override
+    public TaylorExpansion sweptExpansion() {
+        return TaylorExpansion.AUTO;
     }
 
     @Override

@@ -58,8 +58,23 @@ public final class Methods {
         return new ArrayList<>(BY_LABEL.values());
     }
 
-    /** The method of a label (any case), or a refusal that lists the registered ones. */
-    public static synchronized Variant named(String text) {
+    /**
+     * The method of a label (any case), or of a label with its parameter, {@code label(of=inner)} (a method that
+     * takes another, {@link Variant#of}), or a refusal that lists the registered ones.
+     */
+    public static Variant named(String text) {
+        java.util.regex.Matcher m = WITH_PARAMETER.matcher(text.trim());
+        if (m.matches()) {
+            return registered(m.group(1)).of(named(m.group(2)));
+        }
+        return registered(text);
+    }
+
+    /** {@code label(of=inner)}, the inner one possibly with a parameter of its own. */
+    private static final java.util.regex.Pattern WITH_PARAMETER = java.util.regex.Pattern.compile(
+            "([A-Za-z][A-Za-z0-9-]*)\\s*\\(\\s*of\\s*=\\s*(.+?)\\s*\\)");
+
+    private static synchronized Variant registered(String text) {
         Variant v = BY_LABEL.get(key(text));
         if (v == null) {
             throw new InvalidSettingException(Quantity.VARIANT, "unknown variant '" + text + "': use "
@@ -79,6 +94,37 @@ public final class Methods {
         }
         return String.join(", ", labels.subList(0, labels.size() - 1)) + " " + conjunction + " "
                 + labels.get(labels.size() - 1);
+    }
+
+    /**
+     * The roles a method plays for the commands, the viewer and the bench, and the method that plays each: the one
+     * table of which method a command draws or measures when none is named.
+     */
+    public enum Role {
+        /** What accuracy is measured against: {@code brdfmap}'s default, the reference maps of the bench and suite. */
+        EXACT(Variant.REFERENCE),
+        /** The thesis' shader: the bench's speed baseline and the thesis' configuration. */
+        THESIS(Variant.FLSS),
+        /**
+         * Cheap per fragment with nothing to bake: the viewer's preview, what it draws when a bake fails, and what a
+         * scene draws under a point light when its method refuses the patch.
+         */
+        FALLBACK(Variant.FLSS),
+        /** Filters extended lights and pixel footprints: the default of scenes and {@code render}. */
+        FILTERING(Variant.LOBES),
+        /** One lookup per fragment: the default of {@code view}. */
+        TABLE(Variant.BAKED);
+
+        private final Variant method;
+
+        Role(Variant method) {
+            this.method = method;
+        }
+
+        /** The method that plays this role. */
+        public Variant method() {
+            return method;
+        }
     }
 
     private static String key(String label) {

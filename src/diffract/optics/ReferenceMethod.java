@@ -38,6 +38,13 @@ final class ReferenceMethod implements Variant {
         throw new IllegalArgumentException("the reference needs no Taylor expansion");
     }
 
+    /** The exact spectrum of the patch over the band (or at the one wavelength), not Taylor terms. */
+    @Override
+    public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
+                                                    double fromNm, double toNm) {
+        return ExactSpectrum.memory(field, thetaIDeg, fromNm, toNm);
+    }
+
     @Override
     public String toString() {
         return name();

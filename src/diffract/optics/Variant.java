@@ -68,6 +68,47 @@ public interface Variant {
         return 0;
     }
 
+    /** Whether a baked table can tabulate it: its shader has a bake pass that writes spectral XYZ per table sample. */
+    default boolean bakeable() {
+        return false;
+    }
+
+    /**
+     * The method a table of this one holds for {@code settings} on a patch of {@code widthUm} x {@code heightUm}, or
+     * empty when it draws without a table (every method but {@link BakedMethod}).
+     */
+    default java.util.Optional<Variant> tabulated(BrdfSettings settings, double widthUm, double heightUm) {
+        return java.util.Optional.empty();
+    }
+
+    /**
+     * Why it cannot draw a patch of {@code widthUm} x {@code heightUm} with {@code settings}, or empty when it can
+     * (the lobes method sums whole texels and refuses a window that keeps texel pairs).
+     */
+    default java.util.Optional<String> patchRefusal(BrdfSettings settings, double widthUm, double heightUm) {
+        return java.util.Optional.empty();
+    }
+
+    /** Whether it draws a table baked in advance ({@link #tabulated} answers for every patch). */
+    default boolean drawsTable() {
+        return false;
+    }
+
+    /**
+     * This method taking {@code inner} as its parameter ({@code baked(of=lobes)}), or a refusal when it takes none or
+     * not that one.
+     */
+    default Variant of(Variant inner) {
+        throw new InvalidSettingException(Quantity.VARIANT, label() + " takes no other method; " + label() + "(of="
+                + inner.label() + ") is not a method");
+    }
+
+    /** How the command line and scene files name it: its label, with its parameter where it has one. */
+    default String spec() {
+        return label();
+    }
+
+
     /**
      * The BRDF on the CPU for {@code settings} (whose variant is this one): {@code terms} are the precomputed
      * float32 Taylor terms, {@code meanSubtracted} the height field (the reference's). The light policy and the
@@ -90,6 +131,35 @@ public interface Variant {
         throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, DiffractionBrdf.LOCAL_NEEDS_FLSS_OR_NMM);
     }
 
+    /**
+     * The heap its evaluation of {@code field} takes beyond the picture's own buffers, part by part: the Taylor terms
+     * unless it keeps more (its tables) or other things (the reference's exact spectrum between {@code fromNm} and
+     * {@code toNm} at theta_i {@code thetaIDeg}).
+     */
+    default diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
+                                                     double fromNm, double toNm) {
+        int termCount = settings.taylor().highestOrder() + 1;
+        return diffract.util.MemoryEstimate.of(termCount + " Taylor terms", 8L * field.rows() * field.cols()
+                * termCount);
+    }
+
+    /**
+     * The settings a sweep of the bench holds at the thesis' value for it: those it does not read, or fixes itself
+     * (none: it reads every setting the bench sweeps).
+     */
+    default java.util.Set<Quantity> unsweptSettings() {
+        return java.util.Set.of();
+    }
+
+    /**
+     * The Taylor expansion a sweep of the bench sums for it: the thesis' series around 0 (what the bench measures of
+     * the thesis' methods, the series' truncation included), unless it draws scenes with the expansion the pipeline
+     * chooses.
+     */
+    default TaylorExpansion sweptExpansion() {
+        return TaylorExpansion.PLAIN;
+    }
+
     /** The label in capitals, as the methods' constants are named (FLSS, LOBES). */
     default String name() {
         return label().toUpperCase(Locale.ROOT);
@@ -101,7 +171,10 @@ public interface Variant {
         return all.toArray(new Variant[0]);
     }
 
-    /** The method of a {@link #label()} (any case), or a refusal that lists the registered ones. */
+    /**
+     * The method of a {@link #label()} (any case), or of a label with its parameter ({@code baked(of=lobes)}), or a
+     * refusal that lists the registered ones.
+     */
     static Variant parse(String text) {
         return Methods.named(text);
     }

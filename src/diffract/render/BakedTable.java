@@ -20,10 +20,10 @@ import diffract.util.UserInputException;
 import java.util.Locale;
 
 /**
- * The BAKED variant's table: the spectral integral of FLSS, XYZ(u, v, w) before the gain factor and
- * shadowing, at the samples of a {@link BakedGrid}, baked on the GPU by {@code baked.frag} compiled with
- * {@code BAKE} (the FLSS shader code, per table sample, one w slice per frame, read back as float32) and looked
- * up trilinearly per fragment. The host keeps the float32 values (to upload into any GL context); the GPU holds
+ * The baked method's table: the spectral integral of the method it tabulates (FLSS or the lobes method), XYZ(u, v, w)
+ * before the gain factor and shadowing, at the samples of a {@link BakedGrid}, baked on the GPU by that method's bake
+ * pass ({@link GpuMethod#bakeFragmentPath}: its shader code per table sample, one w slice per frame, read back as
+ * float32) and looked up trilinearly per fragment. The host keeps the float32 values (to upload into any GL context); the GPU holds
  * them as RGB16F by default: half precision rounds to 2^-11 relative (BakedVariantTest holds the specular sample
  * to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders costs (docs/baked.md).
  */
@@ -35,18 +35,17 @@ public final class BakedTable {
     private final float[] rgb;
     private final FloatTexture3D.Precision precision;
     private final double bakeSeconds;
+    private final Variant tabulated;
     private final boolean filtered;
     private final long shortCells;
 
-    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds) {
-        this(grid, rgb, precision, bakeSeconds, false, 0);
-    }
-
     /**
+     * @param tabulated  the method whose spectrum the samples hold: point samples, or cell and light averages where it
+     *                   {@link Variant#filtersLight}
      * @param shortCells the cells whose lobes loops this GL ended early (they miss lobes): such a table is what this GL
      *                   bakes, not what the settings ask, so the disk cache does not keep it
      */
-    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds, boolean filtered,
+    BakedTable(BakedGrid grid, float[] rgb, FloatTexture3D.Precision precision, double bakeSeconds, Variant tabulated,
                long shortCells) {
         if (rgb.length != 3 * grid.texels()) {
             throw new IllegalArgumentException("table of " + grid + " needs " + 3 * grid.texels() + " floats, got "
@@ -56,37 +55,26 @@ public final class BakedTable {
         this.rgb = rgb;
         this.precision = precision;
         this.bakeSeconds = bakeSeconds;
-        this.filtered = filtered;
+        this.tabulated = tabulated;
+        this.filtered = tabulated.filtersLight();
         this.shortCells = shortCells;
     }
 
     /**
-     * Bakes the FLSS spectral XYZ of {@code settings} (its terms, window, Taylor tolerance and wavelengths; the
-     * variant is taken as FLSS) over the grid the settings ask for, in a hidden GL context of its own.
+     * Bakes the spectral XYZ of the method {@code tabulated} ({@link diffract.optics.Variant#bakeable}) with
+     * {@code settings} (its terms, window, Taylor tolerance, wavelengths and light) over the grid the settings ask
+     * for, in a hidden GL context of its own. A table of FLSS holds point samples; a table of a method that filters
+     * (the lobes method) holds each sample averaged over its cell of the table (a box of 4 / (n - 1) in u and v) and
+     * over the settings' light (isotropic, sigma_a; the table does not know omega_i), and is mip-mapped for lookups
+     * that average over a pixel's footprint (docs/filtering.md, section 8).
      */
-    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, FloatTexture3D.Precision precision,
-                                  Reporter reporter) {
-        return bake(terms, settings, false, precision, reporter);
-    }
-
-    /**
-     * As above; with {@code lobes} the lobes method is baked instead: each sample is the average of the spectral XYZ
-     * over its cell of the table (a box of 4 / (n - 1) in u and v) and over the settings' light (isotropic, sigma_a;
-     * the table does not know omega_i), and the table is mip-mapped for lookups that average over a pixel's
-     * footprint (docs/filtering.md, section 8).
-     */
-    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, boolean lobes,
+    public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, Variant tabulated,
                                   FloatTexture3D.Precision precision, Reporter reporter) {
         long start = System.nanoTime();
         BakedGrid grid = BakedGrid.of(settings, terms.maxAbsHeightUm());
-        Material material;
-        if (!lobes) {
-            BrdfSettings flss = settings.with(b -> b.variant(Variant.FLSS).termFormat(TermFormat.RG32F));
-            material = DiffractionMaterials.bake(DiffractionTextures.of(terms, flss), flss, grid);
-        } else {
-            BrdfSettings lobesSettings = settings.with(b -> b.variant(Variant.LOBES).termFormat(TermFormat.RG32F));
-            material = DiffractionMaterials.bakeLobes(DiffractionTextures.of(terms, lobesSettings), lobesSettings, grid);
-        }
+        BrdfSettings method = settings.with(b -> b.variant(tabulated).termFormat(TermFormat.RG32F));
+        Material material = DiffractionMaterials.bake(DiffractionTextures.of(terms, method), method, grid);
+        boolean filtered = tabulated.filtersLight();
         int n = grid.uvSamples();
         if (3 * grid.texels() > Integer.MAX_VALUE - 8) {
             throw new UserInputException(String.format(Locale.ROOT, "a %d x %d x %d baked table holds more samples than"
@@ -110,8 +98,8 @@ public final class BakedTable {
                         rgb[to] = rgba[from];
                         rgb[to + 1] = rgba[from + 1];
                         rgb[to + 2] = rgba[from + 2];
-                        if (lobes && rgba[from + 3] == 0) {
-                            shortCells++; // the lobes shader's loops were ended early (lobes_spectrum.glsl)
+                        if (filtered && rgba[from + 3] == 0) {
+                            shortCells++; // the shader's loops were ended early (lobes_spectrum.glsl)
                         }
                     }
                 }
@@ -125,7 +113,7 @@ public final class BakedTable {
                     + "they miss lobes and are too dark; a patch of fewer texels, or a GPU, bakes them whole",
                     shortCells, grid.texels()));
         }
-        BakedTable table = new BakedTable(grid, rgb, precision, seconds, lobes, shortCells);
+        BakedTable table = new BakedTable(grid, rgb, precision, seconds, tabulated, shortCells);
         reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
         return table;
     }
@@ -135,7 +123,12 @@ public final class BakedTable {
         return shortCells;
     }
 
-    /** Whether the samples are cell and light averages of the lobes method (else FLSS point samples). */
+    /** The method whose spectrum the samples hold. */
+    public Variant tabulated() {
+        return tabulated;
+    }
+
+    /** Whether the samples are cell and light averages (of the lobes method), else point samples (of FLSS). */
     public boolean filtered() {
         return filtered;
     }
@@ -183,7 +176,7 @@ public final class BakedTable {
     /** One line: grid, format and memory. */
     public String describe() {
         return String.format(Locale.ROOT, "%d x %d x %d table (u, v, w) of %s, %s, %.1f MB on the GPU, %.1f MB on the host",
-                grid.uvSamples(), grid.uvSamples(), grid.wSamples(), filtered ? "lobes, cell- and light-averaged"
-                        : "flss", precision, gpuBytes() / 1e6, hostBytes() / 1e6);
+                grid.uvSamples(), grid.uvSamples(), grid.wSamples(), tabulated.spec()
+                        + (filtered ? ", cell- and light-averaged" : ""), precision, gpuBytes() / 1e6, hostBytes() / 1e6);
     }
 }

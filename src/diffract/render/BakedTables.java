@@ -3,7 +3,6 @@ package diffract.render;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.FresnelModel;
-import diffract.optics.LobeQuadrature;
 import diffract.optics.TaylorTerms;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
@@ -25,7 +24,7 @@ import java.util.concurrent.CompletionException;
  * again never bakes twice, and on disk ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table
  * instead of baking it. In memory, terms are compared by identity (they are immutable); on disk, by their content
  * hash. Settings are compared by value, with the variant, the term format and the Fresnel model ignored (the table
- * is FLSS's or the lobes method's on float32 terms whatever variant asks, before the gain factor). The least
+ * is that of the method it tabulates on float32 terms, whatever table method asks, before the gain factor). The least
  * recently used table is dropped from memory beyond {@link #MAX_TABLES}: a table can take hundreds of MB.
  * Thread-safe; a request for a table being baked (or loaded) waits for that bake.
  */
@@ -33,10 +32,10 @@ public final class BakedTables {
     /** Tables kept at once. */
     public static final int MAX_TABLES = 2;
 
-    private record Key(TaylorTerms terms, BrdfSettings settings, boolean lobes) {
+    private record Key(TaylorTerms terms, BrdfSettings settings, Variant tabulated) {
         @Override
         public boolean equals(Object o) {
-            return o instanceof Key k && k.terms == terms && k.settings.equals(settings) && k.lobes == lobes;
+            return o instanceof Key k && k.terms == terms && k.settings.equals(settings) && k.tabulated.equals(tabulated);
         }
 
         @Override
@@ -70,9 +69,10 @@ public final class BakedTables {
     }
 
     /**
-     * The table of these terms and settings, loaded from the disk cache or baked on the first request: of the lobes
-     * method, cell- and light-averaged, when the illumination filters (a pixel box or a light) and the lobes shader
-     * can take the patch (no texel pairs); else of FLSS. A baked table is stored in the disk cache. The bake runs
+     * The table of these terms and settings, loaded from the disk cache or baked on the first request: of the method
+     * the settings' table method holds for the patch ({@link Variant#tabulated}; plain {@code baked}: the lobes
+     * method, cell- and light-averaged, when the illumination filters and the lobes shader takes the patch, else
+     * FLSS). A baked table is stored in the disk cache. The bake runs
      * outside the cache's lock, so {@link #isBaked} answers at once while a table bakes.
      */
     public static BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
@@ -174,7 +174,7 @@ public final class BakedTables {
                 return stored;
             }
         }
-        BakedTable table = bakeOffThisThread(terms, settings, key.lobes(), reporter);
+        BakedTable table = bakeOffThisThread(terms, settings, key.tabulated(), reporter);
         synchronized (BakedTables.class) {
             bakes++;
         }
@@ -198,7 +198,7 @@ public final class BakedTables {
     private static BakedTable load(DiskCache cache, DiskCache.Key diskKey, Key key, Reporter reporter) {
         long start = System.nanoTime();
         BakedGrid grid = BakedGrid.of(key.settings(), key.terms().maxAbsHeightUm());
-        BakedTable table = cache.load(diskKey, in -> BakedTableFile.read(in, grid, key.lobes()), reporter,
+        BakedTable table = cache.load(diskKey, in -> BakedTableFile.read(in, grid, key.tabulated()), reporter,
                 "baking the table again");
         if (table != null) {
             synchronized (BakedTables.class) {
@@ -221,14 +221,14 @@ public final class BakedTables {
 
     /** The disk cache's key of an in-memory key, worked out once. */
     private static DiskCache.Key diskKey(Key key) {
-        String memo = key.terms().contentSha256() + " " + key.settings() + " " + key.lobes();
+        String memo = key.terms().contentSha256() + " " + key.settings() + " " + key.tabulated().spec();
         synchronized (BakedTables.class) {
             DiskCache.Key known = DISK_KEYS.get(memo);
             if (known != null) {
                 return known;
             }
         }
-        DiskCache.Key computed = BakedTableFile.key(key.terms(), key.settings(), key.lobes());
+        DiskCache.Key computed = BakedTableFile.key(key.terms(), key.settings(), key.tabulated());
         synchronized (BakedTables.class) {
             DISK_KEYS.put(memo, computed);
         }
@@ -243,16 +243,18 @@ public final class BakedTables {
     /** The table is made on float32 terms before the gain factor, whatever variant, term format and Fresnel ask. */
     private static Key key(TaylorTerms terms, BrdfSettings settings) {
         return new Key(terms, settings.with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)
-                .fresnel(FresnelModel.PHYSICAL)), bakesLobes(terms, settings));
+                .fresnel(FresnelModel.PHYSICAL)), tabulated(terms, settings));
     }
 
-    /** Whether {@link #of} bakes the lobes method (else FLSS). */
-    static boolean bakesLobes(TaylorTerms terms, BrdfSettings settings) {
-        if (!settings.illumination().filters()) {
-            return false;
-        }
-        return LobeQuadrature.wholeTexelsRefusal(settings, terms.cols() * terms.pixelSizeXUm(),
-                terms.rows() * terms.pixelSizeYUm()).isEmpty();
+    /**
+     * The method whose table {@link #of} holds for these terms and settings: the choice of their table method, or of
+     * plain {@code baked} where they name a method that draws without one.
+     */
+    static Variant tabulated(TaylorTerms terms, BrdfSettings settings) {
+        double widthUm = terms.cols() * terms.pixelSizeXUm();
+        double heightUm = terms.rows() * terms.pixelSizeYUm();
+        return settings.variant().tabulated(settings, widthUm, heightUm)
+                .orElseGet(() -> Variant.BAKED.tabulated(settings, widthUm, heightUm).orElseThrow());
     }
 
     /**
@@ -261,13 +263,13 @@ public final class BakedTables {
      * (making the caller's context current again lets JOGL rebind its own framebuffer, and the frame came out
      * black). The caller waits for the table.
      */
-    private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, boolean lobes,
+    private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, Variant tabulated,
                                                 Reporter reporter) {
         if (com.jogamp.opengl.GLContext.getCurrent() == null) {
-            return BakedTable.bake(terms, settings, lobes, BakedTable.PRECISION, reporter);
+            return BakedTable.bake(terms, settings, tabulated, BakedTable.PRECISION, reporter);
         }
         java.util.concurrent.CompletableFuture<BakedTable> bake = java.util.concurrent.CompletableFuture.supplyAsync(
-                () -> BakedTable.bake(terms, settings, lobes, BakedTable.PRECISION, reporter),
+                () -> BakedTable.bake(terms, settings, tabulated, BakedTable.PRECISION, reporter),
                 command -> new Thread(command, "bake").start());
         try {
             return bake.join();

@@ -130,21 +130,13 @@ public final class DiffractionMaterials {
             + " give the micrometres of skin per unit of the mesh's texture coordinates";
 
     /**
-     * The bake pass of a BAKED table: FLSS of {@code flssSettings} per sample of {@code grid}; set {@code bakeW} per
-     * slice and draw on the full-screen quad into a grid.uvSamples()^2 viewport.
+     * The bake pass of a table of the method of {@code settings} per sample of {@code grid}
+     * ({@link GpuMethod#bakeFragmentPath}); set {@code bakeW} per slice and draw on the full-screen quad into a
+     * grid.uvSamples()^2 viewport.
      */
-    static Material bake(DiffractionTextures textures, BrdfSettings flssSettings, BakedGrid grid) {
-        Material m = new Material(DiffractionShaders.bakeProgram(flssSettings, textures));
-        return common(m, textures, flssSettings).setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
-    }
-
-    /**
-     * The bake pass of a BAKED table of the lobes method: every sample averaged over its cell of the grid and the
-     * settings' light ({@code setTableCell} in {@code lobes_footprint.glsl}).
-     */
-    static Material bakeLobes(DiffractionTextures textures, BrdfSettings lobesSettings, BakedGrid grid) {
-        Material m = new Material(DiffractionShaders.bakeLobesProgram(lobesSettings, textures));
-        return common(m, textures, lobesSettings.with(b -> b.pixelFilter(PixelFilter.BOX)))
+    static Material bake(DiffractionTextures textures, BrdfSettings settings, BakedGrid grid) {
+        Material m = new Material(DiffractionShaders.bakeProgram(settings, textures));
+        return common(m, textures, GpuMethods.of(settings.variant()).bakeSettings(settings))
                 .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
     }
 

@@ -229,37 +229,26 @@ public final class DiffractionShaders {
     }
 
     /**
-     * The bake pass of the BAKED table ({@code baked.frag} with {@code BAKE}): FLSS of these settings, written as
-     * spectral XYZ per (u, v) pixel of one w slice, on the full-screen quad.
+     * The bake pass of a table of the method of {@code settings} ({@link GpuMethod#bakeFragmentPath}): its spectral
+     * XYZ per (u, v) pixel of one w slice, on the full-screen quad.
      */
-    public static ShaderProgram bakeProgram(BrdfSettings flssSettings, DiffractionTextures textures) {
-        return bakeProgram(flssSettings, textures.highestOrder(), textures.windowRadii(), false);
+    public static ShaderProgram bakeProgram(BrdfSettings settings, DiffractionTextures textures) {
+        return bakeProgram(settings, textures.highestOrder(), textures.windowRadii());
     }
 
     /**
-     * The bake pass of a BAKED table of the lobes method ({@code baked_lobes.frag}): spectral XYZ averaged over each
-     * sample's cell and the light.
+     * A bake pass from what decides its code alone: the settings of the tabulated method (on float32 terms), the
+     * terms' order and the window radii. The disk cache keys a table by this program's text too, so a changed shader
+     * never reuses a table baked by the old one.
      */
-    public static ShaderProgram bakeLobesProgram(BrdfSettings lobesSettings, DiffractionTextures textures) {
-        return bakeProgram(lobesSettings, textures.highestOrder(), textures.windowRadii(), true);
-    }
-
-    /**
-     * A bake pass from what decides its code alone: the settings (FLSS's, or with {@code lobes} the lobes method's,
-     * on float32 terms), the terms' order and the window radii. The disk cache keys a table by this program's text
-     * too, so a changed shader never reuses a table baked by the old one.
-     */
-    public static ShaderProgram bakeProgram(BrdfSettings settings, int highestOrder, WindowRadii radii, boolean lobes) {
-        Map<String, String> defines = defines(settings, highestOrder, radii, null, Target.BRDF_MAP, false, false);
-        if (lobes) {
-            defines.put("LOBES_BOX", "1"); // every sample averages over its cell
-            if (LobesGpu.averagesOverDisc(settings)) {
-                defines.put("LIGHT_DISC", "1"); // and over the disc about the normal (setTableCell)
-            }
-            return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), "diffraction/baked_lobes.frag", defines);
+    public static ShaderProgram bakeProgram(BrdfSettings settings, int highestOrder, WindowRadii radii) {
+        GpuMethod method = GpuMethods.of(settings.variant());
+        if (method.bakeFragmentPath() == null) {
+            throw new IllegalArgumentException("no table holds " + settings.variant().spec());
         }
-        defines.put("BAKE", "1");
-        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), fragmentPath(Variant.BAKED), defines);
+        Map<String, String> defines = defines(settings, highestOrder, radii, null, Target.BRDF_MAP, false, false);
+        method.addBakeDefines(defines, settings);
+        return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), method.bakeFragmentPath(), defines);
     }
 
     /**

@@ -130,7 +130,7 @@ public final class DiffractionTextures {
             }
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
-        BakedTable baked = settings.variant() == Variant.BAKED ? BakedTables.of(terms, settings, reporter) : null;
+        BakedTable baked = settings.variant().drawsTable() ? BakedTables.of(terms, settings, reporter) : null;
         DiffractionTextures textures = new DiffractionTextures(termTexture, normalised
                 ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), terms, settings, highestOrder,
@@ -148,7 +148,7 @@ public final class DiffractionTextures {
      * apply, the centres fix theirs.
      */
     public static DiffractionTextures ofPhaseCentred(PhaseCentredTerms terms, BrdfSettings settings) {
-        if (settings.variant() == Variant.BAKED) {
+        if (settings.variant().drawsTable()) {
             throw new InvalidSettingException(Quantity.VARIANT, "the baked table tabulates the thesis' series around 0; "
                     + "this patch needs the phase-centred expansion (its phase k w h reaches beyond what that series "
                     + "sums): draw it with the lobes method or flss");

@@ -19,4 +19,15 @@ class FlssGpu implements GpuMethod {
         m.setTexture("uniformNodeTable", textures.uniformNodeTable());
         GpuMethod.gaussianWindow(m, textures, settings);
     }
+
+    /** Its table's samples are FLSS at each (u, v, w) point ({@code baked.frag} with {@code BAKE}). */
+    @Override
+    public String bakeFragmentPath() {
+        return "diffraction/baked.frag";
+    }
+
+    @Override
+    public void addBakeDefines(java.util.Map<String, String> defines, BrdfSettings settings) {
+        defines.put("BAKE", "1");
+    }
 }

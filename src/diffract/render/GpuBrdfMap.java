@@ -156,7 +156,7 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /** The baked table holds colour (XYZ), not the BRDF at one wavelength. */
     private void requireSpectral() {
-        if (settings.variant() == Variant.BAKED) {
+        if (settings.variant().drawsTable()) {
             throw new InvalidSettingException(Quantity.MONOCHROMATIC_LAMBDA, BAKED_HAS_NO_MONOCHROMATIC);
         }
     }

@@ -39,6 +39,27 @@ public interface GpuMethod {
         return false;
     }
 
+    /**
+     * The fragment shader of its bake pass, which writes its spectral XYZ per sample of a baked table
+     * ({@link BakedTable}) for the methods a table can hold ({@link diffract.optics.Variant#bakeable}); null for the
+     * others.
+     */
+    default String bakeFragmentPath() {
+        return null;
+    }
+
+    /** Defines its bake pass takes beyond those of its BRDF map's program. */
+    default void addBakeDefines(java.util.Map<String, String> defines, BrdfSettings settings) {
+    }
+
+    /**
+     * The settings its bake pass draws with: {@code settings} unless a table's sample stands for more than a point
+     * (the lobes method averages every sample over its cell).
+     */
+    default BrdfSettings bakeSettings(BrdfSettings settings) {
+        return settings;
+    }
+
     /** The Gaussian coherence window in texels per axis ({@code spectrum_gaussian.glsl}'s sigmaTexels). */
     static void gaussianWindow(Material m, DiffractionTextures textures, BrdfSettings settings) {
         m.setVec2("sigmaTexels", (float) settings.coherenceWindow().sigmaTexels(textures.extentXUm()),

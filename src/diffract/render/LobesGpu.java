@@ -126,6 +126,29 @@ final class LobesGpu implements GpuMethod {
         }
     }
 
+    /**
+     * Its table's samples ({@code baked_lobes.frag}) average over their cell of the table ({@code LOBES_BOX}) and,
+     * under a disc, over the disc about the normal ({@code setTableCell}).
+     */
+    @Override
+    public String bakeFragmentPath() {
+        return "diffraction/baked_lobes.frag";
+    }
+
+    @Override
+    public void addBakeDefines(java.util.Map<String, String> defines, BrdfSettings settings) {
+        defines.put("LOBES_BOX", "1");
+        if (averagesOverDisc(settings)) {
+            defines.put("LIGHT_DISC", "1");
+        }
+    }
+
+    /** Every sample of its table averages over the sample's cell: the pixel box. */
+    @Override
+    public BrdfSettings bakeSettings(BrdfSettings settings) {
+        return settings.with(b -> b.pixelFilter(PixelFilter.BOX));
+    }
+
     /** Environment lights wider than it sums read its baked table (ENVIRONMENT_TABLE). */
     @Override
     public boolean tablesWideEnvironmentLights() {

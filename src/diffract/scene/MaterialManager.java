@@ -5,7 +5,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LightPolicy;
-import diffract.optics.LobeQuadrature;
+import diffract.optics.Methods;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
@@ -59,13 +59,14 @@ final class MaterialManager {
             s = s.with(b -> b.highestOrder(n));
         }
         HeightField field = patch.meanSubtracted();
-        var refusal = s.variant() == Variant.LOBES ? LobeQuadrature.wholeTexelsRefusal(s,
-                field.cols() * field.pixelSizeXUm(), field.rows() * field.pixelSizeYUm()) : java.util.Optional.<String>empty();
+        var refusal = s.variant().patchRefusal(s, field.cols() * field.pixelSizeXUm(),
+                field.rows() * field.pixelSizeYUm());
         if (refusal.isPresent()) {
-            // a scene that asks for the lobes method on a patch the shader cannot sum still renders: FLSS, which
+            // a scene that asks for a method that refuses its patch still renders: the fallback method, which
             // point-samples the light, under a point light (said once)
-            reporter.warn(refusal.get() + ": drawing it with flss under a point light instead");
-            s = s.with(b -> b.variant(Variant.FLSS).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
+            Variant fallback = Methods.Role.FALLBACK.method();
+            reporter.warn(refusal.get() + ": drawing it with " + fallback.spec() + " under a point light instead");
+            s = s.with(b -> b.variant(fallback).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
         }
         // a point-sampling variant asked for on a scene lit by an extended light (the sun by default): it samples
         // the light at its centre, said once

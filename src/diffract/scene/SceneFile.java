@@ -14,6 +14,7 @@ import diffract.optics.InvalidSettingException;
 import diffract.optics.Levelling;
 import diffract.optics.LightProfile;
 import diffract.optics.LightSource;
+import diffract.optics.Methods;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
 import diffract.optics.ProceduralPatches;
@@ -283,10 +284,48 @@ public final class SceneFile {
             Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"),
             Map.entry(Quantity.SCAN_TILING, "skinUmPerTexcoord"));
 
+    /**
+     * A method: its label, its label with its parameter ({@code "label(of=inner)"}), or an object
+     * {@code {"type": label, "of": inner}} whose {@code of} is a method again.
+     */
+    private static Variant variant(SceneObject parent, String key, JsonTree.Located node) {
+        try {
+            if (node.value() instanceof Map) {
+                SceneObject o = parent.child(key, node);
+                Variant type = Variant.parse(o.choice("type", variants()));
+                Variant v = type;
+                if (o.has("of")) {
+                    Variant inner = variant(o, "of", o.raw("of"));
+                    try {
+                        v = type.of(inner);
+                    } catch (InvalidSettingException e) {
+                        throw o.problem("of", e.getMessage());
+                    }
+                }
+                o.finish();
+                return v;
+            }
+            if (node.value() instanceof String text) {
+                String label = text.replaceFirst("\\(.*", "").trim();
+                if (!variants().contains(label)) {
+                    throw parent.problem(key, "unknown value \"" + text + "\"" + SceneObject.suggestion(label,
+                            variants()) + "; use one of " + String.join(", ", variants())
+                            + ", or {\"type\": ..., \"of\": ...}");
+                }
+                return Variant.parse(text);
+            }
+        } catch (InvalidSettingException e) {
+            throw parent.problem(key, e.getMessage());
+        }
+        throw parent.problem(key, "must be a method's label, with its parameter or as {\"type\": ..., \"of\": ...}, got "
+                + node.typeName());
+    }
+
     private static Scene.MaterialSpec material(SceneObject material, LightSource lightSource,
                                                 Scene.ShapeSpec shape) {
         Scene.PatchSpec patch = patch(material.object("patch"));
-        BrdfSettings.Builder b = BrdfSettings.builder(Variant.parse(material.choice("variant", variants(), "lobes")));
+        BrdfSettings.Builder b = BrdfSettings.builder(material.has("variant")
+                ? variant(material, "variant", material.raw("variant")) : Methods.Role.FILTERING.method());
         boolean radiometric = radiometric(material);
         Double tolerance = null;
         try {

@@ -149,7 +149,7 @@ public final class SceneWriter {
         BrdfSettings s = m.settings();
         Map<String, Object> material = new LinkedHashMap<>();
         material.put("patch", patch(m.patch()));
-        material.put("variant", s.variant().label());
+        material.put("variant", s.variant().spec());
         TaylorSettings taylor = s.taylor();
         if (m.orderTolerance() != null) {
             material.put("tolerance", m.orderTolerance());

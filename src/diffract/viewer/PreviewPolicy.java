@@ -2,12 +2,12 @@ package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.PixelFilter;
-import diffract.optics.Variant;
+import diffract.optics.Methods;
 
 /**
  * The settings of the viewer's preview, the cheap first pass of each refinement ({@link RefiningRenderer}): the
  * one place that decides what "cheap" means. Settings that are cheap per fragment already (the baked table once it
- * is baked: one lookup) are their own preview. Anything else is previewed by FLSS with the same terms (so the same
+ * is baked: one lookup) are their own preview. Anything else is previewed by the fallback method ({@link Methods.Role#FALLBACK}, FLSS) with the same terms (so the same
  * expansion) on the centre texel of the coherence window ({@value #WINDOW_RADIUS}: one texel instead of (2R+1)^2,
  * exact where sigma_f is well under a texel, as for long coherence lengths) and wavelengths at least
  * {@value #LAMBDA_STEP_NM} nm apart ({@code 380..780} in 11 samples): on llvmpipe about 1/10 of the thesis'
@@ -30,10 +30,10 @@ public final class PreviewPolicy {
      * variant cheap: until it is baked, the configured frame cannot be drawn at all).
      */
     public static BrdfSettings settings(BrdfSettings drawable, boolean bakedTableReady) {
-        if (drawable.variant() == Variant.BAKED && bakedTableReady) {
+        if (drawable.variant().drawsTable() && bakedTableReady) {
             return drawable;
         }
-        return drawable.with(b -> b.variant(Variant.FLSS).windowRadius(WINDOW_RADIUS)
+        return drawable.with(b -> b.variant(Methods.Role.FALLBACK.method()).windowRadius(WINDOW_RADIUS)
                 .lambdaStepNm(Math.max(LAMBDA_STEP_NM, drawable.spectral().lambdaStepNm())).lightSizeDeg(0)
                 .pixelFilter(PixelFilter.POINT));
     }

@@ -9,7 +9,7 @@ import diffract.jrtr.PixelRect;
 import diffract.jrtr.TiledFrame;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
-import diffract.optics.Variant;
+
 import diffract.render.BakedTables;
 import diffract.scene.DisplayMode;
 
@@ -234,7 +234,7 @@ public final class RefiningRenderer implements GLEventListener {
     private void start(ViewerState state) {
         BrdfSettings configured = state.drawableSettings();
         // a table in the disk cache loads in a fraction of a second: drawn at once, not previewed while it "bakes"
-        boolean waiting = configured.variant() == Variant.BAKED && !tableReady(state)
+        boolean waiting = configured.variant().drawsTable() && !tableReady(state)
                 && !baker.loadStored(state.terms(), configured);
         BrdfSettings preview = PreviewPolicy.settings(configured, !waiting);
         Refinement r = new Refinement(state, waiting);
@@ -362,7 +362,7 @@ public final class RefiningRenderer implements GLEventListener {
 
     private static boolean tableReady(ViewerState state) {
         BrdfSettings s = state.drawableSettings();
-        return s.variant() == Variant.BAKED && BakedTables.isBaked(state.terms(), s);
+        return s.variant().drawsTable() && BakedTables.isBaked(state.terms(), s);
     }
 
     /**

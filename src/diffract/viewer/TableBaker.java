@@ -2,6 +2,7 @@ package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
+import diffract.optics.Methods;
 import diffract.optics.Variant;
 import diffract.render.BakedTables;
 import diffract.util.Reporter;
@@ -17,6 +18,9 @@ import java.util.concurrent.ExecutorService;
  * so the window draws it at full quality at once.
  */
 public final class TableBaker implements AutoCloseable {
+    /** What the viewer draws when a bake fails: a method whose textures need no bake. */
+    private static final Variant FALLBACK = Methods.Role.FALLBACK.method();
+
     private final ViewerModel model;
     private final ExecutorService executor = diffract.util.BackgroundThreads.single("diffract-viewer-bake");
     private boolean busy;
@@ -53,11 +57,12 @@ public final class TableBaker implements AutoCloseable {
             BakedTables.of(terms, settings, new ProgressToModel());
             model.update(s -> s.withBake(null));
         } catch (RuntimeException e) {
-            // back to FLSS, whose textures need no bake, so the window does not ask for the failing table again
+            // back to the fallback method, whose textures need no bake, so the window does not ask for the failing table again
             model.update(s -> s.withBake(null)
-                    .withSettings(s.settings().variant() == Variant.BAKED ? s.settings().with(b -> b.variant(Variant.FLSS))
+                    .withSettings(s.settings().variant().drawsTable() ? s.settings().with(b -> b.variant(FALLBACK))
                             : s.settings())
-                    .withNotice(Notice.forSeconds("baking the table failed: " + e.getMessage() + "; drawing flss", 10)));
+                    .withNotice(Notice.forSeconds("baking the table failed: " + e.getMessage() + "; drawing "
+                            + FALLBACK.spec(), 10)));
         } finally {
             synchronized (this) {
                 busy = false;

@@ -5,7 +5,7 @@ import diffract.jrtr.Material;
 import diffract.jrtr.Texture2D;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
-import diffract.optics.Variant;
+import diffract.optics.Methods;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.render.DiffractionMaterials;
 import diffract.render.DiffractionTextures;
@@ -40,8 +40,8 @@ final class ViewerMaterials {
          * only the Taylor group, the wavelengths and the term format.
          */
         static TexturesKey of(TaylorTerms terms, BrdfSettings s) {
-            return new TexturesKey(terms, s.variant() == Variant.BAKED ? s
-                    : BrdfSettings.builder(Variant.FLSS).taylor(s.taylor()).spectral(s.spectral()).gpu(s.gpu()).build());
+            return new TexturesKey(terms, s.variant().drawsTable() ? s : BrdfSettings.builder(Methods.Role.FALLBACK.method())
+                    .taylor(s.taylor()).spectral(s.spectral()).gpu(s.gpu()).build());
         }
 
         @Override

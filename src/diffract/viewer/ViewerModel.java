@@ -3,7 +3,7 @@ package diffract.viewer;
 import diffract.jrtr.Shape;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
-import diffract.optics.Variant;
+
 import diffract.pipeline.DiffractionPipeline;
 import diffract.render.BakedTables;
 import diffract.scene.SceneSetup;
@@ -79,7 +79,7 @@ public final class ViewerModel {
      */
     public void bakeIfNeeded(Reporter reporter) {
         ViewerState s = state();
-        if (s.drawableSettings().variant() == Variant.BAKED) {
+        if (s.drawableSettings().variant().drawsTable()) {
             BakedTables.of(s.terms(), s.drawableSettings(), reporter);
         }
     }

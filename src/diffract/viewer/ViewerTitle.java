@@ -19,7 +19,7 @@ public final class ViewerTitle {
         BrdfSettings drawn = state.drawableSettings();
         StringBuilder title = new StringBuilder(String.format(Locale.ROOT,
                 "diffract %s | %s N=%d dlambda=%s nm R=%d | theta_i %.0f phi_i %.0f | %s%s | exposure %s",
-                model.patchName(), drawn.variant().label(), drawn.taylor().highestOrder(),
+                model.patchName(), drawn.variant().spec(), drawn.taylor().highestOrder(),
                 number(drawn.spectral().lambdaStepNm()), drawn.window().radius(), state.view().light().thetaDeg(), state.view().light().phiDeg(),
                 state.view().mode() == DisplayMode.BRDF_MAP ? "BRDF map" : model.shape().name(),
                 state.view().pigmentationOn() && state.view().mode() == DisplayMode.SURFACE ? " + pigment" : "",

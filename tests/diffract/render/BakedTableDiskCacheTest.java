@@ -91,8 +91,8 @@ class BakedTableDiskCacheTest {
         GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         List<BrdfSettings> methods = List.of(small(), small().with(b -> b.pixelFilter(PixelFilter.BOX)));
-        assertFalse(BakedTables.bakesLobes(terms, methods.get(0)));
-        assertTrue(BakedTables.bakesLobes(terms, methods.get(1)));
+        assertEquals(Variant.FLSS, BakedTables.tabulated(terms, methods.get(0)));
+        assertEquals(Variant.LOBES, BakedTables.tabulated(terms, methods.get(1)));
         for (BrdfSettings settings : methods) {
             int bakes = BakedTables.bakeCount();
             Reporter.Collecting first = new Reporter.Collecting();
@@ -194,14 +194,14 @@ class BakedTableDiskCacheTest {
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         BrdfSettings s = small().with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)
                 .fresnel(FresnelModel.PHYSICAL));
-        DiskCache.Key key = BakedTableFile.key(terms, s, false);
-        assertEquals(key, BakedTableFile.key(recomputed(terms), s, false), "equal content, equal key");
+        DiskCache.Key key = BakedTableFile.key(terms, s, Variant.FLSS);
+        assertEquals(key, BakedTableFile.key(recomputed(terms), s, Variant.FLSS), "equal content, equal key");
         for (BrdfSettings other : List.of(s.with(b -> b.lambdaStepNm(10)), s.with(b -> b.bakedSamples(11, 2)),
                 s.with(b -> b.bakedSamples(9, 3)), s.with(b -> b.coherenceLengthUm(20)),
                 s.with(b -> b.refractiveIndex(1.6)), s.with(b -> b.windowRadius(2)))) {
-            assertNotEquals(key, BakedTableFile.key(terms, other, false), other.toString());
+            assertNotEquals(key, BakedTableFile.key(terms, other, Variant.FLSS), other.toString());
         }
-        assertNotEquals(key, BakedTableFile.key(terms, s, true), "the method");
+        assertNotEquals(key, BakedTableFile.key(terms, s, Variant.LOBES), "the method");
         float[][] data = new float[terms.termCount()][];
         for (int n = 0; n < data.length; n++) {
             data[n] = terms.termData(n);
@@ -209,7 +209,7 @@ class BakedTableDiskCacheTest {
         data[1][0] = Math.nextUp(data[1][0]); // one float in the last bit
         TaylorTerms other = new TaylorTerms(terms.rows(), terms.cols(), terms.pixelSizeXUm(), terms.pixelSizeYUm(),
                 terms.maxAbsHeightUm(), data);
-        assertNotEquals(key, BakedTableFile.key(other, s, false), "other terms");
-        assertNotEquals(key.fileName(), BakedTableFile.key(terms, s, true).fileName());
+        assertNotEquals(key, BakedTableFile.key(other, s, Variant.FLSS), "other terms");
+        assertNotEquals(key.fileName(), BakedTableFile.key(terms, s, Variant.LOBES).fileName());
     }
 }

@@ -71,7 +71,7 @@ class BakedVariantTest {
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
         BrdfSettings settings = RenderTestSupport.settings(Variant.FLSS).with(b -> b.bakedSamples(17, 3));
-        BakedTable table = BakedTable.bake(terms, settings, FloatTexture3D.Precision.FLOAT32, Reporter.SILENT);
+        BakedTable table = BakedTable.bake(terms, settings, Variant.FLSS, FloatTexture3D.Precision.FLOAT32, Reporter.SILENT);
         PatchSpectrum spectrum = DiffractionBrdf.create(settings, patch, terms).spectrum();
         WavelengthSampling sampling = WavelengthSampling.uniform(380, 780, 5);
         BakedGrid grid = table.grid();

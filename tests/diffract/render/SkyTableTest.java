@@ -3,6 +3,7 @@ package diffract.render;
 import diffract.jrtr.FloatTexture3D;
 import diffract.lighting.ExtendedLight;
 import diffract.optics.BakedGrid;
+import diffract.optics.Variant;
 import diffract.optics.LightSource;
 import org.junit.jupiter.api.Test;
 
@@ -98,7 +99,7 @@ class SkyTableTest {
     }
 
     private static BakedTable table(float[] rgb) {
-        return new BakedTable(new BakedGrid(N, NW), rgb, FloatTexture3D.Precision.FLOAT32, 0, true, 0);
+        return new BakedTable(new BakedGrid(N, NW), rgb, FloatTexture3D.Precision.FLOAT32, 0, Variant.LOBES, 0);
     }
 
     private static ExtendedLight light(double diameterDeg, double elevationY) {

@@ -14,6 +14,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -165,6 +166,31 @@ class SceneFileTest {
         assertTrue(m.startsWith("7: material.lambdaMinNm: must be in [360, 830], got 200"), m);
         String fov = message(valid("").replace("\"eye\": [0, 0, 3]", "\"eye\": [0, 0, 3], \"fieldOfViewDeg\": 180"));
         assertTrue(fov.startsWith("2: camera.fieldOfViewDeg: must be in (0, 180), got 180"), fov);
+    }
+
+    /**
+     * A method that takes another is written as its label with the parameter or as an object; both read as the same
+     * method, and a method that takes none, an unknown inner method or an inner one no table holds is a one-line error.
+     */
+    @Test
+    void aMethodThatTakesAnotherReadsInBothForms() throws IOException {
+        Path file = dir.resolve("ok.json");
+        diffract.optics.Variant bakedLobes = diffract.optics.Variant.BAKED.of(diffract.optics.Variant.LOBES);
+        Files.writeString(file, valid("").replace("\"flss\"", "\"baked(of=lobes)\""));
+        assertEquals(bakedLobes, SceneFile.load(file).material().settings().variant());
+        Files.writeString(file, valid("").replace("\"flss\"", "{\"type\": \"baked\", \"of\": \"lobes\"}"));
+        assertEquals(bakedLobes, SceneFile.load(file).material().settings().variant());
+        assertEquals("baked(of=lobes)", bakedLobes.spec());
+        assertNotEquals(diffract.optics.Variant.BAKED, bakedLobes, "plain baked chooses its table per scene");
+        String pq = message(valid("").replace("\"flss\"", "{\"type\": \"baked\", \"of\": \"pq\"}"));
+        assertTrue(pq.startsWith("6: material.variant.of: a baked table holds flss or lobes, not pq"), pq);
+        String flss = message(valid("").replace("\"flss\"", "\"flss(of=lobes)\""));
+        assertTrue(flss.startsWith("6: material.variant: flss takes no other method"), flss);
+        String inner = message(valid("").replace("\"flss\"", "{\"type\": \"baked\", \"of\": \"lobbes\"}"));
+        assertTrue(inner.startsWith("6: material.variant.of: unknown value \"lobbes\" (did you mean \"lobes\"?)"),
+                inner);
+        String extra = message(valid("").replace("\"flss\"", "{\"type\": \"baked\", \"off\": \"lobes\"}"));
+        assertTrue(extra.startsWith("6: material.variant.off: unknown key (did you mean \"of\"?)"), extra);
     }
 
     @Test

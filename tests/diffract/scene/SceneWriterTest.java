@@ -45,6 +45,21 @@ class SceneWriterTest {
         }
     }
 
+    /** A method with its parameter is written with it and reads back as the same method. */
+    @Test
+    void aMethodWithItsParameterReadsBackAsItself() {
+        Scene scene = SceneFile.parse("""
+                {"camera": {"eye": [0, 0, 3]}, "light": {"thetaDeg": 30}, "shape": {"kind": "sphere"},
+                 "material": {"patch": {"procedural": "blazed"}, "variant": {"type": "baked", "of": "flss"}}}
+                """, "baked.json", Path.of("/"), null);
+        String text = SceneWriter.json(scene);
+        assertTrue(text.contains("\"variant\" : \"baked(of=flss)\""), text);
+        Scene again = SceneFile.parse(text, "dumped", Path.of("/"), null);
+        assertEquals(scene.material().settings().variant(), again.material().settings().variant());
+        assertEquals(diffract.optics.Variant.BAKED.of(diffract.optics.Variant.FLSS),
+                again.material().settings().variant());
+    }
+
     @Test
     void theTextSpellsOutTheDefaultsAScenesFileLeavesOut() {
         Scene minimal = SceneFile.parse("""
