@@ -11,6 +11,7 @@ import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TaylorTermComputer;
+import diffract.render.BakedTables;
 import diffract.render.DiffractionTextures;
 import diffract.render.GpuBrdfMap;
 import diffract.util.Reporter;
@@ -33,6 +34,7 @@ public final class DiffractionPipeline {
     private final NamedPatch patch;
     private final TermSource termSource;
     private final Map<Double, PhaseCentredTerms> centredByShortestLambda = new ConcurrentHashMap<>();
+    private final BakedTables tables = new BakedTables();
 
     public DiffractionPipeline(NamedPatch patch, TermSource termSource) {
         this.patch = patch;
@@ -65,6 +67,11 @@ public final class DiffractionPipeline {
 
     public NamedPatch patch() {
         return patch;
+    }
+
+    /** The patch's baked tables: baked (or loaded from the disk cache) once, kept while the pipeline lives. */
+    public BakedTables tables() {
+        return tables;
     }
 
     /** Terms 0..N (or more) of the patch. */
@@ -101,7 +108,7 @@ public final class DiffractionPipeline {
 
     /** A GPU BRDF map (a hidden GL context: close it) on the path the settings ask for. */
     public GpuBrdfMap gpuMap(BrdfSettings settings, double shortestLambdaNm, Reporter reporter) {
-        return new GpuBrdfMap(evaluation(settings, shortestLambdaNm, reporter), settings, reporter);
+        return new GpuBrdfMap(evaluation(settings, shortestLambdaNm, reporter), settings, tables, reporter);
     }
 
     /**
@@ -110,7 +117,7 @@ public final class DiffractionPipeline {
      */
     public DiffractionTextures textures(BrdfSettings settings, TaylorTerms termsAtHand, Reporter reporter) {
         TaylorEvaluation e = evaluation(settings, termsAtHand, settings.spectral().lambdaMinNm(), reporter);
-        return DiffractionTextures.of(e, settings, reporter);
+        return DiffractionTextures.of(e, settings, tables, reporter);
     }
 
     /** Terms from another patch would render a different surface than the one named: refuse them. */

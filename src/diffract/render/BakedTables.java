@@ -21,11 +21,11 @@ import java.util.concurrent.CompletionException;
 
 /**
  * Baked tables cached in memory per (patch terms, settings), so a viewer or a benchmark that draws the same patch
- * again never bakes twice, and on disk ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table
+ * again never bakes twice: each {@link diffract.pipeline.DiffractionPipeline} owns one for its patch, and on disk ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table
  * instead of baking it. In memory, terms are compared by identity (they are immutable); on disk, by their content
  * hash. Settings are compared by value, with the variant, the term format and the Fresnel model ignored (the table
  * is that of the method it tabulates on float32 terms, whatever table method asks, before the gain factor). The least
- * recently used table is dropped from memory beyond {@link #MAX_TABLES}: a table can take hundreds of MB.
+ * recently used table is dropped from memory beyond {@link #MAX_TABLES} per cache: a table can take hundreds of MB.
  * Thread-safe; a request for a table being baked (or loaded) waits for that bake.
  */
 public final class BakedTables {
@@ -44,14 +44,14 @@ public final class BakedTables {
         }
     }
 
-    private static final Map<Key, BakedTable> CACHE = new LinkedHashMap<>(4, 0.75f, true) {
+    private final Map<Key, BakedTable> inMemory = new LinkedHashMap<>(4, 0.75f, true) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<Key, BakedTable> eldest) {
             return size() > MAX_TABLES;
         }
     };
     /** Bakes under way: a second caller waits for the first one's table instead of baking it again. */
-    private static final Map<Key, CompletableFuture<BakedTable>> BAKING = new HashMap<>();
+    private final Map<Key, CompletableFuture<BakedTable>> baking = new HashMap<>();
     /**
      * Disk keys already worked out (they preprocess the bake's shaders), by the terms' content hash, settings and
      * method: not by the terms themselves, which would keep large terms alive.
@@ -62,10 +62,11 @@ public final class BakedTables {
             return size() > 16;
         }
     };
-    private static int bakes;
-    private static int loads;
+    private int bakes;
+    private int loads;
 
-    private BakedTables() {
+    /** An empty cache: a pipeline's own (every table of its patch), or a caller's that draws without one. */
+    public BakedTables() {
     }
 
     /**
@@ -75,34 +76,34 @@ public final class BakedTables {
      * FLSS). A baked table is stored in the disk cache. The bake runs
      * outside the cache's lock, so {@link #isBaked} answers at once while a table bakes.
      */
-    public static BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+    public BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
         Key key = key(terms, settings);
         while (true) {
             CompletableFuture<BakedTable> mine = null;
             CompletableFuture<BakedTable> pending;
-            synchronized (BakedTables.class) {
-                BakedTable table = CACHE.get(key);
+            synchronized (this) {
+                BakedTable table = inMemory.get(key);
                 if (table != null) {
                     return table;
                 }
-                pending = BAKING.get(key);
+                pending = baking.get(key);
                 if (pending == null) {
                     mine = new CompletableFuture<>();
-                    BAKING.put(key, mine);
+                    baking.put(key, mine);
                     pending = mine;
                 }
             }
             if (mine != null) {
                 try {
                     BakedTable table = loadOrBake(terms, settings, key, reporter);
-                    synchronized (BakedTables.class) {
-                        CACHE.put(key, table);
-                        BAKING.remove(key);
+                    synchronized (this) {
+                        inMemory.put(key, table);
+                        baking.remove(key);
                     }
                     mine.complete(table);
                 } catch (RuntimeException | Error e) {
-                    synchronized (BakedTables.class) {
-                        BAKING.remove(key);
+                    synchronized (this) {
+                        baking.remove(key);
                     }
                     mine.completeExceptionally(e);
                     throw e;
@@ -125,11 +126,11 @@ public final class BakedTables {
      * loaded now, in a fraction of a second); empty when it would have to be baked, or is being baked. The viewer
      * asks this to draw a table from disk at once instead of previewing while it "bakes".
      */
-    public static Optional<BakedTable> ofStored(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+    public Optional<BakedTable> ofStored(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
         Key key = key(terms, settings);
-        synchronized (BakedTables.class) {
-            BakedTable table = CACHE.get(key);
-            if (table != null || BAKING.containsKey(key)) {
+        synchronized (this) {
+            BakedTable table = inMemory.get(key);
+            if (table != null || baking.containsKey(key)) {
                 return Optional.ofNullable(table);
             }
         }
@@ -142,22 +143,22 @@ public final class BakedTables {
             return Optional.empty();
         }
         CompletableFuture<BakedTable> mine = new CompletableFuture<>();
-        synchronized (BakedTables.class) {
-            BakedTable table = CACHE.get(key);
-            if (table != null || BAKING.containsKey(key)) {
+        synchronized (this) {
+            BakedTable table = inMemory.get(key);
+            if (table != null || baking.containsKey(key)) {
                 return Optional.ofNullable(table);
             }
-            BAKING.put(key, mine);
+            baking.put(key, mine);
         }
         BakedTable table = null;
         try {
             table = load(cache, diskKey, key, reporter);
         } finally {
-            synchronized (BakedTables.class) {
+            synchronized (this) {
                 if (table != null) {
-                    CACHE.put(key, table);
+                    inMemory.put(key, table);
                 }
-                BAKING.remove(key);
+                baking.remove(key);
             }
             mine.complete(table); // null: a caller of of() that waited bakes the table itself
         }
@@ -165,7 +166,7 @@ public final class BakedTables {
     }
 
     /** The table from the disk cache, else baked now (and then stored there). */
-    private static BakedTable loadOrBake(TaylorTerms terms, BrdfSettings settings, Key key, Reporter reporter) {
+    private BakedTable loadOrBake(TaylorTerms terms, BrdfSettings settings, Key key, Reporter reporter) {
         DiskCache cache = DiskCache.user();
         DiskCache.Key diskKey = cache.enabled() ? diskKey(key) : null;
         if (diskKey != null) {
@@ -175,7 +176,7 @@ public final class BakedTables {
             }
         }
         BakedTable table = bakeOffThisThread(terms, settings, key.tabulated(), reporter);
-        synchronized (BakedTables.class) {
+        synchronized (this) {
             bakes++;
         }
         if (diskKey == null) {
@@ -195,13 +196,13 @@ public final class BakedTables {
     }
 
     /** The table of the disk cache's entry, or null when there is none or it is damaged (then said as a warning). */
-    private static BakedTable load(DiskCache cache, DiskCache.Key diskKey, Key key, Reporter reporter) {
+    private BakedTable load(DiskCache cache, DiskCache.Key diskKey, Key key, Reporter reporter) {
         long start = System.nanoTime();
         BakedGrid grid = BakedGrid.of(key.settings(), key.terms().maxAbsHeightUm());
         BakedTable table = cache.load(diskKey, in -> BakedTableFile.read(in, grid, key.tabulated()), reporter,
                 "baking the table again");
         if (table != null) {
-            synchronized (BakedTables.class) {
+            synchronized (this) {
                 loads++;
             }
             reporter.info(String.format(Locale.ROOT, "loaded the %s from the disk cache in %.1f s (its bake took %.1f s): "
@@ -222,22 +223,22 @@ public final class BakedTables {
     /** The disk cache's key of an in-memory key, worked out once. */
     private static DiskCache.Key diskKey(Key key) {
         String memo = key.terms().contentSha256() + " " + key.settings() + " " + key.tabulated().spec();
-        synchronized (BakedTables.class) {
+        synchronized (DISK_KEYS) {
             DiskCache.Key known = DISK_KEYS.get(memo);
             if (known != null) {
                 return known;
             }
         }
         DiskCache.Key computed = BakedTableFile.key(key.terms(), key.settings(), key.tabulated());
-        synchronized (BakedTables.class) {
+        synchronized (DISK_KEYS) {
             DISK_KEYS.put(memo, computed);
         }
         return computed;
     }
 
     /** Whether the table of these terms and settings is baked and cached (answers at once, even during a bake). */
-    public static synchronized boolean isBaked(TaylorTerms terms, BrdfSettings settings) {
-        return CACHE.containsKey(key(terms, settings));
+    public synchronized boolean isBaked(TaylorTerms terms, BrdfSettings settings) {
+        return inMemory.containsKey(key(terms, settings));
     }
 
     /** The table is made on float32 terms before the gain factor, whatever variant, term format and Fresnel ask. */
@@ -279,18 +280,20 @@ public final class BakedTables {
     }
 
     /** How many tables were baked so far (tests: the cache bakes once). */
-    public static synchronized int bakeCount() {
+    public synchronized int bakeCount() {
         return bakes;
     }
 
     /** How many tables were loaded from the disk cache so far (tests: a stored table is not baked again). */
-    public static synchronized int loadCount() {
+    public synchronized int loadCount() {
         return loads;
     }
 
     /** Forgets the tables in memory, as a new process starts (tests: the next request reads the disk cache). */
-    public static synchronized void forgetInMemory() {
-        CACHE.clear();
-        DISK_KEYS.clear();
+    public synchronized void forgetInMemory() {
+        inMemory.clear();
+        synchronized (DISK_KEYS) {
+            DISK_KEYS.clear();
+        }
     }
 }

@@ -101,10 +101,14 @@ public final class DiffractionTextures {
         this.phaseCentres = phaseCentres;
     }
 
-    /** The textures of the path {@link TaylorEvaluation#choose} picked: the thesis' terms or the phase-centred ones. */
-    public static DiffractionTextures of(TaylorEvaluation evaluation, BrdfSettings settings, Reporter reporter) {
+    /**
+     * The textures of the path {@link TaylorEvaluation#choose} picked: the thesis' terms or the phase-centred ones; a
+     * baked table comes from {@code tables} (the pipeline's), baked there first if it is not at hand.
+     */
+    public static DiffractionTextures of(TaylorEvaluation evaluation, BrdfSettings settings, BakedTables tables,
+                                         Reporter reporter) {
         return evaluation.isPhaseCentred() ? ofPhaseCentred(evaluation.centredTerms(), settings)
-                : of(evaluation.plainTerms(), settings, reporter);
+                : of(evaluation.plainTerms(), settings, tables, reporter);
     }
 
     /** Terms 0..N (which the terms must hold) and the tables for the settings' wavelengths. */
@@ -112,8 +116,14 @@ public final class DiffractionTextures {
         return of(terms, settings, Reporter.SILENT);
     }
 
-    /** As above; a BAKED table that is not cached yet is baked first, with progress on {@code reporter}. */
+    /** As above; a table is baked (or loaded from the disk cache) for these textures alone, with progress on {@code reporter}. */
     public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
+        return of(terms, settings, new BakedTables(), reporter);
+    }
+
+    /** As above, a baked table from {@code tables}, baked there first if it is not at hand. */
+    public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, BakedTables tables,
+                                         Reporter reporter) {
         if (settings.taylor().highestOrder() > terms.highestOrder()) {
             throw new IllegalArgumentException("Taylor order " + settings.taylor().highestOrder()
                     + " requested, the terms hold 0.." + terms.highestOrder());
@@ -130,7 +140,7 @@ public final class DiffractionTextures {
             }
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
-        BakedTable baked = settings.variant().drawsTable() ? BakedTables.of(terms, settings, reporter) : null;
+        BakedTable baked = settings.variant().drawsTable() ? tables.of(terms, settings, reporter) : null;
         DiffractionTextures textures = new DiffractionTextures(termTexture, normalised
                 ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), terms, settings, highestOrder,
@@ -138,7 +148,7 @@ public final class DiffractionTextures {
         int lobeOrder = highestOrder;
         textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lobeOrder, lambdaMinNm,
                 tolerance);
-        textures.lobesTableSource = r -> BakedTables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r);
+        textures.lobesTableSource = r -> tables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r);
         return textures;
     }
 

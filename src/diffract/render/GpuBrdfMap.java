@@ -55,11 +55,16 @@ public final class GpuBrdfMap implements AutoCloseable {
     }
 
     /**
-     * The map on the path {@link TaylorEvaluation#choose} picked for a patch; a baked table not cached yet is baked
-     * first, with progress on {@code reporter}.
+     * The map on the path {@link TaylorEvaluation#choose} picked for a patch; a baked table is baked (or loaded from
+     * the disk cache) for this map alone, with progress on {@code reporter}.
      */
     public GpuBrdfMap(TaylorEvaluation evaluation, BrdfSettings settings, Reporter reporter) {
-        this(DiffractionTextures.of(evaluation, requireGpuVariant(settings), reporter), settings);
+        this(evaluation, settings, new BakedTables(), reporter);
+    }
+
+    /** As above, a baked table from {@code tables} (a pipeline's), baked there first if it is not at hand. */
+    public GpuBrdfMap(TaylorEvaluation evaluation, BrdfSettings settings, BakedTables tables, Reporter reporter) {
+        this(DiffractionTextures.of(evaluation, requireGpuVariant(settings), tables, reporter), settings);
     }
 
     private static BrdfSettings requireGpuVariant(BrdfSettings settings) {

@@ -10,7 +10,6 @@ import diffract.jrtr.TiledFrame;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
 
-import diffract.render.BakedTables;
 import diffract.scene.DisplayMode;
 
 import java.util.ArrayList;
@@ -360,9 +359,9 @@ public final class RefiningRenderer implements GLEventListener {
                 renderer.stats().frameCount());
     }
 
-    private static boolean tableReady(ViewerState state) {
+    private boolean tableReady(ViewerState state) {
         BrdfSettings s = state.drawableSettings();
-        return s.variant().drawsTable() && BakedTables.isBaked(state.terms(), s);
+        return s.variant().drawsTable() && model.pipeline().tables().isBaked(state.terms(), s);
     }
 
     /**

@@ -12,7 +12,7 @@ import java.util.concurrent.ExecutorService;
 /**
  * Bakes the baked variant's table in the background when the window needs one it has not got (a bake takes
  * minutes on a software rasteriser): the window shows the preview meanwhile, the title the bake's progress. The
- * table goes into {@link BakedTables}' cache, where the render thread finds it. One bake at a time; a request
+ * table goes into the pipeline's {@link BakedTables}, where the render thread finds it. One bake at a time; a request
  * during a bake is dropped, and the window asks again when the bake ends if it still needs another table. A table
  * in the disk cache is loaded on the asking thread instead ({@link #loadStored}): that takes a fraction of a second,
  * so the window draws it at full quality at once.
@@ -31,7 +31,7 @@ public final class TableBaker implements AutoCloseable {
 
     /** Starts baking the table of these terms and settings unless a bake is under way; returns at once. */
     public synchronized void ensureBaked(TaylorTerms terms, BrdfSettings settings) {
-        if (busy || BakedTables.isBaked(terms, settings)) {
+        if (busy || model.pipeline().tables().isBaked(terms, settings)) {
             return;
         }
         busy = true;
@@ -44,7 +44,7 @@ public final class TableBaker implements AutoCloseable {
      * cache (a damaged entry is said as a notice, and then baked by {@link #ensureBaked}).
      */
     public boolean loadStored(TaylorTerms terms, BrdfSettings settings) {
-        return BakedTables.ofStored(terms, settings, new ProgressToModel()).isPresent();
+        return model.pipeline().tables().ofStored(terms, settings, new ProgressToModel()).isPresent();
     }
 
     /** Whether a bake is under way. */
@@ -54,10 +54,11 @@ public final class TableBaker implements AutoCloseable {
 
     private void bake(TaylorTerms terms, BrdfSettings settings) {
         try {
-            BakedTables.of(terms, settings, new ProgressToModel());
+            model.pipeline().tables().of(terms, settings, new ProgressToModel());
             model.update(s -> s.withBake(null));
         } catch (RuntimeException e) {
-            // back to the fallback method, whose textures need no bake, so the window does not ask for the failing table again
+            // back to the fallback method, whose textures need no bake, so the window does not ask for the failing
+            // table again
             model.update(s -> s.withBake(null)
                     .withSettings(s.settings().variant().drawsTable() ? s.settings().with(b -> b.variant(FALLBACK))
                             : s.settings())

@@ -5,7 +5,6 @@ import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
 
 import diffract.pipeline.DiffractionPipeline;
-import diffract.render.BakedTables;
 import diffract.scene.SceneSetup;
 import diffract.util.Reporter;
 
@@ -74,13 +73,13 @@ public final class ViewerModel {
 
     /**
      * Bakes the BAKED table of the current state now, on the calling thread, if the state draws the baked variant:
-     * the table is then in {@link diffract.render.BakedTables}' cache when an offscreen frame asks for it, and its
+     * the table is then in the pipeline's {@link diffract.render.BakedTables} when an offscreen frame asks for it, and its
      * progress shows on the console (the viewer's window bakes in the background instead, {@link TableBaker}).
      */
     public void bakeIfNeeded(Reporter reporter) {
         ViewerState s = state();
         if (s.drawableSettings().variant().drawsTable()) {
-            BakedTables.of(s.terms(), s.drawableSettings(), reporter);
+            pipeline().tables().of(s.terms(), s.drawableSettings(), reporter);
         }
     }
 

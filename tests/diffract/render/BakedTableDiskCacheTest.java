@@ -39,17 +39,19 @@ class BakedTableDiskCacheTest {
     @TempDir
     Path dir;
     private TestCache cache;
+    /** The tables of one pipeline. */
+    private BakedTables tables;
 
     @BeforeEach
     void ownCache() {
         cache = TestCache.at(dir.resolve("cache"));
-        BakedTables.forgetInMemory();
+        tables = new BakedTables();
     }
 
     @AfterEach
     void backToTheBuildsCache() {
         cache.close();
-        BakedTables.forgetInMemory();
+        tables.forgetInMemory();
     }
 
     /** A small table: 9 x 9 x 2 samples at 20 nm bake in well under a second on llvmpipe. */
@@ -94,19 +96,19 @@ class BakedTableDiskCacheTest {
         assertEquals(Variant.FLSS, BakedTables.tabulated(terms, methods.get(0)));
         assertEquals(Variant.LOBES, BakedTables.tabulated(terms, methods.get(1)));
         for (BrdfSettings settings : methods) {
-            int bakes = BakedTables.bakeCount();
+            int bakes = tables.bakeCount();
             Reporter.Collecting first = new Reporter.Collecting();
-            BakedTable baked = BakedTables.of(terms, settings, first);
-            assertEquals(bakes + 1, BakedTables.bakeCount(), "the first run bakes");
+            BakedTable baked = tables.of(terms, settings, first);
+            assertEquals(bakes + 1, tables.bakeCount(), "the first run bakes");
             assertTrue(first.infos().stream().anyMatch(s -> s.startsWith("stored the table baked in")
                     && s.contains(BakedTableFile.KIND)), first.infos().toString());
 
-            BakedTables.forgetInMemory(); // a new process
-            int loads = BakedTables.loadCount();
+            tables.forgetInMemory(); // a new process
+            int loads = tables.loadCount();
             Reporter.Collecting second = new Reporter.Collecting();
-            BakedTable loaded = BakedTables.of(recomputed(terms), settings, second);
-            assertEquals(bakes + 1, BakedTables.bakeCount(), "a later run does not bake");
-            assertEquals(loads + 1, BakedTables.loadCount());
+            BakedTable loaded = tables.of(recomputed(terms), settings, second);
+            assertEquals(bakes + 1, tables.bakeCount(), "a later run does not bake");
+            assertEquals(loads + 1, tables.loadCount());
             assertTrue(second.infos().stream().anyMatch(s -> s.startsWith("loaded the 9 x 9 x 2 table")
                     && s.contains("from the disk cache")), second.infos().toString());
             assertTrue(second.warnings().isEmpty(), second.warnings().toString());
@@ -124,7 +126,7 @@ class BakedTableDiskCacheTest {
     void aDamagedEntryIsSaidAndBakedAgain() throws IOException {
         GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
-        float[] expected = BakedTables.of(terms, small(), Reporter.SILENT).values();
+        float[] expected = tables.of(terms, small(), Reporter.SILENT).values();
         Path entry = entries().get(0);
         byte[] good = Files.readAllBytes(entry);
         byte[] flipped = good.clone();
@@ -132,20 +134,20 @@ class BakedTableDiskCacheTest {
         flipped[good.length / 2 + 1] ^= (byte) 0xff;
         for (byte[] damaged : List.of(flipped, Arrays.copyOf(good, good.length - 200))) {
             Files.write(entry, damaged);
-            BakedTables.forgetInMemory();
-            int bakes = BakedTables.bakeCount();
+            tables.forgetInMemory();
+            int bakes = tables.bakeCount();
             Reporter.Collecting reporter = new Reporter.Collecting();
-            BakedTable again = BakedTables.of(recomputed(terms), small(), reporter);
-            assertEquals(bakes + 1, BakedTables.bakeCount(), "a damaged entry is baked again");
+            BakedTable again = tables.of(recomputed(terms), small(), reporter);
+            assertEquals(bakes + 1, tables.bakeCount(), "a damaged entry is baked again");
             assertEquals(1, reporter.warnings().size(), reporter.warnings().toString());
             String warning = reporter.warnings().get(0);
             assertTrue(warning.startsWith(entry + " is damaged (") && warning.endsWith("): baking the table again"),
                     warning);
             assertArrayEquals(bits(expected), bits(again.values()));
-            BakedTables.forgetInMemory();
+            tables.forgetInMemory();
             Reporter.Collecting repaired = new Reporter.Collecting();
-            BakedTables.of(recomputed(terms), small(), repaired);
-            assertEquals(bakes + 1, BakedTables.bakeCount(), "the entry is whole again");
+            tables.of(recomputed(terms), small(), repaired);
+            assertEquals(bakes + 1, tables.bakeCount(), "the entry is whole again");
             assertTrue(repaired.warnings().isEmpty(), repaired.warnings().toString());
         }
     }
@@ -155,16 +157,16 @@ class BakedTableDiskCacheTest {
     void aTableOnDiskIsAtHandWithoutABake() {
         GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
-        int bakes = BakedTables.bakeCount();
-        assertEquals(Optional.empty(), BakedTables.ofStored(terms, small(), Reporter.SILENT));
-        assertFalse(BakedTables.isBaked(terms, small()));
-        assertEquals(bakes, BakedTables.bakeCount(), "asking does not bake");
-        BakedTables.of(terms, small(), Reporter.SILENT);
-        BakedTables.forgetInMemory();
+        int bakes = tables.bakeCount();
+        assertEquals(Optional.empty(), tables.ofStored(terms, small(), Reporter.SILENT));
+        assertFalse(tables.isBaked(terms, small()));
+        assertEquals(bakes, tables.bakeCount(), "asking does not bake");
+        tables.of(terms, small(), Reporter.SILENT);
+        tables.forgetInMemory();
         TaylorTerms again = recomputed(terms);
-        assertTrue(BakedTables.ofStored(again, small(), Reporter.SILENT).isPresent());
-        assertTrue(BakedTables.isBaked(again, small()), "loaded into memory");
-        assertEquals(bakes + 1, BakedTables.bakeCount());
+        assertTrue(tables.ofStored(again, small(), Reporter.SILENT).isPresent());
+        assertTrue(tables.isBaked(again, small()), "loaded into memory");
+        assertEquals(bakes + 1, tables.bakeCount());
     }
 
     /** With the disk cache off (--no-cache), a bake neither reads nor writes the cache folder. */
@@ -174,11 +176,11 @@ class BakedTableDiskCacheTest {
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         DiskCache.useDisk(false);
         try {
-            int bakes = BakedTables.bakeCount();
-            BakedTables.of(terms, small(), Reporter.SILENT);
-            BakedTables.forgetInMemory();
-            BakedTables.of(terms, small(), Reporter.SILENT);
-            assertEquals(bakes + 2, BakedTables.bakeCount(), "nothing is read: baked again");
+            int bakes = tables.bakeCount();
+            tables.of(terms, small(), Reporter.SILENT);
+            tables.forgetInMemory();
+            tables.of(terms, small(), Reporter.SILENT);
+            assertEquals(bakes + 2, tables.bakeCount(), "nothing is read: baked again");
             assertFalse(Files.exists(dir.resolve("cache")), "nothing is written");
         } finally {
             DiskCache.useDisk(true);

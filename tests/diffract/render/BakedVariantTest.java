@@ -160,10 +160,11 @@ class BakedVariantTest {
         GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(33, 0));
-        int before = BakedTables.bakeCount();
-        DiffractionTextures first = DiffractionTextures.of(terms, settings);
-        DiffractionTextures second = DiffractionTextures.of(terms, settings);
-        assertEquals(before + 1, BakedTables.bakeCount(), "the same patch and settings bake once");
+        BakedTables tables = new BakedTables(); // a pipeline's
+        int before = tables.bakeCount() + tables.loadCount();
+        DiffractionTextures first = DiffractionTextures.of(terms, settings, tables, Reporter.SILENT);
+        DiffractionTextures second = DiffractionTextures.of(terms, settings, tables, Reporter.SILENT);
+        assertEquals(before + 1, tables.bakeCount() + tables.loadCount(), "the same patch and settings bake once");
         assertTrue(first.baked() == second.baked());
         BakedTable table = first.baked();
         int w = BakedGrid.automaticWSamples(settings, terms.maxAbsHeightUm());
@@ -173,8 +174,8 @@ class BakedVariantTest {
         assertEquals(33L * 33 * w * 12, table.hostBytes());
         assertEquals(table.gpuBytes(), first.bakedTexture().gpuBytes());
         assertEquals(3 * 33 * 33 * w, table.values().length);
-        DiffractionTextures.of(terms, settings.with(b -> b.lambdaStepNm(10)));
-        assertEquals(before + 2, BakedTables.bakeCount(), "other settings, another table");
+        DiffractionTextures.of(terms, settings.with(b -> b.lambdaStepNm(10)), tables, Reporter.SILENT);
+        assertEquals(before + 2, tables.bakeCount() + tables.loadCount(), "other settings, another table");
         // the (u, v) resolution that would resolve the thesis' 65 um orders, and the automatic cap
         BrdfSettings thesis = BrdfSettings.thesis(Variant.BAKED);
         assertEquals(2151, BakedGrid.uvSamplesToResolve(thesis));
@@ -252,7 +253,7 @@ class BakedVariantTest {
         GlTestSupport.assumeOffscreenGl();
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(9, 2)).with(b -> b.lambdaStepNm(20));
-        int before = BakedTables.bakeCount();
+        BakedTables tables = new BakedTables();
         try (diffract.jrtr.OffscreenTarget outer = new diffract.jrtr.OffscreenTarget(new diffract.jrtr.Renderer(
                 new diffract.jrtr.Group("empty"), new diffract.jrtr.Camera(), new diffract.jrtr.Frustum()))) {
             int[] bindings = outer.withContext(gl -> {
@@ -261,7 +262,7 @@ class BakedVariantTest {
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, framebuffer[0]);
                 Object context = diffract.jrtr.HeadlessGL.currentContext();
                 assertNotNull(context, "a context is current inside withContext");
-                BakedTables.of(terms, settings, Reporter.SILENT);
+                tables.of(terms, settings, Reporter.SILENT);
                 int[] after = new int[3];
                 gl.glGetIntegerv(com.jogamp.opengl.GL2ES3.GL_DRAW_FRAMEBUFFER_BINDING, after, 0);
                 after[1] = framebuffer[0];
@@ -273,7 +274,7 @@ class BakedVariantTest {
             assertEquals(1, bindings[2], "the caller's context is still current");
             assertEquals(bindings[1], bindings[0], "the caller's framebuffer is still bound");
         }
-        assertEquals(before + 1, BakedTables.bakeCount());
+        assertEquals(1, tables.bakeCount() + tables.loadCount());
     }
 
     private static Xyz spectralXyz(PatchSpectrum spectrum, WavelengthSampling sampling, double u, double v, double w) {

@@ -162,11 +162,13 @@ class ViewerResponsivenessTest {
             // N = 20: the thesis' series reaches this patch, which the baked table is made of
             ViewerModel m = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
                     .with(b -> b.variant(Variant.BAKED).highestOrder(20).bakedSamples(24, 8))), Reporter.SILENT);
-            int bakes = BakedTables.bakeCount();
+            BakedTables tables = m.pipeline().tables();
+            tables.forgetInMemory(); // as a new process
+            int bakes = tables.bakeCount();
             open(m);
             assertTrue(ViewerTestSupport.awaitRefined(viewer, model), viewer.refinement().toString());
-            assertEquals(bakes + 1, BakedTables.bakeCount(), "the window baked the table once");
-            assertTrue(BakedTables.isBaked(model.state().terms(), model.state().drawableSettings()));
+            assertEquals(bakes + 1, tables.bakeCount(), "the window baked the table once");
+            assertTrue(tables.isBaked(model.state().terms(), model.state().drawableSettings()));
             assertNull(model.state().bake());
             assertEquals(Variant.BAKED, viewer.refinement().state().drawableSettings().variant());
             assertTrue(ViewerTestSupport.waitFor(() -> viewer.title().contains("| baked N=20")
@@ -181,14 +183,15 @@ class ViewerResponsivenessTest {
         try (TestCache ignored = TestCache.at(cacheDir)) {
             ViewerModel m = ViewerModel.load(ViewerTestSupport.setup().withSettings(ViewerTestSupport.settings()
                     .with(b -> b.variant(Variant.BAKED).highestOrder(20).bakedSamples(24, 8))), Reporter.SILENT);
-            BakedTables.of(m.state().terms(), m.state().drawableSettings(), Reporter.SILENT); // an earlier run
-            BakedTables.forgetInMemory();
-            int bakes = BakedTables.bakeCount();
-            int loads = BakedTables.loadCount();
+            new BakedTables().of(m.state().terms(), m.state().drawableSettings(), Reporter.SILENT); // an earlier run
+            BakedTables tables = m.pipeline().tables();
+            tables.forgetInMemory(); // as a new process
+            int bakes = tables.bakeCount();
+            int loads = tables.loadCount();
             open(m);
             assertTrue(ViewerTestSupport.awaitRefined(viewer, model), viewer.refinement().toString());
-            assertEquals(bakes, BakedTables.bakeCount(), "the window baked nothing");
-            assertEquals(loads + 1, BakedTables.loadCount(), "it loaded the table once");
+            assertEquals(bakes, tables.bakeCount(), "the window baked nothing");
+            assertEquals(loads + 1, tables.loadCount(), "it loaded the table once");
             assertNull(model.state().bake(), "no bake was started");
             assertEquals(Variant.BAKED, viewer.refinement().state().drawableSettings().variant());
         }
