@@ -8,7 +8,7 @@
 #include "diffraction_common.glsl"
 #include "footprint_covariance.glsl"
 
-// LIGHT_NODES_MAX: the light arrays' size, a define from DiffractionMaterials.LIGHT_NODES_MAX (DiffractionShaders)
+// LIGHT_NODES_MAX: the light arrays' size, a define from LobesGpu.LIGHT_NODES_MAX (DiffractionShaders)
 
 // 1: surface pixels average over their footprint (PixelFilter.BOX); 0: the centre direction only
 // (PixelFilter.POINT). A BRDF map's box is the define LOBES_BOX.
@@ -89,8 +89,9 @@ float erfcPositive(float x) {
     return erfcOverGaussian(x) * exp(-x * x);
 }
 
-// ErrorFunction.fastMassInInterval: (erf(b) - erf(a)) / 2 on the side where it does not cancel, from erfc(|a|) and
-// erfc(|b|) only (two exponentials; selects, not branches, so no lane evaluates a third).
+// ErrorFunction.fastMassInInterval for an interval, a <= b (its selects assume the order; lobeAxis keeps it):
+// (erf(b) - erf(a)) / 2 on the side where it does not cancel, from erfc(|a|) and erfc(|b|) only (two exponentials;
+// selects, not branches, so no lane evaluates a third).
 float massInInterval(float a, float b) {
     float ea = erfcPositive(abs(a));
     float eb = erfcPositive(abs(b));
