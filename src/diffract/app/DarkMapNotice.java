@@ -2,7 +2,6 @@ package diffract.app;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
-import diffract.optics.Variant;
 import diffract.optics.WindowRadii;
 
 import java.util.Locale;
@@ -78,7 +77,7 @@ final class DarkMapNotice {
 
     /** Why a map of a windowed variant holds no light, and the option that shows it. */
     private static String emptyReason(BrdfSettings settings, double extentXUm, double extentYUm, int sizePx) {
-        if (settings.variant() == Variant.REFERENCE) {
+        if (!settings.variant().readsTerms()) {
             return "; try another light (--theta-i, --phi-i) or a larger --size";
         }
         CoherenceWindow window = settings.coherenceWindow();

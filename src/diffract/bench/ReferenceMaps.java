@@ -4,7 +4,9 @@ import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
-import diffract.optics.Variant;
+import diffract.optics.Methods;
+import diffract.pipeline.DiffractionPipeline;
+import diffract.pipeline.NamedPatch;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
 
@@ -14,7 +16,7 @@ import java.io.IOException;
 import java.util.Locale;
 
 /**
- * The CPU reference maps (exact model at 1 nm, {@link Variant#REFERENCE}) the bench and the {@code auto} variant
+ * The CPU reference maps (exact model at 1 nm, {@link Methods.Role#EXACT}) the bench and the {@code auto} variant
  * measure against, kept in the disk cache ({@link DiskCache}, kind {@value #KIND}) by patch content hash, light, size
  * and the settings that change the reference (wavelength range, normalisation, window placement, coherence,
  * refractive index, light size, pixel filter, Fresnel model), so no run computes one of them twice.
@@ -45,14 +47,16 @@ public final class ReferenceMaps {
 
     /** As {@link #xyz}, with the computation's seconds (kept in the cache entry). */
     public Timed timed(BenchPatch patch, double thetaIDeg, int sizePx, BrdfSettings base) {
-        BrdfSettings reference = base.with(b -> b.variant(Variant.REFERENCE));
+        BrdfSettings reference = base.with(b -> b.variant(Methods.Role.EXACT.method()));
         DiskCache.Key key = key(patch, thetaIDeg, sizePx, reference);
         Timed cached = cache.load(key, in -> read(in, sizePx), reporter, "computing the reference map again");
         if (cached != null) {
             return cached;
         }
         long start = System.nanoTime();
-        DiffractionBrdf brdf = DiffractionBrdf.create(reference, patch.field(), null);
+        // the path every command takes from a height field to a picture
+        DiffractionBrdf brdf = DiffractionPipeline.cached(NamedPatch.of("bench:" + patch.name(), patch.field()),
+                reference.spectral().lambdaMinNm()).cpuBrdf(reference, reference.spectral().lambdaMinNm(), reporter);
         float[] xyz = BrdfMap.xyz(brdf, Direction.fromSphericalDeg(thetaIDeg, patch.phiIDeg()), sizePx, reporter);
         double seconds = (System.nanoTime() - start) * 1e-9;
         Timed computed = new Timed(xyz, seconds);

@@ -23,14 +23,14 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
     public static LightPolicy of(BrdfSettings settings) {
         Variant v = settings.variant();
         LightSource light = settings.illumination().light();
-        if (light.isPoint() || v == Variant.REFERENCE || v.filtersLight()) {
+        if (light.isPoint() || v.filtersLight()) {
             return new LightPolicy(settings, settings, Optional.empty());
         }
         return new LightPolicy(settings, settings.with(b -> b.lightSizeDeg(0)), Optional.of(v.label()
                 + " samples the light at its centre only: a light of "
                 + InvalidSettingException.number(light.angularDiameterDeg()) + " degrees ("
-                + light.profile().label() + ") needs the lobes variant, the baked table or the reference (or a point "
-                + "light, 0 degrees)"));
+                + light.profile().label() + ") needs a method that averages over it, " + Methods.listed(
+                Variant::filtersLight, "or") + " (or a point light, 0 degrees)"));
     }
 
     /** The quantity a refusal is about: the light's size. */
@@ -55,6 +55,7 @@ public record LightPolicy(BrdfSettings asked, BrdfSettings usable, Optional<Stri
     public Optional<String> notice() {
         return reason.map(r -> asked.variant().spec() + " samples the light at its centre: the "
                 + InvalidSettingException.number(asked.illumination().light().angularDiameterDeg())
-                + "-degree light is drawn as a point light (lobes and baked filter by its size)");
+                + "-degree light is drawn as a point light (" + Methods.listed(v -> v.filtersLight() && v.runsOnGpu(),
+                "and") + " filter by its size)");
     }
 }

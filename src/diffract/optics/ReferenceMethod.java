@@ -28,6 +28,18 @@ final class ReferenceMethod implements Variant {
         return false;
     }
 
+    /** It integrates every quantity over the light's directions ({@link FilteredReference}). */
+    @Override
+    public boolean filtersLight() {
+        return true;
+    }
+
+    /** It transforms exp(i k w h) of the height field itself. */
+    @Override
+    public boolean readsTerms() {
+        return false;
+    }
+
     @Override
     public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
         return DiffractionBrdf.reference(settings, meanSubtracted);

@@ -51,11 +51,19 @@ public interface Variant {
     }
 
     /**
-     * Whether it averages over an extended light's directions (the lobes method and its baked table); the reference
-     * does too but draws no scenes, and the others sample the light at its centre.
+     * Whether it averages over an extended light's directions (the reference, the lobes method and its baked table);
+     * the others sample the light at its centre.
      */
     default boolean filtersLight() {
         return false;
+    }
+
+    /**
+     * Whether it reads the precomputed Taylor terms (every method but the reference, which transforms the height field
+     * itself): a pipeline computes them for it.
+     */
+    default boolean readsTerms() {
+        return true;
     }
 
     /** Whether it sums the window's texels per fragment and so can place the window under each surface point. */

@@ -8,7 +8,6 @@ import diffract.optics.PhaseCentredTerms;
 import diffract.optics.Quantity;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
-import diffract.optics.Variant;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TaylorTermComputer;
 import diffract.render.BakedTables;
@@ -100,7 +99,7 @@ public final class DiffractionPipeline {
 
     /** The CPU BRDF: the exact reference on the height field itself, a Taylor variant on its evaluation. */
     public DiffractionBrdf cpuBrdf(BrdfSettings settings, double shortestLambdaNm, Reporter reporter) {
-        if (settings.variant() == Variant.REFERENCE) {
+        if (!settings.variant().readsTerms()) {
             return DiffractionBrdf.create(settings, patch.meanSubtracted(), null);
         }
         return evaluation(settings, shortestLambdaNm, reporter).brdf(settings, patch.meanSubtracted());

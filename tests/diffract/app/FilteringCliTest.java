@@ -70,13 +70,13 @@ class FilteringCliTest {
             }
         }
         assertOneLine(run("--variant", "flss", "--light-size-deg", "10", "--light-profile", "disc"),
-                "(disc) needs the lobes variant, the baked table or the reference");
+                "(disc) needs a method that averages over it, reference, baked or lobes (or a point light");
     }
 
     @Test
     void badFilteringOptionsEndWithOneLine() {
         assertOneLine(run("--variant", "flss", "--light-size-deg", "2", "--light-profile", "gaussian"),
-                "(gaussian) needs the lobes variant");
+                "(gaussian) needs a method that averages over it");
         assertOneLine(run("--variant", "lobes", "--fresnel", "squared"), "--fresnel");
         assertOneLine(run("--variant", "lobes", "--light-size-deg", "25"), "angular diameter");
         assertOneLine(run("--variant", "lobes", "--light-size-deg", "1", "--lambda", "550"), "--light-size-deg");

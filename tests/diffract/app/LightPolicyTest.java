@@ -46,11 +46,11 @@ class LightPolicyTest {
             if (!wide.accepted()) {
                 assertEquals(0, wide.usable().illumination().light().angularDiameterDeg(), v.label());
                 assertEquals(v, wide.usable().variant());
-                assertEquals(v.label() + " samples the light at its centre only: a light of 2 degrees (disc) needs the "
-                        + "lobes variant, the baked table or the reference (or a point light, 0 degrees)",
+                assertEquals(v.label() + " samples the light at its centre only: a light of 2 degrees (disc) needs "
+                        + "a method that averages over it, reference, baked or lobes (or a point light, 0 degrees)",
                         wide.reason().get());
                 assertEquals(v.label() + " samples the light at its centre: the 2-degree light is drawn as a point "
-                        + "light (lobes and baked filter by its size)", wide.notice().get());
+                        + "light (baked and lobes filter by its size)", wide.notice().get());
                 InvalidSettingException e = assertThrows(InvalidSettingException.class, wide::requireAccepted);
                 assertEquals(Quantity.LIGHT_SIZE, e.quantity());
             } else {
