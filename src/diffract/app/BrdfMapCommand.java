@@ -174,7 +174,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         NamedPatch named = patch.load("", reporter);
         HeightField field = named.meanSubtracted();
         double phi = light.phiIDeg != null ? light.phiIDeg : patch.periodAzimuthDeg("");
-        BrdfSettings settings = settings(field, phi, reporter);
+        BrdfSettings asked = settings(field, phi, reporter);
+        // a map shown at a known exposure is drawn for it (the lobes method's cutoff, LobeQuadrature.shownAt)
+        BrdfSettings settings = picture.exposure.automatic() ? asked : asked.shownAt(picture.exposure.factor());
         MemoryCheck.brdfMap(field, settings, picture.size, thetaIDeg, light.lambdaNm);
         double shortestLambdaNm = light.lambdaNm != null ? Math.min(light.lambdaNm, settings.spectral().lambdaMinNm())
                 : settings.spectral().lambdaMinNm();
@@ -195,6 +197,18 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         }
         float[] map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
                 : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
+        if (picture.exposure.automatic()) {
+            // the exposure is the map's own: where it shows the map brighter than the cutoff assumed, draw it again
+            // for that exposure (the map can only gain light, so the exposure found first is never too low)
+            BrdfSettings shown = settings.shownAt(AutoExposure.of(luminance(map), picture.size, -wi.x(), -wi.y()));
+            if (shown != settings) {
+                reporter.info(String.format(Locale.ROOT, "drawn again for its exposure: the lobes' cutoff %.3g of "
+                        + "white", shown.lobes().cutoff()));
+                settings = shown;
+                map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
+                        : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
+            }
+        }
         write(map, wi, settings, field.widthUm(), field.heightExtentUm(), reporter);
         System.out.printf(Locale.ROOT, "wrote %s (%dx%d, %s%s%s) in %.1f s%n", output, picture.size, picture.size,
                 settings.variant().spec(), where == Engine.GPU ? ", gpu" : "",
@@ -485,6 +499,16 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 : BrdfMap.xyz(cpu, wi, picture.size, reporter);
     }
 
+    /** rho of a monochromatic map, or Y of a colour one, per pixel. */
+    private float[] luminance(float[] map) {
+        int channels = light.lambdaNm != null ? 1 : 3;
+        float[] luminance = new float[picture.size * picture.size];
+        for (int p = 0; p < luminance.length; p++) {
+            luminance[p] = map[channels * p + channels / 2];
+        }
+        return luminance;
+    }
+
     /**
      * The PNG (display-encoded at the exposure) or OpenEXR (linear) of a colour or monochromatic map, and the optional
      * PFM and OpenEXR (linear, never exposed).
@@ -493,10 +517,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                        Reporter reporter)
             throws IOException {
         int channels = light.lambdaNm != null ? 1 : 3;
-        float[] luminance = new float[picture.size * picture.size];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = map[channels * p + channels / 2]; // rho, or Y of XYZ
-        }
+        float[] luminance = luminance(map);
         double e = picture.exposure.automatic() ? AutoExposure.of(luminance, picture.size, -wi.x(), -wi.y())
                 : picture.exposure.factor();
         if (picture.exposure.automatic()) {

@@ -169,15 +169,18 @@ public final class BenchRunner {
         List<float[]> reference = new ArrayList<>();
         List<float[]> variant = new ArrayList<>();
         List<Double> exposures = new ArrayList<>();
+        for (double theta : lightsDeg) {
+            float[] ref = references.xyz(patch, theta, c.sizePx(), base);
+            reference.add(ref);
+            exposures.add(exposure(ref, Direction.fromSphericalDeg(theta, patch.phiIDeg()), c.sizePx()));
+        }
+        // drawn for the brightest exposure its maps are compared at
+        BrdfSettings shown = c.settings().shownAt(exposures.stream().mapToDouble(Double::doubleValue).max()
+                .orElse(1));
         double ms;
-        try (GpuBrdfMap map = pipelines.get(c.patch()).gpuMap(c.settings(), c.settings().spectral().lambdaMinNm(),
-                reporter)) {
+        try (GpuBrdfMap map = pipelines.get(c.patch()).gpuMap(shown, shown.spectral().lambdaMinNm(), reporter)) {
             for (double theta : lightsDeg) {
-                Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
-                float[] ref = references.xyz(patch, theta, c.sizePx(), base);
-                reference.add(ref);
-                exposures.add(exposure(ref, wi, c.sizePx()));
-                variant.add(map.xyz(wi, c.sizePx()));
+                variant.add(map.xyz(Direction.fromSphericalDeg(theta, patch.phiIDeg()), c.sizePx()));
             }
             ms = map.medianMsPerFrame(Direction.fromSphericalDeg(TIMED_LIGHT_DEG, patch.phiIDeg()), c.sizePx(), 0,
                     TIMED_FRAMES);

@@ -98,13 +98,15 @@ public final class FilteringTargets {
             luminance[p] = reference[3 * p + 1];
         }
         double exposure = AutoExposure.of(luminance, sizePx, -wi.x(), -wi.y());
+        // the lobes method and its table drawn for the exposure they are compared at
+        BrdfSettings lobesShown = lobesHere.shownAt(exposure);
         double lambdaMin = lobesHere.spectral().lambdaMinNm();
         double bakedMean = Double.NaN;
         double bakedP95 = Double.NaN;
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
         String bakedGrid = "-";
-        BrdfSettings baked = lobesHere.with(b -> b.variant(Methods.Role.TABLE.method()).bakedSamples(bakedSamples, bakedWSamples));
+        BrdfSettings baked = lobesShown.with(b -> b.variant(Methods.Role.TABLE.method()).bakedSamples(bakedSamples, bakedWSamples));
         try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
             // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
             bakeSeconds = map.bakedTable().bakeSeconds();
@@ -119,7 +121,7 @@ public final class FilteringTargets {
         } catch (RuntimeException e) {
             reporter.warn(patch.name() + ": no baked table (" + e.getMessage() + ")");
         }
-        try (GpuBrdfMap lobesMap = pipeline.gpuMap(lobesHere, lambdaMin, reporter);
+        try (GpuBrdfMap lobesMap = pipeline.gpuMap(lobesShown, lambdaMin, reporter);
              GpuBrdfMap flssMap = pipeline.gpuMap(flss(), lambdaMin, reporter)) {
             glInfo = lobesMap.info();
             BrdfMapDifference l = BrdfMapDifference.of(reference, lobesMap.xyz(wi, sizePx), sizePx, exposure);

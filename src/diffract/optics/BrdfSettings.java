@@ -50,6 +50,15 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
         return b.build();
     }
 
+    /**
+     * These settings for a picture shown at {@code exposure}: the lobes method's cutoff scaled to what the display
+     * shows ({@link LobeQuadrature#shownAt}).
+     */
+    public BrdfSettings shownAt(double exposure) {
+        LobeQuadrature shown = lobes.shownAt(exposure);
+        return shown == lobes ? this : with(b -> b.lobes(shown));
+    }
+
     /** The coherence window of the illumination, placed as the window settings say. */
     public CoherenceWindow coherenceWindow() {
         return new CoherenceWindow(illumination.sigmaSpatialUm(), window.placement());

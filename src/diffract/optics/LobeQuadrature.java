@@ -57,6 +57,27 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
                 DEFAULT_SUM_NODES_PER_BOX);
     }
 
+    /**
+     * The exposure at which the default cutoff is a third of a display step (docs/bench/cutoff.md): shown brighter, a
+     * skipped lobe is that much brighter on the display.
+     */
+    public static final double CUTOFF_EXPOSURE = 30;
+
+    /**
+     * This quadrature for a picture shown at {@code exposure} (XYZ times it, white at 1): the cutoff holds what a
+     * skipped lobe can show at {@link #CUTOFF_EXPOSURE}, so a brighter picture scales it down by
+     * CUTOFF_EXPOSURE / exposure; a picture shown at that exposure or dimmer keeps it. A dim map shown at the
+     * brightness of its brightest diffracted pixel (a point light's narrow orders, exposures of 10^4) would otherwise
+     * lose lobes that it shows at a tenth of white.
+     */
+    public LobeQuadrature shownAt(double exposure) {
+        if (!(exposure > CUTOFF_EXPOSURE) || cutoff == 0) {
+            return this;
+        }
+        return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes,
+                cutoff * CUTOFF_EXPOSURE / exposure, weightTolerance, sumNodesPerBox);
+    }
+
     /** The same knobs, with the texel sums at this many nodes per lobe's passage (0: never summed). */
     public LobeQuadrature withSumNodesPerBox(double nodes) {
         return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes,

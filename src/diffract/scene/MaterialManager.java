@@ -72,7 +72,8 @@ final class MaterialManager {
         // the light at its centre, said once
         LightPolicy light = LightPolicy.of(s);
         light.notice().ifPresent(reporter::warn);
-        s = light.usable();
+        // drawn for the exposure the scene is shown at (the lobes method's cutoff, LobeQuadrature.shownAt)
+        s = light.usable().shownAt(spec.exposure());
         settings = s;
         pipeline = DiffractionPipeline.cached(patch, settings.spectral().lambdaMinNm());
         SamplingCheck.warnAboutAliasing(patch.meanSubtracted(), settings.spectral().lambdaMinNm(),
