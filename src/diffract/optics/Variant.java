@@ -24,7 +24,19 @@ import java.util.Locale;
  *   <tr><td>{@link #drawsLocalWindow}</td><td>whether it sums a local window's texels per fragment</td>
  *       <td>false</td></tr>
  *   <tr><td>{@link #viewerKey}</td><td>the viewer's key that selects it</td><td>none</td></tr>
+ *   <tr><td>{@link #readsTerms}</td><td>whether it reads the precomputed Taylor terms</td><td>true</td></tr>
+ *   <tr><td>{@link #bakeable}</td><td>whether a baked table can hold it</td><td>false</td></tr>
+ *   <tr><td>{@link #drawsTable}, {@link #tabulated}</td><td>whether it draws a baked table, and of which method
+ *       </td><td>no table</td></tr>
+ *   <tr><td>{@link #of}, {@link #spec}</td><td>the method with another as its parameter, and its name then</td>
+ *       <td>takes none; the label</td></tr>
+ *   <tr><td>{@link #patchRefusal}</td><td>why its shader cannot draw a patch</td><td>draws every patch</td></tr>
+ *   <tr><td>{@link #heapMemory}</td><td>the heap its evaluation takes</td><td>the Taylor terms</td></tr>
+ *   <tr><td>{@link #unsweptSettings}, {@link #sweptExpansion}</td><td>what the bench's sweep holds fixed for it, and
+ *       the expansion it sums there</td><td>none; the thesis' series</td></tr>
  * </table>
+ *
+ * <p>Which method plays which role when a command names none is {@link Methods.Role}'s table.
  *
  * <p>A new method is a class implementing this interface, registered with {@link Methods#register}; the commands,
  * scene files and the bench then find it by its label.
@@ -90,8 +102,9 @@ public interface Variant {
     }
 
     /**
-     * Why it cannot draw a patch of {@code widthUm} x {@code heightUm} with {@code settings}, or empty when it can
-     * (the lobes method sums whole texels and refuses a window that keeps texel pairs).
+     * Why its shader cannot draw a patch of {@code widthUm} x {@code heightUm} with {@code settings}, or empty when it
+     * can (the lobes shader sums whole texels and refuses a window that keeps texel pairs; a scene then draws the
+     * fallback method, {@link Methods.Role#FALLBACK}).
      */
     default java.util.Optional<String> patchRefusal(BrdfSettings settings, double widthUm, double heightUm) {
         return java.util.Optional.empty();
