@@ -2,7 +2,6 @@ package diffract.app;
 
 import diffract.jrtr.DisplayCheck;
 import diffract.optics.Methods;
-import diffract.optics.Variant;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
 import diffract.util.OutputPaths;

@@ -7,7 +7,6 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.Methods;
 import diffract.optics.PixelFilter;
-import diffract.optics.Variant;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;
 import diffract.render.GpuBrdfMap;

@@ -18,7 +18,6 @@ import diffract.optics.PhaseCentredTerms;
 import diffract.optics.Quantity;
 import diffract.optics.TaylorEvaluation;
 import diffract.optics.TaylorTerms;
-import diffract.optics.Variant;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
