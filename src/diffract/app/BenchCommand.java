@@ -281,8 +281,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             throw new UserInputException("map sizes must be between 8 and 1024 pixels");
         }
         // the thesis' settings except the wavelength range and the coherence length asked for
-        BrdfSettings base = BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
-                .coherenceLengthUm(coherenceLengthUm));
+        BrdfSettings base = BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b
+                .lambdaRangeNm(lambdaMinNm, lambdaMaxNm).coherenceLengthUm(coherenceLengthUm));
         Map<String, BenchPatch> patchMap = new LinkedHashMap<>();
         for (BenchPatch p : BenchPatch.named(patches)) {
             patchMap.put(p.name(), p);
@@ -486,8 +486,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
         }
         HeadlessGL.require();
         Files.createDirectories(outputDir);
-        BrdfSettings lobes = BrdfSettings.thesis(Methods.Role.FILTERING.method()).with(b -> b.lambdaRangeNm(lambdaMinNm, lambdaMaxNm)
-                .coherenceLengthUm(coherenceLengthUm));
+        BrdfSettings lobes = BrdfSettings.thesis(Methods.Role.FILTERING.method()).with(b -> b
+                .lambdaRangeNm(lambdaMinNm, lambdaMaxNm).coherenceLengthUm(coherenceLengthUm));
         int bakedUv = bakedSamples == null ? FilteringTargets.DEFAULT_BAKED_UV_SAMPLES : bakedSamples.uv();
         int bakedW = bakedSamples == null ? 0 : bakedSamples.w();
         FilteringTargets targets = new FilteringTargets(new ReferenceMaps(DiskCache.user(), reporter), lobes, sizePx,

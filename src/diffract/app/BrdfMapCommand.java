@@ -195,8 +195,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             writePiece(pipeline, settings, named, phi, shortestLambdaNm, start, reporter);
             return 0;
         }
-        float[] map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
-                : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
+        float[] map = map(where, pipeline, settings, wi, shortestLambdaNm, reporter);
         if (picture.exposure.automatic()) {
             // the exposure is the map's own: where it shows the map brighter than the cutoff assumed, draw it again
             // for that exposure (the map can only gain light, so the exposure found first is never too low)
@@ -205,8 +204,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 reporter.info(String.format(Locale.ROOT, "drawn again for its exposure: the lobes' cutoff %.3g of "
                         + "white", shown.lobes().cutoff()));
                 settings = shown;
-                map = where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
-                        : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
+                map = map(where, pipeline, settings, wi, shortestLambdaNm, reporter);
             }
         }
         write(map, wi, settings, field.widthUm(), field.heightExtentUm(), reporter);
@@ -465,6 +463,13 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         AutoChoice choice = AutoVariant.choose(field, phiDeg, settings, brdf.maxDeltaE, reporter);
         System.out.println(choice.explanation());
         return AutoVariant.settings(choice, settings.taylor().expansion());
+    }
+
+    /** The map drawn where asked. */
+    private float[] map(Engine where, DiffractionPipeline pipeline, BrdfSettings settings, Direction wi,
+                        double shortestLambdaNm, Reporter reporter) {
+        return where == Engine.GPU ? gpuMap(pipeline, settings, wi, shortestLambdaNm, reporter)
+                : cpuMap(pipeline, settings, wi, shortestLambdaNm, reporter);
     }
 
     private float[] gpuMap(DiffractionPipeline pipeline, BrdfSettings settings, Direction wi, double shortestLambdaNm,

@@ -27,7 +27,6 @@ final class MemoryCheck {
      */
     static void brdfMap(HeightField field, BrdfSettings settings, int sizePx, double thetaIDeg, Double lambdaNm) {
         Variant method = settings.variant();
-        int termCount = settings.taylor().highestOrder() + 1;
         double from = lambdaNm != null ? lambdaNm : settings.spectral().lambdaMinNm();
         double to = lambdaNm != null ? lambdaNm : settings.spectral().lambdaMaxNm();
         MemoryEstimate estimate = MemoryEstimate.of(sizePx + "x" + sizePx + " map",
@@ -35,10 +34,10 @@ final class MemoryCheck {
                 .plus(method.heapMemory(field, settings, thetaIDeg, from, to));
         String wayOut;
         if (!method.runsOnGpu()) {
-            long terms = 8L * field.rows() * field.cols() * termCount;
+            Variant thesis = Methods.Role.THESIS.method();
             wayOut = String.format(Locale.ROOT, "crop the patch (memory grows with its samples and its height), or"
-                    + " use --variant %s (its %d terms take %s)", Methods.Role.THESIS.method().label(), termCount,
-                    MemoryEstimate.size(terms));
+                    + " use --variant %s (its %d terms take %s)", thesis.label(), settings.taylor().highestOrder() + 1,
+                    MemoryEstimate.size(thesis.heapMemory(field, settings, thetaIDeg, from, to).bytes()));
         } else if (method.drawsTable()) {
             wayOut = "use fewer --baked-samples, fewer --terms or crop the patch";
         } else {

@@ -83,8 +83,9 @@ public final class FilteringTargets {
 
     /** The thesis' configuration, point-sampled under a point light, at the same coherence and Fresnel model. */
     BrdfSettings flss() {
-        return BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b.coherenceLengthUm(lobes.illumination().coherenceLengthUm())
-                .fresnel(lobes.illumination().fresnel()).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
+        return BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b
+                .coherenceLengthUm(lobes.illumination().coherenceLengthUm()).fresnel(lobes.illumination().fresnel())
+                .lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
     }
 
     public Row measure(BenchPatch patch, DiffractionPipeline pipeline, double lightDeg) {
@@ -105,7 +106,8 @@ public final class FilteringTargets {
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
         String bakedGrid = "-";
-        BrdfSettings baked = lobesShown.with(b -> b.variant(Methods.Role.TABLE.method()).bakedSamples(bakedSamples, bakedWSamples));
+        BrdfSettings baked = lobesShown.with(b -> b.variant(Methods.Role.TABLE.method())
+                .bakedSamples(bakedSamples, bakedWSamples));
         try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
             // the bake's own seconds: a table from the disk cache keeps those of the run that baked it
             bakeSeconds = map.bakedTable().bakeSeconds();

@@ -16,8 +16,7 @@ import java.util.Set;
 /**
  * Which configurations the bench measures, table-driven: every GPU {@link Variant} (all but the CPU-only
  * reference) is swept over the same points, and {@link Variant#unsweptSettings} says which axes a variant
- * ignores (their value stays the thesis' and duplicates are dropped). A new variant needs no line at all, or one
- * in that table.
+ * ignores (their value stays the thesis' and duplicates are dropped). A new variant needs no line here at all.
  */
 public final class SweepPlan {
     /** The axes of a configuration. */
@@ -37,7 +36,6 @@ public final class SweepPlan {
             return quantity != null && method.unsweptSettings().contains(quantity);
         }
     }
-
 
     /**
      * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (docs/baked.md

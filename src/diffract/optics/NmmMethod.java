@@ -38,6 +38,7 @@ final class NmmMethod extends TaylorMethod {
     DiffractionBrdf sampled(BrdfSettings settings, PatchSpectrum spectrum) {
         return DiffractionBrdf.sampledOnTexelCentres(settings, spectrum);
     }
+
     /**
      * Its wavelengths come from the patch (lambda = u L / m, 003 sec. 1.5.2); its lambda step only serves the
      * fallback near the specular direction and stays at the thesis' 5 nm.
@@ -46,5 +47,4 @@ final class NmmMethod extends TaylorMethod {
     public java.util.Set<Quantity> unsweptSettings() {
         return java.util.Set.of(Quantity.LAMBDA_STEP);
     }
-
 }

@@ -129,7 +129,6 @@ public interface Variant {
         return label();
     }
 
-
     /**
      * The BRDF on the CPU for {@code settings} (whose variant is this one): {@code terms} are the precomputed
      * float32 Taylor terms, {@code meanSubtracted} the height field (the reference's). The light policy and the

@@ -23,9 +23,9 @@ import java.util.Locale;
  * The baked method's table: the spectral integral of the method it tabulates (FLSS or the lobes method), XYZ(u, v, w)
  * before the gain factor and shadowing, at the samples of a {@link BakedGrid}, baked on the GPU by that method's bake
  * pass ({@link GpuMethod#bakeFragmentPath}: its shader code per table sample, one w slice per frame, read back as
- * float32) and looked up trilinearly per fragment. The host keeps the float32 values (to upload into any GL context); the GPU holds
- * them as RGB16F by default: half precision rounds to 2^-11 relative (BakedVariantTest holds the specular sample
- * to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders costs (docs/baked.md).
+ * float32) and looked up trilinearly per fragment. The host keeps the float32 values (to upload into any GL
+ * context); the GPU holds them as RGB16F by default: half precision rounds to 2^-11 relative (BakedVariantTest
+ * holds the specular sample to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders costs (docs/baked.md).
  */
 public final class BakedTable {
     /** The GPU format of the table. */
@@ -36,7 +36,6 @@ public final class BakedTable {
     private final FloatTexture3D.Precision precision;
     private final double bakeSeconds;
     private final Variant tabulated;
-    private final boolean filtered;
     private final long shortCells;
 
     /**
@@ -56,7 +55,6 @@ public final class BakedTable {
         this.precision = precision;
         this.bakeSeconds = bakeSeconds;
         this.tabulated = tabulated;
-        this.filtered = tabulated.filtersLight();
         this.shortCells = shortCells;
     }
 
@@ -130,7 +128,7 @@ public final class BakedTable {
 
     /** Whether the samples are cell and light averages (of the lobes method), else point samples (of FLSS). */
     public boolean filtered() {
-        return filtered;
+        return tabulated.filtersLight();
     }
 
     public BakedGrid grid() {
@@ -144,7 +142,7 @@ public final class BakedTable {
 
     /** A new texture of the table for one GL context (the host values are shared, not copied). */
     public FloatTexture3D texture() {
-        return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), rgb, precision, filtered);
+        return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), rgb, precision, filtered());
     }
 
     /** XYZ of sample (i, j, k) = (u_i, v_j, w_k), float32 as baked. */
@@ -157,7 +155,7 @@ public final class BakedTable {
     /** Nominal GPU memory of the table: texels x bytes per texel of its format. */
     public long gpuBytes() {
         long base = grid.bytes(precision.bytesPerTexel());
-        return filtered ? base * 4 / 3 : base; // mip levels per w slice
+        return filtered() ? base * 4 / 3 : base; // mip levels per w slice
     }
 
     /** Host memory of the float32 copy kept for uploads: texels x 12 bytes. */
@@ -177,6 +175,7 @@ public final class BakedTable {
     public String describe() {
         return String.format(Locale.ROOT, "%d x %d x %d table (u, v, w) of %s, %s, %.1f MB on the GPU, %.1f MB on the host",
                 grid.uvSamples(), grid.uvSamples(), grid.wSamples(), tabulated.spec()
-                        + (filtered ? ", cell- and light-averaged" : ""), precision, gpuBytes() / 1e6, hostBytes() / 1e6);
+                        + (filtered() ? ", cell- and light-averaged" : ""), precision, gpuBytes() / 1e6,
+                hostBytes() / 1e6);
     }
 }

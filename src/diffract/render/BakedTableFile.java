@@ -17,8 +17,9 @@ import java.nio.charset.StandardCharsets;
  * A baked table as an entry of the disk cache ({@link DiskCache}, kind {@value #KIND}): its key and its payload.
  * The key holds what the table is made of: the terms' content hash, the settings as the in-memory cache compares
  * them (variant, term format and Fresnel model set to what a bake uses), the tabulated method, the grid, and a
- * hash of the bake program's GLSL text, so a changed shader bakes anew. The payload holds the grid, whether the samples are filtered, the
- * bake's seconds and the float32 samples exactly as baked, so a loaded table equals the baked one bit for bit.
+ * hash of the bake program's GLSL text, so a changed shader bakes anew. The payload holds the grid, whether the
+ * samples are filtered, the bake's seconds and the float32 samples exactly as baked, so a loaded table equals the
+ * baked one bit for bit.
  */
 final class BakedTableFile {
     /** The disk cache's kind of baked tables. */
@@ -66,7 +67,8 @@ final class BakedTableFile {
         boolean filtered = in.readBoolean();
         double bakeSeconds = in.readDouble();
         if (uv != grid.uvSamples() || w != grid.wSamples() || filtered != tabulated.filtersLight()) {
-            throw new IOException("it holds a " + uv + " x " + uv + " x " + w + (filtered ? " filtered" : " point-sampled")
+            throw new IOException("it holds a " + uv + " x " + uv + " x " + w
+                    + (filtered ? " filtered" : " point-sampled")
                     + " table, not the " + grid.uvSamples() + " x " + grid.uvSamples() + " x " + grid.wSamples() + " "
                     + tabulated.spec() + " one of its key");
         }

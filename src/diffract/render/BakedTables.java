@@ -21,11 +21,11 @@ import java.util.concurrent.CompletionException;
 
 /**
  * Baked tables cached in memory per (patch terms, settings), so a viewer or a benchmark that draws the same patch
- * again never bakes twice: each {@link diffract.pipeline.DiffractionPipeline} owns one for its patch, and on disk ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table
- * instead of baking it. In memory, terms are compared by identity (they are immutable); on disk, by their content
+ * again never bakes twice (each pipeline, the layer above, owns one cache for its patch), and on disk
+ * ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table instead of baking it. In memory, terms are compared by identity (they are immutable); on disk, by their content
  * hash. Settings are compared by value, with the variant, the term format and the Fresnel model ignored (the table
- * is that of the method it tabulates on float32 terms, whatever table method asks, before the gain factor). The least
- * recently used table is dropped from memory beyond {@link #MAX_TABLES} per cache: a table can take hundreds of MB.
+ * is that of the method it tabulates on float32 terms, whatever table method asks, before the gain factor). The
+ * least recently used table is dropped from memory beyond {@link #MAX_TABLES} per cache: a table can take hundreds of MB.
  * Thread-safe; a request for a table being baked (or loaded) waits for that bake.
  */
 public final class BakedTables {
@@ -35,7 +35,8 @@ public final class BakedTables {
     private record Key(TaylorTerms terms, BrdfSettings settings, Variant tabulated) {
         @Override
         public boolean equals(Object o) {
-            return o instanceof Key k && k.terms == terms && k.settings.equals(settings) && k.tabulated.equals(tabulated);
+            return o instanceof Key k && k.terms == terms && k.settings.equals(settings)
+                    && k.tabulated.equals(tabulated);
         }
 
         @Override
@@ -73,8 +74,8 @@ public final class BakedTables {
      * The table of these terms and settings, loaded from the disk cache or baked on the first request: of the method
      * the settings' table method holds for the patch ({@link Variant#tabulated}; plain {@code baked}: the lobes
      * method, cell- and light-averaged, when the illumination filters and the lobes shader takes the patch, else
-     * FLSS). A baked table is stored in the disk cache. The bake runs
-     * outside the cache's lock, so {@link #isBaked} answers at once while a table bakes.
+     * FLSS). A baked table is stored in the disk cache. The bake runs outside the cache's lock, so {@link #isBaked}
+     * answers at once while a table bakes.
      */
     public BakedTable of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
         Key key = key(terms, settings);

@@ -247,6 +247,8 @@ public final class DiffractionShaders {
             throw new IllegalArgumentException("no table holds " + settings.variant().spec());
         }
         Map<String, String> defines = defines(settings, highestOrder, radii, null, Target.BRDF_MAP, false, false);
+        // as its BRDF map's program of the settings it bakes with, and the bake pass's own switches
+        method.addDefines(defines, method.bakeSettings(settings), true);
         method.addBakeDefines(defines, settings);
         return ShaderProgram.fromClasspath(vertexPath(Target.BRDF_MAP), method.bakeFragmentPath(), defines);
     }

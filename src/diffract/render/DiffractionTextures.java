@@ -116,7 +116,10 @@ public final class DiffractionTextures {
         return of(terms, settings, Reporter.SILENT);
     }
 
-    /** As above; a table is baked (or loaded from the disk cache) for these textures alone, with progress on {@code reporter}. */
+    /**
+     * As above; a table is baked (or loaded from the disk cache) for these textures alone, with progress on
+     * {@code reporter}.
+     */
     public static DiffractionTextures of(TaylorTerms terms, BrdfSettings settings, Reporter reporter) {
         return of(terms, settings, new BakedTables(), reporter);
     }

@@ -48,7 +48,7 @@ public interface GpuMethod {
         return null;
     }
 
-    /** Defines its bake pass takes beyond those of its BRDF map's program. */
+    /** Defines its bake pass takes beyond those of its BRDF map's program with {@link #bakeSettings}. */
     default void addBakeDefines(java.util.Map<String, String> defines, BrdfSettings settings) {
     }
 

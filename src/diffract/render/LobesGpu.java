@@ -127,20 +127,13 @@ final class LobesGpu implements GpuMethod {
     }
 
     /**
-     * Its table's samples ({@code baked_lobes.frag}) average over their cell of the table ({@code LOBES_BOX}) and,
-     * under a disc, over the disc about the normal ({@code setTableCell}).
+     * Its table's samples ({@code baked_lobes.frag}) average over their cell of the table (the box of
+     * {@link #bakeSettings}, {@code LOBES_BOX}) and, under a disc, over the disc about the normal
+     * ({@code setTableCell}): the defines of its BRDF map's program.
      */
     @Override
     public String bakeFragmentPath() {
         return "diffraction/baked_lobes.frag";
-    }
-
-    @Override
-    public void addBakeDefines(java.util.Map<String, String> defines, BrdfSettings settings) {
-        defines.put("LOBES_BOX", "1");
-        if (averagesOverDisc(settings)) {
-            defines.put("LIGHT_DISC", "1");
-        }
     }
 
     /** Every sample of its table averages over the sample's cell: the pixel box. */
