@@ -14,13 +14,11 @@ import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.Levelling;
-import diffract.optics.io.HeightFieldReader;
 import diffract.optics.TermFormat;
 import diffract.optics.MapBand;
 import diffract.optics.Methods;
 import diffract.optics.Variant;
+import diffract.pipeline.NamedPatch;
 import diffract.util.DiskCache;
 import diffract.util.OutputPaths;
 import diffract.util.Reporter;
@@ -58,18 +56,17 @@ import java.util.function.Function;
                 + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
                 + "maps are cached there.")
 final class BenchCommand implements SplitCommand, Callable<Integer> {
-    @Mixin
-    GpuOption gpu;
+    /** A measured patch's light azimuth: ridges along x, as a snake patch scanned along its scale. */
+    private static final double FILE_PATCH_PHI_DEG = 90;
+
+    @Mixin GpuOption gpu;
 
     @Option(names = {"-o", "--output"}, paramLabel = "DIR",
             description = "Output folder. Required, except with --tile (merge writes the folder then).")
     Path outputDir;
 
-    @Mixin
-    TileOptions tiles;
-
-    @Spec
-    CommandSpec spec;
+    @Mixin TileOptions tiles;
+    @Spec CommandSpec spec;
 
     @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
     boolean quick;
@@ -118,11 +115,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
     @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
     double lambdaMaxNm;
 
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
 
     @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/headless-gl.md): the "
             + "default scene at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, "
@@ -145,30 +139,14 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             description = "--filtering: the lights' angular diameters in degrees (default ${DEFAULT-VALUE}).")
     List<Double> lightsDeg;
 
-    @Option(names = "--patch", paramLabel = "FILE", description = "--filtering: a measured height field to add to the "
-            + "--patches (with --max-height and --pixel-size, as brdfmap reads it).")
-    Path patchFile;
+    /** --filtering: one more patch beside --patches, read as every command reads one. */
+    @Mixin PatchOptions patch;
 
-    @Option(names = "--max-height", paramLabel = "UM", description = "--patch: height of the brightest grey value.")
-    Double maxHeightUm;
-
-    @Option(names = "--pixel-size", paramLabel = "UM", description = "--patch: pixel size dH in micrometres.")
-    Double pixelSizeUm;
-
-    @Option(names = "--channel", paramLabel = "NAME|INDEX",
-            description = "--patch: the channel of a .gwy or .ibw file (default: the first in a length unit).")
-    String channel;
-
-    @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
-            converter = OptionTypes.LevellingNames.Converter.class,
-            description = "--patch: levelling before use, plane, rows or none (default: plane for .gwy and .ibw, "
-                    + "none for exports).")
-    Levelling level;
-
-    @Option(names = "--phi-i", defaultValue = "90", paramLabel = "DEG",
-            description = "--patch: the light's azimuth, in the plane of its period (default ${DEFAULT-VALUE}: "
-                    + "ridges along x, as a snake patch scanned along its scale).")
-    double patchPhiDeg;
+    @Option(names = "--phi-i", paramLabel = "DEG",
+            description = "--filtering with --patch or --synthetic: the light's azimuth, in the plane of the patch's "
+                    + "period (default: 90 for a --patch FILE, ridges along x as a snake patch scanned along its "
+                    + "scale; a --synthetic patch's own).")
+    Double patchPhiDeg;
 
     @Option(names = "--suite-scene", paramLabel = "FILE",
             description = "GPU suite: the scene drawn (default: the default snake scene).")
@@ -213,6 +191,11 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
                     (System.nanoTime() - start) * 1e-9, outputDir.resolve("gpu-suite.csv"),
                     outputDir.resolve("gpu-suite.md"));
             return 0;
+        }
+        patch.validate();
+        if (!filtering && (patch.given() || patchPhiDeg != null)) {
+            throw new UserInputException("--patch, --synthetic and --phi-i add a patch to --filtering's: add "
+                    + "--filtering, or name the sweep's patches with --patches");
         }
         if (filtering) {
             return filtering();
@@ -419,14 +402,13 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
     }
 
     @Override
-    public String name() {
-        return spec.name();
+    public TileOptions tiles() {
+        return tiles;
     }
 
     /** What {@code submit} checks before it starts any worker: the options as one run would, and the split. */
     @Override
     public void validateSplit(int pieceCount) {
-        tiles.refuseForSubmit(name());
         if (frames < diffract.jrtr.GpuTimer.MIN_FRAMES) {
             throw new UserInputException("--frames takes at least " + diffract.jrtr.GpuTimer.MIN_FRAMES
                     + " frames (their median is the time), got " + frames);
@@ -444,28 +426,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
     }
 
     @Override
-    public int items() {
-        return sweep().configs().size();
-    }
-
-    @Override
-    public String itemsName() {
-        return "configurations";
-    }
-
-    @Override
-    public List<String> mergeOutputs(Function<Path, String> path) {
-        return List.of("-o", path.apply(outputDir));
-    }
-
-    @Override
-    public Path output() {
-        return outputDir;
-    }
-
-    @Override
-    public boolean quiet() {
-        return quiet.quiet;
+    public Result result() {
+        return Result.to(outputDir, sweep().configs().size(), "configurations", quiet.quiet);
     }
 
     /** The filtering targets ({@link FilteringTargets}): a table per patch and light. */
@@ -478,11 +440,11 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
         }
         List<BenchPatch> list = new ArrayList<>(BenchPatch.named(patches));
         Reporter reporter = quiet.reporter();
-        if (patchFile != null) {
-            HeightField field = HeightFieldReader.load(patchFile, maxHeightUm, pixelSizeUm, channel,
-                    level, reporter).meanSubtracted();
-            list.add(new BenchPatch(patchFile.getFileName().toString().replaceFirst("\\.[^.]*$", ""), field,
-                    patchPhiDeg));
+        if (patch.given()) {
+            NamedPatch named = patch.load(null, reporter);
+            double phiDeg = patchPhiDeg != null ? patchPhiDeg
+                    : patch.file != null ? FILE_PATCH_PHI_DEG : patch.periodAzimuthDeg(null);
+            list.add(new BenchPatch(named.name().replaceFirst("\\.[^.]*$", ""), named.meanSubtracted(), phiDeg));
         }
         HeadlessGL.require();
         Files.createDirectories(outputDir);

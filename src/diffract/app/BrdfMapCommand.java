@@ -43,9 +43,7 @@ import picocli.CommandLine.Spec;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
-import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
@@ -59,26 +57,13 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     /** Where a map is computed. */
     enum Engine { CPU, GPU }
 
-    @Mixin
-    GpuOption gpu;
-
-    @Mixin
-    PatchOptions patch;
-
-    @Mixin
-    BrdfOptions brdf;
-
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
-
-    @Mixin
-    TileOptions tiles;
-
-    @Spec
-    CommandSpec spec;
+    @Mixin GpuOption gpu;
+    @Mixin PatchOptions patch;
+    @Mixin BrdfOptions brdf;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
+    @Mixin TileOptions tiles;
+    @Spec CommandSpec spec;
 
     @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG",
             description = "Light polar angle from the patch's normal, 0.." + LightDirection.MAX_THETA_DEG_TEXT
@@ -347,18 +332,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     }
 
     @Override
-    public String name() {
-        return spec.name();
-    }
-
-    @Override
-    public int items() {
-        return picture.size;
-    }
-
-    @Override
-    public String itemsName() {
-        return "rows";
+    public TileOptions tiles() {
+        return tiles;
     }
 
     /**
@@ -378,25 +353,16 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     }
 
     @Override
-    public List<String> mergeOutputs(java.util.function.Function<Path, String> path) {
-        List<String> merge = new ArrayList<>(List.of("-o", path.apply(output)));
+    public Result result() {
+        Map<String, Path> outputs = new LinkedHashMap<>();
+        outputs.put("-o", output);
         if (picture.pfm != null) {
-            merge.addAll(List.of("--pfm", path.apply(picture.pfm)));
+            outputs.put("--pfm", picture.pfm);
         }
         if (picture.exr != null) {
-            merge.addAll(List.of("--exr", path.apply(picture.exr)));
+            outputs.put("--exr", picture.exr);
         }
-        return merge;
-    }
-
-    @Override
-    public Path output() {
-        return output;
-    }
-
-    @Override
-    public boolean quiet() {
-        return quiet.quiet;
+        return new Result(picture.size, "rows", outputs, quiet.quiet);
     }
 
     /**
@@ -405,7 +371,6 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
      */
     @Override
     public void validateSplit(int pieceCount) {
-        tiles.refuseForSubmit(name());
         Engine where = validate();
         if (where == Engine.GPU || brdf.auto()) {
             throw new UserInputException("submit splits the CPU's work (a GPU map takes seconds): run brdfmap alone, "

@@ -23,8 +23,7 @@ final class ChannelsCommand implements Callable<Integer> {
             + "files hold one field and no channels).")
     Path file;
 
-    @Mixin
-    QuietOption quiet;
+    @Mixin QuietOption quiet;
 
     @Override
     public Integer call() {

@@ -34,8 +34,7 @@ final class CompareCommand implements Callable<Integer> {
             description = "Multiplies both maps' XYZ before L*a*b* (use the exposure the pictures were shown with).")
     double exposure;
 
-    @Mixin
-    QuietOption quiet; // compare prints only its result; accepted like everywhere
+    @Mixin QuietOption quiet; // compare prints only its result; accepted like everywhere
 
     @Override
     public Integer call() throws IOException {

@@ -41,8 +41,7 @@ final class ConvertTermsCommand implements Callable<Integer> {
             description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
     ThesisFormat.HeightUnit unit;
 
-    @Mixin
-    QuietOption quiet;
+    @Mixin QuietOption quiet;
 
     @Override
     public Integer call() throws IOException {

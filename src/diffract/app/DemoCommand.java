@@ -28,14 +28,9 @@ import java.util.concurrent.Callable;
                 + "pigment, sky, ground) when there is a screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map "
                 + "of a blazed grating to out/demo-brdfmap.png).")
 final class DemoCommand implements Callable<Integer> {
-    @Mixin
-    GpuOption gpu;
-
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
+    @Mixin GpuOption gpu;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
 
     @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR",
             description = "The folder for the pictures (demo.png, or demo-brdfmap.png without OpenGL) and, when the "

@@ -42,17 +42,10 @@ final class ExportCommand implements Callable<Integer> {
     static final String FORMAT = "diffract-brdf-table";
     static final int VERSION = 1;
 
-    @Mixin
-    PatchOptions patch;
-
-    @Mixin
-    BrdfOptions brdf;
-
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
+    @Mixin PatchOptions patch;
+    @Mixin BrdfOptions brdf;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
 
     @Option(names = "--mitsuba", required = true, paramLabel = "OUT.json",
             description = "The header to write; the table goes beside it as OUT.npy.")

@@ -27,23 +27,18 @@ import java.util.concurrent.Callable;
                 + "share of the frame and of the shape, its separate patches and hue bins (from a mask and a structural-colour-only render, "
                 + "offscreen like 'diffract render').")
 final class MeasureCommand implements Callable<Integer> {
-    @Mixin
-    ViewerOptions options;
+    @Mixin ViewerOptions options;
 
     @Option(names = "--save", paramLabel = "DIR", description = "Also write mask.png and structural.png into DIR.")
     Path saveDir;
 
-    @Mixin
-    GpuOption gpu;
+    @Mixin GpuOption gpu;
 
     private static final String MASK = "mask.png";
     private static final String STRUCTURAL = "structural.png";
 
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
 
     @Override
     public Integer call() throws Exception {

@@ -41,8 +41,7 @@ final class MergeCommand implements Callable<Integer> {
     @Option(names = "--exr", paramLabel = "MAP.exr", description = "Also write the floats as OpenEXR, as brdfmap's --exr.")
     Path exr;
 
-    @Mixin
-    QuietOption quiet;
+    @Mixin QuietOption quiet;
 
     @Override
     public Integer call() throws IOException {

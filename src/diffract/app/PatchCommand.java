@@ -27,15 +27,13 @@ final class PatchCommand implements Callable<Integer> {
             description = "One of ${COMPLETION-CANDIDATES}; the options below change its parameters.")
     String name;
 
-    @Mixin
-    ProceduralOptions parameters;
+    @Mixin ProceduralOptions parameters;
 
     @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf",
             description = "The Gwyddion Simple Field to write (heights and pixel size in metres).")
     Path output;
 
-    @Mixin
-    QuietOption quiet;
+    @Mixin QuietOption quiet;
 
     /** A .gsf's float32 heights go through one byte buffer: at most this many samples (2 GB). */
     static final long MAX_SAMPLES = (Integer.MAX_VALUE - 1024) / 4;

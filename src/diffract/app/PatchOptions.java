@@ -28,8 +28,7 @@ final class PatchOptions {
                     + "says what they are); --period, --height, ... change it.")
     String synthetic;
 
-    @Mixin
-    ProceduralOptions parameters;
+    @Mixin ProceduralOptions parameters;
 
     @Option(names = "--max-height", paramLabel = "UM",
             description = "Height of the brightest grey value in micrometres (images; rescales text/.gsf if given).")

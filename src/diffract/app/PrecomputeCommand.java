@@ -21,11 +21,8 @@ import java.util.concurrent.Callable;
         description = "Precompute the Taylor-term DFTs DFT_n = fftshift(ifft2((i h)^n)), n = 0..N, of a height field. A "
                 + "rerun with the same patch and N reuses the folder without any FFT.")
 final class PrecomputeCommand implements Callable<Integer> {
-    @Mixin
-    PatchOptions patch;
-
-    @Mixin
-    QuietOption quiet;
+    @Mixin PatchOptions patch;
+    @Mixin QuietOption quiet;
 
     @ArgGroup(exclusive = true, multiplicity = "1")
     Order order;

@@ -37,23 +37,12 @@ import java.util.concurrent.Callable;
                 + "sequence): the same model, renderer and shaders as 'diffract view', without a window or X server "
                 + "(headless EGL; see docs/headless-gl.md).")
 final class RenderCommand implements Callable<Integer>, SplitCommand {
-    @Mixin
-    GpuOption gpu;
-
-    @Mixin
-    ViewerOptions options;
-
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
-
-    @Mixin
-    TileOptions tiles;
-
-    @Spec
-    CommandSpec spec;
+    @Mixin GpuOption gpu;
+    @Mixin ViewerOptions options;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
+    @Mixin TileOptions tiles;
+    @Spec CommandSpec spec;
 
     @Option(names = {"-o", "--output"}, paramLabel = "OUT.png|OUT.exr|OUT.gif",
             description = "The PNG to write (tone mapped, display sRGB), or an OpenEXR file of the frame's linear "
@@ -148,13 +137,12 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
     }
 
     @Override
-    public String name() {
-        return spec.name();
+    public TileOptions tiles() {
+        return tiles;
     }
 
     @Override
     public void validateSplit(int pieceCount) {
-        tiles.refuseForSubmit(name());
         Integer frames = turntable.frames;
         if (frames == null) {
             throw new UserInputException("submit splits a turntable's frames: add --turntable FRAMES to the render "
@@ -176,28 +164,8 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
     }
 
     @Override
-    public int items() {
-        return turntable.frames;
-    }
-
-    @Override
-    public String itemsName() {
-        return "frames";
-    }
-
-    @Override
-    public List<String> mergeOutputs(java.util.function.Function<Path, String> path) {
-        return List.of("-o", path.apply(output));
-    }
-
-    @Override
-    public Path output() {
-        return output;
-    }
-
-    @Override
-    public boolean quiet() {
-        return quiet.quiet;
+    public Result result() {
+        return Result.to(output, turntable.frames, "frames", quiet.quiet);
     }
 
     /** --tile and --pieces go with --turntable, without -o (merge writes it), and split at most a piece per frame. */

@@ -50,8 +50,7 @@ final class SubmitCommand implements Callable<Integer> {
                     + "--slurm required: a folder every node reads and writes, which also gets the job script).")
     Path keepPieces;
 
-    @Mixin
-    SlurmOptions slurm;
+    @Mixin SlurmOptions slurm;
 
     @Parameters(paramLabel = "COMMAND OPTIONS", arity = "1..*",
             description = "After --: the brdfmap or render --turntable command as for a single run.")
@@ -84,21 +83,24 @@ final class SubmitCommand implements Callable<Integer> {
         if (count < 1) {
             throw new UserInputException("--piece-count must be at least 1, got " + count);
         }
+        String name = command.get(0);
         SplitCommand single = parse(command);
+        single.tiles().refuseForSubmit(name);
         single.validateSplit(count);
+        SplitCommand.Result result = single.result();
         List<String> options = withoutOutputs(command.subList(1, command.size()));
         if (slurm.slurm) {
-            return onSlurm(single, options, count, keepPieces.toAbsolutePath().normalize());
+            return onSlurm(name, result, options, count, keepPieces.toAbsolutePath().normalize());
         }
         long start = System.nanoTime();
         Path dir = keepPieces != null ? keepPieces : Files.createTempDirectory("diffract-pieces-");
         try {
             List<List<String>> pieces = new ArrayList<>();
             for (int i = 0; i < count; i++) {
-                List<String> piece = new ArrayList<>(List.of(single.name()));
+                List<String> piece = new ArrayList<>(List.of(name));
                 piece.addAll(options);
                 piece.addAll(List.of("--tile", i + "/" + count, "--pieces", dir.toString()));
-                if (!single.quiet()) {
+                if (!result.quiet()) {
                     piece.add("--quiet"); // a worker's progress goes nowhere; a command told to be quiet already is
                 }
                 pieces.add(piece);
@@ -106,14 +108,14 @@ final class SubmitCommand implements Callable<Integer> {
             int processors = slurm.cpusPerTask != null ? slurm.cpusPerTask
                     : LocalWorkers.share(Math.min(workers, count));
             System.out.printf(Locale.ROOT, "%d pieces of %d %s on %d local workers of %d processor%s each, into %s%n",
-                    count, single.items(), single.itemsName(), Math.min(workers, count), processors,
+                    count, result.items(), result.itemsName(), Math.min(workers, count), processors,
                     processors == 1 ? "" : "s", dir);
             int[] done = {0};
             LocalWorkers.Finished failed = LocalWorkers.run(pieces, single.dispatchOrder(count),
                     Math.min(workers, count), processors, f -> {
                 if (f.exitCode() == 0) {
                     done[0]++;
-                    System.out.println(progressLine(f, count, single, done[0], start));
+                    System.out.println(progressLine(f, count, result, done[0], start));
                 }
             });
             if (failed != null) {
@@ -121,9 +123,9 @@ final class SubmitCommand implements Callable<Integer> {
                         + failed.exitCode() + "): " + Sbatch.lastLine(failed.output()));
                 return failed.exitCode() == Main.EXIT_USAGE ? Main.EXIT_USAGE : 1;
             }
-            int code = Main.execute(mergeArguments(single, dir, false).toArray(String[]::new));
+            int code = Main.execute(mergeArguments(result, dir, false).toArray(String[]::new));
             if (code == 0) {
-                System.out.printf(Locale.ROOT, "wrote %s from %d pieces on %d workers in %.1f s%n", single.output(),
+                System.out.printf(Locale.ROOT, "wrote %s from %d pieces on %d workers in %.1f s%n", result.output(),
                         count, Math.min(workers, count), (System.nanoTime() - start) * 1e-9);
             }
             return code;
@@ -138,22 +140,22 @@ final class SubmitCommand implements Callable<Integer> {
      * The pieces as a Slurm job array: its script written into the pieces' folder and submitted; then, unless told not
      * to wait, the array waited for and the pieces merged.
      */
-    private int onSlurm(SplitCommand single, List<String> options, int count, Path dir)
+    private int onSlurm(String name, SplitCommand.Result split, List<String> options, int count, Path dir)
             throws IOException, InterruptedException {
         long start = System.nanoTime();
         diffract.util.OutputPaths.requireWritableFolder(dir, "--keep-pieces");
         Files.createDirectories(dir);
-        List<String> merge = mergeArguments(single, dir, true);
+        List<String> merge = mergeArguments(split, dir, true);
         List<String> mergeCommand = new ArrayList<>(List.of("diffract"));
         mergeCommand.addAll(merge);
         Path script = dir.resolve(SlurmScript.FILE_NAME);
-        String text = SlurmScript.text(slurm, single.name(), options, dir, count, Path.of("").toAbsolutePath(),
+        String text = SlurmScript.text(slurm, name, options, dir, count, Path.of("").toAbsolutePath(),
                 LocalWorkers.javaVm(slurm.cacheDir == null), LocalWorkers.mainClass(), mergeCommand);
         diffract.util.ImageFiles.writeAtomically(script,
                 out -> out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
         Sbatch.Result result = Sbatch.submit(script, !slurm.noWait, id -> System.out.printf(Locale.ROOT,
                 "submitted %s as Slurm array job %s: %d pieces of %d %s%s, logs %s%n", script, id, count,
-                single.items(), single.itemsName(), slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
+                split.items(), split.itemsName(), slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
                 dir.resolve(SlurmScript.logName("I", count))));
         if (slurm.noWait) {
             System.out.println("once the array has ended: " + SlurmScript.command(mergeCommand));
@@ -176,7 +178,7 @@ final class SubmitCommand implements Callable<Integer> {
         }
         int code = Main.execute(merge.toArray(String[]::new));
         if (code == 0) {
-            System.out.printf(Locale.ROOT, "wrote %s from %d pieces of Slurm array job %s in %.1f s%n", single.output(),
+            System.out.printf(Locale.ROOT, "wrote %s from %d pieces of Slurm array job %s in %.1f s%n", split.output(),
                     count, result.jobId(), (System.nanoTime() - start) * 1e-9);
         }
         return code;
@@ -186,12 +188,12 @@ final class SubmitCommand implements Callable<Integer> {
      * The merge command that writes the outputs the command names, from the pieces in {@code dir}; with
      * {@code absolute} their paths are absolute, so that the command runs anywhere.
      */
-    private static List<String> mergeArguments(SplitCommand single, Path dir, boolean absolute) {
+    private static List<String> mergeArguments(SplitCommand.Result result, Path dir, boolean absolute) {
         java.util.function.Function<Path, String> path = p -> (absolute ? p.toAbsolutePath().normalize() : p)
                 .toString();
         List<String> merge = new ArrayList<>(List.of("merge", path.apply(dir)));
-        merge.addAll(single.mergeOutputs(path));
-        if (single.quiet()) {
+        merge.addAll(result.mergeOutputs(path));
+        if (result.quiet()) {
             merge.add("--quiet");
         }
         return merge;
@@ -233,9 +235,9 @@ final class SubmitCommand implements Callable<Integer> {
     }
 
     /** Which piece finished, its rows, its time and how it was spent, and where the whole run stands. */
-    private static String progressLine(LocalWorkers.Finished f, int count, SplitCommand single, int done,
+    private static String progressLine(LocalWorkers.Finished f, int count, SplitCommand.Result result, int done,
                                        long startNanos) {
-        MapBand band = MapBand.of(f.index(), count, single.items());
+        MapBand band = MapBand.of(f.index(), count, result.items());
         Matcher times = PIECE_TIMES.matcher(f.output());
         String split = "";
         if (times.find()) {
@@ -245,7 +247,7 @@ final class SubmitCommand implements Callable<Integer> {
                     Math.max(0, f.wallS() - setup - work), setup, work);
         }
         return String.format(Locale.ROOT, "piece %d/%d (%s %s) finished in %.2f s%s; %d of %d done, %.1f s elapsed",
-                f.index(), count, single.itemsName(), band, f.wallS(), split, done, count,
+                f.index(), count, result.itemsName(), band, f.wallS(), split, done, count,
                 (System.nanoTime() - startNanos) * 1e-9);
     }
 

@@ -32,21 +32,15 @@ final class ViewCommand implements Callable<Integer> {
     static final String NO_DISPLAY_MESSAGE =
             "no display: the viewer needs a screen; use ./diffract render [the same options] -o OUT.png";
 
-    @Mixin
-    ViewerOptions options;
-
-    @Mixin
-    QuietOption quiet;
-
-    @Mixin
-    CacheOption cache;
+    @Mixin ViewerOptions options;
+    @Mixin QuietOption quiet;
+    @Mixin CacheOption cache;
 
     @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
             description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
     Path screenshotDir;
 
-    @Spec
-    CommandSpec spec;
+    @Spec CommandSpec spec;
 
     @Option(names = "--screenshot-when-refined", hidden = true,
             description = "Save one screenshot of the window (as the S key does) once its picture is refined, then "

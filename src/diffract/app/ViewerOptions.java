@@ -61,11 +61,8 @@ final class ViewerOptions {
             + "again, or to edit it.")
     boolean dumpScene;
 
-    @Mixin
-    PatchOptions patch;
-
-    @Mixin
-    BrdfOptions brdf;
+    @Mixin PatchOptions patch;
+    @Mixin BrdfOptions brdf;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Shape and pigment (without a SCENE):%n")
     Surface surface = new Surface();

@@ -1,7 +1,14 @@
 package diffract.optics;
 
+import static diffract.optics.Variant.Capability.DRAWS_TABLE;
+import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
+import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.READS_TERMS;
+
+import java.util.EnumSet;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * A table XYZ(u, v, w) baked once per patch and settings and looked up trilinearly per fragment (after Dhillon and
@@ -49,14 +56,14 @@ final class BakedMethod implements Variant {
         return new BakedMethod(inner);
     }
 
+    /** It filters the light where the method it holds does; chosen per scene, the lobes method does there. */
     @Override
-    public boolean filtersLight() {
-        return of == null || of.filtersLight();
-    }
-
-    @Override
-    public boolean drawsTable() {
-        return true;
+    public Set<Capability> capabilities() {
+        Set<Capability> capabilities = EnumSet.of(GPU, READS_TERMS, DRAWS_TABLE);
+        if (of == null || of.filtersLight()) {
+            capabilities.add(FILTERS_LIGHT);
+        }
+        return capabilities;
     }
 
     @Override

@@ -123,8 +123,7 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
         int rows = field.rows();
         int anchorX = (int) Math.floor(sx + 0.5);
         int anchorY = (int) Math.floor(sy + 0.5);
-        double re = 0;
-        double im = 0;
+        WindowSum window = new WindowSum(powers);
         for (int j = anchorY - radiusY; j <= anchorY + radiusY; j++) {
             int row = j + rows / 2;
             if (row < 0 || row >= rows) {
@@ -150,15 +149,10 @@ public final class ExactSpectrum implements PatchSpectrum, TexelCoefficients {
                     sumRe += coefficients[n] * e[n][index];
                     sumIm += coefficients[n] * e[n][index + 1];
                 }
-                if (powers) {
-                    re += weight * weight * (sumRe * sumRe + sumIm * sumIm);
-                } else {
-                    re += weight * sumRe;
-                    im += weight * sumIm;
-                }
+                window.add(weight, sumRe, sumIm);
             }
         }
-        return new double[] {re, im};
+        return window.result();
     }
 
     /** sigma_f in texels along x and y (the window this spectrum sums with). */

@@ -1,5 +1,14 @@
 package diffract.optics;
 
+import static diffract.optics.Variant.Capability.BAKEABLE;
+import static diffract.optics.Variant.Capability.CPU;
+import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.LOCAL_WINDOW;
+import static diffract.optics.Variant.Capability.READS_TERMS;
+
+import java.util.EnumSet;
+import java.util.Set;
+
 /**
  * Full lambda-space sampling (003 Algorithm 3): uniform wavelength steps, N Taylor terms, the Gaussian window summed
  * over the texels around each lookup.
@@ -20,13 +29,8 @@ final class FlssMethod extends TaylorMethod {
     }
 
     @Override
-    public boolean drawsLocalWindow() {
-        return true;
-    }
-
-    @Override
-    public boolean bakeable() {
-        return true;
+    public Set<Capability> capabilities() {
+        return EnumSet.of(CPU, GPU, READS_TERMS, LOCAL_WINDOW, BAKEABLE);
     }
 
     @Override

@@ -1,5 +1,14 @@
 package diffract.optics;
 
+import static diffract.optics.Variant.Capability.BAKEABLE;
+import static diffract.optics.Variant.Capability.CPU;
+import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
+import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.READS_TERMS;
+
+import java.util.EnumSet;
+import java.util.Set;
+
 /**
  * The windowed spectrum's Gaussian lobes, each widened by the pixel's footprint and the light and integrated over
  * wavelength by a rule fitted to its passage ({@link LobeSpectrum}, {@code lobes.frag}; docs/filtering.md): valid at
@@ -20,13 +29,8 @@ final class LobesMethod implements Variant {
     }
 
     @Override
-    public boolean runsOnCpu() {
-        return true;
-    }
-
-    @Override
-    public boolean filtersLight() {
-        return true;
+    public Set<Capability> capabilities() {
+        return EnumSet.of(CPU, GPU, READS_TERMS, FILTERS_LIGHT, BAKEABLE);
     }
 
     @Override
@@ -39,11 +43,6 @@ final class LobesMethod implements Variant {
     public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
         return DiffractionBrdf.withLobes(settings, LobeSpectrum.ofTerms(terms, settings.coherenceWindow(),
                 settings.spectral(), settings.lobes()));
-    }
-
-    @Override
-    public boolean bakeable() {
-        return true;
     }
 
     @Override

@@ -1,5 +1,13 @@
 package diffract.optics;
 
+import static diffract.optics.Variant.Capability.CPU;
+import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.LOCAL_WINDOW;
+import static diffract.optics.Variant.Capability.READS_TERMS;
+
+import java.util.EnumSet;
+import java.util.Set;
+
 /**
  * n_min / n_max (003 section 1.5.2): FLSS's spectrum at only the wavelengths that put a lookup on a DFT texel's
  * centre, with the Jacobian of that change of variable.
@@ -20,8 +28,8 @@ final class NmmMethod extends TaylorMethod {
     }
 
     @Override
-    public boolean drawsLocalWindow() {
-        return true;
+    public Set<Capability> capabilities() {
+        return EnumSet.of(CPU, GPU, READS_TERMS, LOCAL_WINDOW);
     }
 
     @Override

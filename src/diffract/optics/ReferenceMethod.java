@@ -1,5 +1,11 @@
 package diffract.optics;
 
+import static diffract.optics.Variant.Capability.CPU;
+import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
+
+import java.util.EnumSet;
+import java.util.Set;
+
 /**
  * The reference: exp(i k w h) transformed exactly, the window summed until its weights fall below 1e-12, the
  * wavelengths at 1 nm, a pixel's box and the light integrated where the illumination asks (the yardstick every other
@@ -19,25 +25,8 @@ final class ReferenceMethod implements Variant {
     }
 
     @Override
-    public boolean runsOnCpu() {
-        return true;
-    }
-
-    @Override
-    public boolean runsOnGpu() {
-        return false;
-    }
-
-    /** It integrates every quantity over the light's directions ({@link FilteredReference}). */
-    @Override
-    public boolean filtersLight() {
-        return true;
-    }
-
-    /** It transforms exp(i k w h) of the height field itself. */
-    @Override
-    public boolean readsTerms() {
-        return false;
+    public Set<Capability> capabilities() {
+        return EnumSet.of(CPU, FILTERS_LIGHT);
     }
 
     @Override

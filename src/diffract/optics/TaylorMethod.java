@@ -1,5 +1,12 @@
 package diffract.optics;
 
+import static diffract.optics.Variant.Capability.CPU;
+import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.READS_TERMS;
+
+import java.util.EnumSet;
+import java.util.Set;
+
 /**
  * The thesis' three shader approximations on the CPU (FLSS, NMM, PQ): the Taylor series over the float32 terms
  * (003 eq. 1.5-1.10), under the method's window ({@link #spectrum}), at the method's wavelengths ({@link #sampled});
@@ -12,9 +19,10 @@ abstract class TaylorMethod implements Variant {
     /** {@code spectrum} integrated over the method's wavelengths. */
     abstract DiffractionBrdf sampled(BrdfSettings settings, PatchSpectrum spectrum);
 
+    /** A CPU twin of a GPU shader that reads the Taylor terms. */
     @Override
-    public boolean runsOnCpu() {
-        return true;
+    public Set<Capability> capabilities() {
+        return EnumSet.of(CPU, GPU, READS_TERMS);
     }
 
     @Override

@@ -16,18 +16,11 @@ import java.util.Locale;
  *   <caption>A method's capabilities</caption>
  *   <tr><th>method</th><th>what it answers</th><th>default</th></tr>
  *   <tr><td>{@link #label}</td><td>the name on the command line, in scene files and in tables</td><td>-</td></tr>
- *   <tr><td>{@link #runsOnCpu}</td><td>whether {@link #cpuBrdf} evaluates it</td><td>false</td></tr>
- *   <tr><td>{@link #runsOnGpu}</td><td>whether a fragment shader {@code shaders/diffraction/<label>.frag} draws it
- *       </td><td>true</td></tr>
- *   <tr><td>{@link #filtersLight}</td><td>whether it averages over an extended light's directions</td>
- *       <td>false</td></tr>
- *   <tr><td>{@link #drawsLocalWindow}</td><td>whether it sums a local window's texels per fragment</td>
- *       <td>false</td></tr>
+ *   <tr><td>{@link #capabilities}</td><td>its {@link Capability} set: on the CPU, on the GPU, filters the light,
+ *       reads the Taylor terms, sums a local window, can be baked, draws a table</td><td>on the GPU, reads the
+ *       terms</td></tr>
  *   <tr><td>{@link #viewerKey}</td><td>the viewer's key that selects it</td><td>none</td></tr>
- *   <tr><td>{@link #readsTerms}</td><td>whether it reads the precomputed Taylor terms</td><td>true</td></tr>
- *   <tr><td>{@link #bakeable}</td><td>whether a baked table can hold it</td><td>false</td></tr>
- *   <tr><td>{@link #drawsTable}, {@link #tabulated}</td><td>whether it draws a baked table, and of which method
- *       </td><td>no table</td></tr>
+ *   <tr><td>{@link #tabulated}</td><td>the method a table of it holds</td><td>no table</td></tr>
  *   <tr><td>{@link #of}, {@link #spec}</td><td>the method with another as its parameter, and its name then</td>
  *       <td>takes none; the label</td></tr>
  *   <tr><td>{@link #patchRefusal}</td><td>why its shader cannot draw a patch</td><td>draws every patch</td></tr>
@@ -52,35 +45,61 @@ public interface Variant {
     /** reference, flss, nmm, pq, baked, lobes: the name on the command line, in scene files and in tables. */
     String label();
 
-    /** Whether {@link #cpuBrdf} evaluates it (the baked table exists on the GPU only). */
+    /**
+     * What a method can do, as pbrt's BxDF flags say it of a BxDF: each method answers with its set once
+     * ({@link #capabilities}), and the questions below read it.
+     */
+    enum Capability {
+        /** {@link #cpuBrdf} evaluates it (the baked table exists on the GPU only). */
+        CPU,
+        /** It runs as a GPU shader, {@code shaders/diffraction/<label>.frag} (all but the reference). */
+        GPU,
+        /**
+         * It averages over an extended light's directions (the reference, the lobes method and its baked table); the
+         * others sample the light at its centre.
+         */
+        FILTERS_LIGHT,
+        /**
+         * It reads the precomputed Taylor terms (every method but the reference, which transforms the height field
+         * itself): a pipeline computes them for it.
+         */
+        READS_TERMS,
+        /** It sums the window's texels per fragment and so can place the window under each surface point. */
+        LOCAL_WINDOW,
+        /** A baked table can tabulate it: its shader has a bake pass that writes spectral XYZ per table sample. */
+        BAKEABLE,
+        /** It draws a table baked in advance ({@link #tabulated} answers for every patch). */
+        DRAWS_TABLE
+    }
+
+    /** What it can do; by default, a GPU shader that reads the Taylor terms. */
+    default java.util.Set<Capability> capabilities() {
+        return java.util.EnumSet.of(Capability.GPU, Capability.READS_TERMS);
+    }
+
+    /** {@link Capability#CPU}. */
     default boolean runsOnCpu() {
-        return false;
+        return capabilities().contains(Capability.CPU);
     }
 
-    /** Whether it runs as a GPU shader, {@code shaders/diffraction/<label>.frag} (all but the reference). */
+    /** {@link Capability#GPU}. */
     default boolean runsOnGpu() {
-        return true;
+        return capabilities().contains(Capability.GPU);
     }
 
-    /**
-     * Whether it averages over an extended light's directions (the reference, the lobes method and its baked table);
-     * the others sample the light at its centre.
-     */
+    /** {@link Capability#FILTERS_LIGHT}. */
     default boolean filtersLight() {
-        return false;
+        return capabilities().contains(Capability.FILTERS_LIGHT);
     }
 
-    /**
-     * Whether it reads the precomputed Taylor terms (every method but the reference, which transforms the height field
-     * itself): a pipeline computes them for it.
-     */
+    /** {@link Capability#READS_TERMS}. */
     default boolean readsTerms() {
-        return true;
+        return capabilities().contains(Capability.READS_TERMS);
     }
 
-    /** Whether it sums the window's texels per fragment and so can place the window under each surface point. */
+    /** {@link Capability#LOCAL_WINDOW}. */
     default boolean drawsLocalWindow() {
-        return false;
+        return capabilities().contains(Capability.LOCAL_WINDOW);
     }
 
     /** The viewer's key that switches to it ('1' to '4' for FLSS, NMM, PQ and lobes), 0 for none. */
@@ -88,9 +107,9 @@ public interface Variant {
         return 0;
     }
 
-    /** Whether a baked table can tabulate it: its shader has a bake pass that writes spectral XYZ per table sample. */
+    /** {@link Capability#BAKEABLE}. */
     default boolean bakeable() {
-        return false;
+        return capabilities().contains(Capability.BAKEABLE);
     }
 
     /**
@@ -110,9 +129,9 @@ public interface Variant {
         return java.util.Optional.empty();
     }
 
-    /** Whether it draws a table baked in advance ({@link #tabulated} answers for every patch). */
+    /** {@link Capability#DRAWS_TABLE}. */
     default boolean drawsTable() {
-        return false;
+        return capabilities().contains(Capability.DRAWS_TABLE);
     }
 
     /**

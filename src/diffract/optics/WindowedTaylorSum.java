@@ -85,6 +85,7 @@ final class WindowedTaylorSum {
         double[] im = new double[capacity];
         int[] offX = new int[capacity];
         int[] offY = new int[capacity];
+        double[] texel = new double[2];
         int count = 0;
         for (int j = -radii.y(); j <= radii.y(); j++) {
             int row = anchorY + j + terms.centreRow();
@@ -98,16 +99,9 @@ final class WindowedTaylorSum {
                     continue;
                 }
                 double weight = wy * weightX.applyAsDouble(anchorX + i - sx);
-                int index = 2 * (row * terms.cols() + col);
-                double sumRe = 0;
-                double sumIm = 0;
-                for (int n = 0; n <= lastOrder; n++) {
-                    float[] term = terms.termUnsafe(n);
-                    sumRe += coefficients[n] * term[index];
-                    sumIm += coefficients[n] * term[index + 1];
-                }
-                re[count] = weight * sumRe;
-                im[count] = weight * sumIm;
+                taylorSum(2 * (row * terms.cols() + col), coefficients, lastOrder, texel);
+                re[count] = weight * texel[0];
+                im[count] = weight * texel[1];
                 offX[count] = i;
                 offY[count] = j;
                 count++;
@@ -124,8 +118,8 @@ final class WindowedTaylorSum {
         int anchorY = (int) Math.floor(sy + 0.5);
         int cols = terms.cols();
         int rows = terms.rows();
-        double re = 0;
-        double im = 0;
+        WindowSum window = new WindowSum(powers);
+        double[] texel = new double[2];
         for (int j = anchorY - radii.y(); j <= anchorY + radii.y(); j++) {
             int row = j + terms.centreRow();
             if (row < 0 || row >= rows) {
@@ -137,23 +131,23 @@ final class WindowedTaylorSum {
                 if (col < 0 || col >= cols) {
                     continue;
                 }
-                double weight = wy * weightX.applyAsDouble(i - sx);
-                int index = 2 * (row * cols + col);
-                double sumRe = 0;
-                double sumIm = 0;
-                for (int n = 0; n <= lastOrder; n++) {
-                    float[] term = terms.termUnsafe(n);
-                    sumRe += coefficients[n] * term[index];
-                    sumIm += coefficients[n] * term[index + 1];
-                }
-                if (powers) {
-                    re += weight * weight * (sumRe * sumRe + sumIm * sumIm);
-                } else {
-                    re += weight * sumRe;
-                    im += weight * sumIm;
-                }
+                taylorSum(2 * (row * cols + col), coefficients, lastOrder, texel);
+                window.add(wy * weightX.applyAsDouble(i - sx), texel[0], texel[1]);
             }
         }
-        return new double[] {re, im};
+        return window.result();
+    }
+
+    /** Texel {@code index}'s Taylor sum T_m = sum_{n <= lastOrder} c_n DFT_n(m), as {Re, Im} into {@code out}. */
+    private void taylorSum(int index, double[] coefficients, int lastOrder, double[] out) {
+        double sumRe = 0;
+        double sumIm = 0;
+        for (int n = 0; n <= lastOrder; n++) {
+            float[] term = terms.termUnsafe(n);
+            sumRe += coefficients[n] * term[index];
+            sumIm += coefficients[n] * term[index + 1];
+        }
+        out[0] = sumRe;
+        out[1] = sumIm;
     }
 }

@@ -83,4 +83,20 @@ class BenchCommandTest {
         assertEquals(2, Main.execute("bench", "--texture-formats", "rg4", "-o", dir.toString()));
         assertEquals(2, Main.execute("bench", "--quick", "--terms", "8", "-o", dir.toString()));
     }
+
+    /** --filtering's extra patch is read as every command reads one, and only --filtering takes it. */
+    @Test
+    void anExtraPatchNeedsFilteringAndIsCheckedAsEveryCommandChecksIt(@TempDir Path dir) {
+        Object[] noFiltering = CliTest.run("bench", "--synthetic", "blazed-10um", "-o", dir.toString());
+        assertEquals(2, noFiltering[0]);
+        assertTrue(((String) noFiltering[2]).contains("add --filtering"), (String) noFiltering[2]);
+        Object[] both = CliTest.run("bench", "--filtering", "--patch", dir.resolve("a.gsf").toString(),
+                "--synthetic", "blazed-10um", "-o", dir.toString());
+        assertEquals(2, both[0]);
+        assertTrue(((String) both[2]).contains("not both"), (String) both[2]);
+        Object[] sizes = CliTest.run("bench", "--filtering", "--synthetic", "blazed-10um", "--pixel-size", "0.1",
+                "-o", dir.toString());
+        assertEquals(2, sizes[0]);
+        assertTrue(((String) sizes[2]).contains("a --synthetic patch has its own"), (String) sizes[2]);
+    }
 }

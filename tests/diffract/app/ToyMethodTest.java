@@ -52,13 +52,9 @@ class ToyMethodTest {
         }
 
         @Override
-        public boolean runsOnCpu() {
-            return true;
-        }
-
-        @Override
-        public boolean runsOnGpu() {
-            return gpu;
+        public java.util.Set<Capability> capabilities() {
+            return gpu ? java.util.EnumSet.of(Capability.CPU, Capability.GPU, Capability.READS_TERMS)
+                    : java.util.EnumSet.of(Capability.CPU, Capability.READS_TERMS);
         }
 
         @Override
