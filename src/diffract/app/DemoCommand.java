@@ -10,7 +10,6 @@ import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
-import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -57,7 +56,7 @@ final class DemoCommand implements Callable<Integer> {
      * coherence length (sigma_s = 2.5 um, a less coherent source than sunlight's 65 um) widens the orders of the 9 um
      * periodic patch into bands that a 640 x 400 picture resolves (with 65 um they are a fraction of a pixel wide).
      */
-    static final String DEFAULT_SCENE = "snake-elaphe.json";
+    static final String DEFAULT_SCENE = ShippedScenes.DEMO;
     /** The offscreen picture of the view, in the output folder. */
     static final String PICTURE = "demo.png";
     /** Without OpenGL: the CPU BRDF map, in the output folder. */
@@ -68,19 +67,14 @@ final class DemoCommand implements Callable<Integer> {
      * inside the jar written into {@code outputDir} (the scene names no other files, so it works from there).
      */
     static Path defaultScene(Path outputDir) throws IOException {
-        Path inRepository = Path.of("assets", "scenes", DEFAULT_SCENE);
-        if (Files.isRegularFile(inRepository)) {
+        Path inRepository = ShippedScenes.inRepository(DEFAULT_SCENE);
+        if (inRepository != null) {
             return inRepository;
         }
-        try (InputStream in = DemoCommand.class.getResourceAsStream("/assets/scenes/" + DEFAULT_SCENE)) {
-            if (in == null) {
-                throw new UserInputException("the default scene " + DEFAULT_SCENE + " is missing from the jar; rebuild it");
-            }
-            Path copy = outputDir.resolve(DEFAULT_SCENE);
-            byte[] scene = in.readAllBytes();
-            ImageFiles.writeAtomically(copy, out -> out.write(scene));
-            return copy;
-        }
+        Path copy = outputDir.resolve(DEFAULT_SCENE);
+        byte[] scene = ShippedScenes.fromJar(DEFAULT_SCENE);
+        ImageFiles.writeAtomically(copy, out -> out.write(scene));
+        return copy;
     }
 
     private String sizeText() {

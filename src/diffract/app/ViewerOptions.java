@@ -2,7 +2,6 @@ package diffract.app;
 
 import diffract.bench.AutoChoice;
 import diffract.bench.AutoVariant;
-import diffract.colour.MirrorNormalisation;
 import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
@@ -10,10 +9,8 @@ import diffract.optics.BrdfSettings;
 import diffract.render.DiffractionMaterials;
 import diffract.optics.Quantity;
 import diffract.optics.WindowPlacement;
-import diffract.optics.ScanTiling;
 import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
-import diffract.optics.RadiometricGain;
 import diffract.optics.Methods;
 import diffract.optics.Variant;
 import diffract.render.DiffractionShaders;
@@ -24,6 +21,7 @@ import diffract.scene.OrbitCamera;
 import diffract.scene.Scene;
 import diffract.scene.SceneFile;
 import diffract.scene.SceneOverrides;
+import diffract.scene.SkinOverrides;
 import diffract.scene.SceneSetup;
 import diffract.scene.SceneWriter;
 import diffract.scene.StageSpec;
@@ -42,10 +40,11 @@ import java.nio.file.Path;
 import java.util.List;
 
 /**
- * What {@code view} and {@code render} show, as options. Without a SCENE file the options describe a scene (the
- * same {@link Scene} a file describes), which the {@link Fabricator} builds as it builds a file's; with one, the
- * options given override what they name (BRDF settings, light, camera angles, exposure, mode, pigmentation switch,
- * diffuse weight), and the options that name what only the scene may say (the patch, the shape) are refused.
+ * What {@code view} and {@code render} show, as options. A scene comes from a SCENE file, from the shipped
+ * {@code assets/scenes/viewer-snake.json} with {@code --shape snake}, or from the options alone (a sphere, a plane or
+ * a cylinder under the thesis' settings); the {@link Fabricator} builds each alike. Beside a scene the options given
+ * override what they name (patch, BRDF settings, light, camera angles, exposure, mode, species, skin, tangent,
+ * pigmentation, diffuse weight); only {@code --shape} is refused beside a SCENE, which says its own shape.
  */
 final class ViewerOptions {
     @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE",
@@ -78,11 +77,11 @@ final class ViewerOptions {
         Scene.ShapeKind shape = Scene.ShapeKind.SPHERE;
 
         @Option(names = "--species", defaultValue = "elapheGuttata", paramLabel = "NAME", converter = SpeciesConverter.class,
-                description = "--shape snake: the species whose scales and pigment it wears, elapheGuttata or "
-                        + "xenopeltisUnicolor (default ${DEFAULT-VALUE}).")
+                description = "A snake's species, whose scales and pigment it wears: elapheGuttata or "
+                        + "xenopeltisUnicolor (default: the scene's; --shape snake's is ${DEFAULT-VALUE}).")
         SnakeSpecies species = SnakeSpecies.ELAPHE_GUTTATA;
 
-        @Option(names = "--smooth-skin", description = "--shape snake: no scales, the corn-snake pattern over a smooth skin.")
+        @Option(names = "--smooth-skin", description = "A snake without scales: the corn-snake pattern over a smooth skin.")
         boolean smoothSkin;
 
         @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
@@ -97,7 +96,8 @@ final class ViewerOptions {
         boolean noPigmentation;
 
         @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
-                description = "w_d: pigment mixed in as ambient light (default ${DEFAULT-VALUE}, " + SNAKE_DIFFUSE_WEIGHT + " for --shape snake).")
+                description = "w_d: pigment mixed in as ambient light (default: the scene's; ${DEFAULT-VALUE} for a shape without "
+                        + "a scene).")
         double diffuseWeight = 0.2;
     }
 
@@ -114,15 +114,15 @@ final class ViewerOptions {
         @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
         double azimuthDeg;
 
-        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default ${DEFAULT-VALUE}; " + SNAKE_ELEVATION_DEG + " for --shape snake).")
+        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default: the scene's; ${DEFAULT-VALUE} for a shape without a scene).")
         double elevationDeg = 20;
 
-        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the origin (default ${DEFAULT-VALUE}; " + SNAKE_DISTANCE + " for --shape snake).")
+        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the look-at point (default: the scene's; ${DEFAULT-VALUE} for a shape without a scene).")
         double distance = 3.5;
 
         @Option(names = "--exposure", defaultValue = "400", paramLabel = "E", description = "Multiplies linear XYZ before "
-                + "display (default ${DEFAULT-VALUE}; for --shape snake the radiometric gain, the structural colour in "
-                + "the pigment's units with the energy normalisation, as the demo scene).")
+                + "display (default: the scene's, for the snake scenes the radiometric gain, the structural colour in "
+                + "the pigment's units; ${DEFAULT-VALUE} for a shape without a scene).")
         double exposure = 10;
 
         @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
@@ -134,28 +134,14 @@ final class ViewerOptions {
         OptionTypes.ImageSize size;
     }
 
-    /** Where the orbit camera starts for {@code --shape snake}: the coiled body fills an 800 x 600 window. */
-    static final double SNAKE_DISTANCE = 2.4;
-    static final double SNAKE_ELEVATION_DEG = 40;
-    /**
-     * The snake's diffuse weight, the demo scene's: the pigment is lit by Algorithm 4's transmitted light alone (its
-     * exposure is the demo's too, {@link RadiometricGain}).
-     */
-    static final double SNAKE_DIFFUSE_WEIGHT = 0;
-
     /** The patch a command line without --patch or --synthetic shows. */
     static final String DEFAULT_PATCH = "elaphe-like";
 
     /** What a scene file describes by itself: these options cannot be combined with one. */
-    static final List<String> SCENE_ONLY = sceneOnly();
+    static final List<String> SCENE_ONLY = List.of("--shape");
 
     /** The scene read by validate(). */
     private Scene parsedScene;
-
-    /** What only a scene file says: its shape and skin (the patch options replace the scene's patch). */
-    private static List<String> sceneOnly() {
-        return List.of("--shape", "--tangent", "--pigmentation", "--species", "--smooth-skin");
-    }
 
     /** Accepts the shapes a command line can build (an OBJ file needs a scene). */
     static final class ShapeConverter implements ITypeConverter<Scene.ShapeKind> {
@@ -193,6 +179,14 @@ final class ViewerOptions {
                 }
             }
             parsedScene = SceneFile.load(scene);
+        } else if (surface.shape == Scene.ShapeKind.SNAKE) {
+            parsedScene = shippedSnake();
+        }
+        Scene.ShapeKind shape = parsedScene != null ? parsedScene.shape().kind() : surface.shape;
+        if (shape != Scene.ShapeKind.SNAKE && (given("--species") || surface.smoothSkin)) {
+            throw new UserInputException((surface.smoothSkin ? "--smooth-skin" : "--species") + " dresses a snake, "
+                    + "and the " + (scene != null ? "scene " + scene + " shows a " : "shape is a ") + shape.sceneName()
+                    + (scene != null ? "" : ": add --shape snake"));
         }
         patch.validate();
         brdf.validate();
@@ -238,8 +232,8 @@ final class ViewerOptions {
      * given applied to its material.
      */
     Scene scene(Scene.ImageSize defaultSize) {
-        Scene s = parsedScene != null ? sceneOverrides().applyTo(withImage(parsedScene, imageSize(defaultSize)))
-                : optionsScene(defaultSize);
+        Scene base = parsedScene != null ? withImage(parsedScene, imageSize(defaultSize)) : optionsScene(defaultSize);
+        Scene s = sceneOverrides().applyTo(skinOverrides().applyTo(base));
         Scene.MaterialSpec m = s.material();
         // --terms replaces a scene's tolerance-chosen N; --patch or --synthetic the scene's patch
         Scene.PatchSpec patchSpec = parsedScene != null && patch.given() ? patch.spec(DEFAULT_PATCH) : m.patch();
@@ -249,7 +243,24 @@ final class ViewerOptions {
         return s.withMaterial(material);
     }
 
-    /** What the options given beside a scene file replace in it. */
+    /** What the options given say of the shape and its skin. */
+    private SkinOverrides skinOverrides() {
+        OptionTypes.Vector3 t = surface.tangent;
+        return new SkinOverrides(given("--species") ? surface.species : null, surface.smoothSkin,
+                given("--tangent") ? new double[] {t.x(), t.y(), t.z()} : null, surface.pigmentation);
+    }
+
+    /**
+     * What {@code --shape snake} shows: the shipped scene, drawn by the command's own method unless --variant names
+     * one.
+     */
+    private Scene shippedSnake() {
+        Scene snake = ShippedScenes.load(ShippedScenes.VIEWER_SNAKE);
+        Scene.MaterialSpec m = snake.material();
+        return snake.withMaterial(m.withSettings(m.settings().with(b -> b.variant(defaultVariant))));
+    }
+
+    /** What the options given beside a scene replace in it. */
     private SceneOverrides sceneOverrides() {
         return new SceneOverrides(given("--azimuth") ? view.azimuthDeg : null,
                 given("--elevation") ? view.elevationDeg : null, given("--distance") ? view.distance : null,
@@ -278,40 +289,22 @@ final class ViewerOptions {
         return true;
     }
 
-    /** The scene the options describe: the patch on a shape, the thesis' settings, an orbit camera, one light. */
+    /**
+     * The scene the options describe without a scene file: the patch on a sphere, a plane or a cylinder, the thesis'
+     * settings, an orbit camera about the origin, one light (the shape's skin and pigment come from
+     * {@link #skinOverrides}, the camera's and light's given values from {@link #sceneOverrides}).
+     */
     private Scene optionsScene(Scene.ImageSize size) {
         double phi = view.phiIDeg != null ? view.phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
-        boolean snake = surface.shape == Scene.ShapeKind.SNAKE;
-        // the snake lies coiled, as in the demo, and the camera comes close enough that it fills the window
-        double elevation = snake && !given("--elevation") ? SNAKE_ELEVATION_DEG : view.elevationDeg;
-        double distance = snake && !given("--distance") ? SNAKE_DISTANCE : view.distance;
-        double[] eye = new OrbitCamera(view.azimuthDeg, elevation, distance, 0, 0, 0).eye();
+        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, view.distance, 0, 0, 0).eye();
         Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
                 SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
         Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(view.thetaIDeg, phi)), "D65");
-        boolean scaled = surface.shape == Scene.ShapeKind.SNAKE && !surface.smoothSkin;
-        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null,
-                TangentSource.projected(surface.tangent.x(), surface.tangent.y(), surface.tangent.z()),
-                SnakeMesh.RidgeDirection.ALONG_BODY,
-                Scene.Transform.identity(), snake ? SnakeMesh.Pose.COILED : SnakeMesh.Pose.S_CURVE,
-                scaled ? StageSpec.ScalesSpec.of(surface.species) : null, null);
-        Scene.PigmentationSpec pigment = surface.pigmentation != null
-                ? Scene.PigmentationSpec.imageFile(surface.pigmentation)
-                : scaled ? Scene.PigmentationSpec.ofSpecies(surface.species)
-                : surface.shape == Scene.ShapeKind.SNAKE ? Scene.PigmentationSpec.proceduralPattern()
-                : Scene.PigmentationSpec.none();
-        // the snake, as the demo scene, is radiometric unless an exposure is given
-        boolean radiometric = snake && !given("--exposure");
-        // the snake's ridges run along the body, its v: the scan's columns lie along v (ScanTiling)
-        BrdfSettings base = defaults().with(b -> b.scanTiling(new ScanTiling(0, 0, snake)));
-        BrdfSettings settings = radiometric ? base.with(b -> b.spectral(
-                base.spectral().withNormalisation(MirrorNormalisation.ENERGY))) : base;
-        double exposure = radiometric ? RadiometricGain.of(settings) : view.exposure;
-        double diffuseWeight = snake && !given("--diffuse-weight") ? SNAKE_DIFFUSE_WEIGHT : surface.diffuseWeight;
-        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), settings, null, pigment,
-                pigment.present() && !surface.noPigmentation, diffuseWeight, exposure);
-        return new Scene(null, size, camera, light, shapeSpec, material,
-                view.brdfMap ? DisplayMode.BRDF_MAP : DisplayMode.SURFACE, StageSpec.none());
+        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null, TangentSource.projected(1, 0, 0),
+                SnakeMesh.RidgeDirection.ALONG_BODY, Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
+        Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null,
+                Scene.PigmentationSpec.none(), false, surface.diffuseWeight, view.exposure);
+        return new Scene(null, size, camera, light, shapeSpec, material, DisplayMode.SURFACE, StageSpec.none());
     }
 
     /**

@@ -72,6 +72,8 @@ class ViewerCliTest {
         assertOneLine(CliTest.run("render", "--shape", "teapot", "-o", out), "sphere, plane, cylinder or snake");
         assertOneLine(CliTest.run("render", "--size", "12x9000", "-o", out), "--size");
         assertOneLine(CliTest.run("render", "--tangent", "0,0,0", "-o", out), "--tangent");
+        assertOneLine(CliTest.run("render", "--species", "xenopeltisUnicolor", "-o", out),
+                "--species dresses a snake, and the shape is a sphere: add --shape snake");
         assertOneLine(CliTest.run("render", "--synthetic", "zebra", "-o", out), "unknown patch 'zebra': use blazed, sinusoid");
         assertOneLine(CliTest.run("render", "--patch", "missing.png", "--synthetic", "blazed", "-o", out), "not both");
         assertOneLine(CliTest.run("render", "-o", dir.resolve("x.jpg").toString()), "-o writes .png or .exr");

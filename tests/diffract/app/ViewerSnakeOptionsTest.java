@@ -31,27 +31,51 @@ class ViewerSnakeOptionsTest {
         return Math.sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
     }
 
+    private static Scene shipped(String name) {
+        return SceneFile.load(Path.of("assets/scenes", name));
+    }
+
+    /** --shape snake is the shipped viewer scene, drawn by the command's own method. */
     @Test
-    void theSnakeWearsItsSpeciesScalesAndPigmentCoiledAndFramed() {
+    void theSnakeIsTheShippedSceneDrawnByTheCommandsMethod() {
+        Scene file = shipped("viewer-snake.json");
         Scene s = scene("--shape", "snake");
+        assertSameView(file, s, diffract.optics.Variant.LOBES);
         assertEquals(SnakeSpecies.ELAPHE_GUTTATA, s.shape().scales().species());
         assertEquals(SnakeSpecies.ELAPHE_GUTTATA.scales(), s.shape().scales().lattice());
         assertEquals(SnakeSpecies.ELAPHE_GUTTATA, s.material().pigmentation().species());
         assertEquals(SnakeMesh.Pose.COILED, s.shape().pose());
-        assertEquals(ViewerOptions.SNAKE_DISTANCE, distance(s), 1e-9);
+        assertEquals(2.4, distance(s), 1e-5, "the coiled body fills an 800 x 600 window");
         assertEquals(diffract.colour.MirrorNormalisation.ENERGY, s.material().settings().spectral().normalisation());
         assertEquals(diffract.optics.RadiometricGain.of(s.material().settings()), s.material().exposure(), 0,
                 "the demo scene's radiometric gain");
-        assertEquals(ViewerOptions.SNAKE_DIFFUSE_WEIGHT, s.material().diffuseWeight(), 0);
+        assertEquals(0, s.material().diffuseWeight(), 0);
+        assertEquals(diffract.optics.Variant.BAKED, viewScene("--shape", "snake").material().settings().variant(),
+                "the viewer draws its baked table");
+    }
 
+    /** Options beside the snake override what they name, as beside any scene file. */
+    @Test
+    void optionsBesideTheSnakeOverrideWhatTheyName() {
         Scene x = scene("--shape", "snake", "--species", "xenopeltisUnicolor", "--exposure", "100",
                 "--distance", "3");
         assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, x.shape().scales().species());
+        assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR.scales(), x.shape().scales().lattice());
         assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, x.material().pigmentation().species());
         assertEquals(100, x.material().exposure(), 0, "an exposure given wins over the snake's");
-        assertEquals(diffract.colour.MirrorNormalisation.PEAK, x.material().settings().spectral().normalisation(),
-                "a gain of one's own is against the thesis' normalisation, as in a scene file");
+        assertEquals(diffract.colour.MirrorNormalisation.ENERGY, x.material().settings().spectral().normalisation(),
+                "the exposure is the gain alone: the scene's normalisation stays");
         assertEquals(3, distance(x), 1e-9, "a distance given wins over the snake's");
+
+        Scene demo = scene(Path.of("assets/scenes/snake-elaphe.json").toString(), "--species", "xenopeltisUnicolor",
+                "--tangent", "0,1,0");
+        assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, demo.shape().scales().species(), "beside a scene file too");
+        assertEquals(SnakeSpecies.XENOPELTIS_UNICOLOR, demo.material().pigmentation().species());
+        assertEquals(diffract.geometry.TangentSource.projected(0, 1, 0), demo.shape().tangents());
+        Scene demoFile = shipped("snake-elaphe.json");
+        assertArrayEquals(demoFile.camera().eye(), demo.camera().eye(), 0, "what is not named stays the scene's");
+        assertEquals(demoFile.stage().environment(), demo.stage().environment());
+        assertArrayEquals(demoFile.stage().ground().albedoSrgb(), demo.stage().ground().albedoSrgb(), 0);
     }
 
     @Test
@@ -59,10 +83,28 @@ class ViewerSnakeOptionsTest {
         Scene smooth = scene("--shape", "snake", "--smooth-skin");
         assertNull(smooth.shape().scales());
         assertEquals(true, smooth.material().pigmentation().procedural());
+        Scene image = scene("--shape", "snake", "--pigmentation", "pigment.png", "--no-pigmentation");
+        assertEquals(Path.of("pigment.png"), image.material().pigmentation().file());
+        assertEquals(false, image.material().pigmentationOn(), "--no-pigmentation starts it off");
         Scene sphere = scene();
         assertNull(sphere.shape().scales());
         assertEquals(3.5, distance(sphere), 1e-9);
         assertEquals(400, sphere.material().exposure(), 0);
+        assertEquals(false, sphere.material().pigmentationOn());
+    }
+
+    @Test
+    void aSpeciesOrASmoothSkinNeedsASnake() {
+        RenderCommand command = new RenderCommand();
+        new CommandLine(command).parseArgs("--species", "xenopeltisUnicolor", "-o", "unused.png");
+        diffract.util.UserInputException e = assertThrows(diffract.util.UserInputException.class,
+                command.options::validate);
+        assertEquals(true, e.getMessage().contains("--species dresses a snake, and the shape is a sphere: add "
+                + "--shape snake"), e.getMessage());
+        RenderCommand plane = new RenderCommand();
+        new CommandLine(plane).parseArgs("assets/scenes/blazed-grating-plane.json", "--smooth-skin", "-o", "u.png");
+        e = assertThrows(diffract.util.UserInputException.class, plane.options::validate);
+        assertEquals(true, e.getMessage().contains("--smooth-skin dresses a snake"), e.getMessage());
     }
 
     @Test
@@ -73,11 +115,10 @@ class ViewerSnakeOptionsTest {
         assertEquals(true, e.getMessage().contains("elapheGuttata or xenopeltisUnicolor"), e.getMessage());
     }
 
-    /** The scene files the GPU suite times the viewer with describe the viewer's own default views. */
+    /** The scene file the GPU suite times the viewer's sphere with describes the viewer's own default view. */
     @Test
-    void theViewerScenesAreTheViewersDefaults() {
-        assertSameView(SceneFile.load(Path.of("assets/scenes/viewer-sphere.json")), viewScene());
-        assertSameView(SceneFile.load(Path.of("assets/scenes/viewer-snake.json")), viewScene("--shape", "snake"));
+    void theViewerSphereSceneIsTheViewersDefault() {
+        assertSameView(shipped("viewer-sphere.json"), viewScene(), diffract.optics.Variant.BAKED);
     }
 
     private static Scene viewScene(String... args) {
@@ -88,7 +129,7 @@ class ViewerSnakeOptionsTest {
         return command.options.scene(new Scene.ImageSize(800, 600));
     }
 
-    private static void assertSameView(Scene file, Scene options) {
+    private static void assertSameView(Scene file, Scene options, diffract.optics.Variant variant) {
         assertArrayEquals(options.camera().eye(), file.camera().eye(), 1e-5);
         assertArrayEquals(options.camera().lookAt(), file.camera().lookAt(), 1e-12);
         assertEquals(options.camera().fieldOfViewDeg(), file.camera().fieldOfViewDeg(), 1e-12);
@@ -96,7 +137,8 @@ class ViewerSnakeOptionsTest {
         assertEquals(options.shape().kind(), file.shape().kind());
         assertEquals(options.shape().pose(), file.shape().pose());
         assertEquals(options.shape().scales(), file.shape().scales());
-        assertEquals(options.material().settings(), file.material().settings());
+        assertEquals(options.material().settings(), file.material().settings().with(b -> b.variant(variant)));
+        assertEquals(variant, options.material().settings().variant());
         assertEquals(options.material().pigmentation(), file.material().pigmentation());
         assertEquals(options.material().exposure(), file.material().exposure(), 0);
         assertEquals(options.material().diffuseWeight(), file.material().diffuseWeight(), 0);
