@@ -2,7 +2,6 @@ package diffract.render;
 
 import diffract.colour.Cie1931;
 import diffract.colour.D65;
-import diffract.colour.HatFilteredSpectrum;
 import diffract.colour.MirrorNormalisation;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
@@ -11,8 +10,6 @@ import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.optics.InvalidSettingException;
-import diffract.optics.LobeQuadrature;
-import diffract.optics.LobeSumTable;
 import diffract.optics.LobeWeightTable;
 import diffract.optics.PhaseCentredTerms;
 import diffract.optics.PhaseCentres;
@@ -46,8 +43,7 @@ import java.util.Optional;
  *   <li>{@code bakedXyz} (BAKED only): the FLSS table XYZ(u, v, w) of {@link BakedTable}, baked once per patch and
  *       settings ({@link BakedTables}), or {@code bakedLayers}, the mip-mapped table of the lobes method when the
  *       illumination filters;</li>
- *   <li>{@code lobeSpectralTable} (LOBES only, made on first use): the hat-filtered spectral weights of
- *       {@link HatFilteredSpectrum}.</li>
+ *   <li>the lobes method's tables ({@link LobeTextures}, made on first use).</li>
  * </ul>
  *
  * <p>The terms are stored in the settings' {@link TermFormat}. Only what the settings need goes to the GPU: with a
@@ -69,23 +65,14 @@ public final class DiffractionTextures {
     private final BakedTable baked;
     private final FloatTexture3D bakedTexture;
     private final PhaseCentres phaseCentres;
-    private HatFilteredSpectrum lobeSpectrum;
-    private FloatTexture1D lobeSpectralTable;
-    /** Makes the lobes method's weight table from these terms: (lambda_min nm, tolerance) -> table. */
-    private java.util.function.BiFunction<Double, Double, LobeWeightTable> lobeWeightSource;
-    private LobeWeightTable lobeWeightTable;
+    private final LobeTextures lobes;
     /** Bakes the lobes method's filtered table of these terms on request (null on the phase-centred path). */
     private java.util.function.Function<Reporter, BakedTable> lobesTableSource;
-    private FloatTextureArray lobeWeights;
-    private FloatTextureArray lobeBlockBounds;
-    private FloatTextureArray lobeBlockOrder;
-    private FloatTexture1D lobeDensityMax;
-    private LobeSumTable lobeSumTable;
-    private FloatTextureArray lobeSums;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
                                 FloatTexture1D spectralTable, double spectralTableFirstNm, TaylorTerms source,
-                                BrdfSettings settings, int highestOrder, BakedTable baked, PhaseCentres phaseCentres) {
+                                BrdfSettings settings, int highestOrder, BakedTable baked, PhaseCentres phaseCentres,
+                                java.util.function.BiFunction<Double, Double, LobeWeightTable> lobeWeightSource) {
         this.terms = terms;
         this.termExtrema = termExtrema;
         this.uniformNodeTable = uniformNodeTable;
@@ -99,6 +86,7 @@ public final class DiffractionTextures {
         this.baked = baked;
         this.bakedTexture = baked == null ? null : baked.texture();
         this.phaseCentres = phaseCentres;
+        this.lobes = new LobeTextures(lobeWeightSource, extentXUm, extentYUm);
     }
 
     /**
@@ -147,10 +135,8 @@ public final class DiffractionTextures {
         DiffractionTextures textures = new DiffractionTextures(termTexture, normalised
                 ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), terms, settings, highestOrder,
-                baked, null);
-        int lobeOrder = highestOrder;
-        textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lobeOrder, lambdaMinNm,
-                tolerance);
+                baked, null, (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, highestOrder, lambdaMinNm,
+                tolerance));
         textures.lobesTableSource = r -> tables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r);
         return textures;
     }
@@ -173,12 +159,10 @@ public final class DiffractionTextures {
         FloatTextureArray.Precision precision = TermFormats.precision(settings.gpu().termFormat());
         TaylorTerms first = terms.aroundCentre(0);
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
-        DiffractionTextures textures = new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()),
+        return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), first, settings,
-                terms.centres().highestOrder(), null,
-                terms.centres());
-        textures.lobeWeightSource = (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lambdaMinNm, tolerance);
-        return textures;
+                terms.centres().highestOrder(), null, terms.centres(),
+                (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lambdaMinNm, tolerance));
     }
 
     /**
@@ -259,129 +243,9 @@ public final class DiffractionTextures {
         return spectralTableFirstNm;
     }
 
-    /**
-     * The lobes method's spectral weights ({@link HatFilteredSpectrum}) for the settings' band, made on first use:
-     * one 1-D RGBA32F texture, level-major.
-     */
-    public synchronized FloatTexture1D lobeSpectralTable(SpectralSettings spectral) {
-        if (lobeSpectralTable == null) {
-            lobeSpectrum = new HatFilteredSpectrum(spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
-                    spectral.normalisation());
-            lobeSpectralTable = new FloatTexture1D(lobeSpectrum.rgba());
-        }
-        return lobeSpectralTable;
-    }
-
-    /** The blocks' orders of {@link #lobeWeights}' texels ({@link LobeWeightTable#orderLayer}); one RG32F layer. */
-    public synchronized FloatTextureArray lobeBlockOrder(BrdfSettings settings, LobeQuadrature quadrature) {
-        LobeWeightTable table = lobeWeightTable(settings, quadrature);
-        if (lobeBlockOrder == null) {
-            lobeBlockOrder = new FloatTextureArray(table.blockCols() * LobeWeightTable.BLOCK,
-                    table.blockRows() * LobeWeightTable.BLOCK, java.util.List.of(table.orderLayer()),
-                    FloatTextureArray.Precision.FLOAT32);
-        }
-        return lobeBlockOrder;
-    }
-
-    /**
-     * The range maxima of {@link #lobeSpectralTable}'s weights per nanometre (HatFilteredSpectrum.rangeMaxRgba), for
-     * the lobes' cutoff.
-     */
-    public synchronized FloatTexture1D lobeDensityMax(SpectralSettings spectral) {
-        lobeSpectralTable(spectral);
-        if (lobeDensityMax == null) {
-            lobeDensityMax = new FloatTexture1D(lobeSpectrum.rangeMaxRgba());
-        }
-        return lobeDensityMax;
-    }
-
-    /** HatFilteredSpectrum.bandWeight of {@link #lobeSpectralTable}'s weights, for the lobes' cutoff. */
-    public synchronized double lobeBandWeight(SpectralSettings spectral) {
-        lobeSpectralTable(spectral);
-        return lobeSpectrum.bandWeight();
-    }
-
-    /** Entries per level of {@link #lobeSpectralTable}. */
-    public synchronized int lobeSpectralTablePositions(SpectralSettings spectral) {
-        lobeSpectralTable(spectral);
-        return lobeSpectrum.positions();
-    }
-
-    /**
-     * The lobes method's weight table ({@link LobeWeightTable}: |T_m(k w)|^2 per texel over the phase, and its
-     * bounds) for the settings' shortest wavelength and the quadrature's tolerance, made on first use from the same
-     * terms as the CPU's (the settings' Taylor order, or the phase-centred expansion); one RG32F texture array.
-     */
-    public synchronized FloatTextureArray lobeWeights(BrdfSettings settings, LobeQuadrature quadrature) {
-        LobeWeightTable table = lobeWeightTable(settings, quadrature);
-        if (lobeWeights == null) {
-            lobeWeights = new FloatTextureArray(table.cols(), table.rows(), table.layers(),
-                    FloatTextureArray.Precision.FLOAT32);
-        }
-        return lobeWeights;
-    }
-
-    /** The block bounds of {@link #lobeWeights} ({@link LobeWeightTable#blockLayers}); one RG32F texture array. */
-    public synchronized FloatTextureArray lobeBlockBounds(BrdfSettings settings, LobeQuadrature quadrature) {
-        LobeWeightTable table = lobeWeightTable(settings, quadrature);
-        if (lobeBlockBounds == null) {
-            lobeBlockBounds = new FloatTextureArray(table.blockCols(), table.blockRows(), table.blockLayers(),
-                    FloatTextureArray.Precision.FLOAT32);
-        }
-        return lobeBlockBounds;
-    }
-
-    /**
-     * The lobes method's texel sums ({@link LobeSumTable}) over its weight table, made on first use where they apply
-     * to these textures' extent under the settings ({@link LobeSumTable#applies}); empty elsewhere. One RGBA32F texture
-     * array, filtered linearly within a layer.
-     */
-    public synchronized java.util.Optional<LobeSumTable> lobeSumTable(BrdfSettings settings, LobeQuadrature quadrature) {
-        if (!LobeSumTable.applies(settings.coherenceWindow(), quadrature, extentXUm(), extentYUm())) {
-            return java.util.Optional.empty();
-        }
-        if (lobeSumTable == null) {
-            lobeSumTable = new LobeSumTable(lobeWeightTable(settings, quadrature),
-                    settings.coherenceWindow().sigmaTexels(extentXUm()),
-                    settings.coherenceWindow().sigmaTexels(extentYUm()));
-        }
-        return java.util.Optional.of(lobeSumTable);
-    }
-
-    /**
-     * The texture of {@link #lobeSumTable}, or one texel of 0 where the sums do not apply (the sampler still needs a
-     * texture of its type).
-     */
-    public synchronized FloatTextureArray lobeSums(BrdfSettings settings, LobeQuadrature quadrature) {
-        java.util.Optional<LobeSumTable> sums = lobeSumTable(settings, quadrature);
-        if (lobeSums != null && sums.isPresent() != (lobeSums.width() > 1)) {
-            throw new IllegalStateException("these textures hold the lobes' texel sums for other settings; make new "
-                    + "textures");
-        }
-        if (lobeSums == null) {
-            lobeSums = sums
-                    .map(t -> FloatTextureArray.rgba(t.width(), t.height(), t.layers()))
-                    .orElseGet(() -> FloatTextureArray.rgba(1, 1, java.util.List.of(new float[4])))
-                    .linear();
-        }
-        return lobeSums;
-    }
-
-    /** The table behind {@link #lobeWeights}. */
-    public synchronized LobeWeightTable lobeWeightTable(BrdfSettings settings, LobeQuadrature quadrature) {
-        if (quadrature.weightTolerance() == 0) {
-            throw new InvalidSettingException(Quantity.LOBE_QUADRATURE, "the lobes shader reads a table of the lobe "
-                    + "weights: a weight tolerance of 0 (the coefficients at every wavelength) is for the CPU only");
-        }
-        if (lobeWeightTable != null && (lobeWeightTable.tolerance() != quadrature.weightTolerance()
-                || lobeWeightTable.lambdaMinNm() != settings.spectral().lambdaMinNm())) {
-            throw new IllegalStateException("these textures hold the lobe weights for tolerance "
-                    + lobeWeightTable.tolerance() + " from " + lobeWeightTable.lambdaMinNm() + " nm; make new textures");
-        }
-        if (lobeWeightTable == null) {
-            lobeWeightTable = lobeWeightSource.apply(settings.spectral().lambdaMinNm(), quadrature.weightTolerance());
-        }
-        return lobeWeightTable;
+    /** The lobes method's tables, made on first use from these terms. */
+    public LobeTextures lobes() {
+        return lobes;
     }
 
     /** The phase centres of a phase-centred term array, null for the thesis' terms around 0. */

@@ -74,25 +74,25 @@ final class LobesGpu implements GpuMethod {
                     + "the CPU, with flss or the reference, with a longer coherence length or a smaller patch");
         });
         LightSource light = settings.illumination().light();
-        LobeWeightTable table = textures.lobeWeightTable(settings, q);
-        m.setTexture("lobeWeights", textures.lobeWeights(settings, q))
+        LobeWeightTable table = textures.lobes().weightTable(settings, q);
+        m.setTexture("lobeWeights", textures.lobes().weights(settings, q))
                 .setInt("lobeWeightSamples", table.samples())
                 .setFloat("lobePhaseStepPerUm", (float) table.stepPerUm())
                 .setFloat("lobeMaxPhasePerUm", (float) table.maxPhasePerUm())
                 .setFloat("lobeCutoff", (float) q.cutoff());
-        m.setTexture("lobeBlockBounds", textures.lobeBlockBounds(settings, q))
-                .setTexture("lobeBlockOrder", textures.lobeBlockOrder(settings, q));
-        java.util.Optional<LobeSumTable> sums = textures.lobeSumTable(settings, q);
-        m.setTexture("lobeSumTable", textures.lobeSums(settings, q))
+        m.setTexture("lobeBlockBounds", textures.lobes().blockBounds(settings, q))
+                .setTexture("lobeBlockOrder", textures.lobes().blockOrder(settings, q));
+        java.util.Optional<LobeSumTable> sums = textures.lobes().sumTable(settings, q);
+        m.setTexture("lobeSumTable", textures.lobes().sums(settings, q))
                 .setInt("lobeSums", sums.isPresent() ? 1 : 0)
                 .setVec2("lobeSumCells", sums.map(LobeSumTable::cellsX).orElse(0),
                         sums.map(LobeSumTable::cellsY).orElse(0))
                 .setFloat("lobeSumCellTexels", sums.map(LobeSumTable::cellTexels).orElse(1))
                 .setFloat("lobeSumNodesPerBox", (float) q.sumNodesPerBox());
-        m.setTexture("lobeSpectralTable", textures.lobeSpectralTable(settings.spectral()))
-                .setInt("lobeTablePositions", textures.lobeSpectralTablePositions(settings.spectral()))
-                .setTexture("lobeDensityMax", textures.lobeDensityMax(settings.spectral()))
-                .setFloat("lobeBandWeight", (float) textures.lobeBandWeight(settings.spectral()))
+        m.setTexture("lobeSpectralTable", textures.lobes().spectralTable(settings.spectral()))
+                .setInt("lobeTablePositions", textures.lobes().spectralTablePositions(settings.spectral()))
+                .setTexture("lobeDensityMax", textures.lobes().densityMax(settings.spectral()))
+                .setFloat("lobeBandWeight", (float) textures.lobes().bandWeight(settings.spectral()))
                 .setFloat("lobeNodesPerSigma", (float) q.nodesPerSigma())
                 .setFloat("lobeMaxStepNm", (float) q.maxStepNm())
                 .setFloat("lobeReachSigmas", (float) q.reachSigmas())
