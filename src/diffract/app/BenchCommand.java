@@ -444,7 +444,9 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             NamedPatch named = patch.load(null, reporter);
             double phiDeg = patchPhiDeg != null ? patchPhiDeg
                     : patch.file != null ? FILE_PATCH_PHI_DEG : patch.periodAzimuthDeg(null);
-            list.add(new BenchPatch(named.name().replaceFirst("\\.[^.]*$", ""), named.meanSubtracted(), phiDeg));
+            // a file by its name less the extension; a patch made by code by its catalogue name and changes
+            String name = patch.file != null ? named.name().replaceFirst("\\.[^.]*$", "") : named.name();
+            list.add(new BenchPatch(name, named.meanSubtracted(), phiDeg));
         }
         HeadlessGL.require();
         Files.createDirectories(outputDir);
