@@ -467,8 +467,9 @@ vec3 spectralXyz(vec3 uvw) {
     ivec2 grid = textureSize(lobeWeights, 0).xy;
     ivec2 gridHalf = grid / 2;
     // LobeSpectrum.marchBlocks: blocks of LOBE_BLOCK texels along the major axis, the blocks across it that the
-    // segment reaches there, each block tested against its bound, and the texels of a block that passes from the
-    // largest bound down
+    // segment reaches there, each block tested against its bound, and the texels of a block that passes either from
+    // the largest bound down or row by row within the segment's reach, whichever tests fewer (LobeSpectrum.byRows)
+    float passageTexels = 2.0 * reach[minor] * patchExtentUm[minor] / shortest;
     int iFirst = max(int(floor(majorRange.x)), -gridHalf[major]);
     int iLast = min(min(int(ceil(majorRange.y)), iFirst + MAX_MARCH), grid[major] - 1 - gridHalf[major]);
     int biLast = (iLast + gridHalf[major]) / LOBE_BLOCK;
@@ -482,6 +483,10 @@ vec3 spectralXyz(vec3 uvw) {
     int k0 = 0;       // its minor texels
     int k1 = -1;
     bool inBlock = false; // a block that passed its test, whose texels are being tested
+    bool rows = false;    // its texels row by row, not from the largest bound down
+    int i = 0;            // rows: the major texel in the block
+    int m = 0;            // rows: the minor texel, up to mLast
+    int mLast = -1;
     ivec2 blockOrigin = ivec2(0); // its first texel in the table
     float blockScale = 0.0; // its bound per unit of a texel's weight bound
     int slot = 0;     // the next of its texels in their order
@@ -495,17 +500,39 @@ vec3 spectralXyz(vec3 uvw) {
         bool stalled = true; // the steps ran out before either
         for (int step = 0; step < MAX_MARCH_STEPS; step++) {
             if (inBlock) {
-                // the block's texels from the largest bound down (LobeWeightTable.orderedTexel) while the batch has
-                // room, until none left can reach the cutoff; those out of reach have no passage
+                // the block's next candidates while the batch has room: by rows, or from the largest bound down
+                // (LobeWeightTable.orderedTexel) until none left can reach the cutoff; one test for both, so that the
+                // fragments of a SIMD group test their candidates together rather than in turn with their blocks'
                 for (int n = 0; n < LOBE_BLOCK && inBlock && count < LOBE_BATCH; n++) {
-                    vec2 entry = texelFetch(lobeBlockOrder, ivec3(blockOrigin + ivec2(slot % LOBE_BLOCK,
-                            slot / LOBE_BLOCK), 0), 0).rg;
-                    slot++;
-                    bool reachable = entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff;
-                    inBlock = reachable && slot < LOBE_BLOCK * LOBE_BLOCK;
-                    if (reachable) {
+                    ivec2 candidate;
+                    bool reachable;
+                    if (rows) {
+                        if (m > mLast) {
+                            // the next major texel of the block: its minor texels within the block and the reach
+                            i++;
+                            inBlock = i <= i1;
+                            vec2 along = lambdaInterval(float(i) / patchExtentUm[major] * vec2(major == 0, major == 1),
+                                    uv * vec2(major == 0, major == 1),
+                                    mix(vec2(1e30), reach, vec2(major == 0, major == 1)));
+                            vec2 minorRange = texelRange(uv[minor], reach[minor], patchExtentUm[minor],
+                                    along.x * 1e-3, along.y * 1e-3);
+                            bool any = inBlock && along.x < along.y;
+                            m = any ? max(k0, int(floor(minorRange.x))) : 0;
+                            mLast = any ? min(k1, int(ceil(minorRange.y))) : -1;
+                        }
+                        candidate = major == 0 ? ivec2(i, m) : ivec2(m, i);
+                        reachable = m <= mLast;
+                        m = reachable ? m + 1 : m;
+                    } else {
+                        vec2 entry = texelFetch(lobeBlockOrder, ivec3(blockOrigin + ivec2(slot % LOBE_BLOCK,
+                                slot / LOBE_BLOCK), 0), 0).rg;
+                        slot++;
+                        reachable = entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff;
+                        inBlock = reachable && slot < LOBE_BLOCK * LOBE_BLOCK;
                         int offset = int(entry.x);
-                        ivec2 candidate = blockOrigin + ivec2(offset % LOBE_BLOCK, offset / LOBE_BLOCK) - gridHalf;
+                        candidate = blockOrigin + ivec2(offset % LOBE_BLOCK, offset / LOBE_BLOCK) - gridHalf;
+                    }
+                    if (reachable) {
                         vec2 at = lambdaInterval(vec2(candidate) / patchExtentUm, uv, reach);
                         if (at.x < at.y && lobeReaches(candidate, uv, uvw.z, at.x, at.y, peak)) {
                             batch[count] = candidate;
@@ -537,6 +564,16 @@ vec3 spectralXyz(vec3 uvw) {
                 inBlock = inBlock && bound * blockScale >= lobeCutoff;
                 blockOrigin = block * LOBE_BLOCK;
                 slot = 0;
+                // LobeSpectrum.byRows: the rows' texels within reach, at most; rows where the bound order would test
+                // more before the cutoff stops it
+                int across = min(k1 - k0 + 1, int(passageTexels) + 2);
+                int inRows = (i1 - i0 + 1) * across;
+                vec2 last = inRows < LOBE_BLOCK * LOBE_BLOCK ? texelFetch(lobeBlockOrder, ivec3(blockOrigin
+                        + ivec2(inRows % LOBE_BLOCK, inRows / LOBE_BLOCK), 0), 0).rg : vec2(-1.0, 0.0);
+                rows = inBlock && last.x >= 0.0 && last.y * blockScale >= lobeCutoff;
+                i = i0 - 1;
+                m = 0; // no row: texel indices run negative, so emptiness is m > mLast, not a sentinel
+                mLast = -1;
             } else {
                 // the next major block: the minor blocks its lobes can reach
                 bi++;
@@ -559,6 +596,9 @@ vec3 spectralXyz(vec3 uvw) {
                 bk = any ? (kFirst + gridHalf[minor]) / LOBE_BLOCK - 1 : 0;
                 bkLast = any ? (kLast + gridHalf[minor]) / LOBE_BLOCK : -1;
                 inBlock = false;
+                rows = false;
+                m = 0;
+                mLast = -1;
             }
         }
         int integrated = 0;

@@ -467,11 +467,35 @@ public final class LobeSpectrum {
     }
 
     /**
+     * Whether a block that passed its test is marched row by row: where its rows within the segment's reach hold fewer
+     * texels, at most, than the order of their bounds would test before the cutoff stops it (its texel in that slot is
+     * still above the cutoff). A thin segment crosses a block in a few texels per row, while at a bright display's
+     * cutoff nearly all of a block's bounds pass; in a scan's speckle a block passes for a few bright texels, and the
+     * order reads those alone.
+     *
+     * @param rows          the block's rows (along the major axis)
+     * @param across        its texels across a row
+     * @param passageTexels the segment's reach across the major axis, in texels
+     * @param scale         the block's bound per unit of a texel's weight bound
+     */
+    private boolean byRows(int blockCol, int blockRow, int rows, int across, double passageTexels, double scale) {
+        int inRows = rows * Math.min(across, (int) passageTexels + 2);
+        int block = LobeWeightTable.BLOCK;
+        return inRows < block * block && table.orderedTexel(blockCol, blockRow, inRows) >= 0
+                && table.orderedBound(blockCol, blockRow, inRows) * scale >= quadrature.cutoff();
+    }
+
+    /** Blocks the march took row by row and by their texels' bounds, since this spectrum was made (for tests). */
+    int blocksByRows;
+    int blocksByBound;
+
+    /**
      * The march over whole texels in blocks of the weight table ({@link LobeWeightTable#BLOCK}): along the major axis
      * block by block, across it the blocks the footprint's segment can reach there; a block whose bound over the
      * wavelengths any of its lobes comes within reach cannot reach the cutoff is skipped, and in the others its texels
-     * are tested as the plain march tests them, from the largest bound down ({@link LobeWeightTable#orderedTexel})
-     * until the bound left cannot reach the cutoff. The same lobes as the plain march, in the shader's order.
+     * are tested as the plain march tests them, either from the largest bound down ({@link LobeWeightTable#orderedTexel})
+     * until the bound left cannot reach the cutoff, or row by row along the major axis, each row's within the segment's
+     * reach, whichever tests fewer ({@link #byRows}). The same lobes as the plain march, in the shader's order.
      */
     private void marchBlocks(double u, double v, double w, Shape shape, boolean majorIsX, double[] major,
                              double[] node, double[] total) {
@@ -486,6 +510,8 @@ public final class LobeSpectrum {
         double minorUv = majorIsX ? v : u;
         double majorReach = majorIsX ? shape.reachU : shape.reachV;
         double minorReach = majorIsX ? shape.reachV : shape.reachU;
+        // the segment's reach across the major axis, in texels at the shortest wavelength
+        double passageTexels = 2 * minorReach * minorExtent / (lambdaMinNm * 1e-3);
         // the texels of the plain march, within the grid (a texel outside it has no weight)
         int iFirst = Math.max(first(major[0], 2) / 2, -majorHalf);
         int iLast = Math.min(Math.floorDiv((int) Math.ceil(2 * major[1]), 2), majorCount - 1 - majorHalf);
@@ -524,10 +550,28 @@ public final class LobeSpectrum {
                 if (bound * scale < quadrature.cutoff()) {
                     continue;
                 }
-                // its texels from the largest bound down, until none left can reach the cutoff; those out of reach
-                // have no passage (addLobe)
                 int bc = majorIsX ? bi : bk;
                 int br = majorIsX ? bk : bi;
+                if (byRows(bc, br, i1 - i0 + 1, k1 - k0 + 1, passageTexels, scale)) {
+                    blocksByRows++;
+                    for (int i = i0; i <= i1; i++) {
+                        double[] alongI = LobeGeometry.boxLambdaIntervalNm(i / majorExtent, i / majorExtent, 0, 0,
+                                majorUv, 0, majorReach, 1, lambdaMinNm, lambdaMaxNm);
+                        if (alongI == null) {
+                            continue;
+                        }
+                        double[] minorI = range(minorUv, minorReach, minorExtent, alongI[0] * 1e-3, alongI[1] * 1e-3);
+                        int m0 = Math.max(k0, first(minorI[0], 2) / 2);
+                        int m1 = Math.min(k1, Math.floorDiv((int) Math.ceil(2 * minorI[1]), 2));
+                        for (int m = m0; m <= m1; m++) {
+                            addLobe(majorIsX ? 2 * i : 2 * m, majorIsX ? 2 * m : 2 * i, u, v, w, shape, node, total);
+                        }
+                    }
+                    continue;
+                }
+                blocksByBound++;
+                // its texels from the largest bound down, until none left can reach the cutoff; those out of reach
+                // have no passage (addLobe)
                 for (int slot = 0; slot < block * block; slot++) {
                     int offset = table.orderedTexel(bc, br, slot);
                     if (offset < 0 || table.orderedBound(bc, br, slot) * scale < quadrature.cutoff()) {

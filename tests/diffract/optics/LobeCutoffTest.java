@@ -36,8 +36,12 @@ class LobeCutoffTest {
     }
 
     private static LobeSpectrum lobes() {
+        return lobes(LobeQuadrature.DEFAULT);
+    }
+
+    private static LobeSpectrum lobes(LobeQuadrature quadrature) {
         BrdfSettings settings = BrdfSettings.thesis(Variant.LOBES).with(b -> b.highestOrder(20)
-                .pixelFilter(PixelFilter.BOX).lobes(LobeQuadrature.DEFAULT.withSumNodesPerBox(0)));
+                .pixelFilter(PixelFilter.BOX).lobes(quadrature.withSumNodesPerBox(0)));
         return DiffractionBrdf.create(settings, scan, terms).lobes();
     }
 
@@ -91,15 +95,27 @@ class LobeCutoffTest {
     }
 
     /**
-     * Skipping blocks of texels by their bound leaves the sum unchanged: the map with the default cutoff marched in
-     * blocks equals the same marched texel by texel to rounding (the order of the sum differs), and both lose little
-     * to the cutoff against a map without one.
+     * Skipping blocks of texels by their bound leaves the sum unchanged: the map marched in blocks, by rows or by the
+     * texels' bounds, equals the same marched texel by texel to rounding (the order of the sum differs), at the
+     * default cutoff and at a bright display's (where most blocks go by rows).
      */
     @Test
     void theBlocksSkipOnlyLobesTheCutoffSkips() {
+        int byRows = 0;
+        int byBound = 0;
+        for (LobeQuadrature quadrature : new LobeQuadrature[] {LobeQuadrature.DEFAULT,
+            LobeQuadrature.DEFAULT.shownAt(3.5e4)}) {
+            LobeSpectrum blocks = lobes(quadrature);
+            assertSameSums(blocks, lobes(quadrature).withoutBlocks());
+            byRows += blocks.blocksByRows;
+            byBound += blocks.blocksByBound;
+        }
+        TestReport.printf(LobeCutoffTest.class, "blocks marched by rows %d, by bounds %d%n", byRows, byBound);
+        assertTrue(byRows > 0 && byBound > 0, "both ways are taken: " + byRows + " by rows, " + byBound + " by bounds");
+    }
+
+    private static void assertSameSums(LobeSpectrum blocks, LobeSpectrum texels) {
         int size = 24;
-        LobeSpectrum blocks = lobes();
-        LobeSpectrum texels = lobes().withoutBlocks();
         for (Covariance2 light : LIGHTS) {
             double worst = 0;
             double total = 0;
