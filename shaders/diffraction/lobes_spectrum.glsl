@@ -565,11 +565,11 @@ vec3 spectralXyz(vec3 uvw) {
                 blockOrigin = block * LOBE_BLOCK;
                 slot = 0;
                 // LobeSpectrum.byRows: the rows' texels within reach, at most; rows where the bound order would test
-                // more before the cutoff stops it
+                // LOBE_ROWS_FACTOR times as many before the cutoff stops it
                 int across = min(k1 - k0 + 1, int(passageTexels) + 2);
-                int inRows = (i1 - i0 + 1) * across;
-                vec2 last = inRows < LOBE_BLOCK * LOBE_BLOCK ? texelFetch(lobeBlockOrder, ivec3(blockOrigin
-                        + ivec2(inRows % LOBE_BLOCK, inRows / LOBE_BLOCK), 0), 0).rg : vec2(-1.0, 0.0);
+                int slots = LOBE_ROWS_FACTOR * (i1 - i0 + 1) * across;
+                vec2 last = slots < LOBE_BLOCK * LOBE_BLOCK ? texelFetch(lobeBlockOrder, ivec3(blockOrigin
+                        + ivec2(slots % LOBE_BLOCK, slots / LOBE_BLOCK), 0), 0).rg : vec2(-1.0, 0.0);
                 rows = inBlock && last.x >= 0.0 && last.y * blockScale >= lobeCutoff;
                 i = i0 - 1;
                 m = 0; // no row: texel indices run negative, so emptiness is m > mLast, not a sentinel

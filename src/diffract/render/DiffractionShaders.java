@@ -118,6 +118,7 @@ public final class DiffractionShaders {
         defines.put("MAX_SUM_NODES", Integer.toString(LobeSpectrum.MAX_SUM_NODES));
         // the texels per side of the weight table's blocks of bounds (lobes_spectrum.glsl)
         defines.put("LOBE_BLOCK", Integer.toString(diffract.optics.LobeWeightTable.BLOCK));
+        defines.put("LOBE_ROWS_FACTOR", Integer.toString(LobeSpectrum.ROWS_FACTOR));
         defines.put("WIDEST_HAT_NM", Integer.toString(diffract.colour.HatFilteredSpectrum.WIDEST_HAT_NM));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
