@@ -155,7 +155,8 @@ final class SubmitCommand implements Callable<Integer> {
                 out -> out.write(text.getBytes(java.nio.charset.StandardCharsets.UTF_8)));
         Sbatch.Result result = Sbatch.submit(script, !slurm.noWait, id -> System.out.printf(Locale.ROOT,
                 "submitted %s as Slurm array job %s: %d pieces of %d %s%s, logs %s%n", script, id, count,
-                split.items(), split.itemsName(), slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
+                split.items(), split.itemsName(),
+                slurm.maxRunning != null ? ", at most " + slurm.maxRunning + " at once" : "",
                 dir.resolve(SlurmScript.logName("I", count))));
         if (slurm.noWait) {
             System.out.println("once the array has ended: " + SlurmScript.command(mergeCommand));

@@ -63,7 +63,7 @@ final class ViewerOptions {
     @Mixin PatchOptions patch;
     @Mixin BrdfOptions brdf;
 
-    @ArgGroup(exclusive = false, validate = false, heading = "Shape and pigment (without a SCENE):%n")
+    @ArgGroup(exclusive = false, validate = false, heading = "Shape and skin:%n")
     Surface surface = new Surface();
 
     @ArgGroup(exclusive = false, validate = false, heading = "Light, camera and picture:%n")
@@ -81,7 +81,8 @@ final class ViewerOptions {
                         + "xenopeltisUnicolor (default: the scene's; --shape snake's is ${DEFAULT-VALUE}).")
         SnakeSpecies species = SnakeSpecies.ELAPHE_GUTTATA;
 
-        @Option(names = "--smooth-skin", description = "A snake without scales: the corn-snake pattern over a smooth skin.")
+        @Option(names = "--smooth-skin",
+                description = "A snake without scales: the corn-snake pattern over a smooth skin.")
         boolean smoothSkin;
 
         @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
@@ -96,8 +97,8 @@ final class ViewerOptions {
         boolean noPigmentation;
 
         @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
-                description = "w_d: pigment mixed in as ambient light (default: the scene's; ${DEFAULT-VALUE} for a shape without "
-                        + "a scene).")
+                description = "w_d: pigment mixed in as ambient light (default: the scene's; ${DEFAULT-VALUE} for a "
+                        + "shape without a scene).")
         double diffuseWeight = 0.2;
     }
 
@@ -114,10 +115,13 @@ final class ViewerOptions {
         @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
         double azimuthDeg;
 
-        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG", description = "Camera elevation (default: the scene's; ${DEFAULT-VALUE} for a shape without a scene).")
+        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG",
+                description = "Camera elevation (default: the scene's; ${DEFAULT-VALUE} for a shape without a scene).")
         double elevationDeg = 20;
 
-        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D", description = "Camera distance from the look-at point (default: the scene's; ${DEFAULT-VALUE} for a shape without a scene).")
+        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D",
+                description = "Camera distance from the look-at point (default: the scene's; ${DEFAULT-VALUE} for a "
+                        + "shape without a scene).")
         double distance = 3.5;
 
         @Option(names = "--exposure", defaultValue = "400", paramLabel = "E", description = "Multiplies linear XYZ before "

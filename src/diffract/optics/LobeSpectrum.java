@@ -501,9 +501,10 @@ public final class LobeSpectrum {
      * The march over whole texels in blocks of the weight table ({@link LobeWeightTable#BLOCK}): along the major axis
      * block by block, across it the blocks the footprint's segment can reach there; a block whose bound over the
      * wavelengths any of its lobes comes within reach cannot reach the cutoff is skipped, and in the others its texels
-     * are tested as the plain march tests them, either from the largest bound down ({@link LobeWeightTable#orderedTexel})
-     * until the bound left cannot reach the cutoff, or row by row along the major axis, each row's within the segment's
-     * reach, whichever tests fewer ({@link #byRows}). The same lobes as the plain march, in the shader's order.
+     * are tested as the plain march tests them, either from the largest bound down
+     * ({@link LobeWeightTable#orderedTexel}) until the bound left cannot reach the cutoff, or row by row along the major
+     * axis, each row's within the segment's reach, whichever tests fewer ({@link #byRows}). The same lobes as the plain
+     * march, in the shader's order.
      */
     private void marchBlocks(double u, double v, double w, Shape shape, boolean majorIsX, double[] major,
                              double[] node, double[] total) {
