@@ -32,7 +32,8 @@ final class BrdfOptions {
             description = "${COMPLETION-CANDIDATES}: the exact CPU reference, the thesis' three shader "
                     + "approximations, the baked table (baked(of=lobes) or baked(of=flss) names the method it holds), "
                     + "the Gaussian lobes (pixel- and light-averaged, exact in wavelength), or auto, the cheapest "
-                    + "configuration whose measured error on this patch meets --max-delta-e (default: reference on brdfmap, lobes on view and render).")
+                    + "configuration whose measured error on this patch meets --max-delta-e (default: reference on "
+                    + "brdfmap, lobes on view and render).")
     OptionTypes.VariantChoice variant;
 
     @Option(names = "--max-delta-e", paramLabel = "DE",

@@ -392,20 +392,32 @@ public final class LobeSpectrum {
         void at(int tx, int ty);
     }
 
+    /**
+     * The texels across the major axis (a range in texels, as {@link #range} gives it) whose lobes come within reach
+     * of (u, v) for the wavelengths at which the lobes at major coordinate {@code majorTexel} do on the major axis;
+     * null for none.
+     */
+    private double[] minorRange(double majorTexel, double u, double v, Shape shape, boolean majorIsX) {
+        double[] along = majorIsX
+                ? LobeGeometry.lambdaIntervalNm(majorTexel / extentXUm, 0, u, 0, shape.reachU, 1, lambdaMinNm,
+                lambdaMaxNm)
+                : LobeGeometry.lambdaIntervalNm(0, majorTexel / extentYUm, 0, v, 1, shape.reachV, lambdaMinNm,
+                lambdaMaxNm);
+        if (along == null) {
+            return null;
+        }
+        return majorIsX ? range(v, shape.reachV, extentYUm, along[0] * 1e-3, along[1] * 1e-3)
+                : range(u, shape.reachU, extentXUm, along[0] * 1e-3, along[1] * 1e-3);
+    }
+
     /** The march over lattice points (step 2: whole texels; 1: pairs' midpoints too) near the segment s(lambda). */
     private void marchTexels(double u, double v, Shape shape, int step, boolean majorIsX, double[] major,
                              Visit visit) {
         for (int tMajor = first(major[0], step); tMajor <= Math.ceil(2 * major[1]); tMajor += step) {
-            double[] along = majorIsX
-                    ? LobeGeometry.lambdaIntervalNm(0.5 * tMajor / extentXUm, 0, u, 0, shape.reachU, 1, lambdaMinNm,
-                    lambdaMaxNm)
-                    : LobeGeometry.lambdaIntervalNm(0, 0.5 * tMajor / extentYUm, 0, v, 1, shape.reachV, lambdaMinNm,
-                    lambdaMaxNm);
-            if (along == null) {
+            double[] minor = minorRange(0.5 * tMajor, u, v, shape, majorIsX);
+            if (minor == null) {
                 continue;
             }
-            double[] minor = majorIsX ? range(v, shape.reachV, extentYUm, along[0] * 1e-3, along[1] * 1e-3)
-                    : range(u, shape.reachU, extentXUm, along[0] * 1e-3, along[1] * 1e-3);
             for (int tMinor = first(minor[0], step); tMinor <= Math.ceil(2 * minor[1]); tMinor += step) {
                 visit.at(majorIsX ? tMajor : tMinor, majorIsX ? tMinor : tMajor);
             }
@@ -493,18 +505,21 @@ public final class LobeSpectrum {
                 && table.orderedBound(blockCol, blockRow, slots) * scale >= quadrature.cutoff();
     }
 
-    /** Blocks the march took row by row and by their texels' bounds, since this spectrum was made (for tests). */
-    int blocksByRows;
-    int blocksByBound;
+    /**
+     * Blocks the march took row by row and by their texels' bounds, since this spectrum was made (for tests); adders,
+     * as the rows of a map share one spectrum across threads.
+     */
+    final java.util.concurrent.atomic.LongAdder blocksByRows = new java.util.concurrent.atomic.LongAdder();
+    final java.util.concurrent.atomic.LongAdder blocksByBound = new java.util.concurrent.atomic.LongAdder();
 
     /**
      * The march over whole texels in blocks of the weight table ({@link LobeWeightTable#BLOCK}): along the major axis
      * block by block, across it the blocks the footprint's segment can reach there; a block whose bound over the
      * wavelengths any of its lobes comes within reach cannot reach the cutoff is skipped, and in the others its texels
      * are tested as the plain march tests them, either from the largest bound down
-     * ({@link LobeWeightTable#orderedTexel}) until the bound left cannot reach the cutoff, or row by row along the major
-     * axis, each row's within the segment's reach, whichever tests fewer ({@link #byRows}). The same lobes as the plain
-     * march, in the shader's order.
+     * ({@link LobeWeightTable#orderedTexel}) until the bound left cannot reach the cutoff, or row by row along the
+     * major axis, each row's within the segment's reach, whichever tests fewer ({@link #byRows}). The same lobes as
+     * the plain march, in the shader's order.
      */
     private void marchBlocks(double u, double v, double w, Shape shape, boolean majorIsX, double[] major,
                              double[] node, double[] total) {
@@ -562,14 +577,13 @@ public final class LobeSpectrum {
                 int bc = majorIsX ? bi : bk;
                 int br = majorIsX ? bk : bi;
                 if (byRows(bc, br, i1 - i0 + 1, k1 - k0 + 1, passageTexels, scale)) {
-                    blocksByRows++;
+                    blocksByRows.increment();
+                    // each row's texels as the plain march takes them, within the block
                     for (int i = i0; i <= i1; i++) {
-                        double[] alongI = LobeGeometry.boxLambdaIntervalNm(i / majorExtent, i / majorExtent, 0, 0,
-                                majorUv, 0, majorReach, 1, lambdaMinNm, lambdaMaxNm);
-                        if (alongI == null) {
+                        double[] minorI = minorRange(i, u, v, shape, majorIsX);
+                        if (minorI == null) {
                             continue;
                         }
-                        double[] minorI = range(minorUv, minorReach, minorExtent, alongI[0] * 1e-3, alongI[1] * 1e-3);
                         int m0 = Math.max(k0, first(minorI[0], 2) / 2);
                         int m1 = Math.min(k1, Math.floorDiv((int) Math.ceil(2 * minorI[1]), 2));
                         for (int m = m0; m <= m1; m++) {
@@ -578,7 +592,7 @@ public final class LobeSpectrum {
                     }
                     continue;
                 }
-                blocksByBound++;
+                blocksByBound.increment();
                 // its texels from the largest bound down, until none left can reach the cutoff; those out of reach
                 // have no passage (addLobe)
                 for (int slot = 0; slot < block * block; slot++) {

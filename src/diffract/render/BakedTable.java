@@ -25,7 +25,8 @@ import java.util.Locale;
  * pass ({@link GpuMethod#bakeFragmentPath}: its shader code per table sample, one w slice per frame, read back as
  * float32) and looked up trilinearly per fragment. The host keeps the float32 values (to upload into any GL
  * context); the GPU holds them as RGB16F by default: half precision rounds to 2^-11 relative (BakedVariantTest
- * holds the specular sample to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders costs (docs/baked.md).
+ * holds the specular sample to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders
+ * costs (docs/baked.md).
  */
 public final class BakedTable {
     /** The GPU format of the table. */

@@ -22,10 +22,11 @@ import java.util.concurrent.CompletionException;
 /**
  * Baked tables cached in memory per (patch terms, settings), so a viewer or a benchmark that draws the same patch
  * again never bakes twice (each pipeline, the layer above, owns one cache for its patch), and on disk
- * ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table instead of baking it. In memory, terms are compared by identity (they are immutable); on disk, by their content
- * hash. Settings are compared by value, with the variant, the term format and the Fresnel model ignored (the table
- * is that of the method it tabulates on float32 terms, whatever table method asks, before the gain factor). The
- * least recently used table is dropped from memory beyond {@link #MAX_TABLES} per cache: a table can take hundreds of MB.
+ * ({@link DiskCache}, {@link BakedTableFile}), so a later run loads the table instead of baking it. In memory,
+ * terms are compared by identity (they are immutable); on disk, by their content hash. Settings are compared by
+ * value, with the variant, the term format and the Fresnel model ignored (the table is that of the method it
+ * tabulates on float32 terms, whatever table method asks, before the gain factor). The least recently used table is
+ * dropped from memory beyond {@link #MAX_TABLES} per cache: a table can take hundreds of MB.
  * Thread-safe; a request for a table being baked (or loaded) waits for that bake.
  */
 public final class BakedTables {

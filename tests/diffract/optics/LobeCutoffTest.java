@@ -101,14 +101,14 @@ class LobeCutoffTest {
      */
     @Test
     void theBlocksSkipOnlyLobesTheCutoffSkips() {
-        int byRows = 0;
-        int byBound = 0;
+        long byRows = 0;
+        long byBound = 0;
         for (LobeQuadrature quadrature : new LobeQuadrature[] {LobeQuadrature.DEFAULT,
             LobeQuadrature.DEFAULT.shownAt(3.5e4)}) {
             LobeSpectrum blocks = lobes(quadrature);
             assertSameSums(blocks, lobes(quadrature).withoutBlocks());
-            byRows += blocks.blocksByRows;
-            byBound += blocks.blocksByBound;
+            byRows += blocks.blocksByRows.sum();
+            byBound += blocks.blocksByBound.sum();
         }
         TestReport.printf(LobeCutoffTest.class, "blocks marched by rows %d, by bounds %d%n", byRows, byBound);
         assertTrue(byRows > 0 && byBound > 0, "both ways are taken: " + byRows + " by rows, " + byBound + " by bounds");
