@@ -34,27 +34,39 @@ uniform sampler3D bakedXyz;
 #endif
 
 #ifdef BAKED_FILTERED
-// The lobes method's table looked up over the pixel's footprint (baked_table.glsl).
+// The lobes method's table looked up over the pixel's footprint (baked_table.glsl); under a disc light the disc is
+// integrated over the running sums of the table's rows (baked_disc.glsl).
 #define FILTERED 1
 // 1: surface pixels average over their footprint (PixelFilter.BOX); 0: their centre direction only
 uniform float pixelFootprintScale;
+vec3 footprintCovariance; // texels^2 of the table's level 0
 MipFootprint footprint;
 
 void setMapPixel(float halfWidth) {
-    footprint = tableMapPixel(halfWidth);
+    footprintCovariance = tableMapPixelCovariance(halfWidth);
+    footprint = mipFootprint(footprintCovariance);
 }
 
 void setSurfacePixelUnder(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad) {
-    footprint = tableSurfacePixel(dUvDx, dUvDy, wi, sigmaRad, pixelFootprintScale);
+    footprintCovariance = tableSurfacePixelCovariance(dUvDx, dUvDy, wi, sigmaRad, pixelFootprintScale);
+    footprint = mipFootprint(footprintCovariance);
 }
 
 void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
     setSurfacePixelUnder(dUvDx, dUvDy, wi, tableLightSigmaRad);
 }
 
+#ifdef BAKED_DISC
+#include "baked_disc.glsl"
+
+vec3 spectralXyz(vec3 uvw) {
+    return discOn ? discTableXyz(footprintCovariance) : tableXyz(uvw, footprint);
+}
+#else
 vec3 spectralXyz(vec3 uvw) {
     return tableXyz(uvw, footprint);
 }
+#endif
 #else
 vec3 spectralXyz(vec3 uvw) {
     return texture(bakedXyz, bakedTexcoord(uvw)).rgb;

@@ -26,31 +26,46 @@ float tableTexelsPerUv() {
     return 0.25 * (bakedSamples.x - 1.0);
 }
 
-// A BRDF-map pixel: a box of half-width halfWidth in u and v, variance halfWidth^2 / 3 per axis.
-MipFootprint tableMapPixel(float halfWidth) {
+// A BRDF-map pixel: a box of half-width halfWidth in u and v, variance halfWidth^2 / 3 per axis (texels^2).
+vec3 tableMapPixelCovariance(float halfWidth) {
     float h = halfWidth * tableTexelsPerUv();
-    return mipFootprint(vec3(h * h / 3.0, 0.0, h * h / 3.0));
+    return vec3(h * h / 3.0, 0.0, h * h / 3.0);
+}
+
+MipFootprint tableMapPixel(float halfWidth) {
+    return mipFootprint(tableMapPixelCovariance(halfWidth));
 }
 
 // A surface pixel: the Gaussian (J_x J_x^T + J_y J_y^T) / 12 of its (u, v) derivatives times pixelScale (1 for a
 // box pixel, 0 for a point: lobes_footprint.glsl's setSurfacePixelUnder), plus what a light of sigma_a = sigmaRad
 // adds to the table's light: LightSource.uvCovariance at omega_i, sigma_a^2 (cos^2 theta r r^T + e e^T), less the
 // table's isotropic sigma_a^2 where positive (a narrower light than the table's is not sharpened).
-MipFootprint tableSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad, float pixelScale) {
+// (its covariance in texels^2)
+vec3 tableSurfacePixelCovariance(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad, float pixelScale) {
     float table = tableLightSigmaRad * tableLightSigmaRad;
     vec3 c = pixelScale * pixelCovariance(dUvDx, dUvDy) + lightCovarianceAxes(wi,
             max(sigmaRad * sigmaRad * wi.z * wi.z - table, 0.0), max(sigmaRad * sigmaRad - table, 0.0));
-    return mipFootprint(c * tableTexelsPerUv() * tableTexelsPerUv());
+    return c * tableTexelsPerUv() * tableTexelsPerUv();
+}
+
+MipFootprint tableSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi, float sigmaRad, float pixelScale) {
+    return mipFootprint(tableSurfacePixelCovariance(dUvDx, dUvDy, wi, sigmaRad, pixelScale));
+}
+
+// The w slice below w and the fraction of the way to the next one.
+vec2 tableSlice(float w) {
+    float slice = clamp((w + 2.0) * 0.5 * (bakedSamples.y - 1.0), 0.0, bakedSamples.y - 1.0);
+    float below = min(floor(slice), bakedSamples.y - 2.0);
+    return vec2(below, slice - below);
 }
 
 // XYZ(u, v, w) of the table spread by the footprint.
 vec3 tableXyz(vec3 uvw, MipFootprint footprint) {
     vec2 tc = bakedTexcoord(uvw).xy;
-    float slice = clamp((uvw.z + 2.0) * 0.5 * (bakedSamples.y - 1.0), 0.0, bakedSamples.y - 1.0);
-    float below = min(floor(slice), bakedSamples.y - 2.0);
-    vec3 a = textureFootprint(bakedLayers, tc, below, footprint).rgb;
-    vec3 b = textureFootprint(bakedLayers, tc, below + 1.0, footprint).rgb;
-    return mix(a, b, slice - below);
+    vec2 slice = tableSlice(uvw.z);
+    vec3 a = textureFootprint(bakedLayers, tc, slice.x, footprint).rgb;
+    vec3 b = textureFootprint(bakedLayers, tc, slice.x + 1.0, footprint).rgb;
+    return mix(a, b, slice.y);
 }
 #endif
 

@@ -42,20 +42,12 @@ void setMapPixel(float halfWidth) {
 #endif
 }
 
-#ifdef LIGHT_DISC
-void setTableDisc();
-#endif
-
-// A sample of the baked table (baked.frag's bake pass): the box of its cell, half-width halfWidth in u and v, and the
-// light as an isotropic Gaussian of sigma_a, or a disc, about the normal (the table does not know omega_i).
+// A sample of the baked table (baked_lobes.frag's bake pass): the box of its cell, half-width halfWidth in u and v,
+// and the light as an isotropic Gaussian of sigma_a (the table does not know omega_i; a table under a disc is baked
+// with a point light, BakedDisc.heldBy, and its lookup integrates the disc).
 void setTableCell(float halfWidth) {
     footprintHalfWidth = vec2(halfWidth);
-#ifdef LIGHT_DISC
-    footprintGaussian = vec3(0.0);
-    setTableDisc();
-#else
     footprintGaussian = vec3(lightSigmaRad * lightSigmaRad, 0.0, lightSigmaRad * lightSigmaRad);
-#endif
     footprintShiftCount = 1;
 }
 
@@ -161,7 +153,6 @@ float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
 uniform float lightHalfAngleRad;
 // DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE and DISC_RING_SAMPLES: DiscFootprint's, defined by DiffractionShaders
 bool discOn = false;
-bool discTable = false; // a baked table's disc: about the normal, its C, S and w left to the lookup (setTableDisc)
 vec2 discCentreOffset; // the ellipse's centre less the pixel's (u, v) at the light's centre
 vec2 discE;            // the unit axis across the plane of incidence (r = (e.y, -e.x))
 vec2 discAxes;         // (a, b) = (sin R, sin R cos theta_i)
@@ -222,15 +213,6 @@ void setDisc(vec3 wi, vec3 wr) {
     discGainBound = discGainBoundAt(wi, wr);
 }
 
-// A baked table's disc, which knows no omega_i (as the table's Gaussian light, the light is taken at normal
-// incidence): DiscFootprint's circle of radius sin R about the sample, its density 1 / (Omega d_z) at d.xy = the offset
-// from its centre; the gain factor, the shadowing and w are the sample's, which the table's lookup applies.
-void setTableDisc() {
-    placeDisc(vec3(0.0, 0.0, 1.0), vec3(0.0, 0.0, 1.0)); // the circle about the normal; its gain is not used
-    discTable = true;
-    discGainBound = 1.0; // the gain is the lookup's
-}
-
 // DiscFootprint.reach: the ellipse's support along u and v plus its centre's offset.
 vec2 discReach() {
     vec2 r = vec2(discE.y, -discE.x);
@@ -285,10 +267,10 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     dist -= 0.5 * blurVariance * kappa;
     // the direction that puts the lobe on the pixel's centre, brought onto the rim from outside
     vec2 onDisc = min(1.0, 1.0 / max(rho, 1e-30)) * q;
-    vec2 d = discTable ? onDisc : -(centre + onDisc) - discWr.xy;
+    vec2 d = -(centre + onDisc) - discWr.xy;
     float dz2 = 1.0 - dot(d, d);
     float dz = sqrt(max(1e-12, dz2));
-    float gain = discTable ? 1.0 : discGainRatio(d, dz2);
+    float gain = discGainRatio(d, dz2);
     // the rim blurred by the lobe and the footprint's Gaussian, seen through the box exactly (BoxedEdge)
     float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * boxedNormalCdf(dist,
             footprintHalfWidth.x * abs(n.x), footprintHalfWidth.y * abs(n.y), sqrt(gaussianVariance));
@@ -305,7 +287,7 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     float quad = (full.z * dc.x * dc.x - 2.0 * full.y * dc.x * dc.y + full.x * dc.y * dc.y) / det;
     float gaussian = sigmaUv * sigmaUv / (2.0 * sqrt(det)) * exp(-0.5 * quad);
 #endif
-    return vec2(gain * mix(gaussian, edge, edgeWeight), discTable ? uvw.z : -(dz + discWr.z));
+    return vec2(gain * mix(gaussian, edge, edgeWeight), -(dz + discWr.z));
 }
 #endif
 

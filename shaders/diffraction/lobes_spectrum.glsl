@@ -453,7 +453,7 @@ vec3 spectralXyz(vec3 uvw) {
         float gaussianPeak = box
                 ? axisPeak(sigma, footprintHalfWidth.x, spread.x) * axisPeak(sigma, footprintHalfWidth.y, spread.z)
                 : 2.0 * widest / (2.0 * sqrt(s.x * s.z - s.y * s.y));
-        float plateau = 3.14159265 * 2.0 * widest * discPeakDensity(discTable ? vec3(0.0, 0.0, 1.0) : -uvw - discWr);
+        float plateau = 3.14159265 * 2.0 * widest * discPeakDensity(-uvw - discWr);
         peak = discGainBound * (rims ? max(plateau, gaussianPeak) : gaussianPeak);
     }
 #endif

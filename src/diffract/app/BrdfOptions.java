@@ -147,8 +147,8 @@ final class BrdfOptions {
         @Option(names = "--light-profile", paramLabel = "P", completionCandidates = OptionTypes.LightProfileNames.class,
                 description = "${COMPLETION-CANDIDATES}: the light of --light-size-deg as a uniform disc of diameter D "
                         + "(default: the reference integrates every direction; lobes averages each lobe over the disc "
-                        + "with C, S and w per direction; baked bakes it about the normal) or a Gaussian of sigma D/4 "
-                        + "per axis linearised about its centre (for comparisons).")
+                        + "with C, S and w per direction; baked integrates it over a table of the point light) or a "
+                        + "Gaussian of sigma D/4 per axis linearised about its centre (for comparisons).")
         LightProfile lightProfile;
     }
 

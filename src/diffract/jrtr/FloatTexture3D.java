@@ -56,8 +56,8 @@ public final class FloatTexture3D extends Texture {
 
     /**
      * @param mipmapped a GL_TEXTURE_2D_ARRAY instead (layer z = the z-th slice, same data layout) with mip levels per
-     *                  layer (2 x 2 box averages within a slice) and GL_LINEAR_MIPMAP_LINEAR, for lookups with
-     *                  {@code textureLod} that average over a footprint larger than a texel without blurring the
+     *                  layer (box averages within a slice, {@link BoxMipmaps}) and GL_LINEAR_MIPMAP_LINEAR, for lookups
+     *                  with {@code textureLod} that average over a footprint larger than a texel without blurring the
      *                  slices into each other (the shader interpolates between slices itself)
      */
     public FloatTexture3D(int width, int height, int depth, float[] rgb, Precision precision, boolean mipmapped) {
@@ -121,7 +121,19 @@ public final class FloatTexture3D extends Texture {
         gl.glTexImage3D(target, 0, precision.internalFormat, width, height, depth, 0, GL.GL_RGB, GL.GL_FLOAT,
                 FloatBuffer.wrap(rgb));
         if (mipmapped) {
-            gl.glGenerateMipmap(target);
+            // box averages made here, the same on every driver (BoxMipmaps)
+            float[] level = rgb;
+            int w = width;
+            int h = height;
+            int levels = BoxMipmaps.levels(width, height);
+            for (int k = 1; k < levels; k++) {
+                level = BoxMipmaps.next(level, w, h, depth, 3);
+                w = BoxMipmaps.halved(w);
+                h = BoxMipmaps.halved(h);
+                gl.glTexImage3D(target, k, precision.internalFormat, w, h, depth, 0, GL.GL_RGB, GL.GL_FLOAT,
+                        FloatBuffer.wrap(level));
+            }
+            gl.glTexParameteri(target, GL2ES3.GL_TEXTURE_MAX_LEVEL, levels - 1);
             gl.glTexParameteri(target, GL.GL_TEXTURE_MIN_FILTER, GL.GL_LINEAR_MIPMAP_LINEAR);
             gl.glTexParameteri(target, GL.GL_TEXTURE_MAG_FILTER, GL.GL_LINEAR);
             gl.glTexParameteri(target, GL.GL_TEXTURE_WRAP_S, GL.GL_CLAMP_TO_EDGE);

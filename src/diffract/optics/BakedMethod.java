@@ -22,7 +22,8 @@ import java.util.Set;
  *   <tr><th>label</th><td>baked</td></tr>
  *   <tr><th>parameter</th><td>{@code of}: the tabulated method (flss or lobes); none chooses as above</td></tr>
  *   <tr><th>CPU / GPU</th><td>no / {@code baked.frag}</td></tr>
- *   <tr><th>extended lights</th><td>baked in about the normal (the lobes method's table)</td></tr>
+ *   <tr><th>extended lights</th><td>the lobes method's table: a Gaussian baked in, isotropic; a disc integrated
+ *   by the lookup over a table of the point light</td></tr>
  * </table>
  */
 final class BakedMethod implements Variant {
@@ -82,16 +83,20 @@ final class BakedMethod implements Variant {
     }
 
     /**
-     * What its bake keeps (the tabulated method's heap; plain {@code baked}: the lobes method's, the larger) and the
-     * table's float32 host copy.
+     * What its bake keeps (the tabulated method's heap; plain {@code baked}: the lobes method's, the larger), the
+     * table's float32 host copy and, for a filtered table under a disc, its rows' running sums.
      */
     @Override
     public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
                                                     double fromNm, double toNm) {
         Variant baking = of != null ? of : Variant.LOBES;
         BakedGrid grid = BakedGrid.of(settings, field.maxAbsHeightUm());
-        return baking.heapMemory(field, settings, thetaIDeg, fromNm, toNm).plus(String.format(java.util.Locale.ROOT,
-                "baked table %d x %d x %d", grid.uvSamples(), grid.uvSamples(), grid.wSamples()), grid.bytes(12));
+        diffract.util.MemoryEstimate estimate = baking.heapMemory(field, settings, thetaIDeg, fromNm, toNm).plus(
+                String.format(java.util.Locale.ROOT, "baked table %d x %d x %d", grid.uvSamples(), grid.uvSamples(),
+                        grid.wSamples()), grid.bytes(12));
+        // under a disc the lookup of a filtered table reads the running sums of its rows, a second float32 copy
+        return baking.filtersLight() && settings.illumination().light().isDisc()
+                ? estimate.plus("its rows' running sums", grid.bytes(12)) : estimate;
     }
 
     @Override

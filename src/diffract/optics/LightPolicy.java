@@ -8,7 +8,7 @@ import java.util.Optional;
  * the BRDF over the light's directions ({@link Variant#filtersLight}: the lobes method and its baked table) or the
  * reference, which integrates it exactly; FLSS, NMM and PQ sample the light at its centre (the thesis' model). A
  * {@link LightProfile#DISC} light is taken by the same three: the reference integrates it, the lobes method averages
- * each lobe over it ({@link DiscFootprint}), the baked table bakes it in about the normal.
+ * each lobe over it ({@link DiscFootprint}), the baked table's lookup integrates it over a table of the point light.
  *
  * <p>Where the user named both the method and the light (brdfmap, the library), such a pair is refused with
  * {@link #reason}; where the light comes from a scene (scene files, the viewer's keys), it is drawn as a point light

@@ -10,7 +10,8 @@ public enum LightProfile {
     /**
      * Uniform radiance over the cone of half-angle D / 2 around the light's direction: what a scene's sun or lamp
      * is, and the default. The reference integrates it, every direction exactly ({@link DiscLightAverage}); the
-     * lobes method averages each lobe over it ({@link DiscFootprint}), its baked table about the normal.
+     * lobes method averages each lobe over it ({@link DiscFootprint}); its baked table holds the point light and the
+     * lookup integrates the disc over the table's rows.
      */
     DISC,
     /**

@@ -38,6 +38,7 @@ public final class BakedTable {
     private final double bakeSeconds;
     private final Variant tabulated;
     private final long shortCells;
+    private float[] rowSums;
 
     /**
      * @param tabulated  the method whose spectrum the samples hold: point samples, or cell and light averages where it
@@ -64,14 +65,16 @@ public final class BakedTable {
      * {@code settings} (its terms, window, Taylor tolerance, wavelengths and light) over the grid the settings ask
      * for, in a hidden GL context of its own. A table of FLSS holds point samples; a table of a method that filters
      * (the lobes method) holds each sample averaged over its cell of the table (a box of 4 / (n - 1) in u and v) and
-     * over the settings' light (isotropic, sigma_a; the table does not know omega_i), and is mip-mapped for lookups
-     * that average over a pixel's footprint (docs/filtering.md, section 8).
+     * over the settings' Gaussian light (isotropic, sigma_a; the table does not know omega_i; a disc is left to the
+     * lookup, which integrates it: the table holds the point light, {@link BakedDisc#heldBy}), and is mip-mapped for
+     * lookups that average over a pixel's footprint (docs/filtering.md, section 8).
      */
     public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, Variant tabulated,
                                   FloatTexture3D.Precision precision, Reporter reporter) {
         long start = System.nanoTime();
         BakedGrid grid = BakedGrid.of(settings, terms.maxAbsHeightUm());
-        BrdfSettings method = settings.with(b -> b.variant(tabulated).termFormat(TermFormat.RG32F));
+        BrdfSettings method = BakedDisc.heldBy(settings).with(b -> b.variant(tabulated)
+                .termFormat(TermFormat.RG32F));
         Material material = DiffractionMaterials.bake(DiffractionTextures.of(terms, method), method, grid);
         boolean filtered = tabulated.filtersLight();
         int n = grid.uvSamples();
@@ -139,6 +142,22 @@ public final class BakedTable {
     /** The table's float32 values, RGB = XYZ, u fastest, then v, then w (do not modify). */
     float[] values() {
         return rgb;
+    }
+
+    /**
+     * A new texture of the running sums of the table's rows along u ({@link BakedDisc#rowSums}, worked out once) for
+     * one GL context: float32 (a piece of a row is a difference of two sums), mip-mapped per w slice.
+     */
+    public FloatTexture3D rowSumsTexture() {
+        float[] sums;
+        synchronized (this) {
+            if (rowSums == null) {
+                rowSums = BakedDisc.rowSums(rgb, grid);
+            }
+            sums = rowSums;
+        }
+        return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), sums,
+                FloatTexture3D.Precision.FLOAT32, true);
     }
 
     /** A new texture of the table for one GL context (the host values are shared, not copied). */

@@ -243,10 +243,13 @@ public final class BakedTables {
         return inMemory.containsKey(key(terms, settings));
     }
 
-    /** The table is made on float32 terms before the gain factor, whatever variant, term format and Fresnel ask. */
+    /**
+     * The table is made on float32 terms before the gain factor, whatever variant, term format and Fresnel ask, and
+     * with the light it holds ({@link BakedDisc#heldBy}: a point under a disc).
+     */
     private static Key key(TaylorTerms terms, BrdfSettings settings) {
-        return new Key(terms, settings.with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)
-                .fresnel(FresnelModel.PHYSICAL)), tabulated(terms, settings));
+        return new Key(terms, BakedDisc.heldBy(settings).with(b -> b.variant(Variant.BAKED)
+                .termFormat(TermFormat.RG32F).fresnel(FresnelModel.PHYSICAL)), tabulated(terms, settings));
     }
 
     /**

@@ -80,10 +80,10 @@ public final class DiffractionMaterials {
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
                 stage, table.isPresent(), sky, output));
         surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
-        table.ifPresent(t -> filteredTable(m, t, settings));
+        table.ifPresent(t -> filteredTable(m, t, settings, false));
         if (sky) {
             SkyTable spread = SkyTable.of(textures.baked(), stage.environment().lights(),
-                    settings.illumination().light().sigmaRad());
+                    BakedDisc.heldSigmaRad(settings));
             m.setTexture("skyTable", spread.texture()).setVec2("skyTableSamples", spread.side(), spread.wSamples());
         }
         if (pigmentation != null) {
@@ -158,12 +158,16 @@ public final class DiffractionMaterials {
 
     /**
      * The lobes method's filtered table as {@code baked_table.glsl} reads it: its mip-mapped layers, its grid and the
-     * light it holds (the settings' light).
+     * light it holds ({@link BakedDisc#heldSigmaRad}); for the baked lookup under a disc ({@code baked_disc.glsl})
+     * also the running sums of its rows and the disc's half-angle.
      */
-    private static Material filteredTable(Material m, BakedTable table, BrdfSettings settings) {
-        return m.setTexture("bakedLayers", table.texture())
+    private static Material filteredTable(Material m, BakedTable table, BrdfSettings settings, boolean bakedLookup) {
+        m.setTexture("bakedLayers", table.texture())
                 .setVec2("bakedSamples", table.grid().uvSamples(), table.grid().wSamples())
-                .setFloat("tableLightSigmaRad", (float) settings.illumination().light().sigmaRad());
+                .setFloat("tableLightSigmaRad", (float) BakedDisc.heldSigmaRad(settings));
+        return bakedLookup && BakedDisc.integrates(settings, true) ? m.setTexture("bakedRowSums",
+                table.rowSumsTexture()).setFloat("lightHalfAngleRad", (float) settings.illumination().light()
+                .halfAngleRad()) : m;
     }
 
     /**
@@ -176,7 +180,7 @@ public final class DiffractionMaterials {
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             if (textures.baked().filtered()) {
-                filteredTable(m, textures.baked(), settings)
+                filteredTable(m, textures.baked(), settings, true)
                         .setFloat("pixelFootprintScale", pixelFootprintScale(settings));
             } else {
                 BakedGrid grid = textures.baked().grid();

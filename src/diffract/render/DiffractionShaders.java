@@ -224,6 +224,16 @@ public final class DiffractionShaders {
         if (textures.baked() != null && textures.baked().filtered()) {
             // the table holds cell- and light-averaged samples with mip levels: look up over the pixel's footprint
             defines.put("BAKED_FILTERED", "1");
+            if (BakedDisc.integrates(settings, true)) {
+                // the lookup integrates the disc over the running sums of the table's rows (baked_disc.glsl)
+                defines.put("BAKED_DISC", "1");
+                defines.put("LIGHT_DISC", "1");
+                defines.put("DISC_ROWS_MAX", Integer.toString(BakedDisc.ROWS_MAX));
+                defines.put("DISC_MIN_ROWS", Integer.toString(BakedDisc.MIN_ROWS));
+                defines.put("DISC_PIECES_MAX", Integer.toString(BakedDisc.PIECES_MAX));
+                defines.put("DISC_PIECE_UV", Float.toString((float) Math.sin(Math.toRadians(
+                        BakedDisc.PIECE_WIDTH_DEG))));
+            }
         }
         GpuMethods.of(settings.variant()).addDefines(defines, settings, target == Target.BRDF_MAP);
         return defines;

@@ -128,8 +128,8 @@ final class LobesGpu implements GpuMethod {
 
     /**
      * Its table's samples ({@code baked_lobes.frag}) average over their cell of the table (the box of
-     * {@link #bakeSettings}, {@code LOBES_BOX}) and, under a disc, over the disc about the normal
-     * ({@code setTableCell}): the defines of its BRDF map's program.
+     * {@link #bakeSettings}, {@code LOBES_BOX}) and the light the table holds ({@code setTableCell}; a point under a
+     * disc, {@link BakedDisc#heldBy}): the defines of its BRDF map's program.
      */
     @Override
     public String bakeFragmentPath() {

@@ -18,10 +18,9 @@ import org.junit.jupiter.api.Test;
 
 /**
  * What the baked table loses under a disc light, a measurement run on request (docs/disc-lobes.sh,
- * {@code -Ddiffract.measure=baked-disc}): the table (the disc baked about the normal) against the CPU lobes method
- * under the same disc, 64 x 64 maps of the Elaphe-like patch at 2, 10 and 20 degrees, theta_i 0 and 30, with 257 and
- * 513 samples along u and v (13 along w). At normal incidence the table holds the disc's shape and what is left is its
- * grid; at 30 degrees the light's ellipse, which the table cannot hold, adds the rest. No assertion.
+ * {@code -Ddiffract.measure=baked-disc}): the table (of the point light, the disc integrated by the lookup,
+ * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch at
+ * 0.53, 2, 10 and 20 degrees, theta_i 0 and 30, with 257 and 513 samples along u and v (13 along w). No assertion.
  */
 class BakedDiscMeasurement {
     static final int SIZE = 64;
@@ -32,14 +31,14 @@ class BakedDiscMeasurement {
         GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        for (double lightDeg : new double[] {2, 10, 20}) {
+        for (double lightDeg : new double[] {0.53, 2, 10, 20}) {
             for (double thetaI : new double[] {0, 30}) {
                 BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                         .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
                 Direction wi = RenderTestSupport.light(patch, thetaI);
                 float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, SIZE, Reporter.SILENT);
                 StringBuilder line = new StringBuilder(String.format(java.util.Locale.ROOT,
-                        "elaphe-like, 65 um, %d px, %.0f-degree disc, theta_i %.0f: the baked table against the CPU "
+                        "elaphe-like, 65 um, %d px, %.2f-degree disc, theta_i %.0f: the baked table against the CPU "
                                 + "lobes method, lit mean / p95", SIZE, lightDeg, thetaI));
                 for (int uvSamples : new int[] {257, 513}) {
                     BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(uvSamples, 13));

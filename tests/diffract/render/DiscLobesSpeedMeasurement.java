@@ -17,8 +17,9 @@ import java.util.Arrays;
 /**
  * What a disc light costs the lobes shader, a measurement run on request (docs/disc-lobes.sh,
  * {@code -Ddiffract.measure=disc-speed}): GL time per 64 x 64 map at the thesis' 65 um coherence, theta_i = 30
- * degrees, of the lobes method under a disc and under the Gaussian profile of the same diameter, against FLSS in the
- * thesis' configuration on the same context, in alternating rounds (the median of each), so that the machine's load
+ * degrees, of the lobes method under a disc and under the Gaussian profile of the same diameter and of the baked
+ * table under the disc (513 x 513 x 13 samples, what the commands take at 65 um), against FLSS in the thesis'
+ * configuration on the same context, in alternating rounds (the median of each), so that the machine's load
  * moves all alike. No assertion: speed is reported, never tested.
  */
 class DiscLobesSpeedMeasurement {
@@ -42,24 +43,29 @@ class DiscLobesSpeedMeasurement {
             BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                     .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
             BrdfSettings gaussian = disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
+            BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(513, 13));
             double[] discMs = new double[ROUNDS];
+            double[] bakedMs = new double[ROUNDS];
             double[] gaussianMs = new double[ROUNDS];
             double[] flssMs = new double[ROUNDS];
             try (GpuBrdfMap d = new GpuBrdfMap(terms, disc); GpuBrdfMap g = new GpuBrdfMap(terms, gaussian);
-                 GpuBrdfMap f = new GpuBrdfMap(terms, flss)) {
+                 GpuBrdfMap t = new GpuBrdfMap(terms, baked); GpuBrdfMap f = new GpuBrdfMap(terms, flss)) {
                 for (int r = 0; r < ROUNDS; r++) {
                     discMs[r] = d.medianMsPerFrame(wi, SIZE, 1, FRAMES);
                     gaussianMs[r] = g.medianMsPerFrame(wi, SIZE, 1, FRAMES);
+                    bakedMs[r] = t.medianMsPerFrame(wi, SIZE, 1, FRAMES);
                     flssMs[r] = f.medianMsPerFrame(wi, SIZE, 1, FRAMES);
                 }
             }
             double dm = median(discMs);
             double gm = median(gaussianMs);
             double fm = median(flssMs);
+            double tm = median(bakedMs);
             TestReport.line(DiscLobesSpeedMeasurement.class, String.format(java.util.Locale.ROOT,
-                    "%s, 65 um, %d px, %.2f deg: lobes under the disc %.1f ms, under the Gaussian %.1f ms, FLSS "
-                            + "(thesis) %.1f ms: FLSS / disc %.1f, disc / Gaussian %.2f", name, SIZE, lightDeg, dm, gm,
-                    fm, fm / dm, dm / gm));
+                    "%s, 65 um, %d px, %.2f deg: lobes under the disc %.1f ms, under the Gaussian %.1f ms, the baked "
+                            + "table under the disc %.1f ms, FLSS (thesis) %.1f ms: FLSS / disc %.1f, disc / Gaussian "
+                            + "%.2f, FLSS / baked %.1f", name, SIZE, lightDeg, dm, gm, tm, fm, fm / dm, dm / gm,
+                    fm / tm));
         }
     }
 

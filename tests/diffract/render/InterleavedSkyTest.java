@@ -28,8 +28,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * reads it, the key light's glints alone differ by 0.93 at this size, where a pixel spans 8 of the 800 x 600 view's,
  * whose whole difference is 0.5, docs/viewer.md). The comparison sees the sky: against a sky twice as bright in the
  * lobes method's picture the mean is 4.2. The key light is the scene's under the Gaussian profile, which both read
- * alike, so that the comparison sees the sky (under its disc, which the baked table holds about the normal, the mean
- * is 0.4 higher at this size; at 800 x 600 0.04, docs/viewer.md).
+ * alike, so that the comparison sees the sky.
  */
 @Tag("gl")
 class InterleavedSkyTest {

@@ -1,0 +1,155 @@
+// The baked table of the lobes method under a disc light (BAKED_DISC; BakedDisc, docs/filtering.md section 8): the
+// table (bakedLayers) holds the point light's cell averages and bakedRowSums the running sums of its rows along u
+// (BakedDisc.rowSums: at sample i the integral of the table from u_min to u_i, linear between samples). A lookup
+// integrates the disc itself: the ellipse its directions d form in (u, v) = -d.xy - omega_r.xy (DiscFootprint: centre
+// -cos R omega_i.xy - omega_r.xy, semi-axis a = sin R across the plane of incidence, b = sin R cos theta_i in it),
+// cut into rows along v and each row into pieces along u; a piece's integral is the difference of two running sums,
+// weighted by the density 1 / (Omega d_z), the gain factor and shadowing relative to the light's centre and the w of
+// its centre direction. Included by baked.frag after baked_table.glsl.
+// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV: BakedDisc's constants, defined by DiffractionShaders;
+// DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE: DiscFootprint's.
+#ifndef BAKED_DISC_GLSL
+#define BAKED_DISC_GLSL
+
+uniform sampler2DArray bakedRowSums;
+uniform float lightHalfAngleRad;
+bool discOn = false; // false for lights other than the settings' disc (a stage's environment lights)
+vec3 discWi;
+vec3 discWr;
+float discCentreGain;
+
+// The pixel at omega_r under the disc about omega_i (diffraction_main.glsl and surface_stage.glsl call it).
+void setDisc(vec3 wi, vec3 wr) {
+    discWi = wi;
+    discWr = wr;
+    discCentreGain = gainTimesShadowing(wi, wr);
+    discOn = lightHalfAngleRad > 0.0;
+}
+
+// The running sum at (u, v) in slice `slice` (tableSlice), spread by the footprint; one lookup per slice where the
+// footprint is isotropic (a BRDF map's pixel), whose two lookups would coincide.
+vec3 rowSumAt(vec2 uv, vec2 slice, MipFootprint m) {
+    vec2 tc = bakedTexcoord(vec3(uv, 0.0)).xy;
+    if (m.offsetTexels == vec2(0.0)) {
+        return mix(textureLod(bakedRowSums, vec3(tc, slice.x), m.lod).rgb,
+                textureLod(bakedRowSums, vec3(tc, slice.x + 1.0), m.lod).rgb, slice.y);
+    }
+    return mix(textureFootprint(bakedRowSums, tc, slice.x, m).rgb, textureFootprint(bakedRowSums, tc, slice.x + 1.0,
+            m).rgb, slice.y);
+}
+
+// The table integrated along u from u0 to u1 on the row at v, at w.
+vec3 pieceIntegral(float u0, float u1, float v, float w, MipFootprint m) {
+    vec2 slice = tableSlice(w);
+    return rowSumAt(vec2(u1, v), slice, m) - rowSumAt(vec2(u0, v), slice, m);
+}
+
+// The disc's ellipse in (u, v) for the pixel of setDisc: its centre, its reach along v, the half-width of its row
+// through the centre and how that row's centre moves along u per unit of v.
+struct DiscRows {
+    vec2 centre;
+    float reachV;
+    float halfWidth0;
+    float slope;
+    float area; // pi a b
+    float minorAxis; // b
+    vec2 r;          // the unit axis in the plane of incidence, along which b lies
+    vec3 covariance; // (xx, xy, yy) of the Gaussian of equal covariance, a^2 / 4 along e, b^2 / 4 along r
+    float solidAngle;
+    int pieces;
+};
+
+DiscRows discRows() {
+    float cosR = cos(lightHalfAngleRad);
+    float sinR = sin(lightHalfAngleRad);
+    float sinTheta = length(discWi.xy);
+    vec2 r = sinTheta > 1e-6 ? discWi.xy / sinTheta : vec2(1.0, 0.0);
+    vec2 e = vec2(-r.y, r.x);
+    float a = sinR;
+    float b = max(sinR * discWi.z, 1e-6);
+    // the ellipse q^T M^-1 q <= 1 with M = a^2 e e^T + b^2 r r^T
+    float mUv = a * a * e.x * e.y + b * b * r.x * r.y;
+    float mVv = a * a * e.y * e.y + b * b * r.y * r.y;
+    DiscRows d;
+    d.centre = -cosR * discWi.xy - discWr.xy;
+    d.reachV = sqrt(mVv);
+    d.halfWidth0 = a * b / d.reachV;
+    d.slope = mUv / mVv;
+    d.area = 3.14159265 * a * b;
+    d.minorAxis = b;
+    d.r = r;
+    d.covariance = 0.25 * (a * a * vec3(e.x * e.x, e.x * e.y, e.y * e.y)
+            + b * b * vec3(r.x * r.x, r.x * r.y, r.y * r.y));
+    d.solidAngle = 6.28318531 * (1.0 - cosR);
+    d.pieces = clamp(int(ceil(2.0 * d.halfWidth0 / DISC_PIECE_UV)), 1, DISC_PIECES_MAX);
+    return d;
+}
+
+// The row of the ellipse at v = centre.v + y: its pieces' integrals, each times its direction's density and gain
+// relative to the light's centre, at its direction's w; its width is added to `width`.
+vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
+    float halfWidth = d.halfWidth0 * sqrt(max(1.0 - y * y / (d.reachV * d.reachV), 0.0));
+    float v = d.centre.y + y;
+    float from = d.centre.x + d.slope * y - halfWidth;
+    float piece = 2.0 * halfWidth / float(d.pieces);
+    width += 2.0 * halfWidth;
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < DISC_PIECES_MAX; j++) {
+        if (j >= d.pieces) {
+            break;
+        }
+        float u0 = from + float(j) * piece;
+        vec2 dir = -vec2(u0 + 0.5 * piece, v) - discWr.xy;
+        float dz2 = 1.0 - dot(dir, dir);
+        if (dz2 > 0.0) { // below the horizon: none
+            float dz = sqrt(dz2);
+            float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.solidAngle * dz);
+            sum += weight * pieceIntegral(u0, u0 + piece, v, -(dz + discWr.z), m);
+        }
+    }
+    return sum;
+}
+
+// The disc's average of the table times the density and the gain relative to the light's centre, for the pixel of
+// setDisc, with the pixel's footprint (covariance in texels^2 of level 0). As DiscFootprint, a disc whose minor
+// semi-axis b is narrow next to the footprint's spread s is its Gaussian of equal covariance (a^2 / 4 along e,
+// b^2 / 4 along r, added to the footprint; C, S and w at the light's centre), a wide one is cut into rows, blended
+// for b / s between DISC_GAUSSIAN_BELOW and DISC_EDGE_ABOVE. The rows are a table sample apart (at least
+// DISC_MIN_ROWS, at most DISC_ROWS_MAX), each taken at its centre (the midpoint rule across v). A row's running sums
+// read at a coarse mip level hold the table's integral but not where within a level's texel it lies, so a row
+// shorter than the level's texels would place it by up to half a texel: narrow discs take the Gaussian instead.
+vec3 discTableXyz(vec3 footprintTexels) {
+    if (discCentreGain <= 0.0) {
+        return vec3(0.0);
+    }
+    DiscRows d = discRows();
+    float texelsPerUv = tableTexelsPerUv();
+    vec2 r = d.r;
+    float spreadR = sqrt(max(footprintTexels.x * r.x * r.x + 2.0 * footprintTexels.y * r.x * r.y
+            + footprintTexels.z * r.y * r.y, 0.25)) / texelsPerUv;
+    float edgeWeight = smoothstep(DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE, d.minorAxis / spreadR);
+    vec3 xyz = vec3(0.0);
+    if (edgeWeight < 1.0) {
+        vec3 disc = d.covariance * texelsPerUv * texelsPerUv;
+        xyz += (1.0 - edgeWeight) * tableXyz(vec3(d.centre, -(discWi.z + discWr.z)),
+                mipFootprint(footprintTexels + disc));
+    }
+    if (edgeWeight > 0.0) {
+        MipFootprint m = mipFootprint(footprintTexels);
+        int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
+        float spacing = 2.0 * d.reachV / float(rows);
+        vec3 sum = vec3(0.0);
+        float width = 0.0;
+        for (int k = 0; k < DISC_ROWS_MAX; k++) {
+            if (k >= rows) {
+                break;
+            }
+            sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
+        }
+        // the rows hold the ellipse's area pi a b exactly
+        xyz += width > 0.0 ? edgeWeight * sum * (d.area / width) : vec3(0.0);
+    }
+    return xyz;
+}
+
+#endif

@@ -1,0 +1,86 @@
+package diffract.render;
+
+import diffract.optics.BakedGrid;
+import diffract.optics.BrdfSettings;
+
+/**
+ * The baked table of the lobes method under a disc light ({@code baked_disc.glsl}, docs/filtering.md section 8): the
+ * table holds the point light's cell averages, and a lookup integrates the disc itself, per pixel, over the running
+ * sums of the table's rows along u ({@link #rowSums}). So one table serves every disc size and direction, and the
+ * oblique light's ellipse, its density 1 / (Omega d_z), the gain factor, the shadowing and w follow the disc's
+ * directions, as the lobes method's {@code DiscFootprint} does lobe by lobe.
+ *
+ * <p>The disc's ellipse in (u, v) is cut into rows along v and each row into pieces along u: a piece's integral is the
+ * difference of two running sums (exact along u for the table's interpolant), weighted by the density, the gain
+ * ratio and w of the piece's centre direction. Rows are at most a table sample or the pixel's footprint apart, at
+ * most {@link #ROWS_MAX} of them; where that cap spaces them wider, the footprint is widened to half their spacing,
+ * which softens the disc's rim by as much. Pieces are at most {@link #PIECE_WIDTH_DEG} wide, at most
+ * {@link #PIECES_MAX} a row.
+ *
+ * <table>
+ *   <caption>Its defines (DiffractionShaders) and uniforms (DiffractionMaterials)</caption>
+ *   <tr><th>name</th><th>what</th></tr>
+ *   <tr><td>{@code BAKED_DISC}, {@code LIGHT_DISC}</td><td>the lookup integrates the settings' disc</td></tr>
+ *   <tr><td>{@code DISC_ROWS_MAX}, {@code DISC_PIECES_MAX}, {@code DISC_PIECE_UV}</td><td>the constants below; the
+ *   piece's width as sin of it</td></tr>
+ *   <tr><td>{@code bakedLayers}</td><td>the running sums, RGB32F, mip-mapped per w slice</td></tr>
+ *   <tr><td>{@code lightHalfAngleRad}</td><td>the disc's half-angle R</td></tr>
+ * </table>
+ */
+public final class BakedDisc {
+    /** The most rows a disc is cut into. */
+    public static final int ROWS_MAX = 64;
+    /** The rows of a disc narrower than three rows of the level its footprint reads. */
+    public static final int MIN_ROWS = 4;
+    /** The most pieces a row is cut into. */
+    public static final int PIECES_MAX = 2;
+    /** The widest piece, in degrees of the disc. */
+    public static final double PIECE_WIDTH_DEG = 5;
+
+    private BakedDisc() {
+    }
+
+    /** Whether a table drawn with {@code settings} is looked up under their disc (a filtered table, a disc light). */
+    public static boolean integrates(BrdfSettings settings, boolean filteredTable) {
+        return filteredTable && settings.illumination().light().isDisc();
+    }
+
+    /**
+     * The settings a table is baked and cached with: under a disc, the point light (the lookup adds the disc); under
+     * a Gaussian light or a point, the settings' own.
+     */
+    public static BrdfSettings heldBy(BrdfSettings settings) {
+        return settings.illumination().light().isDisc() ? settings.with(b -> b.lightSizeDeg(0)) : settings;
+    }
+
+    /** sigma_a of the light a filtered table drawn with {@code settings} holds: 0 under a disc (a point table). */
+    public static double heldSigmaRad(BrdfSettings settings) {
+        return heldBy(settings).illumination().light().sigmaRad();
+    }
+
+    /**
+     * The running sums of the table's rows along u: at sample i of row (v_j, w_k), the integral of the table from
+     * u_min to u_i, each sample standing for its cell of width h = (u_max - u_min) / (n - 1): h (sum of the samples
+     * before i + half of sample i). Linear interpolation between samples is then the integral of the table held
+     * constant on the cells between sample centres, whose total is the table's. Summed in double, stored as float32.
+     *
+     * @param rgb the table's values, RGB, u fastest, then v, then w
+     */
+    public static float[] rowSums(float[] rgb, BakedGrid grid) {
+        int n = grid.uvSamples();
+        int rows = grid.wSamples() * n;
+        double h = (BakedGrid.U_MAX - BakedGrid.U_MIN) / (n - 1);
+        float[] sums = new float[rgb.length];
+        for (int row = 0; row < rows; row++) {
+            for (int c = 0; c < 3; c++) {
+                double before = 0;
+                for (int i = 0; i < n; i++) {
+                    int at = 3 * (row * n + i) + c;
+                    sums[at] = (float) (h * (before + 0.5 * rgb[at]));
+                    before += rgb[at];
+                }
+            }
+        }
+        return sums;
+    }
+}
