@@ -1,5 +1,6 @@
 package diffract.render;
 
+import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.Material;
 import diffract.jrtr.Texture2D;
 import diffract.optics.BakedGrid;
@@ -75,12 +76,12 @@ public final class DiffractionMaterials {
     static Material staged(DiffractionTextures textures, BrdfSettings settings, float exposure, Texture2D pigmentation,
                            float diffuseWeight, Stage stage, FrameOutput output, Reporter reporter) {
         Optional<BakedTable> table = DiffractionShaders.environmentTableNeeded(settings, stage)
-                ? textures.lobesTable(reporter) : Optional.empty();
+                ? textures.tables().lobesTable(reporter) : Optional.empty();
         boolean sky = DiffractionShaders.skyTableNeeded(settings, textures, stage);
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
                 stage, table.isPresent(), sky, output));
         surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
-        table.ifPresent(t -> filteredTable(m, t, settings, false));
+        table.ifPresent(t -> filteredTable(m, t, t.texture(), settings));
         if (sky) {
             SkyTable spread = SkyTable.of(textures.baked(), stage.environment().lights(),
                     BakedDisc.heldSigmaRad(settings));
@@ -157,17 +158,23 @@ public final class DiffractionMaterials {
     }
 
     /**
-     * The lobes method's filtered table as {@code baked_table.glsl} reads it: its mip-mapped layers, its grid and the
-     * light it holds ({@link BakedDisc#heldSigmaRad}); for the baked lookup under a disc ({@code baked_disc.glsl})
-     * also the running sums of its rows and the disc's half-angle.
+     * The lobes method's filtered table as {@code baked_table.glsl} reads it: its mip-mapped layers ({@code texture}),
+     * its grid and the light it holds ({@link BakedDisc#heldSigmaRad}).
      */
-    private static Material filteredTable(Material m, BakedTable table, BrdfSettings settings, boolean bakedLookup) {
-        m.setTexture("bakedLayers", table.texture())
+    private static Material filteredTable(Material m, BakedTable table, FloatTexture3D texture, BrdfSettings settings) {
+        return m.setTexture("bakedLayers", texture)
                 .setVec2("bakedSamples", table.grid().uvSamples(), table.grid().wSamples())
                 .setFloat("tableLightSigmaRad", (float) BakedDisc.heldSigmaRad(settings));
-        return bakedLookup && BakedDisc.integrates(settings, true) ? m.setTexture("bakedRowSums",
-                table.rowSumsTexture()).setFloat("lightHalfAngleRad", (float) settings.illumination().light()
-                .halfAngleRad()) : m;
+    }
+
+    /**
+     * The baked method's filtered table ({@link #filteredTable}) and, under a disc ({@code baked_disc.glsl}), the
+     * running sums of its rows and the disc's half-angle.
+     */
+    private static Material bakedFilteredTable(Material m, TableTextures tables, BrdfSettings settings) {
+        filteredTable(m, tables.baked(), tables.texture(), settings);
+        return BakedDisc.integrates(settings, true) ? m.setTexture("bakedRowSums", tables.rowSums())
+                .setFloat("lightHalfAngleRad", (float) settings.illumination().light().halfAngleRad()) : m;
     }
 
     /**
@@ -180,11 +187,11 @@ public final class DiffractionMaterials {
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             if (textures.baked().filtered()) {
-                filteredTable(m, textures.baked(), settings, true)
+                bakedFilteredTable(m, textures.tables(), settings)
                         .setFloat("pixelFootprintScale", pixelFootprintScale(settings));
             } else {
                 BakedGrid grid = textures.baked().grid();
-                m.setTexture("bakedXyz", textures.bakedTexture()).setVec2("bakedSamples", grid.uvSamples(),
+                m.setTexture("bakedXyz", textures.tables().texture()).setVec2("bakedSamples", grid.uvSamples(),
                         grid.wSamples());
             }
         } else {

@@ -6,7 +6,6 @@ import diffract.colour.MirrorNormalisation;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
 import diffract.jrtr.FloatTexture1D;
-import diffract.jrtr.FloatTexture3D;
 import diffract.jrtr.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.optics.InvalidSettingException;
@@ -24,7 +23,6 @@ import diffract.util.Reporter;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Optional;
 
 /**
  * The data every diffraction material reads, made once per patch and settings and uploaded once (on first use):
@@ -40,9 +38,8 @@ import java.util.Optional;
  *       f S zbar, S ybar) with the mirror's factor f ({@link MirrorNormalisation}; the normaliser sums S ybar),
  *       for NMM's arbitrary wavelengths (interpolated linearly in the shader; the CPU interpolates S and the CMF
  *       separately and multiplies, which differs by less than 1e-4 relative at 1 nm spacing);</li>
- *   <li>{@code bakedXyz} (BAKED only): the FLSS table XYZ(u, v, w) of {@link BakedTable}, baked once per patch and
- *       settings ({@link BakedTables}), or {@code bakedLayers}, the mip-mapped table of the lobes method when the
- *       illumination filters;</li>
+ *   <li>the baked tables ({@link TableTextures}): the baked method's, baked once per patch and settings
+ *       ({@link BakedTables}), and the lobes method's for wide environment lights;</li>
  *   <li>the lobes method's tables ({@link LobeTextures}, made on first use).</li>
  * </ul>
  *
@@ -62,16 +59,13 @@ public final class DiffractionTextures {
     private final int highestOrder;
     private final WindowRadii windowRadii;
     private final double maxAbsHeightUm;
-    private final BakedTable baked;
-    private final FloatTexture3D bakedTexture;
+    private final TableTextures tables;
     private final PhaseCentres phaseCentres;
     private final LobeTextures lobes;
-    /** Bakes the lobes method's filtered table of these terms on request (null on the phase-centred path). */
-    private java.util.function.Function<Reporter, BakedTable> lobesTableSource;
 
     private DiffractionTextures(FloatTextureArray terms, FloatTexture1D termExtrema, FloatTexture1D uniformNodeTable,
                                 FloatTexture1D spectralTable, double spectralTableFirstNm, TaylorTerms source,
-                                BrdfSettings settings, int highestOrder, BakedTable baked, PhaseCentres phaseCentres,
+                                BrdfSettings settings, int highestOrder, TableTextures tables, PhaseCentres phaseCentres,
                                 java.util.function.BiFunction<Double, Double, LobeWeightTable> lobeWeightSource) {
         this.terms = terms;
         this.termExtrema = termExtrema;
@@ -83,8 +77,7 @@ public final class DiffractionTextures {
         this.highestOrder = highestOrder;
         this.windowRadii = settings.windowRadii(extentXUm, extentYUm);
         this.maxAbsHeightUm = source.maxAbsHeightUm();
-        this.baked = baked;
-        this.bakedTexture = baked == null ? null : baked.texture();
+        this.tables = tables;
         this.phaseCentres = phaseCentres;
         this.lobes = new LobeTextures(lobeWeightSource, extentXUm, extentYUm);
     }
@@ -132,13 +125,11 @@ public final class DiffractionTextures {
         }
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), layers, precision);
         BakedTable baked = settings.variant().drawsTable() ? tables.of(terms, settings, reporter) : null;
-        DiffractionTextures textures = new DiffractionTextures(termTexture, normalised
+        return new DiffractionTextures(termTexture, normalised
                 ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), terms, settings, highestOrder,
-                baked, null, (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, highestOrder, lambdaMinNm,
-                tolerance));
-        textures.lobesTableSource = r -> tables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r);
-        return textures;
+                new TableTextures(baked, r -> tables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r)), null,
+                (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, highestOrder, lambdaMinNm, tolerance));
     }
 
     /**
@@ -161,7 +152,7 @@ public final class DiffractionTextures {
         FloatTextureArray termTexture = new FloatTextureArray(terms.cols(), terms.rows(), terms.layers(), precision);
         return new DiffractionTextures(termTexture, null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), first, settings,
-                terms.centres().highestOrder(), null, terms.centres(),
+                terms.centres().highestOrder(), new TableTextures(null, null), terms.centres(),
                 (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, lambdaMinNm, tolerance));
     }
 
@@ -268,27 +259,14 @@ public final class DiffractionTextures {
         return maxAbsHeightUm;
     }
 
-    /**
-     * The baked table of the lobes method for the settings these textures were made for (cached by
-     * {@link BakedTables}, baked on the first request with progress on {@code reporter}): what environment lights
-     * wider than the lobes method takes read (surface_stage.glsl); empty on the phase-centred path, which has no
-     * table, and where the settings do not filter (the table would be FLSS's).
-     */
-    public Optional<BakedTable> lobesTable(Reporter reporter) {
-        if (lobesTableSource == null) {
-            return Optional.empty();
-        }
-        return Optional.of(lobesTableSource.apply(reporter)).filter(BakedTable::filtered);
+    /** The baked tables: the baked method's (BAKED only) and the lobes method's for wide environment lights. */
+    public TableTextures tables() {
+        return tables;
     }
 
-    /** The baked table (BAKED only), else null. */
+    /** The baked method's table (BAKED only), else null: {@code tables().baked()}. */
     public BakedTable baked() {
-        return baked;
-    }
-
-    /** Its 3-D texture (BAKED only), else null; owned by these textures (release it with them). */
-    public FloatTexture3D bakedTexture() {
-        return bakedTexture;
+        return tables.baked();
     }
 
     /** L_x = cols dH_x in micrometres. */

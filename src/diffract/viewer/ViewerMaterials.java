@@ -155,9 +155,7 @@ final class ViewerMaterials {
         context.release(t.terms());
         context.release(t.uniformNodeTable());
         context.release(t.spectralTable());
-        if (t.bakedTexture() != null) {
-            context.release(t.bakedTexture());
-        }
+        t.tables().made().forEach(context::release);
     }
 
     /** Frees all programs and textures (not the pigmentation image or the stage, which the renderer owns). */

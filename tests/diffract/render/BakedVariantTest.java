@@ -172,7 +172,7 @@ class BakedVariantTest {
         assertEquals(w, table.grid().wSamples());
         assertEquals(33L * 33 * w * 6, table.gpuBytes());
         assertEquals(33L * 33 * w * 12, table.hostBytes());
-        assertEquals(table.gpuBytes(), first.bakedTexture().gpuBytes());
+        assertEquals(table.gpuBytes(), first.tables().texture().gpuBytes());
         assertEquals(3 * 33 * 33 * w, table.values().length);
         DiffractionTextures.of(terms, settings.with(b -> b.lambdaStepNm(10)), tables, Reporter.SILENT);
         assertEquals(before + 2, tables.bakeCount() + tables.loadCount(), "other settings, another table");
