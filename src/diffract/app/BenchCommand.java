@@ -180,6 +180,13 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
         } else {
             requireOutput();
         }
+        if (gpuSuite && filtering) {
+            throw new UserInputException("--gpu-suite and --filtering are two runs of their own: give one of them");
+        }
+        if (gpuSuite && (patch.given() || patchPhiDeg != null)) {
+            throw new UserInputException("--gpu-suite draws its own maps and scenes: --patch, --synthetic and --phi-i "
+                    + "add a patch to --filtering's");
+        }
         if (gpuSuite) {
             HeadlessGL.require();
             long start = System.nanoTime();

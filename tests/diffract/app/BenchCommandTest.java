@@ -84,12 +84,21 @@ class BenchCommandTest {
         assertEquals(2, Main.execute("bench", "--quick", "--terms", "8", "-o", dir.toString()));
     }
 
-    /** --filtering's extra patch is read as every command reads one, and only --filtering takes it. */
+    /**
+     * --filtering's extra patch is read as every command reads one, and only --filtering takes it (the GPU suite
+     * refuses it, and --filtering beside it).
+     */
     @Test
     void anExtraPatchNeedsFilteringAndIsCheckedAsEveryCommandChecksIt(@TempDir Path dir) {
         Object[] noFiltering = CliTest.run("bench", "--synthetic", "blazed-10um", "-o", dir.toString());
         assertEquals(2, noFiltering[0]);
         assertTrue(((String) noFiltering[2]).contains("add --filtering"), (String) noFiltering[2]);
+        Object[] suite = CliTest.run("bench", "--gpu-suite", "--synthetic", "blazed-10um", "-o", dir.toString());
+        assertEquals(2, suite[0]);
+        assertTrue(((String) suite[2]).contains("--gpu-suite draws its own"), (String) suite[2]);
+        Object[] twoRuns = CliTest.run("bench", "--gpu-suite", "--filtering", "-o", dir.toString());
+        assertEquals(2, twoRuns[0]);
+        assertTrue(((String) twoRuns[2]).contains("give one of them"), (String) twoRuns[2]);
         Object[] both = CliTest.run("bench", "--filtering", "--patch", dir.resolve("a.gsf").toString(),
                 "--synthetic", "blazed-10um", "-o", dir.toString());
         assertEquals(2, both[0]);
