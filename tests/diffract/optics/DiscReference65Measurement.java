@@ -13,7 +13,8 @@ import java.util.stream.IntStream;
 
 /**
  * The lobes method under a disc against the reference's exact disc at the thesis' 65 um coherence on the
- * Elaphe-like patch, a measurement run on request ({@code -Ddiffract.measure=disc-65}; docs/disc-lobes.sh): a whole
+ * Elaphe-like patch, a measurement run on request ({@code mvn test -Dtest=DiscReference65Measurement
+ * -Ddiffract.measure=disc-65}, with {@code -Ddiffract.measure.quick=true} the 2-degree disc alone): a whole
  * 64 x 64 map of the reference's disc would take about 33 hours on 2 cores, so the reference is evaluated on the lit
  * pixels of the map's column through the line of orders (theta_i = 30 degrees in the plane of the ridges' period),
  * every second one, for discs of 0.53, 2, 10 and 20 degrees; CIEDE2000 over those pixels at the exposure the lobes
