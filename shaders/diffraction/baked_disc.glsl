@@ -26,22 +26,10 @@ void setDisc(vec3 wi, vec3 wr) {
     discOn = lightHalfAngleRad > 0.0;
 }
 
-// The running sum at (u, v) in slice `slice` (tableSlice), spread by the footprint; one lookup per slice where the
-// footprint is isotropic (a BRDF map's pixel), whose two lookups would coincide.
-vec3 rowSumAt(vec2 uv, vec2 slice, MipFootprint m) {
-    vec2 tc = bakedTexcoord(vec3(uv, 0.0)).xy;
-    if (m.offsetTexels == vec2(0.0)) {
-        return mix(textureLod(bakedRowSums, vec3(tc, slice.x), m.lod).rgb,
-                textureLod(bakedRowSums, vec3(tc, slice.x + 1.0), m.lod).rgb, slice.y);
-    }
-    return mix(textureFootprint(bakedRowSums, tc, slice.x, m).rgb, textureFootprint(bakedRowSums, tc, slice.x + 1.0,
-            m).rgb, slice.y);
-}
-
 // The table integrated along u from u0 to u1 on the row at v, at w.
 vec3 pieceIntegral(float u0, float u1, float v, float w, MipFootprint m) {
     vec2 slice = tableSlice(w);
-    return rowSumAt(vec2(u1, v), slice, m) - rowSumAt(vec2(u0, v), slice, m);
+    return slicesAt(bakedRowSums, vec2(u1, v), slice, m) - slicesAt(bakedRowSums, vec2(u0, v), slice, m);
 }
 
 // The disc's ellipse in (u, v) for the pixel of setDisc: its centre, its reach along v, the half-width of its row
@@ -124,9 +112,8 @@ vec3 discTableXyz(vec3 footprintTexels) {
     }
     DiscRows d = discRows();
     float texelsPerUv = tableTexelsPerUv();
-    vec2 r = d.r;
-    float spreadR = sqrt(max(footprintTexels.x * r.x * r.x + 2.0 * footprintTexels.y * r.x * r.y
-            + footprintTexels.z * r.y * r.y, 0.25)) / texelsPerUv;
+    float spreadR = sqrt(max(footprintTexels.x * d.r.x * d.r.x + 2.0 * footprintTexels.y * d.r.x * d.r.y
+            + footprintTexels.z * d.r.y * d.r.y, 0.25)) / texelsPerUv;
     float edgeWeight = smoothstep(DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE, d.minorAxis / spreadR);
     vec3 xyz = vec3(0.0);
     if (edgeWeight < 1.0) {

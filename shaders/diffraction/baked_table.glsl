@@ -59,13 +59,16 @@ vec2 tableSlice(float w) {
     return vec2(below, slice - below);
 }
 
+// Layers `s` at (u, v) between the two w slices of `slice` (tableSlice), spread by the footprint.
+vec3 slicesAt(sampler2DArray s, vec2 uv, vec2 slice, MipFootprint footprint) {
+    vec2 tc = bakedTexcoord(vec3(uv, 0.0)).xy;
+    return mix(textureFootprint(s, tc, slice.x, footprint).rgb, textureFootprint(s, tc, slice.x + 1.0, footprint).rgb,
+            slice.y);
+}
+
 // XYZ(u, v, w) of the table spread by the footprint.
 vec3 tableXyz(vec3 uvw, MipFootprint footprint) {
-    vec2 tc = bakedTexcoord(uvw).xy;
-    vec2 slice = tableSlice(uvw.z);
-    vec3 a = textureFootprint(bakedLayers, tc, slice.x, footprint).rgb;
-    vec3 b = textureFootprint(bakedLayers, tc, slice.x + 1.0, footprint).rgb;
-    return mix(a, b, slice.y);
+    return slicesAt(bakedLayers, uvw.xy, tableSlice(uvw.z), footprint);
 }
 #endif
 

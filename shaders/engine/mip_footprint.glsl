@@ -36,8 +36,12 @@ MipFootprint mipFootprint(vec3 covarianceTexels) {
     return m;
 }
 
-// The texture at texcoord tc of layer `layer`, spread by the footprint.
+// The texture at texcoord tc of layer `layer`, spread by the footprint; one lookup where the footprint is
+// isotropic (a BRDF map's pixel), whose two lookups would coincide.
 vec4 textureFootprint(sampler2DArray s, vec2 tc, float layer, MipFootprint m) {
+    if (m.offsetTexels == vec2(0.0)) {
+        return textureLod(s, vec3(tc, layer), m.lod);
+    }
     vec2 offset = m.offsetTexels / vec2(textureSize(s, 0).xy);
     return 0.5 * (textureLod(s, vec3(tc + offset, layer), m.lod) + textureLod(s, vec3(tc - offset, layer), m.lod));
 }

@@ -41,7 +41,7 @@ public final class BoxMipmaps {
                 row[k] = level[r * width * channels + k];
             }
             for (int i = 0; i < w2; i++) {
-                addSpan(row, 0, width, w2, i, channels, alongX, (r * w2 + i) * channels);
+                addSpan(row, width, w2, i, channels, alongX, (r * w2 + i) * channels);
             }
         }
         float[] out = new float[w2 * h2 * layers * channels];
@@ -56,7 +56,7 @@ public final class BoxMipmaps {
                 }
                 for (int j = 0; j < h2; j++) {
                     java.util.Arrays.fill(sum, 0);
-                    addSpan(column, 0, height, h2, j, channels, sum, 0);
+                    addSpan(column, height, h2, j, channels, sum, 0);
                     for (int c = 0; c < channels; c++) {
                         out[((layer * h2 + j) * w2 + x) * channels + c] = (float) sum[c];
                     }
@@ -66,15 +66,15 @@ public final class BoxMipmaps {
         return out;
     }
 
-    /** Adds the box average of span i (of m spans over n texels starting at texel {@code from}) into out[at..]. */
-    private static void addSpan(double[] values, int from, int n, int m, int i, int channels, double[] out, int at) {
+    /** Adds the box average of span i (of m spans over the n texels of {@code values}) into out[at..]. */
+    private static void addSpan(double[] values, int n, int m, int i, int channels, double[] out, int at) {
         double width = (double) n / m;
         double lo = i * width;
         double hi = (i + 1) * width;
         for (int t = (int) Math.floor(lo); t < Math.min(n, (int) Math.ceil(hi)); t++) {
             double overlap = Math.min(hi, t + 1) - Math.max(lo, t);
             for (int c = 0; c < channels; c++) {
-                out[at + c] += overlap / width * values[(from + t) * channels + c];
+                out[at + c] += overlap / width * values[t * channels + c];
             }
         }
     }

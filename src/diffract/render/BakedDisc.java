@@ -12,25 +12,26 @@ import diffract.optics.BrdfSettings;
  *
  * <p>The disc's ellipse in (u, v) is cut into rows along v and each row into pieces along u: a piece's integral is the
  * difference of two running sums (exact along u for the table's interpolant), weighted by the density, the gain
- * ratio and w of the piece's centre direction. Rows are at most a table sample or the pixel's footprint apart, at
- * most {@link #ROWS_MAX} of them; where that cap spaces them wider, the footprint is widened to half their spacing,
- * which softens the disc's rim by as much. Pieces are at most {@link #PIECE_WIDTH_DEG} wide, at most
- * {@link #PIECES_MAX} a row.
+ * ratio and w of the piece's centre direction. Rows are a table sample apart, {@link #MIN_ROWS} to {@link #ROWS_MAX}
+ * of them; pieces are at most {@link #PIECE_WIDTH_DEG} wide, at most {@link #PIECES_MAX} a row. A disc narrow next to
+ * the pixel's footprint is the Gaussian of its covariance instead, blended as {@code DiscFootprint} blends.
  *
  * <table>
  *   <caption>Its defines (DiffractionShaders) and uniforms (DiffractionMaterials)</caption>
  *   <tr><th>name</th><th>what</th></tr>
  *   <tr><td>{@code BAKED_DISC}, {@code LIGHT_DISC}</td><td>the lookup integrates the settings' disc</td></tr>
- *   <tr><td>{@code DISC_ROWS_MAX}, {@code DISC_PIECES_MAX}, {@code DISC_PIECE_UV}</td><td>the constants below; the
- *   piece's width as sin of it</td></tr>
- *   <tr><td>{@code bakedLayers}</td><td>the running sums, RGB32F, mip-mapped per w slice</td></tr>
+ *   <tr><td>{@code DISC_ROWS_MAX}, {@code DISC_MIN_ROWS}, {@code DISC_PIECES_MAX}, {@code DISC_PIECE_UV}</td>
+ *   <td>the constants below; the piece's width as sin of it</td></tr>
+ *   <tr><td>{@code bakedLayers}</td><td>the table, mip-mapped per w slice (for the Gaussian of a narrow disc and
+ *   for lights other than the disc)</td></tr>
+ *   <tr><td>{@code bakedRowSums}</td><td>the running sums, RGB32F, mip-mapped per w slice</td></tr>
  *   <tr><td>{@code lightHalfAngleRad}</td><td>the disc's half-angle R</td></tr>
  * </table>
  */
 public final class BakedDisc {
     /** The most rows a disc is cut into. */
     public static final int ROWS_MAX = 64;
-    /** The rows of a disc narrower than three rows of the level its footprint reads. */
+    /** The fewest rows a disc is cut into (a disc narrower than a table sample). */
     public static final int MIN_ROWS = 4;
     /** The most pieces a row is cut into. */
     public static final int PIECES_MAX = 2;
