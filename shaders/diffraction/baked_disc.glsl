@@ -11,6 +11,8 @@
 #ifndef BAKED_DISC_GLSL
 #define BAKED_DISC_GLSL
 
+#include "disc_ellipse.glsl"
+
 uniform sampler2DArray bakedRowSums;
 uniform float lightHalfAngleRad;
 bool discOn = false; // false for lights other than the settings' disc (a stage's environment lights)
@@ -48,27 +50,24 @@ struct DiscRows {
 };
 
 DiscRows discRows() {
-    float cosR = cos(lightHalfAngleRad);
-    float sinR = sin(lightHalfAngleRad);
-    float sinTheta = length(discWi.xy);
-    vec2 r = sinTheta > 1e-6 ? discWi.xy / sinTheta : vec2(1.0, 0.0);
-    vec2 e = vec2(-r.y, r.x);
-    float a = sinR;
-    float b = max(sinR * discWi.z, 1e-6);
+    DiscEllipse el = discEllipse(discWi, lightHalfAngleRad);
+    vec2 e = el.e;
+    vec2 r = el.r;
+    float a = el.axes.x;
+    float b = max(el.axes.y, 1e-6);
     // the ellipse q^T M^-1 q <= 1 with M = a^2 e e^T + b^2 r r^T
     float mUv = a * a * e.x * e.y + b * b * r.x * r.y;
     float mVv = a * a * e.y * e.y + b * b * r.y * r.y;
     DiscRows d;
-    d.centre = -cosR * discWi.xy - discWr.xy;
+    d.centre = -discWi.xy - discWr.xy + el.centreOffset;
     d.reachV = sqrt(mVv);
     d.halfWidth0 = a * b / d.reachV;
     d.slope = mUv / mVv;
     d.area = 3.14159265 * a * b;
     d.minorAxis = b;
     d.r = r;
-    d.covariance = 0.25 * (a * a * vec3(e.x * e.x, e.x * e.y, e.y * e.y)
-            + b * b * vec3(r.x * r.x, r.x * r.y, r.y * r.y));
-    d.solidAngle = 6.28318531 * (1.0 - cosR);
+    d.covariance = discEllipseCovariance(el);
+    d.solidAngle = el.solidAngle;
     d.pieces = clamp(int(ceil(2.0 * d.halfWidth0 / DISC_PIECE_UV)), 1, DISC_PIECES_MAX);
     return d;
 }

@@ -7,6 +7,7 @@
 #define LOBES_FOOTPRINT_GLSL
 #include "diffraction_common.glsl"
 #include "footprint_covariance.glsl"
+#include "disc_ellipse.glsl"
 
 // LIGHT_NODES_MAX: the light arrays' size, a define from LobesGpu.LIGHT_NODES_MAX (DiffractionShaders)
 
@@ -153,10 +154,7 @@ float lobeAxis(float sigmaUv, float variance, float mu, float u, float h) {
 uniform float lightHalfAngleRad;
 // DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE and DISC_RING_SAMPLES: DiscFootprint's, defined by DiffractionShaders
 bool discOn = false;
-vec2 discCentreOffset; // the ellipse's centre less the pixel's (u, v) at the light's centre
-vec2 discE;            // the unit axis across the plane of incidence (r = (e.y, -e.x))
-vec2 discAxes;         // (a, b) = (sin R, sin R cos theta_i)
-float discSolidAngle;
+DiscEllipse disc; // the disc's ellipse about the pixel's (u, v) at the light's centre
 vec3 discWr;
 float discCentreGain;
 float discGainBound; // DiscFootprint.gainBound: a bound on the gain relative to the centre's across the disc
@@ -175,15 +173,15 @@ float discGainBoundAt(vec3 wi, vec3 wr) {
     if (discCentreGain <= 0.0) {
         return 1.0;
     }
-    vec2 r = vec2(discE.y, -discE.x);
-    vec2 centre = -wi.xy - wr.xy + discCentreOffset;
+    vec2 r = disc.r;
+    vec2 centre = -wi.xy - wr.xy + disc.centreOffset;
     float largest = 1.0;
     float smallest = 1.0;
     for (int ring = 1; ring <= 2; ring++) {
         float scale = 1.0 / float(ring);
         for (int k = 0; k < DISC_RING_SAMPLES; k++) {
             float beta = 6.28318531 * (float(k) + 0.5 * float(ring - 1)) / float(DISC_RING_SAMPLES);
-            vec2 d = -(centre + scale * (discAxes.x * cos(beta) * discE + discAxes.y * sin(beta) * r)) - wr.xy;
+            vec2 d = -(centre + scale * (disc.axes.x * cos(beta) * disc.e + disc.axes.y * sin(beta) * r)) - wr.xy;
             float ratio = discGainRatio(d, 1.0 - dot(d, d));
             largest = max(largest, ratio);
             smallest = min(smallest, ratio);
@@ -194,14 +192,7 @@ float discGainBoundAt(vec3 wi, vec3 wr) {
 
 // The disc's ellipse, density and centre's gain for the pixel at omega_r under the disc about omega_i.
 void placeDisc(vec3 wi, vec3 wr) {
-    float cosR = cos(lightHalfAngleRad);
-    float sinR = sin(lightHalfAngleRad);
-    float sinTheta = length(wi.xy);
-    vec2 r = sinTheta < 1e-6 ? vec2(1.0, 0.0) : wi.xy / sinTheta;
-    discE = vec2(-r.y, r.x);
-    discAxes = vec2(sinR, sinR * wi.z);
-    discCentreOffset = (1.0 - cosR) * wi.xy;
-    discSolidAngle = 6.28318531 * (1.0 - cosR);
+    disc = discEllipse(wi, lightHalfAngleRad);
     discWr = wr;
     discCentreGain = gainTimesShadowing(wi, wr);
     discOn = lightHalfAngleRad > 0.0;
@@ -215,23 +206,20 @@ void setDisc(vec3 wi, vec3 wr) {
 
 // DiscFootprint.reach: the ellipse's support along u and v plus its centre's offset.
 vec2 discReach() {
-    vec2 r = vec2(discE.y, -discE.x);
-    return abs(discCentreOffset) + sqrt(discAxes.x * discAxes.x * discE * discE + discAxes.y * discAxes.y * r * r);
+    vec2 r = disc.r;
+    return abs(disc.centreOffset) + sqrt(disc.axes.x * disc.axes.x * disc.e * disc.e
+            + disc.axes.y * disc.axes.y * r * r);
 }
 
 // DiscFootprint.covariance: (xx, xy, yy) of a^2 / 4 along e and b^2 / 4 along r.
 vec3 discCovariance() {
-    vec2 r = vec2(discE.y, -discE.x);
-    float ea = 0.25 * discAxes.x * discAxes.x;
-    float rb = 0.25 * discAxes.y * discAxes.y;
-    return ea * vec3(discE.x * discE.x, discE.x * discE.y, discE.y * discE.y)
-            + rb * vec3(r.x * r.x, r.x * r.y, r.y * r.y);
+    return discEllipseCovariance(disc);
 }
 
 // DiscFootprint.peakDensity: 1 / (Omega d_z) at the disc's lowest direction (theta_i + R).
 float discPeakDensity(vec3 wi) {
     float lowest = cos(min(1.5698, acos(min(1.0, wi.z)) + lightHalfAngleRad));
-    return 1.0 / (discSolidAngle * lowest);
+    return 1.0 / (disc.solidAngle * lowest);
 }
 
 // DiscFootprint.average: the lobe of spread sigmaUv at mu averaged over the disc from the pixel at uvw (its (u, v, w)
@@ -240,19 +228,19 @@ float discPeakDensity(vec3 wi) {
 vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     vec2 uv = uvw.xy;
     float lobeVariance = 0.5 * sigmaUv * sigmaUv;
-    vec2 centre = uv + discCentreOffset;
+    vec2 centre = uv + disc.centreOffset;
     vec2 q = mu - centre;
-    vec2 r = vec2(discE.y, -discE.x);
-    float xe = dot(q, discE);
+    vec2 r = disc.r;
+    float xe = dot(q, disc.e);
     float xr = dot(q, r);
-    float a = discAxes.x;
-    float b = discAxes.y;
+    float a = disc.axes.x;
+    float b = disc.axes.y;
     float rho = sqrt((xe / a) * (xe / a) + (xr / b) * (xr / b));
     float ge = xe / (a * a);
     float gr = xr / (b * b);
     float gNorm = length(vec2(ge, gr));
     bool centred = rho < 1e-6 || gNorm < 1e-30;
-    vec2 n = centred ? r : (ge * discE + gr * r) / gNorm;
+    vec2 n = centred ? r : (ge * disc.e + gr * r) / gNorm;
     float dist = centred ? b : (1.0 - rho) * rho / gNorm;
     vec3 g = footprintGaussian;
     float gaussianVariance = lobeVariance + g.x * n.x * n.x + 2.0 * g.y * n.x * n.y + g.z * n.y * n.y;
@@ -272,7 +260,7 @@ vec2 discAverage(float sigmaUv, vec2 mu, vec3 uvw) {
     float dz = sqrt(max(1e-12, dz2));
     float gain = discGainRatio(d, dz2);
     // the rim blurred by the lobe and the footprint's Gaussian, seen through the box exactly (BoxedEdge)
-    float edge = 3.14159265 * sigmaUv * sigmaUv / (discSolidAngle * dz) * boxedNormalCdf(dist,
+    float edge = 3.14159265 * sigmaUv * sigmaUv / (disc.solidAngle * dz) * boxedNormalCdf(dist,
             footprintHalfWidth.x * abs(n.x), footprintHalfWidth.y * abs(n.y), sqrt(gaussianVariance));
     // the small disc's Gaussian (LobeGeometry.averagedLobe): a map pixel's box exactly with the Gaussian's diagonal,
     // a surface pixel's Gaussian in full

@@ -184,7 +184,7 @@ float footprintGaussianMax = 0.0;
 vec2 passagePhases(float w, float fromNm, float toNm) {
     float spread = 0.0;
 #ifdef LIGHT_DISC
-    spread = discOn ? discAxes.x : 0.0;
+    spread = discOn ? disc.axes.x : 0.0;
 #endif
     float k = 6.28318531 * 1e3;
     return vec2(k * max(0.0, abs(w) - spread) / toNm, k * (abs(w) + spread) / fromNm);
@@ -386,9 +386,9 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
         float average;
 #ifdef LIGHT_DISC
         if (discOn) {
-            vec2 disc = discAverage(lambdaUm * sigmaF, lambdaUm * c, uvw);
-            average = disc.x;
-            w = disc.y;
+            vec2 overDisc = discAverage(lambdaUm * sigmaF, lambdaUm * c, uvw);
+            average = overDisc.x;
+            w = overDisc.y;
         } else {
             average = averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy);
         }
@@ -438,7 +438,7 @@ vec3 spectralXyz(vec3 uvw) {
         vec2 boxVariance = footprintHalfWidth * footprintHalfWidth / 3.0;
         float narrowest = min(full.x, full.z) + min(boxVariance.x, boxVariance.y);
         vec3 discGaussian = discCovariance();
-        bool rims = discAxes.y > DISC_GAUSSIAN_BELOW * sqrt(narrowest);
+        bool rims = disc.axes.y > DISC_GAUSSIAN_BELOW * sqrt(narrowest);
         if (rims) {
             // the box and the disc end where they end (BoxedEdge); the lobe and the Gaussian blur beyond
             reach = footprintHalfWidth + discReach() + lobeReachSigmas * sqrt(widest + full.xz);

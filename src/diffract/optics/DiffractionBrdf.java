@@ -48,6 +48,11 @@ public final class DiffractionBrdf {
                 ? new DiscLightAverage(filteredReference, illumination.light()) : null;
     }
 
+    /** The reference's disc integral (the reference under a disc light), else empty. */
+    public java.util.Optional<DiscLightAverage> discLight() {
+        return java.util.Optional.ofNullable(discLight);
+    }
+
     /**
      * Builds the variant the settings name. {@code terms} (the precomputed float32 Taylor terms) are needed for
      * FLSS, NMM, PQ and LOBES; {@code meanSubtracted} for the reference. The illumination's light and pixel filter

@@ -47,12 +47,29 @@ public final class DiscLightAverage {
 
     /** Pixel (column, row) of an S x S map ({@link BrdfMap}'s convention) averaged over the disc around omega_i. */
     public Xyz mapPixel(Direction wi, int column, int row, int size) {
+        return mapPixelRules(wi, column, row, size).value();
+    }
+
+    /**
+     * What the adaptive rule gives: the accepted value, the rule before it (their difference is the rule's estimate
+     * of its error, above the tolerance where the finest rule stopped it) and the finest rule's radial nodes.
+     */
+    public record Rules(Xyz value, Xyz coarser, int radialNodes) {
+        /** Whether the last two rules agreed to the tolerance, not the finest rule stopping them. */
+        public boolean converged() {
+            return radialNodes < MAX_RADIAL_NODES || agree(value, coarser);
+        }
+    }
+
+    /** {@link #mapPixel} with the rule's own estimate of its error. */
+    public Rules mapPixelRules(Direction wi, int column, int row, int size) {
         double x = BrdfMap.xOf(column, size);
         double y = BrdfMap.yOf(row, size);
         if (x * x + y * y >= 1) {
-            return new Xyz(0, 0, 0);
+            Xyz zero = new Xyz(0, 0, 0);
+            return new Rules(zero, zero, 0);
         }
-        return average(wi, d -> {
+        return rules(wi, d -> {
             Xyz c = reference.mapPixel(d, Covariance2.ZERO, column, row, size);
             return new double[] {c.x(), c.y(), c.z()};
         });
@@ -65,20 +82,30 @@ public final class DiscLightAverage {
 
     /** The adaptive rule of the class comment. */
     Xyz average(Direction wi, PerDirection f) {
-        double[] previous = rule(wi, f, 1);
+        return rules(wi, f).value();
+    }
+
+    private Rules rules(Direction wi, PerDirection f) {
+        Xyz previous = xyz(rule(wi, f, 1));
         for (int n = 2; ; n *= 2) {
-            double[] current = rule(wi, f, n);
-            double scale = Math.max(Math.abs(current[0]), Math.max(Math.abs(current[1]), Math.abs(current[2])));
-            double tolerance = FilteredReference.PIXEL_TOLERANCE * scale + FilteredReference.FLOOR;
-            boolean converged = true;
-            for (int i = 0; i < 3; i++) {
-                converged &= Math.abs(current[i] - previous[i]) <= tolerance;
-            }
-            if (converged || n >= MAX_RADIAL_NODES) {
-                return new Xyz(current[0], current[1], current[2]);
+            Xyz current = xyz(rule(wi, f, n));
+            if (agree(current, previous) || n >= MAX_RADIAL_NODES) {
+                return new Rules(current, previous, n);
             }
             previous = current;
         }
+    }
+
+    /** Two rules agree to {@link FilteredReference#PIXEL_TOLERANCE} of the larger tristimulus value plus the floor. */
+    static boolean agree(Xyz current, Xyz previous) {
+        double scale = Math.max(Math.abs(current.x()), Math.max(Math.abs(current.y()), Math.abs(current.z())));
+        double tolerance = FilteredReference.PIXEL_TOLERANCE * scale + FilteredReference.FLOOR;
+        return Math.abs(current.x() - previous.x()) <= tolerance && Math.abs(current.y() - previous.y()) <= tolerance
+                && Math.abs(current.z() - previous.z()) <= tolerance;
+    }
+
+    private static Xyz xyz(double[] v) {
+        return new Xyz(v[0], v[1], v[2]);
     }
 
     /** n radial Gauss-Legendre nodes in t times 3 n trapezoid azimuths. */

@@ -152,6 +152,16 @@ public final class DiffractionMaterials {
         return brdfMap;
     }
 
+    /**
+     * A display material shown at {@code exposure} from now on: its tone map and what its method draws for that
+     * exposure ({@link GpuMethod#setExposure}; {@code settings} as asked, those the material was built with).
+     */
+    public static Material setExposure(Material display, BrdfSettings settings, double exposure) {
+        display.setFloat("exposure", (float) exposure);
+        GpuMethods.of(settings.variant()).setExposure(display, settings, exposure);
+        return display;
+    }
+
     /** 1 where surface pixels average over their footprint (PixelFilter.BOX), 0 where they take its centre. */
     static float pixelFootprintScale(BrdfSettings settings) {
         return settings.illumination().pixelFilter() == PixelFilter.BOX ? 1f : 0f;

@@ -20,6 +20,14 @@ public interface GpuMethod {
     }
 
     /**
+     * What the picture's exposure changes in its uniforms beyond the tone map, for settings as asked (not already
+     * {@link BrdfSettings#shownAt shown} at an exposure): nothing unless its quadrature drops what the display cannot
+     * show.
+     */
+    default void setExposure(Material m, BrdfSettings settings, double exposure) {
+    }
+
+    /**
      * Defines its program takes beyond the shared ones, from the settings, for a BRDF map's program or a surface's:
      * none unless it compiles variants of its code.
      */

@@ -60,6 +60,12 @@ final class LobesGpu implements GpuMethod {
         m.setFloatArray("lightShifts", shifts).setInt("lightShiftCount", count);
     }
 
+    /** The cutoff scaled to what a picture shown at {@code exposure} displays ({@link LobeQuadrature#shownAt}). */
+    @Override
+    public void setExposure(Material m, BrdfSettings settings, double exposure) {
+        m.setFloat("lobeCutoff", (float) settings.lobes().shownAt(exposure).cutoff());
+    }
+
     /**
      * The lobes method's uniforms ({@code lobes_spectrum.glsl}, {@code lobes_footprint.glsl}): spectral weights,
      * quadrature, pixel filter, the light's size and, until {@link #setLight} places it, the light of normal

@@ -152,7 +152,8 @@ public final class ViewerRenderer extends Renderer {
      */
     void prepareFrame(ViewerState state, BrdfSettings settings, int widthPx, int heightPx) {
         Material material = materials.materialFor(state, settings, context());
-        material.setFloat("exposure", (float) state.view().exposure());
+        // the lobes method's cutoff follows the exposure keys: a brighter picture shows dimmer lobes
+        DiffractionMaterials.setExposure(material, settings, state.view().exposure());
         if (state.view().mode() == DisplayMode.BRDF_MAP) {
             showBrdfMap(state, settings, material, widthPx, heightPx);
         } else {

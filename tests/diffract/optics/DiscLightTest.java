@@ -111,6 +111,26 @@ class DiscLightTest {
         assertTrue(worst <= TOLERANCE, line);
     }
 
+    /**
+     * The adaptive disc rule says what it did: the value mapPixel returns, the coarser rule it was checked against,
+     * within the tolerance where it stopped short of the finest rule.
+     */
+    @Test
+    void theDiscRuleReportsItsOwnEstimate() {
+        DiffractionBrdf brdf = DiffractionBrdf.create(settings(2, LightProfile.DISC), grating(), null);
+        DiscLightAverage disc = brdf.discLight().orElseThrow();
+        int column = COLUMNS[3];
+        DiscLightAverage.Rules rules = disc.mapPixelRules(WI, column, ROW, SIZE);
+        Xyz value = brdf.mapPixel(WI, column, ROW, SIZE);
+        assertEquals(value.y(), rules.value().y(), 0.0);
+        assertTrue(rules.value().y() > 1e-6, "a lit pixel: " + rules.value());
+        assertTrue(rules.converged() && rules.radialNodes() < DiscLightAverage.MAX_RADIAL_NODES, rules.toString());
+        double scale = Math.max(value.x(), Math.max(value.y(), value.z()));
+        assertTrue(Math.abs(rules.value().y() - rules.coarser().y()) <= FilteredReference.PIXEL_TOLERANCE * scale
+                + FilteredReference.FLOOR, rules.toString());
+        assertTrue(DiffractionBrdf.create(settings(2, LightProfile.GAUSSIAN), grating(), null).discLight().isEmpty());
+    }
+
     /** {X, Y, Z} of the pixels (COLUMNS, ROW) under the light at omega_i. */
     static double[] pixels(DiffractionBrdf brdf, Direction wi) {
         double[] out = new double[3 * COLUMNS.length];

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# The lobes method and its baked table under disc lights of 0.53, 2, 10 and 20 degrees against the reference's exact
+# disc at the thesis' 65 um coherence, on every bench patch and the Elaphe scan (DiscReference65Measurement): the
+# reference on at most 10 lit pixels of the map's line through the orders, 64 x 64 maps at theta_i = 30 degrees;
+# writes docs/bench/disc-65.md. About an hour on 2 cores; from anywhere: bash docs/disc-65.sh
+# (PATCHES=elaphe-like DISCS=2 bash docs/disc-65.sh for a part; PIXELS=N at most N pixels per map).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+patches=${PATCHES:-blazed-10um,elaphe-like,xenopeltis-like,tall,elaphe-measured,elaphe-scan}
+discs=${DISCS:-0.53,2,10,20}
+pixels=${PIXELS:-10}
+rm -f target/test-reports/DiscReference65Measurement.txt
+# one run per patch: each patch's lines are in the report as soon as it is done
+for patch in ${patches//,/ }; do
+    mvn -B -ntp -q test -Dtest=DiscReference65Measurement -Ddiffract.measure=disc-65 \
+        -Ddiffract.measure.patches="$patch" -Ddiffract.measure.discs="$discs" -Ddiffract.measure.maxPixels="$pixels"
+done
+out=docs/bench/disc-65.md
+{
+    echo "# Disc lights at 65 um against the reference's disc"
+    echo
+    echo "Made by \`bash docs/disc-65.sh\` (\`DiscReference65Measurement\`): 64 x 64 maps at theta_i = 30 degrees in"
+    echo "the plane of each patch's period, the thesis' 65 um coherence, pixels averaged over their boxes. A whole map"
+    echo "of the reference's disc (\`DiscLightAverage\`) takes hours to days on 2 cores, so the reference is evaluated"
+    echo "on $pixels lit pixels of the map's line through the orders, evenly spaced (every second one where there are"
+    echo "fewer; the column through the specular for phi_i = 90, the row for phi_i = 0): CIEDE2000 over those pixels at"
+    echo "the exposure the lobes method's whole map takes. elaphe-measured is the measured patch of assets/patches"
+    echo "(elaphe-100px.gwy), elaphe-scan the Elaphe-like skin at AFM size (528 x 512 samples, 52 x 51 um). The lobes"
+    echo "method runs on the CPU, its baked table (the grid the commands take, 513 samples at 65 um) on the GPU, both"
+    echo "from the pipeline with the commands' settings; the tall patch takes the phase-centred expansion, of which no"
+    echo "table is made (dashes)."
+    echo
+    echo "The last column is the reference's own estimate of its error: its disc rule against the rule before it"
+    echo "(\`DiscLightAverage\`; mean / max over the same pixels, and how many pixels the finest rule stopped before"
+    echo "two rules agreed to 1e-4)."
+    echo
+    echo "| patch | disc (deg) | pixels (of lit) | lobes mean / p95 / max | baked mean / p95 / max | reference s | reference's rule: mean / max (stopped) |"
+    echo "|---|---|---|---|---|---|---|"
+    perl -ne 'print "| $1 | $2 | $3 ($4) | $5 / $6 / $7 | $8 / $9 / $10 | $11 | $12 / $13 ($14) |\n"
+        if /^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i \d+, (\d+) of the (\d+) lit pixels of \w+ \d+: lobes mean ([\d.]+), p95 ([\d.]+), max ([\d.]+); baked mean ([\d.-]+), p95 ([\d.-]+), max ([\d.-]+); reference (\d+) s, its disc rule against the one before it mean ([\d.]+), p95 [\d.]+, max ([\d.]+) \((\d+) pixels/' \
+        target/test-reports/DiscReference65Measurement.txt
+    echo
+    echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
+} >"$out"
+cat "$out"
