@@ -9,11 +9,15 @@ cd "$(dirname "$0")/.."
 patches=${PATCHES:-blazed-10um,elaphe-like,xenopeltis-like,tall,elaphe-measured,elaphe-scan}
 discs=${DISCS:-0.53,2,10,20}
 pixels=${PIXELS:-10}
-rm -f target/test-reports/DiscReference65Measurement.txt
-# one run per patch: each patch's lines are in the report as soon as it is done
+report=target/disc-65.txt
+mkdir -p target
+: >"$report"
+# one run per patch, its lines added to the report as soon as it is done
 for patch in ${patches//,/ }; do
+    rm -f target/test-reports/DiscReference65Measurement.txt
     mvn -B -ntp -q test -Dtest=DiscReference65Measurement -Ddiffract.measure=disc-65 \
         -Ddiffract.measure.patches="$patch" -Ddiffract.measure.discs="$discs" -Ddiffract.measure.maxPixels="$pixels"
+    cat target/test-reports/DiscReference65Measurement.txt >>"$report"
 done
 out=docs/bench/disc-65.md
 {
@@ -38,7 +42,7 @@ out=docs/bench/disc-65.md
     echo "|---|---|---|---|---|---|---|"
     perl -ne 'print "| $1 | $2 | $3 ($4) | $5 / $6 / $7 | $8 / $9 / $10 | $11 | $12 / $13 ($14) |\n"
         if /^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i \d+, (\d+) of the (\d+) lit pixels of \w+ \d+: lobes mean ([\d.]+), p95 ([\d.]+), max ([\d.]+); baked mean ([\d.-]+), p95 ([\d.-]+), max ([\d.-]+); reference (\d+) s, its disc rule against the one before it mean ([\d.]+), p95 [\d.]+, max ([\d.]+) \((\d+) pixels/' \
-        target/test-reports/DiscReference65Measurement.txt
+        "$report"
     echo
     echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
 } >"$out"

@@ -6,8 +6,8 @@
 // cut into rows along v and each row into pieces along u; a piece's integral is the difference of two running sums,
 // weighted by the density 1 / (Omega d_z), the gain factor and shadowing relative to the light's centre and the w of
 // its centre direction. Included by baked.frag after baked_table.glsl.
-// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV: BakedDisc's constants, defined by DiffractionShaders;
-// DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE: DiscFootprint's.
+// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE,
+// DISC_SUBDIVIDED_BELOW, DISC_SUB_BOXES: BakedDisc's constants, defined by DiffractionShaders.
 #ifndef BAKED_DISC_GLSL
 #define BAKED_DISC_GLSL
 
@@ -101,7 +101,7 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
 // setDisc, with the pixel's footprint (covariance in texels^2 of level 0). As DiscFootprint, a disc whose minor
 // semi-axis b is narrow next to the footprint's spread s is its Gaussian of equal covariance (a^2 / 4 along e,
 // b^2 / 4 along r, added to the footprint; C, S and w at the light's centre), a wide one is cut into rows, blended
-// for b / s between DISC_GAUSSIAN_BELOW and DISC_EDGE_ABOVE. The rows are a table sample apart (at least
+// for b / s between DISC_TABLE_GAUSSIAN_BELOW and DISC_TABLE_EDGE_ABOVE. The rows are a table sample apart (at least
 // DISC_MIN_ROWS, at most DISC_ROWS_MAX), each taken at its centre (the midpoint rule across v). A row's running sums
 // read at a coarse mip level hold the table's integral but not where within a level's texel it lies, so a row
 // shorter than the level's texels would place it by up to half a texel: narrow discs take the Gaussian instead.
@@ -113,7 +113,7 @@ vec3 discTableXyz(vec3 footprintTexels) {
     float texelsPerUv = tableTexelsPerUv();
     float spreadR = sqrt(max(footprintTexels.x * d.r.x * d.r.x + 2.0 * footprintTexels.y * d.r.x * d.r.y
             + footprintTexels.z * d.r.y * d.r.y, 0.25)) / texelsPerUv;
-    float edgeWeight = smoothstep(DISC_GAUSSIAN_BELOW, DISC_EDGE_ABOVE, d.minorAxis / spreadR);
+    float edgeWeight = smoothstep(DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE, d.minorAxis / spreadR);
     vec3 xyz = vec3(0.0);
     if (edgeWeight < 1.0) {
         vec3 disc = d.covariance * texelsPerUv * texelsPerUv;
@@ -121,18 +121,42 @@ vec3 discTableXyz(vec3 footprintTexels) {
                 mipFootprint(footprintTexels + disc));
     }
     if (edgeWeight > 0.0) {
-        MipFootprint m = mipFootprint(footprintTexels);
+        // a disc not much wider than the pixel's footprint next to it: the footprint as DISC_SUB_BOXES^2 boxes along
+        // its principal axes, each with its share of the covariance, so that the Gaussian of a box does not spread a
+        // bright disc's edge over the neighbouring pixels
+        int boxes = d.minorAxis < DISC_SUBDIVIDED_BELOW * spreadR ? DISC_SUB_BOXES : 1;
+        vec3 c = footprintTexels / float(boxes * boxes);
+        MipFootprint m = mipFootprint(c);
+        // the box's half-sides along the covariance's principal axes are sqrt(3 lambda)
+        float mean = 0.5 * (footprintTexels.x + footprintTexels.z);
+        float halfSpread = sqrt(0.25 * (footprintTexels.x - footprintTexels.z) * (footprintTexels.x - footprintTexels.z)
+                + footprintTexels.y * footprintTexels.y);
+        vec2 major = abs(footprintTexels.y) > 1e-30
+                ? normalize(vec2(footprintTexels.y, mean + halfSpread - footprintTexels.x))
+                : (footprintTexels.x >= footprintTexels.z ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
+        vec2 side0 = major * 2.0 * sqrt(3.0 * (mean + halfSpread)) / texelsPerUv;
+        vec2 side1 = vec2(-major.y, major.x) * 2.0 * sqrt(3.0 * max(mean - halfSpread, 0.0)) / texelsPerUv;
         int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
         float spacing = 2.0 * d.reachV / float(rows);
         vec3 sum = vec3(0.0);
         float width = 0.0;
-        for (int k = 0; k < DISC_ROWS_MAX; k++) {
-            if (k >= rows) {
-                break;
+        for (int i = 0; i < DISC_SUB_BOXES; i++) {
+            for (int j = 0; j < DISC_SUB_BOXES; j++) {
+                if (i >= boxes || j >= boxes) {
+                    break;
+                }
+                DiscRows sub = d;
+                sub.centre += ((float(i) + 0.5) / float(boxes) - 0.5) * side0
+                        + ((float(j) + 0.5) / float(boxes) - 0.5) * side1;
+                for (int k = 0; k < DISC_ROWS_MAX; k++) {
+                    if (k >= rows) {
+                        break;
+                    }
+                    sum += discRow(sub, -d.reachV + (float(k) + 0.5) * spacing, m, width);
+                }
             }
-            sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
         }
-        // the rows hold the ellipse's area pi a b exactly
+        // the rows hold the ellipse's area pi a b exactly (the sub-boxes' rows, summed: their mean)
         xyz += width > 0.0 ? edgeWeight * sum * (d.area / width) : vec3(0.0);
     }
     return xyz;

@@ -14,7 +14,10 @@ import diffract.optics.BrdfSettings;
  * difference of two running sums (exact along u for the table's interpolant), weighted by the density, the gain
  * ratio and w of the piece's centre direction. Rows are a table sample apart, {@link #MIN_ROWS} to {@link #ROWS_MAX}
  * of them; pieces are at most {@link #PIECE_WIDTH_DEG} wide, at most {@link #PIECES_MAX} a row. A disc narrow next to
- * the pixel's footprint is the Gaussian of its covariance instead, blended as {@code DiscFootprint} blends.
+ * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #GAUSSIAN_BELOW} and
+ * {@link #EDGE_ABOVE}; a disc not much wider than the footprint is integrated over the footprint's sub-boxes
+ * ({@link #SUBDIVIDED_BELOW}), since a mip level's Gaussian of the whole box spreads the disc's edge over the
+ * neighbouring pixels.
  *
  * <table>
  *   <caption>Its defines (DiffractionShaders) and uniforms (DiffractionMaterials)</caption>
@@ -37,6 +40,29 @@ public final class BakedDisc {
     public static final int PIECES_MAX = 2;
     /** The widest piece, in degrees of the disc. */
     public static final double PIECE_WIDTH_DEG = 5;
+    /**
+     * A disc whose minor semi-axis b is below this many of the footprint's spreads s (along b) is the Gaussian of its
+     * covariance; see {@link #EDGE_ABOVE}.
+     */
+    public static final double GAUSSIAN_BELOW = 0.5;
+    /**
+     * Above this b / s the disc is cut into rows; between, the two are blended. Lower than the lobes method's
+     * ({@code DiscFootprint}), whose Gaussian takes a map pixel's box exactly: the table's Gaussian of a box spreads a
+     * disc as wide as a pixel over its neighbours (docs/bench/disc-lobes.md).
+     */
+    public static final double EDGE_ABOVE = 1.5;
+    /**
+     * Below this b / s the rows are integrated over the footprint cut into {@link #SUB_BOXES} x {@link #SUB_BOXES}
+     * boxes, each with its share of the covariance: the Gaussian of a whole box spreads the edge of a disc not much
+     * wider than it into the neighbouring pixels. Four times the lookups; above it a disc is wide enough that the
+     * footprint's edges matter little (docs/bench/disc-lobes.md).
+     */
+    public static final double SUBDIVIDED_BELOW = 12;
+    /**
+     * The boxes per side of a subdivided footprint: 2, since a quarter's Gaussian already reads the table's finest
+     * level at 65 um, where a finer cut reads between its samples.
+     */
+    public static final int SUB_BOXES = 2;
 
     private BakedDisc() {
     }
