@@ -6,8 +6,8 @@
 // cut into rows along v and each row into pieces along u; a piece's integral is the difference of two running sums,
 // weighted by the density 1 / (Omega d_z), the gain factor and shadowing relative to the light's centre and the w of
 // its centre direction. Included by baked.frag after baked_table.glsl.
-// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE,
-// DISC_SUBDIVIDED_BELOW, DISC_SUB_BOXES: BakedDisc's constants, defined by DiffractionShaders.
+// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE:
+// BakedDisc's constants, defined by DiffractionShaders.
 #ifndef BAKED_DISC_GLSL
 #define BAKED_DISC_GLSL
 
@@ -121,42 +121,18 @@ vec3 discTableXyz(vec3 footprintTexels) {
                 mipFootprint(footprintTexels + disc));
     }
     if (edgeWeight > 0.0) {
-        // a disc not much wider than the pixel's footprint next to it: the footprint as DISC_SUB_BOXES^2 boxes along
-        // its principal axes, each with its share of the covariance, so that the Gaussian of a box does not spread a
-        // bright disc's edge over the neighbouring pixels
-        int boxes = d.minorAxis < DISC_SUBDIVIDED_BELOW * spreadR ? DISC_SUB_BOXES : 1;
-        vec3 c = footprintTexels / float(boxes * boxes);
-        MipFootprint m = mipFootprint(c);
-        // the box's half-sides along the covariance's principal axes are sqrt(3 lambda)
-        float mean = 0.5 * (footprintTexels.x + footprintTexels.z);
-        float halfSpread = sqrt(0.25 * (footprintTexels.x - footprintTexels.z) * (footprintTexels.x - footprintTexels.z)
-                + footprintTexels.y * footprintTexels.y);
-        vec2 major = abs(footprintTexels.y) > 1e-30
-                ? normalize(vec2(footprintTexels.y, mean + halfSpread - footprintTexels.x))
-                : (footprintTexels.x >= footprintTexels.z ? vec2(1.0, 0.0) : vec2(0.0, 1.0));
-        vec2 side0 = major * 2.0 * sqrt(3.0 * (mean + halfSpread)) / texelsPerUv;
-        vec2 side1 = vec2(-major.y, major.x) * 2.0 * sqrt(3.0 * max(mean - halfSpread, 0.0)) / texelsPerUv;
+        MipFootprint m = mipFootprint(footprintTexels);
         int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
         float spacing = 2.0 * d.reachV / float(rows);
         vec3 sum = vec3(0.0);
         float width = 0.0;
-        for (int i = 0; i < DISC_SUB_BOXES; i++) {
-            for (int j = 0; j < DISC_SUB_BOXES; j++) {
-                if (i >= boxes || j >= boxes) {
-                    break;
-                }
-                DiscRows sub = d;
-                sub.centre += ((float(i) + 0.5) / float(boxes) - 0.5) * side0
-                        + ((float(j) + 0.5) / float(boxes) - 0.5) * side1;
-                for (int k = 0; k < DISC_ROWS_MAX; k++) {
-                    if (k >= rows) {
-                        break;
-                    }
-                    sum += discRow(sub, -d.reachV + (float(k) + 0.5) * spacing, m, width);
-                }
+        for (int k = 0; k < DISC_ROWS_MAX; k++) {
+            if (k >= rows) {
+                break;
             }
+            sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
         }
-        // the rows hold the ellipse's area pi a b exactly (the sub-boxes' rows, summed: their mean)
+        // the rows hold the ellipse's area pi a b exactly
         xyz += width > 0.0 ? edgeWeight * sum * (d.area / width) : vec3(0.0);
     }
     return xyz;

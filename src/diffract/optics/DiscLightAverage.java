@@ -19,7 +19,8 @@ import diffract.colour.Xyz;
  * t) and the trapezoid rule in beta (spectrally accurate on a periodic integrand), at n = 2, 4, 8, ... radial nodes
  * and {@link #AZIMUTHS_PER_RADIAL} n azimuths, the azimuths of every other ring offset by half a step. A pixel is
  * accepted where two successive rules agree to {@link FilteredReference#PIXEL_TOLERANCE} of its largest tristimulus
- * value plus {@link FilteredReference#FLOOR}, up to {@link #MAX_RADIAL_NODES} radial nodes. Directions below the
+ * value plus {@link FilteredReference#FLOOR}, up to {@link #MAX_RADIAL_NODES} radial nodes, from a rule whose nodes
+ * lie at most half a pixel apart ({@link #fewestRadialNodes}). Directions below the
  * horizon light nothing but keep their share of the cone (the light is partly set).
  */
 public final class DiscLightAverage {
@@ -72,7 +73,22 @@ public final class DiscLightAverage {
         return rules(wi, d -> {
             Xyz c = reference.mapPixel(d, Covariance2.ZERO, column, row, size);
             return new double[] {c.x(), c.y(), c.z()};
-        });
+        }, fewestRadialNodes(halfAngleRad, size));
+    }
+
+    /**
+     * The fewest radial nodes a pixel of an S x S map starts from: the rim's azimuths at most half a pixel (2 / S in
+     * x and y) apart, up to {@link #MAX_RADIAL_NODES}. Seen from one pixel, the directions of a disc that light it
+     * through a narrow order form a patch about a pixel wide; coarser rules can miss it at every node and agree on
+     * 0, which would end the rule at a black pixel.
+     */
+    static int fewestRadialNodes(double halfAngleRad, int size) {
+        double rimSpacing = 2 * Math.PI * Math.sin(halfAngleRad) / AZIMUTHS_PER_RADIAL;
+        int n = 1;
+        while (n < MAX_RADIAL_NODES && rimSpacing / n > 1.0 / size) {
+            n *= 2;
+        }
+        return n;
     }
 
     /** The point direction omega_r (no pixel) averaged over the disc around omega_i. */
@@ -82,12 +98,14 @@ public final class DiscLightAverage {
 
     /** The adaptive rule of the class comment. */
     Xyz average(Direction wi, PerDirection f) {
-        return rules(wi, f).value();
+        return rules(wi, f, 1).value();
     }
 
-    private Rules rules(Direction wi, PerDirection f) {
-        Xyz previous = xyz(rule(wi, f, 1));
-        for (int n = 2; ; n *= 2) {
+    /** The adaptive rule from {@code fewest} radial nodes (a power of two), checked against half as many. */
+    private Rules rules(Direction wi, PerDirection f, int fewest) {
+        int first = Math.max(2, fewest);
+        Xyz previous = xyz(rule(wi, f, first / 2));
+        for (int n = first; ; n *= 2) {
             Xyz current = xyz(rule(wi, f, n));
             if (agree(current, previous) || n >= MAX_RADIAL_NODES) {
                 return new Rules(current, previous, n);

@@ -15,9 +15,9 @@ import diffract.optics.BrdfSettings;
  * ratio and w of the piece's centre direction. Rows are a table sample apart, {@link #MIN_ROWS} to {@link #ROWS_MAX}
  * of them; pieces are at most {@link #PIECE_WIDTH_DEG} wide, at most {@link #PIECES_MAX} a row. A disc narrow next to
  * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #GAUSSIAN_BELOW} and
- * {@link #EDGE_ABOVE}; a disc not much wider than the footprint is integrated over the footprint's sub-boxes
- * ({@link #SUBDIVIDED_BELOW}), since a mip level's Gaussian of the whole box spreads the disc's edge over the
- * neighbouring pixels.
+ * {@link #EDGE_ABOVE}. Each row is read over the footprint's Gaussian (a mip level): a map pixel's box taken as a
+ * Gaussian spreads the edge of a disc about as wide as the pixel a little over the neighbouring pixels
+ * (docs/filtering.md, section 8).
  *
  * <table>
  *   <caption>Its defines (DiffractionShaders) and uniforms (DiffractionMaterials)</caption>
@@ -47,23 +47,11 @@ public final class BakedDisc {
     public static final double GAUSSIAN_BELOW = 0.5;
     /**
      * Above this b / s the disc is cut into rows; between, the two are blended. Lower than the lobes method's
-     * ({@code DiscFootprint}), whose Gaussian takes a map pixel's box exactly: the table's Gaussian of a box spreads a
-     * disc as wide as a pixel over its neighbours (docs/bench/disc-lobes.md).
+     * ({@code DiscFootprint}), whose Gaussian takes a map pixel's box exactly: the table's Gaussian of the disc and
+     * the box together spreads a disc as wide as a pixel over its neighbours, where the rows keep its edge
+     * (docs/bench/disc-lobes.md).
      */
     public static final double EDGE_ABOVE = 1.5;
-    /**
-     * Below this b / s the rows are integrated over the footprint cut into {@link #SUB_BOXES} x {@link #SUB_BOXES}
-     * boxes, each with its share of the covariance: the Gaussian of a whole box spreads the edge of a disc not much
-     * wider than it into the neighbouring pixels. Four times the lookups; above it a disc is wide enough that the
-     * footprint's edges matter little (docs/bench/disc-lobes.md).
-     */
-    public static final double SUBDIVIDED_BELOW = 12;
-    /**
-     * The boxes per side of a subdivided footprint: 2, since a quarter's Gaussian already reads the table's finest
-     * level at 65 um, where a finer cut reads between its samples.
-     */
-    public static final int SUB_BOXES = 2;
-
     private BakedDisc() {
     }
 

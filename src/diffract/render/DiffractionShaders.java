@@ -233,8 +233,6 @@ public final class DiffractionShaders {
                 defines.put("DISC_PIECES_MAX", Integer.toString(BakedDisc.PIECES_MAX));
                 defines.put("DISC_TABLE_GAUSSIAN_BELOW", Float.toString((float) BakedDisc.GAUSSIAN_BELOW));
                 defines.put("DISC_TABLE_EDGE_ABOVE", Float.toString((float) BakedDisc.EDGE_ABOVE));
-                defines.put("DISC_SUBDIVIDED_BELOW", Float.toString((float) BakedDisc.SUBDIVIDED_BELOW));
-                defines.put("DISC_SUB_BOXES", Integer.toString(BakedDisc.SUB_BOXES));
                 defines.put("DISC_PIECE_UV", Float.toString((float) Math.sin(Math.toRadians(
                         BakedDisc.PIECE_WIDTH_DEG))));
             }

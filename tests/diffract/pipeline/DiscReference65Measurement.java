@@ -119,10 +119,12 @@ class DiscReference65Measurement {
         BrdfMapDifference b = bakedMap == null ? null
                 : BrdfMapDifference.of(referenceMap, bakedSampled, SIZE, exposure);
         BrdfMapDifference rule = BrdfMapDifference.of(referenceMap, coarserRule, SIZE, exposure);
+        String worst = worstPixel(sampled, referenceMap, lobesSampled, coarserRule, exposure);
         return String.format(Locale.ROOT, "%s, 65 um, %d px, %.2f-degree disc, theta_i %.0f, %d of the %d lit pixels "
                         + "of %s %d: lobes %s; baked %s; reference %.0f s, its disc rule against the one before it %s "
-                        + "(%d pixels stopped by the finest rule)", name, SIZE, discDeg, THETA_I_DEG, sampled.length, lit.size(),
-                column ? "column" : "row", SIZE / 2, stats(l), stats(b), seconds, stats(rule), stopped.get());
+                        + "(%d pixels stopped by the finest rule); %s", name, SIZE, discDeg, THETA_I_DEG, sampled.length,
+                lit.size(), column ? "column" : "row", SIZE / 2, stats(l), stats(b), seconds, stats(rule),
+                stopped.get(), worst);
     }
 
     /**
@@ -136,6 +138,30 @@ class DiscReference65Measurement {
         try (GpuBrdfMap map = pipeline.gpuMap(baked, baked.spectral().lambdaMinNm(), Reporter.SILENT)) {
             return map.xyz(wi, SIZE);
         }
+    }
+
+    /**
+     * The sampled pixel where the lobes method differs most from the reference: where it is, the exposed Y of both,
+     * and the reference's coarser rule's.
+     */
+    private static String worstPixel(int[] sampled, float[] reference, float[] lobes, float[] coarser,
+                                     double exposure) {
+        double largest = -1;
+        int at = -1;
+        for (int p : sampled) {
+            float[] a = new float[reference.length];
+            float[] b = new float[reference.length];
+            System.arraycopy(reference, 3 * p, a, 3 * p, 3);
+            System.arraycopy(lobes, 3 * p, b, 3 * p, 3);
+            BrdfMapDifference d = BrdfMapDifference.of(a, b, SIZE, exposure);
+            if (d.lit() != null && d.lit().max() > largest) {
+                largest = d.lit().max();
+                at = p;
+            }
+        }
+        return at < 0 ? "no lit pixel" : String.format(Locale.ROOT, "the lobes method's worst pixel (%d, %d): "
+                + "CIEDE2000 %.2f, exposed Y reference %.4f (coarser rule %.4f), lobes %.4f", at % SIZE, at / SIZE,
+                largest, exposure * reference[3 * at + 1], exposure * coarser[3 * at + 1], exposure * lobes[3 * at + 1]);
     }
 
     /** "mean M, p95 P, max X" over the lit sampled pixels; dashes where there is no map. */
