@@ -20,8 +20,8 @@ import diffract.colour.Xyz;
  * and {@link #AZIMUTHS_PER_RADIAL} n azimuths, the azimuths of every other ring offset by half a step. A pixel is
  * accepted where two successive rules agree to {@link FilteredReference#PIXEL_TOLERANCE} of its largest tristimulus
  * value plus {@link FilteredReference#FLOOR}, up to {@link #MAX_RADIAL_NODES} radial nodes, from a rule whose nodes
- * lie at most half a pixel apart ({@link #fewestRadialNodes}). Directions below the
- * horizon light nothing but keep their share of the cone (the light is partly set).
+ * lie at most half a pixel apart ({@link #fewestRadialNodes}). Directions below the horizon light nothing but keep
+ * their share of the cone (the light is partly set).
  */
 public final class DiscLightAverage {
     /** Azimuths per radial node: the rings' circumference grows as sqrt(t), so 3 n is enough for the outer rings. */

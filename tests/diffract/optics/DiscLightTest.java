@@ -131,6 +131,40 @@ class DiscLightTest {
         assertTrue(DiffractionBrdf.create(settings(2, LightProfile.GAUSSIAN), grating(), null).discLight().isEmpty());
     }
 
+    /**
+     * The rule starts with its nodes at most half a pixel apart at the disc's rim: one node for the sun on a 64 px
+     * map, the finest rule for a 20-degree disc.
+     */
+    @Test
+    void theRuleStartsFineEnoughForThePixel() {
+        assertEquals(1, DiscLightAverage.fewestRadialNodes(Math.toRadians(0.265), 64));
+        assertEquals(4, DiscLightAverage.fewestRadialNodes(Math.toRadians(1), 64));
+        assertEquals(16, DiscLightAverage.fewestRadialNodes(Math.toRadians(5), 64));
+        assertEquals(DiscLightAverage.MAX_RADIAL_NODES, DiscLightAverage.fewestRadialNodes(Math.toRadians(10), 64));
+        // 2 pi sin R / (3 n) <= 1 / S
+        for (int n = 1; n < DiscLightAverage.MAX_RADIAL_NODES; n *= 2) {
+            double halfAngle = Math.asin(3.0 * n / (2 * Math.PI * 64)) * 1.01;
+            assertEquals(2 * n, DiscLightAverage.fewestRadialNodes(halfAngle, 64), "n = " + n);
+        }
+    }
+
+    /**
+     * The specular pixel of the 10 um blazed grating under a 20-degree disc at 65 um, 64 px: the directions that
+     * light it through the zeroth order form a patch about a pixel wide inside the disc, which the rules of 1 and 2
+     * radial nodes miss at every node; they agreed on black and ended the rule there. It is lit, and its last two
+     * rules agree.
+     */
+    @Test
+    void aWideDiscLightsTheSpecularPixel() {
+        BrdfSettings disc = BrdfSettings.thesis(Variant.REFERENCE).with(b -> b.pixelFilter(PixelFilter.BOX)
+                .lightSizeDeg(20).lightProfile(LightProfile.DISC));
+        DiffractionBrdf brdf = DiffractionBrdf.create(disc, PatchCatalogue.named("blazed-10um").build()
+                .meanSubtracted(), null);
+        DiscLightAverage.Rules rules = brdf.discLight().orElseThrow().mapPixelRules(WI, 15, 32, 64);
+        assertTrue(rules.value().y() > 1e-4, rules.toString());
+        assertEquals(1, rules.coarser().y() / rules.value().y(), 0.05, rules.toString());
+    }
+
     /** {X, Y, Z} of the pixels (COLUMNS, ROW) under the light at omega_i. */
     static double[] pixels(DiffractionBrdf brdf, Direction wi) {
         double[] out = new double[3 * COLUMNS.length];
