@@ -3,7 +3,8 @@
 # disc at the thesis' 65 um coherence, on every bench patch and the Elaphe scan (DiscReference65Measurement): the
 # reference on at most 10 lit pixels of the map's line through the orders, 64 x 64 maps at theta_i = 30 degrees;
 # writes docs/bench/disc-65.md. About an hour on 2 cores; from anywhere: bash docs/disc-65.sh
-# (PATCHES=elaphe-like DISCS=2 bash docs/disc-65.sh for a part; PIXELS=N at most N pixels per map).
+# (PATCHES=elaphe-like DISCS=2 bash docs/disc-65.sh for a part; PIXELS=N at most N pixels per map; REPORT_ONLY=1
+# writes the page from the lines target/disc-65.txt holds, e.g. after a run stopped part way).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 patches=${PATCHES:-blazed-10um,elaphe-like,xenopeltis-like,tall,elaphe-measured,elaphe-scan}
@@ -11,14 +12,16 @@ discs=${DISCS:-0.53,2,10,20}
 pixels=${PIXELS:-10}
 report=target/disc-65.txt
 mkdir -p target
-: >"$report"
-# one run per patch, its lines added to the report as soon as it is done
-for patch in ${patches//,/ }; do
-    rm -f target/test-reports/DiscReference65Measurement.txt
-    mvn -B -ntp -q test -Dtest=DiscReference65Measurement -Ddiffract.measure=disc-65 \
-        -Ddiffract.measure.patches="$patch" -Ddiffract.measure.discs="$discs" -Ddiffract.measure.maxPixels="$pixels"
-    cat target/test-reports/DiscReference65Measurement.txt >>"$report"
-done
+if [ -z "${REPORT_ONLY:-}" ]; then
+    : >"$report"
+    # one run per patch, its lines added to the report as soon as it is done
+    for patch in ${patches//,/ }; do
+        rm -f target/test-reports/DiscReference65Measurement.txt
+        mvn -B -ntp -q test -Dtest=DiscReference65Measurement -Ddiffract.measure=disc-65 \
+            -Ddiffract.measure.patches="$patch" -Ddiffract.measure.discs="$discs" -Ddiffract.measure.maxPixels="$pixels"
+        cat target/test-reports/DiscReference65Measurement.txt >>"$report"
+    done
+fi
 out=docs/bench/disc-65.md
 {
     echo "# Disc lights at 65 um against the reference's disc"
@@ -26,7 +29,7 @@ out=docs/bench/disc-65.md
     echo "Made by \`bash docs/disc-65.sh\` (\`DiscReference65Measurement\`): 64 x 64 maps at theta_i = 30 degrees in"
     echo "the plane of each patch's period, the thesis' 65 um coherence, pixels averaged over their boxes. A whole map"
     echo "of the reference's disc (\`DiscLightAverage\`) takes hours to days on 2 cores, so the reference is evaluated"
-    echo "on $pixels lit pixels of the map's line through the orders, evenly spaced (every second one where there are"
+    echo "on ${pixels} lit pixels of the map's line through the orders, evenly spaced (every second one where there are"
     echo "fewer; the column through the specular for phi_i = 90, the row for phi_i = 0): CIEDE2000 over those pixels at"
     echo "the exposure the lobes method's whole map takes. elaphe-measured is the measured patch of assets/patches"
     echo "(elaphe-100px.gwy), elaphe-scan the Elaphe-like skin at AFM size (528 x 512 samples, 52 x 51 um). The lobes"
@@ -44,6 +47,7 @@ out=docs/bench/disc-65.md
         if /^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i \d+, (\d+) of the (\d+) lit pixels of \w+ \d+: lobes mean ([\d.]+), p95 ([\d.]+), max ([\d.]+); baked mean ([\d.-]+), p95 ([\d.-]+), max ([\d.-]+); reference (\d+) s, its disc rule against the one before it mean ([\d.]+), p95 [\d.]+, max ([\d.]+) \((\d+) pixels/' \
         "$report"
     echo
-    echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
+    echo "Rows a run did not reach are missing; the reference's seconds are wall time on this machine: $(nproc) CPU"
+    echo "cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))."
 } >"$out"
 cat "$out"

@@ -151,8 +151,8 @@ class DiscLightTest {
     /**
      * The specular pixel of the 10 um blazed grating under a 20-degree disc at 65 um, 64 px: the directions that
      * light it through the zeroth order form a patch about a pixel wide inside the disc, which the rules of 1 and 2
-     * radial nodes miss at every node; they agreed on black and ended the rule there. It is lit, and its last two
-     * rules agree.
+     * radial nodes miss at every node: they agree on black, so the rule starts finer (fewestRadialNodes). It is lit,
+     * and its last two rules agree.
      */
     @Test
     void aWideDiscLightsTheSpecularPixel() {

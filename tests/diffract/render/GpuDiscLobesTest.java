@@ -96,10 +96,10 @@ class GpuDiscLobesTest {
     static final int COMMANDS_UV_SAMPLES = 513;
     /**
      * What rows 30 and 33 may hold of the line's brightest pixel: measured 1.0e-2, where the CPU lobes method's lobe
-     * tails hold 1e-3 and the Gaussian of the disc and the box together held 2.5e-2.
+     * tails hold 1e-3 and the Gaussian of the disc and the box together holds 2.5e-2.
      */
     static final double MAX_NEIGHBOUR_ROWS = 1.5e-2;
-    /** Measured 2.1 (4.4 with the Gaussian): a map pixel's box read as a Gaussian, docs/filtering.md section 8. */
+    /** Measured 2.1 (the disc's Gaussian: 4.4): a map pixel's box read as a Gaussian, docs/filtering.md section 8. */
     static final double MAX_PIXEL_WIDE_DISC_LIT_MEAN = 2.7;
 
     /**
