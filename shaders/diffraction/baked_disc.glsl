@@ -34,18 +34,16 @@ vec3 pieceIntegral(float u0, float u1, float v, float w, MipFootprint m) {
     return slicesAt(bakedRowSums, vec2(u1, v), slice, m) - slicesAt(bakedRowSums, vec2(u0, v), slice, m);
 }
 
-// The disc's ellipse in (u, v) for the pixel of setDisc: its centre, its reach along v, the half-width of its row
-// through the centre and how that row's centre moves along u per unit of v.
+// The disc's ellipse in (u, v) for the pixel of setDisc (disc_ellipse.glsl), with its centre, its reach along v, the
+// half-width of its row through the centre and how that row's centre moves along u per unit of v.
 struct DiscRows {
+    DiscEllipse ellipse;
     vec2 centre;
     float reachV;
     float halfWidth0;
     float slope;
     float area; // pi a b
-    float minorAxis; // b
-    vec2 r;          // the unit axis in the plane of incidence, along which b lies
-    vec3 covariance; // (xx, xy, yy) of the Gaussian of equal covariance, a^2 / 4 along e, b^2 / 4 along r
-    float solidAngle;
+    float minorAxis; // b, at least 1e-6
     int pieces;
 };
 
@@ -59,15 +57,13 @@ DiscRows discRows() {
     float mUv = a * a * e.x * e.y + b * b * r.x * r.y;
     float mVv = a * a * e.y * e.y + b * b * r.y * r.y;
     DiscRows d;
+    d.ellipse = el;
     d.centre = -discWi.xy - discWr.xy + el.centreOffset;
     d.reachV = sqrt(mVv);
     d.halfWidth0 = a * b / d.reachV;
     d.slope = mUv / mVv;
     d.area = 3.14159265 * a * b;
     d.minorAxis = b;
-    d.r = r;
-    d.covariance = discEllipseCovariance(el);
-    d.solidAngle = el.solidAngle;
     d.pieces = clamp(int(ceil(2.0 * d.halfWidth0 / DISC_PIECE_UV)), 1, DISC_PIECES_MAX);
     return d;
 }
@@ -90,7 +86,7 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
         float dz2 = 1.0 - dot(dir, dir);
         if (dz2 > 0.0) { // below the horizon: none
             float dz = sqrt(dz2);
-            float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.solidAngle * dz);
+            float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz);
             sum += weight * pieceIntegral(u0, u0 + piece, v, -(dz + discWr.z), m);
         }
     }
@@ -111,12 +107,13 @@ vec3 discTableXyz(vec3 footprintTexels) {
     }
     DiscRows d = discRows();
     float texelsPerUv = tableTexelsPerUv();
-    float spreadR = sqrt(max(footprintTexels.x * d.r.x * d.r.x + 2.0 * footprintTexels.y * d.r.x * d.r.y
-            + footprintTexels.z * d.r.y * d.r.y, 0.25)) / texelsPerUv;
+    vec2 r = d.ellipse.r;
+    float spreadR = sqrt(max(footprintTexels.x * r.x * r.x + 2.0 * footprintTexels.y * r.x * r.y
+            + footprintTexels.z * r.y * r.y, 0.25)) / texelsPerUv;
     float edgeWeight = smoothstep(DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE, d.minorAxis / spreadR);
     vec3 xyz = vec3(0.0);
     if (edgeWeight < 1.0) {
-        vec3 disc = d.covariance * texelsPerUv * texelsPerUv;
+        vec3 disc = discEllipseCovariance(d.ellipse) * texelsPerUv * texelsPerUv;
         xyz += (1.0 - edgeWeight) * tableXyz(vec3(d.centre, -(discWi.z + discWr.z)),
                 mipFootprint(footprintTexels + disc));
     }

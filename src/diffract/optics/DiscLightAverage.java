@@ -58,7 +58,7 @@ public final class DiscLightAverage {
     public record Rules(Xyz value, Xyz coarser, int radialNodes) {
         /** Whether the last two rules agreed to the tolerance, not the finest rule stopping them. */
         public boolean converged() {
-            return radialNodes < MAX_RADIAL_NODES || agree(value, coarser);
+            return agree(value, coarser);
         }
     }
 

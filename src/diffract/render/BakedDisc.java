@@ -52,6 +52,7 @@ public final class BakedDisc {
      * (docs/bench/disc-lobes.md).
      */
     public static final double EDGE_ABOVE = 1.5;
+
     private BakedDisc() {
     }
 
