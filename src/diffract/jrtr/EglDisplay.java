@@ -220,6 +220,11 @@ final class EglDisplay {
         return new EglDisplay(handle, description, new int[] {major[0], minor[0]});
     }
 
+    /** Ends this display's use in the process (at exit: see {@link HeadlessGL}). */
+    void terminate() {
+        EGL10.eglTerminate(handle);
+    }
+
     boolean has(String extension) {
         return extensions.contains(extension);
     }

@@ -67,6 +67,12 @@ final class LwjglGL3 implements InvocationHandler {
         GL15C.class, GL14C.class, GL13C.class, GL12C.class, GL11C.class};
     /** LWJGL's static core functions by name (every overload), collected once. */
     private static final Map<String, List<Method>> CORE_FUNCTIONS = coreFunctions();
+    /**
+     * {@code -Ddiffract.glTrace=true}: each call is followed by {@code glGetError}, and an error is printed with the
+     * call that raised it and cleared. A driver stricter than Mesa's then names the offending call, where the
+     * engine's checks ({@link GLErrors}) only notice an error at their next check.
+     */
+    private static final boolean TRACE = Boolean.getBoolean("diffract.glTrace");
     /** JOGL method to its binding; the bindings are the same for every context. */
     private static final Map<Method, Call> BINDINGS = new ConcurrentHashMap<>();
 
@@ -113,7 +119,15 @@ final class LwjglGL3 implements InvocationHandler {
         if (!name.startsWith("gl") || name.length() < 3 || !Character.isUpperCase(name.charAt(2))) {
             return glBase(method, args);
         }
-        return BINDINGS.computeIfAbsent(method, LwjglGL3::bind).call(args == null ? new Object[0] : args);
+        Object[] actual = args == null ? new Object[0] : args;
+        Object result = BINDINGS.computeIfAbsent(method, LwjglGL3::bind).call(actual);
+        if (TRACE && !name.equals("glGetError")) {
+            for (int error = GL11C.glGetError(); error != GL11C.GL_NO_ERROR; error = GL11C.glGetError()) {
+                System.err.println("diffract: GL trace: " + GLErrors.name(error) + " after " + name
+                        + java.util.Arrays.deepToString(actual));
+            }
+        }
+        return result;
     }
 
     /** JOGL's GLBase helpers the engine uses; the rest are JOGL-internal and not offered here. */

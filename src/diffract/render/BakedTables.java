@@ -1,5 +1,6 @@
 package diffract.render;
 
+import diffract.jrtr.HeadlessGL;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.FresnelModel;
@@ -266,12 +267,13 @@ public final class BakedTables {
     /**
      * Bakes on a thread of its own when a GL context is current on this one (a render loop asking for a table it
      * has not got): the bake's hidden context then never touches the caller's context or framebuffer bindings
-     * (making the caller's context current again lets JOGL rebind its own framebuffer, and the frame came out
-     * black). The caller waits for the table.
+     * (making a JOGL window's context current again lets JOGL rebind its own framebuffer, and the frame came out
+     * black; on NVIDIA's EGL the caller's new vertex arrays and buffers then failed to bind). The caller waits for
+     * the table.
      */
     private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, Variant tabulated,
                                                 Reporter reporter) {
-        if (com.jogamp.opengl.GLContext.getCurrent() == null) {
+        if (HeadlessGL.currentContext() == null) {
             return BakedTable.bake(terms, settings, tabulated, BakedTable.PRECISION, reporter);
         }
         java.util.concurrent.CompletableFuture<BakedTable> bake = java.util.concurrent.CompletableFuture.supplyAsync(

@@ -23,7 +23,8 @@ import java.util.Arrays;
  * moves all alike. No assertion: speed is reported, never tested.
  */
 class DiscLobesSpeedMeasurement {
-    static final int SIZE = 64;
+    /** 64 by default; a fast GPU finishes such a map in microseconds, so {@code -Ddiffract.measure.size} sets it. */
+    static final int SIZE = Integer.getInteger("diffract.measure.size", 64);
     static final int ROUNDS = 2;
     static final int FRAMES = 10;
 
