@@ -8,7 +8,8 @@ import org.junit.jupiter.api.Test;
 /**
  * A second offscreen context made, used and released on the thread of a first (what a table bake does beside a
  * render) leaves the first's objects usable: vertex arrays and buffers generated in the first context after the
- * switch bind without GL errors, with the second context alive and after it is destroyed.
+ * switch bind without GL errors, with the second context alive and after it is destroyed, and so do those of a
+ * context made on the thread afterwards.
  */
 @Tag("gl")
 class ContextSwitchTest {
@@ -33,6 +34,13 @@ class ContextSwitchTest {
         } finally {
             first.release();
             first.destroy();
+        }
+        OffscreenContext later = HeadlessGL.newContext();
+        try {
+            bindNewObjects(later.makeCurrent(), "in a context made after both");
+        } finally {
+            later.release();
+            later.destroy();
         }
     }
 
