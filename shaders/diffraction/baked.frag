@@ -41,8 +41,10 @@ uniform sampler3D bakedXyz;
 uniform float pixelFootprintScale;
 vec3 footprintCovariance; // texels^2 of the table's level 0
 MipFootprint footprint;
+float mapPixelHalfWidthUv = 0.0; // a BRDF map's pixel: half the side of its square box in (u, v); 0 on a surface
 
 void setMapPixel(float halfWidth) {
+    mapPixelHalfWidthUv = halfWidth;
     footprintCovariance = tableMapPixelCovariance(halfWidth);
     footprint = mipFootprint(footprintCovariance);
 }

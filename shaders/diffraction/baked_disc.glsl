@@ -6,8 +6,9 @@
 // cut into rows along v and each row into pieces along u; a piece's integral is the difference of two running sums,
 // weighted by the density 1 / (Omega d_z), the gain factor and shadowing relative to the light's centre and the w of
 // its centre direction. Included by baked.frag after baked_table.glsl.
-// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE:
-// BakedDisc's constants, defined by DiffractionShaders.
+// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE,
+// DISC_TABLE_BOX_BELOW, DISC_BOX_NODES_MAX, DISC_BOX_NODE_TEXELS: BakedDisc's constants, defined by
+// DiffractionShaders.
 #ifndef BAKED_DISC_GLSL
 #define BAKED_DISC_GLSL
 
@@ -33,6 +34,25 @@ vec3 pieceIntegral(float u0, float u1, float v, float w, MipFootprint m) {
     vec2 slice = tableSlice(w);
     return slicesAt(bakedRowSums, vec2(u1, v), slice, m) - slicesAt(bakedRowSums, vec2(u0, v), slice, m);
 }
+
+#ifdef BRDF_MAP
+// The table integrated along u from u0 to u1 on the row at v, at w, averaged over every shift s in [-h, h] of the
+// piece (a map pixel's box along u): the midpoint rule over `nodes` shifts, each the difference of two running sums
+// at level 0.
+vec3 pieceIntegralOverBox(float u0, float u1, float h, int nodes, float v, float w) {
+    vec2 slice = tableSlice(w);
+    MipFootprint m = MipFootprint(0.0, vec2(0.0));
+    vec3 sum = vec3(0.0);
+    for (int q = 0; q < DISC_BOX_NODES_MAX; q++) {
+        if (q >= nodes) {
+            break;
+        }
+        float s = h * (2.0 * (float(q) + 0.5) / float(nodes) - 1.0);
+        sum += slicesAt(bakedRowSums, vec2(u1 + s, v), slice, m) - slicesAt(bakedRowSums, vec2(u0 + s, v), slice, m);
+    }
+    return sum / float(nodes);
+}
+#endif
 
 // The disc's ellipse in (u, v) for the pixel of setDisc (disc_ellipse.glsl), with its centre, its reach along v, the
 // half-width of its row through the centre and how that row's centre moves along u per unit of v.
@@ -69,8 +89,11 @@ DiscRows discRows() {
 }
 
 // The row of the ellipse at v = centre.v + y: its pieces' integrals, each times its direction's density and gain
-// relative to the light's centre, at its direction's w; its width is added to `width`.
-vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
+// relative to the light's centre, at its direction's w; its width is added to `width`. boxHalfWidth > 0: a map
+// pixel's box, whose shift (s, t) moves the ellipse by -(s, t) in (u, v) and leaves each piece's direction as it
+// is; the row is read at v - t and averaged over s (pieceIntegralOverBox). 0: read over the footprint m.
+vec3 discRow(DiscRows d, float y, MipFootprint m, float boxHalfWidth, int boxNodes, float t,
+        inout float width) {
     float halfWidth = d.halfWidth0 * sqrt(max(1.0 - y * y / (d.reachV * d.reachV), 0.0));
     float v = d.centre.y + y;
     float from = d.centre.x + d.slope * y - halfWidth;
@@ -87,7 +110,14 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
         if (dz2 > 0.0) { // below the horizon: none
             float dz = sqrt(dz2);
             float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz);
-            sum += weight * pieceIntegral(u0, u0 + piece, v, -(dz + discWr.z), m);
+            float w = -(dz + discWr.z);
+#ifdef BRDF_MAP
+            if (boxHalfWidth > 0.0) {
+                sum += weight * pieceIntegralOverBox(u0, u0 + piece, boxHalfWidth, boxNodes, v - t, w);
+                continue;
+            }
+#endif
+            sum += weight * pieceIntegral(u0, u0 + piece, v, w, m);
         }
     }
     return sum;
@@ -121,15 +151,32 @@ vec3 discTableXyz(vec3 footprintTexels) {
         MipFootprint m = mipFootprint(footprintTexels);
         int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
         float spacing = 2.0 * d.reachV / float(rows);
+        // a map pixel under a disc about as wide (BakedDisc.BOX_BELOW): the rows averaged over the pixel's box, on
+        // nodes t across v here and s along u (pieceIntegralOverBox), at least 2 and at most DISC_BOX_NODE_TEXELS
+        // table samples apart, read at level 0
+        float box = 0.0;
+        int nodes = 1;
+#ifdef BRDF_MAP
+        if (mapPixelHalfWidthUv > 0.0 && d.minorAxis / spreadR < DISC_TABLE_BOX_BELOW) {
+            box = mapPixelHalfWidthUv;
+            nodes = clamp(int(ceil(2.0 * box * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
+        }
+#endif
         vec3 sum = vec3(0.0);
         float width = 0.0;
-        for (int k = 0; k < DISC_ROWS_MAX; k++) {
-            if (k >= rows) {
+        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
+            if (n >= nodes) {
                 break;
             }
-            sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
+            float t = box * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
+            for (int k = 0; k < DISC_ROWS_MAX; k++) {
+                if (k >= rows) {
+                    break;
+                }
+                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, box, nodes, t, width);
+            }
         }
-        // the rows hold the ellipse's area pi a b exactly
+        // the rows hold the ellipse's area pi a b exactly (width sums every node's rows, as sum does)
         xyz += width > 0.0 ? edgeWeight * sum * (d.area / width) : vec3(0.0);
     }
     return xyz;

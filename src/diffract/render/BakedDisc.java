@@ -15,8 +15,9 @@ import diffract.optics.BrdfSettings;
  * ratio and w of the piece's centre direction. Rows are a table sample apart, {@link #MIN_ROWS} to {@link #ROWS_MAX}
  * of them; pieces are at most {@link #PIECE_WIDTH_DEG} wide, at most {@link #PIECES_MAX} a row. A disc narrow next to
  * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #GAUSSIAN_BELOW} and
- * {@link #EDGE_ABOVE}. Each row is read over the footprint's Gaussian (a mip level): a map pixel's box taken as a
- * Gaussian spreads the edge of a disc about as wide as the pixel a little over the neighbouring pixels
+ * {@link #EDGE_ABOVE}. Each row is read over the footprint's Gaussian (a mip level), except in a BRDF map under a disc
+ * narrower than {@link #BOX_BELOW} footprint spreads: there the rows are averaged over the map pixel's box, by the
+ * midpoint rule on nodes at most {@link #BOX_NODE_TEXELS} samples apart along u and v, and read at level 0
  * (docs/filtering.md, section 8).
  *
  * <table>
@@ -28,6 +29,8 @@ import diffract.optics.BrdfSettings;
  *   <tr><td>{@code bakedLayers}</td><td>the table, mip-mapped per w slice (for the Gaussian of a narrow disc and
  *   for lights other than the disc)</td></tr>
  *   <tr><td>{@code bakedRowSums}</td><td>the running sums, RGB32F, mip-mapped per w slice</td></tr>
+ *   <tr><td>{@code DISC_TABLE_BOX_BELOW}, {@code DISC_BOX_NODES_MAX}, {@code DISC_BOX_NODE_TEXELS}</td>
+ *   <td>{@link #BOX_BELOW}, {@link #BOX_NODES_MAX}, {@link #BOX_NODE_TEXELS}</td></tr>
  *   <tr><td>{@code lightHalfAngleRad}</td><td>the disc's half-angle R</td></tr>
  * </table>
  */
@@ -52,6 +55,21 @@ public final class BakedDisc {
      * (docs/bench/disc-lobes.md).
      */
     public static final double EDGE_ABOVE = 1.5;
+    /**
+     * Below this b / s a BRDF map's rows average the pixel's box over nodes instead of reading it as a Gaussian: a
+     * disc this narrow is about as wide as the pixel, and the box's Gaussian misplaces what lies near the pixel's
+     * corners (a grating's specular order on the corner of four pixels came out 12 % dim). Above it the box is a
+     * small part of the disc, and its nodes would multiply the cost of every row.
+     */
+    public static final double BOX_BELOW = 3;
+    /** The most nodes along each axis over which a map pixel's box is averaged. */
+    public static final int BOX_NODES_MAX = 8;
+    /**
+     * The box's nodes are at most this many table samples apart along each axis, and at least 2 (a 64 px map's pixel
+     * is 4 samples of a 513 table wide: 2 x 2 nodes). Nodes 1 sample apart measured worse on the bench patches, and
+     * cost 4 times the lookups (docs/filtering.md, section 8).
+     */
+    public static final double BOX_NODE_TEXELS = 2;
 
     private BakedDisc() {
     }

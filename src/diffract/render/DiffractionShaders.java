@@ -233,6 +233,9 @@ public final class DiffractionShaders {
                 defines.put("DISC_PIECES_MAX", Integer.toString(BakedDisc.PIECES_MAX));
                 defines.put("DISC_TABLE_GAUSSIAN_BELOW", Float.toString((float) BakedDisc.GAUSSIAN_BELOW));
                 defines.put("DISC_TABLE_EDGE_ABOVE", Float.toString((float) BakedDisc.EDGE_ABOVE));
+                defines.put("DISC_TABLE_BOX_BELOW", Float.toString((float) BakedDisc.BOX_BELOW));
+                defines.put("DISC_BOX_NODES_MAX", Integer.toString(BakedDisc.BOX_NODES_MAX));
+                defines.put("DISC_BOX_NODE_TEXELS", Float.toString((float) BakedDisc.BOX_NODE_TEXELS));
                 defines.put("DISC_PIECE_UV", Float.toString((float) Math.sin(Math.toRadians(
                         BakedDisc.PIECE_WIDTH_DEG))));
             }
