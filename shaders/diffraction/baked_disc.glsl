@@ -36,19 +36,28 @@ vec3 pieceIntegral(float u0, float u1, float v, float w, MipFootprint m) {
 }
 
 #ifdef BRDF_MAP
+// The table integrated along u up to u on the row at v, between the w slices of `slice`, at level 0, exact for the
+// table held constant on its cells: the running sums are held at the samples' centres, where they bend, so their
+// interpolant moves up to a quarter of a cell's content across the cell; half a sample below u, the running sum
+// plus half a sample of the table is the integral up to the cell's upper edge, which is linear between the edges.
+vec3 rowIntegralAt(float u, float v, vec2 slice) {
+    MipFootprint m = MipFootprint(0.0, vec2(0.0));
+    float halfSample = 0.5 / tableTexelsPerUv();
+    vec2 at = vec2(u - halfSample, v);
+    return slicesAt(bakedRowSums, at, slice, m) + halfSample * slicesAt(bakedLayers, at, slice, m);
+}
+
 // The table integrated along u from u0 to u1 on the row at v, at w, averaged over every shift s in [-h, h] of the
-// piece (a map pixel's box along u): the midpoint rule over `nodes` shifts, each the difference of two running sums
-// at level 0.
+// piece (a map pixel's box along u): the midpoint rule over `nodes` shifts.
 vec3 pieceIntegralOverBox(float u0, float u1, float h, int nodes, float v, float w) {
     vec2 slice = tableSlice(w);
-    MipFootprint m = MipFootprint(0.0, vec2(0.0));
     vec3 sum = vec3(0.0);
     for (int q = 0; q < DISC_BOX_NODES_MAX; q++) {
         if (q >= nodes) {
             break;
         }
         float s = h * (2.0 * (float(q) + 0.5) / float(nodes) - 1.0);
-        sum += slicesAt(bakedRowSums, vec2(u1 + s, v), slice, m) - slicesAt(bakedRowSums, vec2(u0 + s, v), slice, m);
+        sum += rowIntegralAt(u1 + s, v, slice) - rowIntegralAt(u0 + s, v, slice);
     }
     return sum / float(nodes);
 }
@@ -89,11 +98,35 @@ DiscRows discRows() {
 }
 
 // The row of the ellipse at v = centre.v + y: its pieces' integrals, each times its direction's density and gain
-// relative to the light's centre, at its direction's w; its width is added to `width`. boxHalfWidth > 0: a map
-// pixel's box, whose shift (s, t) moves the ellipse by -(s, t) in (u, v) and leaves each piece's direction as it
-// is; the row is read at v - t and averaged over s (pieceIntegralOverBox). 0: read over the footprint m.
-vec3 discRow(DiscRows d, float y, MipFootprint m, float boxHalfWidth, int boxNodes, float t,
-        inout float width) {
+// relative to the light's centre, at its direction's w; its width is added to `width`.
+vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
+    float halfWidth = d.halfWidth0 * sqrt(max(1.0 - y * y / (d.reachV * d.reachV), 0.0));
+    float v = d.centre.y + y;
+    float from = d.centre.x + d.slope * y - halfWidth;
+    float piece = 2.0 * halfWidth / float(d.pieces);
+    width += 2.0 * halfWidth;
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < DISC_PIECES_MAX; j++) {
+        if (j >= d.pieces) {
+            break;
+        }
+        float u0 = from + float(j) * piece;
+        vec2 dir = -vec2(u0 + 0.5 * piece, v) - discWr.xy;
+        float dz2 = 1.0 - dot(dir, dir);
+        if (dz2 > 0.0) { // below the horizon: none
+            float dz = sqrt(dz2);
+            float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz);
+            sum += weight * pieceIntegral(u0, u0 + piece, v, -(dz + discWr.z), m);
+        }
+    }
+    return sum;
+}
+
+#ifdef BRDF_MAP
+// discRow averaged over a map pixel's box of half-width h: a shift (s, t) of the pixel moves the ellipse by -(s, t)
+// in (u, v) and leaves each piece's direction as it is, so the row is read at v - t for each of `nodes` shifts t and
+// its pieces over the shifts s (pieceIntegralOverBox); its width is added to `width` once.
+vec3 discRowOverBox(DiscRows d, float y, float h, int nodes, inout float width) {
     float halfWidth = d.halfWidth0 * sqrt(max(1.0 - y * y / (d.reachV * d.reachV), 0.0));
     float v = d.centre.y + y;
     float from = d.centre.x + d.slope * y - halfWidth;
@@ -111,17 +144,20 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, float boxHalfWidth, int boxNod
             float dz = sqrt(dz2);
             float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz);
             float w = -(dz + discWr.z);
-#ifdef BRDF_MAP
-            if (boxHalfWidth > 0.0) {
-                sum += weight * pieceIntegralOverBox(u0, u0 + piece, boxHalfWidth, boxNodes, v - t, w);
-                continue;
+            vec3 shifted = vec3(0.0);
+            for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
+                if (n >= nodes) {
+                    break;
+                }
+                float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
+                shifted += pieceIntegralOverBox(u0, u0 + piece, h, nodes, v - t, w);
             }
-#endif
-            sum += weight * pieceIntegral(u0, u0 + piece, v, w, m);
+            sum += weight * shifted / float(nodes);
         }
     }
     return sum;
 }
+#endif
 
 // The disc's average of the table times the density and the gain relative to the light's centre, for the pixel of
 // setDisc, with the pixel's footprint (covariance in texels^2 of level 0). As DiscFootprint, a disc whose minor
@@ -148,35 +184,34 @@ vec3 discTableXyz(vec3 footprintTexels) {
                 mipFootprint(footprintTexels + disc));
     }
     if (edgeWeight > 0.0) {
-        MipFootprint m = mipFootprint(footprintTexels);
         int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
         float spacing = 2.0 * d.reachV / float(rows);
-        // a map pixel under a disc about as wide (BakedDisc.BOX_BELOW): the rows averaged over the pixel's box, on
-        // nodes t across v here and s along u (pieceIntegralOverBox), at least 2 and at most DISC_BOX_NODE_TEXELS
-        // table samples apart, read at level 0
-        float box = 0.0;
-        int nodes = 1;
-#ifdef BRDF_MAP
-        if (mapPixelHalfWidthUv > 0.0 && d.minorAxis / spreadR < DISC_TABLE_BOX_BELOW) {
-            box = mapPixelHalfWidthUv;
-            nodes = clamp(int(ceil(2.0 * box * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
-        }
-#endif
         vec3 sum = vec3(0.0);
         float width = 0.0;
-        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
-            if (n >= nodes) {
-                break;
-            }
-            float t = box * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
+#ifdef BRDF_MAP
+        // a map pixel under a disc about as wide (BakedDisc.BOX_BELOW): the rows averaged over the pixel's box, on
+        // nodes at least 2 and at most DISC_BOX_NODE_TEXELS table samples apart along u and v, read at level 0
+        if (mapPixelHalfWidthUv > 0.0 && d.minorAxis / spreadR < DISC_TABLE_BOX_BELOW) {
+            float h = mapPixelHalfWidthUv;
+            int nodes = clamp(int(ceil(2.0 * h * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
             for (int k = 0; k < DISC_ROWS_MAX; k++) {
                 if (k >= rows) {
                     break;
                 }
-                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, box, nodes, t, width);
+                sum += discRowOverBox(d, -d.reachV + (float(k) + 0.5) * spacing, h, nodes, width);
+            }
+        } else
+#endif
+        {
+            MipFootprint m = mipFootprint(footprintTexels);
+            for (int k = 0; k < DISC_ROWS_MAX; k++) {
+                if (k >= rows) {
+                    break;
+                }
+                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
             }
         }
-        // the rows hold the ellipse's area pi a b exactly (width sums every node's rows, as sum does)
+        // the rows hold the ellipse's area pi a b exactly
         xyz += width > 0.0 ? edgeWeight * sum * (d.area / width) : vec3(0.0);
     }
     return xyz;

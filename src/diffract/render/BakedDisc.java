@@ -17,7 +17,8 @@ import diffract.optics.BrdfSettings;
  * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #GAUSSIAN_BELOW} and
  * {@link #EDGE_ABOVE}. Each row is read over the footprint's Gaussian (a mip level), except in a BRDF map under a disc
  * narrower than {@link #BOX_BELOW} footprint spreads: there the rows are averaged over the map pixel's box, by the
- * midpoint rule on nodes at most {@link #BOX_NODE_TEXELS} samples apart along u and v, and read at level 0
+ * midpoint rule on nodes at most {@link #BOX_NODE_TEXELS} samples apart along u and v, read at level 0 where the
+ * running sums plus half a sample of the table give the integral up to a cell's edge, exact between the edges
  * (docs/filtering.md, section 8).
  *
  * <table>
@@ -66,7 +67,7 @@ public final class BakedDisc {
     public static final int BOX_NODES_MAX = 8;
     /**
      * The box's nodes are at most this many table samples apart along each axis, and at least 2 (a 64 px map's pixel
-     * is 4 samples of a 513 table wide: 2 x 2 nodes). Nodes 1 sample apart measured worse on the bench patches, and
+     * is 4 samples of a 513 table wide: 2 x 2 nodes). Nodes 1 sample apart measured no better on the bench patches and
      * cost 4 times the lookups (docs/filtering.md, section 8).
      */
     public static final double BOX_NODE_TEXELS = 2;
