@@ -59,7 +59,7 @@ public final class BakedDisc {
     /**
      * Below this b / s a BRDF map's rows average the pixel's box over nodes instead of reading it as a Gaussian: a
      * disc this narrow is about as wide as the pixel, and the box's Gaussian misplaces what lies near the pixel's
-     * corners (a grating's specular order on the corner of four pixels came out 12 % dim). Above it the box is a
+     * corners (it reads a grating's specular order on the corner of four pixels 12 % dim). Above it the box is a
      * small part of the disc, and its nodes would multiply the cost of every row.
      */
     public static final double BOX_BELOW = 3;

@@ -267,9 +267,9 @@ public final class BakedTables {
     /**
      * Bakes on a thread of its own when a GL context is current on this one (a render loop asking for a table it
      * has not got): the bake's hidden context then never touches the caller's context or framebuffer bindings
-     * (making a JOGL window's context current again lets JOGL rebind its own framebuffer, and the frame came out
-     * black; on NVIDIA's EGL the caller's new vertex arrays and buffers then failed to bind). The caller waits for
-     * the table.
+     * (making a JOGL window's context current again lets JOGL rebind its own framebuffer, and the frame is black;
+     * on NVIDIA's EGL the caller's new vertex arrays and buffers then fail to bind). The caller waits for the
+     * table.
      */
     private static BakedTable bakeOffThisThread(TaylorTerms terms, BrdfSettings settings, Variant tabulated,
                                                 Reporter reporter) {
