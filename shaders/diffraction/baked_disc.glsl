@@ -97,26 +97,40 @@ DiscRows discRows() {
     return d;
 }
 
-// The row of the ellipse at v = centre.v + y: its pieces' integrals, each times its direction's density and gain
-// relative to the light's centre, at its direction's w; its width is added to `width`.
-vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
+// The row of the ellipse at v = centre.v + y as (v, where its first piece starts, a piece's width); its width is
+// added to `width`.
+vec3 discRowAt(DiscRows d, float y, inout float width) {
     float halfWidth = d.halfWidth0 * sqrt(max(1.0 - y * y / (d.reachV * d.reachV), 0.0));
-    float v = d.centre.y + y;
-    float from = d.centre.x + d.slope * y - halfWidth;
-    float piece = 2.0 * halfWidth / float(d.pieces);
     width += 2.0 * halfWidth;
+    return vec3(d.centre.y + y, d.centre.x + d.slope * y - halfWidth, 2.0 * halfWidth / float(d.pieces));
+}
+
+// The direction through (u, v): its density and gain relative to the light's centre, and its w; a weight of 0 below
+// the horizon, where none arrives.
+vec2 discPieceWeight(DiscRows d, float u, float v) {
+    vec2 dir = -vec2(u, v) - discWr.xy;
+    float dz2 = 1.0 - dot(dir, dir);
+    if (!(dz2 > 0.0)) {
+        return vec2(0.0);
+    }
+    float dz = sqrt(dz2);
+    return vec2(gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz),
+            -(dz + discWr.z));
+}
+
+// The row of the ellipse at y: its pieces' integrals, each times its direction's density and gain relative to the
+// light's centre, at its direction's w; its width is added to `width`.
+vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
+    vec3 row = discRowAt(d, y, width);
     vec3 sum = vec3(0.0);
     for (int j = 0; j < DISC_PIECES_MAX; j++) {
         if (j >= d.pieces) {
             break;
         }
-        float u0 = from + float(j) * piece;
-        vec2 dir = -vec2(u0 + 0.5 * piece, v) - discWr.xy;
-        float dz2 = 1.0 - dot(dir, dir);
-        if (dz2 > 0.0) { // below the horizon: none
-            float dz = sqrt(dz2);
-            float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz);
-            sum += weight * pieceIntegral(u0, u0 + piece, v, -(dz + discWr.z), m);
+        float u0 = row.y + float(j) * row.z;
+        vec2 weight = discPieceWeight(d, u0 + 0.5 * row.z, row.x);
+        if (weight.x != 0.0) {
+            sum += weight.x * pieceIntegral(u0, u0 + row.z, row.x, weight.y, m);
         }
     }
     return sum;
@@ -127,33 +141,26 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
 // in (u, v) and leaves each piece's direction as it is, so the row is read at v - t for each of `nodes` shifts t and
 // its pieces over the shifts s (pieceIntegralOverBox); its width is added to `width` once.
 vec3 discRowOverBox(DiscRows d, float y, float h, int nodes, inout float width) {
-    float halfWidth = d.halfWidth0 * sqrt(max(1.0 - y * y / (d.reachV * d.reachV), 0.0));
-    float v = d.centre.y + y;
-    float from = d.centre.x + d.slope * y - halfWidth;
-    float piece = 2.0 * halfWidth / float(d.pieces);
-    width += 2.0 * halfWidth;
+    vec3 row = discRowAt(d, y, width);
     vec3 sum = vec3(0.0);
     for (int j = 0; j < DISC_PIECES_MAX; j++) {
         if (j >= d.pieces) {
             break;
         }
-        float u0 = from + float(j) * piece;
-        vec2 dir = -vec2(u0 + 0.5 * piece, v) - discWr.xy;
-        float dz2 = 1.0 - dot(dir, dir);
-        if (dz2 > 0.0) { // below the horizon: none
-            float dz = sqrt(dz2);
-            float weight = gainTimesShadowing(vec3(dir, dz), discWr) / (discCentreGain * d.ellipse.solidAngle * dz);
-            float w = -(dz + discWr.z);
-            vec3 shifted = vec3(0.0);
-            for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
-                if (n >= nodes) {
-                    break;
-                }
-                float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
-                shifted += pieceIntegralOverBox(u0, u0 + piece, h, nodes, v - t, w);
-            }
-            sum += weight * shifted / float(nodes);
+        float u0 = row.y + float(j) * row.z;
+        vec2 weight = discPieceWeight(d, u0 + 0.5 * row.z, row.x);
+        if (weight.x == 0.0) {
+            continue;
         }
+        vec3 shifted = vec3(0.0);
+        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
+            if (n >= nodes) {
+                break;
+            }
+            float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
+            shifted += pieceIntegralOverBox(u0, u0 + row.z, h, nodes, row.x - t, weight.y);
+        }
+        sum += weight.x * shifted / float(nodes);
     }
     return sum;
 }
