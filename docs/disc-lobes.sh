@@ -4,18 +4,31 @@
 # 64 x 64 maps at theta_i = 30 degrees, 0.53, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores),
 # GpuDiscLobesTest (GPU = CPU, the baked table), BakedDiscMeasurement (the baked table by its grid) and
 # DiscLobesSpeedMeasurement (GL time of the lobes shader under the disc and under the Gaussian profile against FLSS,
-# 64 x 64 maps at 65 um), and writes their measurements into docs/bench/disc-lobes.md. About 20 minutes on 2 cores;
-# from anywhere: bash docs/disc-lobes.sh
+# 64 x 64 maps at 65 um), and writes their measurements into docs/bench/disc-lobes.md. About 20 minutes on 2 cores,
+# and an hour more for the reference's discs; from anywhere: bash docs/disc-lobes.sh (KEEP_CPU=1 runs the GPU parts
+# alone and keeps DiscLobesTest's table and lines from the page as it is, for a change that leaves the CPU alone).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-rm -f target/test-reports/DiscLobesTest.txt target/test-reports/GpuDiscLobesTest.txt \
-    target/test-reports/DiscLobesSpeedMeasurement.txt target/test-reports/BakedDiscMeasurement.txt
-mvn -B -ntp -q test -Dtest='DiscLobesTest#lobesFollowTheDiscWhereTheGaussianProfileDoesNot+lobesUnderADiscAreWithinOneOfTheReferencesDisc,GpuDiscLobesTest' \
-    -Ddiffract.measure=disc-maps
+out=docs/bench/disc-lobes.md
+rm -f target/test-reports/GpuDiscLobesTest.txt target/test-reports/DiscLobesSpeedMeasurement.txt \
+    target/test-reports/BakedDiscMeasurement.txt
+if [ -n "${KEEP_CPU:-}" ]; then
+    # the page's DiscLobesTest part: its table rows and the lines of one row, as they are
+    kept_rows=$(grep -E '^\| blazed \|' "$out")
+    kept_lines=$(sed -n '/^Pixels of one row/,/^GPU against CPU/p' "$out" | grep '^- ')
+    mvn -B -ntp -q test -Dtest=GpuDiscLobesTest
+else
+    rm -f target/test-reports/DiscLobesTest.txt
+    mvn -B -ntp -q test -Dtest='DiscLobesTest#lobesFollowTheDiscWhereTheGaussianProfileDoesNot+lobesUnderADiscAreWithinOneOfTheReferencesDisc,GpuDiscLobesTest' \
+        -Ddiffract.measure=disc-maps
+    kept_rows=$(perl -ne 'print "| blazed | $1 um | $2 x $2, the 2 rows of the orders | $3 | $6 | $4 / $5 | $7 / $8 | $9 | $10 |\n"
+        if /^blazed, (\d+) um, (\d+) px, ([\d.]+)-degree disc, 2 rows: lobes .*?lit: mean ([\d.]+), p95 ([\d.]+),.*? over (\d+) pixels.*?; the Gaussian profile .*?lit: mean ([\d.]+), p95 ([\d.]+),.*?; reference ([\d.]+) s, lobes ([\d.]+) s/' \
+        target/test-reports/DiscLobesTest.txt)
+    kept_lines=$(grep -E 'pixels of row' target/test-reports/DiscLobesTest.txt | sed 's/^/- /')
+fi
 mvn -B -ntp -q test -Dtest=BakedDiscMeasurement -Ddiffract.measure=baked-disc
 # the GL times alone, after the CPU work, so that nothing else runs beside them
 mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-speed
-out=docs/bench/disc-lobes.md
 {
     echo "# The lobes method under a disc light"
     echo
@@ -25,13 +38,11 @@ out=docs/bench/disc-lobes.md
     echo
     echo "| patch | coherence | map | disc (deg) | lit px | lobes, disc | lobes, Gaussian profile | reference s | lobes s (CPU) |"
     echo "|---|---|---|---|---|---|---|---|---|"
-    perl -ne 'print "| blazed | $1 um | $2 x $2, the 2 rows of the orders | $3 | $6 | $4 / $5 | $7 / $8 | $9 | $10 |\n"
-        if /^blazed, (\d+) um, (\d+) px, ([\d.]+)-degree disc, 2 rows: lobes .*?lit: mean ([\d.]+), p95 ([\d.]+),.*? over (\d+) pixels.*?; the Gaussian profile .*?lit: mean ([\d.]+), p95 ([\d.]+),.*?; reference ([\d.]+) s, lobes ([\d.]+) s/' \
-        target/test-reports/DiscLobesTest.txt
+    echo "$kept_rows"
     echo
     echo "Pixels of one row (the fast test):"
     echo
-    grep -E 'pixels of row' target/test-reports/DiscLobesTest.txt | sed 's/^/- /'
+    echo "$kept_lines"
     echo
     echo "GPU against CPU, and the baked table against the CPU lobes method:"
     echo

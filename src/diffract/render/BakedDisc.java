@@ -58,11 +58,12 @@ public final class BakedDisc {
     public static final double EDGE_ABOVE = 1.5;
     /**
      * Below this b / s a BRDF map's rows average the pixel's box over nodes instead of reading it as a Gaussian: a
-     * disc this narrow is about as wide as the pixel, and the box's Gaussian misplaces what lies near the pixel's
-     * corners (it reads a grating's specular order on the corner of four pixels 12 % dim). Above it the box is a
-     * small part of the disc, and its nodes would multiply the cost of every row.
+     * disc this narrow is under about three pixels across, its edge runs through the pixels beside each order, and
+     * there the box's Gaussian and the box part most (the Gaussian reads a grating's specular order on the corner of
+     * four pixels 12 % dim, and misplaces a 4-degree disc's edge in a 64 px map: docs/filtering.md, section 8).
+     * Above it the box is a small part of the disc, and its nodes would multiply the cost of every row.
      */
-    public static final double BOX_BELOW = 3;
+    public static final double BOX_BELOW = 5;
     /** The most nodes along each axis over which a map pixel's box is averaged. */
     public static final int BOX_NODES_MAX = 8;
     /**

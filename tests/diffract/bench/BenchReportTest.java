@@ -20,9 +20,26 @@ class BenchReportTest {
         BenchResult thesis = new BenchResult(new BenchConfig("tall", BrdfSettings.thesis(Variant.FLSS), 64), 230,
                 new MapError(29.6, 40, 1, 700));
         String table = Targets.markdown(java.util.List.of(
-                new Targets.Outcome("tall", thesis, Optional.empty(), null, null, null)));
+                new Targets.Outcome("tall", thesis, Optional.empty(), Optional.empty(), null, null, null)));
         assertFalse(table.contains("NaN"), table);
-        assertTrue(table.contains("| tall | 230.00 (29.600) | none meets it | - | - | **no** |"), table);
+        assertTrue(table.contains("| tall | 230.00 (29.600) | none meets it | - | - | **no** | none |"), table);
+    }
+
+    @Test
+    void theFastestConfigurationWithinOneIsChosenApartFromAutosAndItsSpeedUpIsOnTheThesisFlss() {
+        BenchResult thesis = new BenchResult(new BenchConfig("tall", BrdfSettings.thesis(Variant.FLSS), 64), 200,
+                new MapError(21.4, 40, 1, 700));
+        BenchResult fastLoose = new BenchResult(new BenchConfig("tall", BrdfSettings.thesis(Variant.LOBES)
+                .with(b -> b.highestOrder(4)), 64), 4, new MapError(1.6, 3, 1, 700));
+        BenchResult slowerClose = new BenchResult(new BenchConfig("tall", BrdfSettings.thesis(Variant.LOBES)
+                .with(b -> b.highestOrder(8)), 64), 8, new MapError(0.4, 1, 1, 700));
+        Targets.Outcome o = Targets.of(java.util.List.of(thesis, fastLoose, slowerClose), 64, c -> null,
+                (patch, size) -> java.util.List.of()).get(0);
+        assertEquals(4, o.autoChoice().orElseThrow().chosen().msPerFrame());
+        assertEquals(8, o.closeChoice().orElseThrow().chosen().msPerFrame());
+        assertEquals(25, o.closeSpeedUp(), 1e-12);
+        String table = Targets.markdown(java.util.List.of(o));
+        assertTrue(table.contains("| lobes, N = 8: 8.00 (0.400), 25.0x |"), table);
     }
 
     @Test

@@ -37,7 +37,8 @@ import java.util.stream.IntStream;
  * takes hours to days on 2 cores, so the reference is evaluated on the lit pixels of the map's line through the
  * orders (theta_i = 30 degrees in the plane of the patch's period: the column through the specular for phi_i 90, the
  * row for phi_i 0), every second one or at most N evenly spaced; CIEDE2000 over those pixels at the exposure the
- * lobes method's whole map takes ({@link AutoExposure}), and the reference's disc rule against the rule before it
+ * lobes method's whole map takes ({@link AutoExposure}; the lobes method and the baked table drawn for it, as
+ * brdfmap draws a map again for its exposure), and the reference's disc rule against the rule before it
  * (its own estimate of its error). Every map comes from {@link DiffractionPipeline} with the settings the commands
  * take (the baked table's grid automatic). No assertion: the pixels are a sample, not the map.
  */
@@ -79,13 +80,16 @@ class DiscReference65Measurement {
         BrdfSettings baked = reference.with(b -> b.variant(Variant.BAKED));
         DiffractionPipeline pipeline = DiffractionPipeline.cached(patch, reference.spectral().lambdaMinNm());
         double lambdaMinNm = reference.spectral().lambdaMinNm();
-        float[] lobesMap = BrdfMap.xyz(pipeline.cpuBrdf(lobes, lambdaMinNm, Reporter.SILENT), wi, SIZE,
+        float[] firstMap = BrdfMap.xyz(pipeline.cpuBrdf(lobes, lambdaMinNm, Reporter.SILENT), wi, SIZE,
                 Reporter.SILENT);
-        float[] bakedMap = bakedMap(pipeline, baked, wi);
-        float[] luminance = new float[SIZE * SIZE];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = lobesMap[3 * p + 1];
-        }
+        // as brdfmap --exposure auto: a map shown brighter than the lobes' cutoff assumes is drawn again for its
+        // exposure (LobeQuadrature.shownAt), the lobes method and the baked table alike
+        double firstExposure = AutoExposure.of(luminance(firstMap), SIZE, -wi.x(), -wi.y());
+        BrdfSettings lobesShown = lobes.shownAt(firstExposure);
+        float[] lobesMap = lobesShown == lobes ? firstMap
+                : BrdfMap.xyz(pipeline.cpuBrdf(lobesShown, lambdaMinNm, Reporter.SILENT), wi, SIZE, Reporter.SILENT);
+        float[] bakedMap = bakedMap(pipeline, baked.shownAt(firstExposure), wi);
+        float[] luminance = luminance(lobesMap);
         double exposure = AutoExposure.of(luminance, SIZE, -wi.x(), -wi.y());
         boolean column = Math.abs(wi.y()) >= Math.abs(wi.x());
         List<Integer> lit = new ArrayList<>();
@@ -122,9 +126,9 @@ class DiscReference65Measurement {
         String worst = worstPixel(sampled, referenceMap, lobesSampled, coarserRule, exposure);
         return String.format(Locale.ROOT, "%s, 65 um, %d px, %.2f-degree disc, theta_i %.0f, %d of the %d lit pixels "
                         + "of %s %d: lobes %s; baked %s; reference %.0f s, its disc rule against the one before it %s "
-                        + "(%d pixels stopped by the finest rule); %s", name, SIZE, discDeg, THETA_I_DEG, sampled.length,
-                lit.size(), column ? "column" : "row", SIZE / 2, stats(l), stats(b), seconds, stats(rule),
-                stopped.get(), worst);
+                        + "(%d pixels stopped by the finest rule); %s; the lobes' cutoff %.3g of white", name, SIZE,
+                discDeg, THETA_I_DEG, sampled.length, lit.size(), column ? "column" : "row", SIZE / 2, stats(l),
+                stats(b), seconds, stats(rule), stopped.get(), worst, lobesShown.lobes().cutoff());
     }
 
     /**
@@ -168,6 +172,14 @@ class DiscReference65Measurement {
     private static String stats(BrdfMapDifference d) {
         return d == null ? "mean -, p95 -, max -" : d.lit() == null ? "no lit pixel" : String.format(Locale.ROOT,
                 "mean %.2f, p95 %.2f, max %.2f", d.lit().mean(), d.lit().p95(), d.lit().max());
+    }
+
+    private static float[] luminance(float[] xyz) {
+        float[] y = new float[xyz.length / 3];
+        for (int p = 0; p < y.length; p++) {
+            y[p] = xyz[3 * p + 1];
+        }
+        return y;
     }
 
     /** Every second lit pixel, or {@code most} of them evenly spaced where that is fewer. */

@@ -22,7 +22,7 @@ import org.junit.jupiter.api.Test;
  * {@code -Ddiffract.measure=baked-disc}): the table (of the point light, the disc integrated by the lookup,
  * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch and
  * the 10 um blazed grating at 0.53, 2, 4, 10 and 20 degrees, theta_i 0 and 30, with 257 and 513 samples along u and
- * v (13 along w). No assertion.
+ * v (13 along w); {@code -Ddiffract.measure.discs=4,10} picks the diameters. No assertion.
  */
 class BakedDiscMeasurement {
     static final int SIZE = 64;
@@ -40,7 +40,9 @@ class BakedDiscMeasurement {
 
     private static void measure(String name, HeightField patch) {
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        for (double lightDeg : new double[] {0.53, 2, 4, 10, 20}) {
+        double[] discs = java.util.Arrays.stream(System.getProperty("diffract.measure.discs", "0.53,2,4,10,20")
+                .split(",")).mapToDouble(Double::parseDouble).toArray();
+        for (double lightDeg : discs) {
             for (double thetaI : new double[] {0, 30}) {
                 BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                         .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));

@@ -20,7 +20,8 @@ import java.util.Arrays;
  * degrees, of the lobes method under a disc and under the Gaussian profile of the same diameter and of the baked
  * table under the disc (513 x 513 x 13 samples, what the commands take at 65 um), against FLSS in the thesis'
  * configuration on the same context, in alternating rounds (the median of each), so that the machine's load
- * moves all alike. No assertion: speed is reported, never tested.
+ * moves all alike; {@code -Ddiffract.measure.discs=4,10} picks the diameters. No assertion: speed is reported,
+ * never tested.
  */
 class DiscLobesSpeedMeasurement {
     /** 64 by default; a fast GPU finishes such a map in microseconds, so {@code -Ddiffract.measure.size} sets it. */
@@ -40,7 +41,9 @@ class DiscLobesSpeedMeasurement {
         TaylorTerms terms = RenderTestSupport.terms(patch);
         Direction wi = RenderTestSupport.light(patch, 30);
         BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS);
-        for (double lightDeg : new double[] {0.53, 2, 10, 20}) {
+        double[] discs = java.util.Arrays.stream(System.getProperty("diffract.measure.discs", "0.53,2,4,10,20")
+                .split(",")).mapToDouble(Double::parseDouble).toArray();
+        for (double lightDeg : discs) {
             BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                     .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
             BrdfSettings gaussian = disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
