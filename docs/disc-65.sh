@@ -29,9 +29,11 @@ out=docs/bench/disc-65.md
     echo "Made by \`bash docs/disc-65.sh\` (\`DiscReference65Measurement\`): 64 x 64 maps at theta_i = 30 degrees in"
     echo "the plane of each patch's period, the thesis' 65 um coherence, pixels averaged over their boxes. A whole map"
     echo "of the reference's disc (\`DiscLightAverage\`) takes hours to days on 2 cores, so the reference is evaluated"
-    echo "on ${pixels} lit pixels of the map's line through the orders, evenly spaced (every second one where there are"
-    echo "fewer; the column through the specular for phi_i = 90, the row for phi_i = 0): CIEDE2000 over those pixels at"
-    echo "the exposure the lobes method's whole map takes. elaphe-measured is the measured patch of assets/patches"
+    echo "on at most ${pixels} lit pixels of the map's line through the orders (the pixels column says how many), evenly"
+    echo "spaced (every second one where there are fewer; the column through the specular for phi_i = 90, the row for"
+    echo "phi_i = 0): CIEDE2000 over those pixels at the exposure the lobes method's whole map takes, for which the"
+    echo "lobes method and the baked table are drawn as brdfmap draws them (the lobes' cutoff scaled to it; the last"
+    echo "column). elaphe-measured is the measured patch of assets/patches"
     echo "(elaphe-100px.gwy), elaphe-scan the Elaphe-like skin at AFM size (528 x 512 samples, 52 x 51 um). The lobes"
     echo "method runs on the CPU, its baked table (the grid the commands take, 513 samples at 65 um) on the GPU, both"
     echo "from the pipeline with the commands' settings; the tall patch takes the phase-centred expansion, of which no"
@@ -41,10 +43,10 @@ out=docs/bench/disc-65.md
     echo "(\`DiscLightAverage\`; mean / max over the same pixels, and how many pixels the finest rule stopped before"
     echo "two rules agreed to 1e-4)."
     echo
-    echo "| patch | disc (deg) | pixels (of lit) | lobes mean / p95 / max | baked mean / p95 / max | reference s | reference's rule: mean / max (stopped) |"
-    echo "|---|---|---|---|---|---|---|"
-    perl -ne 'print "| $1 | $2 | $3 ($4) | $5 / $6 / $7 | $8 / $9 / $10 | $11 | $12 / $13 ($14) |\n"
-        if /^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i \d+, (\d+) of the (\d+) lit pixels of \w+ \d+: lobes mean ([\d.]+), p95 ([\d.]+), max ([\d.]+); baked mean ([\d.-]+), p95 ([\d.-]+), max ([\d.-]+); reference (\d+) s, its disc rule against the one before it mean ([\d.]+), p95 [\d.]+, max ([\d.]+) \((\d+) pixels/' \
+    echo "| patch | disc (deg) | pixels (of lit) | lobes mean / p95 / max | baked mean / p95 / max | reference s | reference's rule: mean / max (stopped) | lobes' cutoff |"
+    echo "|---|---|---|---|---|---|---|---|"
+    perl -ne 'print "| $1 | $2 | $3 ($4) | $5 / $6 / $7 | $8 / $9 / $10 | $11 | $12 / $13 ($14) | $15 |\n"
+        if /^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i \d+, (\d+) of the (\d+) lit pixels of \w+ \d+: lobes mean ([\d.]+), p95 ([\d.]+), max ([\d.]+); baked mean ([\d.-]+), p95 ([\d.-]+), max ([\d.-]+); reference (\d+) s, its disc rule against the one before it mean ([\d.]+), p95 [\d.]+, max ([\d.]+) \((\d+) pixels.*?(?:the lobes. cutoff (\S+) of white)?$/' \
         "$report"
     echo
     echo "Rows a run did not reach are missing; the reference's seconds are wall time on this machine: $(nproc) CPU"

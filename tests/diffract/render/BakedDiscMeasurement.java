@@ -1,6 +1,7 @@
 package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
+import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -20,39 +21,47 @@ import org.junit.jupiter.api.Test;
 /**
  * What the baked table loses under a disc light, a measurement run on request (docs/disc-lobes.sh,
  * {@code -Ddiffract.measure=baked-disc}): the table (of the point light, the disc integrated by the lookup,
- * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch and
- * the 10 um blazed grating at 0.53, 2, 4, 10 and 20 degrees, theta_i 0 and 30, with 257 and 513 samples along u and
- * v (13 along w); {@code -Ddiffract.measure.discs=4,10} picks the diameters. No assertion.
+ * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch, the
+ * 10 um blazed grating and the Elaphe-like skin at AFM size (elaphe-scan) at 0.53, 2, 4, 10 and 20 degrees, theta_i 0 and 30, with 257 and 513 samples along u and
+ * v (13 along w); {@code -Ddiffract.measure.discs=4,10} picks the diameters, {@code
+ * -Ddiffract.measure.patches=elaphe-scan} the patches of the catalogue. Both maps are drawn for the exposure of the
+ * lobes method's first map, as brdfmap draws them (LobeQuadrature.shownAt). No assertion.
  */
 class BakedDiscMeasurement {
     static final int SIZE = 64;
+    /** The table's samples along u and v: {@code -Ddiffract.measure.grids=513} picks them. */
+    static final int[] GRIDS = java.util.Arrays.stream(System.getProperty("diffract.measure.grids", "257,513")
+            .split(",")).mapToInt(Integer::parseInt).toArray();
 
     @Test
     void theBakedTableUnderADiscAgainstTheLobesMethod() {
         Assumptions.assumeTrue("baked-disc".equals(System.getProperty("diffract.measure")), "measurement on request");
         GlTestSupport.assumeOffscreenGl();
-        for (String name : new String[] {"elaphe-like", "blazed-10um"}) {
+        for (String name : System.getProperty("diffract.measure.patches", "elaphe-like,blazed-10um,elaphe-scan").split(",")) {
             HeightField patch = name.equals("elaphe-like") ? RenderTestSupport.ELAPHE_LIKE
                     : PatchCatalogue.named(name).build().meanSubtracted();
-            measure(name, patch);
+            measure(name, patch, PatchCatalogue.named(name).phiIDeg());
         }
     }
 
-    private static void measure(String name, HeightField patch) {
+    private static void measure(String name, HeightField patch, double phiIDeg) {
         TaylorTerms terms = RenderTestSupport.terms(patch);
         double[] discs = java.util.Arrays.stream(System.getProperty("diffract.measure.discs", "0.53,2,4,10,20")
                 .split(",")).mapToDouble(Double::parseDouble).toArray();
         for (double lightDeg : discs) {
             for (double thetaI : new double[] {0, 30}) {
-                BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
+                BrdfSettings asked = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                         .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
-                // the Elaphe-like ridges' period lies along y, the grating's along x
-                Direction wi = Direction.fromSphericalDeg(thetaI, patch == RenderTestSupport.ELAPHE_LIKE ? 90 : 0);
-                float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, SIZE, Reporter.SILENT);
+                Direction wi = Direction.fromSphericalDeg(thetaI, phiIDeg);
+                // as brdfmap --exposure auto: both maps drawn for the exposure of the first (LobeQuadrature.shownAt)
+                float[] first = BrdfMap.xyz(DiffractionBrdf.create(asked, patch, terms), wi, SIZE, Reporter.SILENT);
+                BrdfSettings disc = asked.shownAt(AutoExposure.of(luminance(first), SIZE, -wi.x(), -wi.y()));
+                float[] cpu = disc == asked ? first
+                        : BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, SIZE, Reporter.SILENT);
                 StringBuilder line = new StringBuilder(String.format(java.util.Locale.ROOT,
                         "%s, 65 um, %d px, %.2f-degree disc, theta_i %.0f: the baked table against the CPU "
                                 + "lobes method, lit mean / p95", name, SIZE, lightDeg, thetaI));
-                for (int uvSamples : new int[] {257, 513}) {
+                for (int uvSamples : GRIDS) {
                     BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(uvSamples, 13));
                     BrdfMapDifference d = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, baked, wi,
                             SIZE), SIZE, wi);
@@ -62,5 +71,13 @@ class BakedDiscMeasurement {
                 TestReport.line(BakedDiscMeasurement.class, line.toString());
             }
         }
+    }
+
+    private static float[] luminance(float[] xyz) {
+        float[] y = new float[xyz.length / 3];
+        for (int p = 0; p < y.length; p++) {
+            y[p] = xyz[3 * p + 1];
+        }
+        return y;
     }
 }
