@@ -39,7 +39,7 @@ out=docs/bench/disc-65.md
     echo "from the pipeline with the commands' settings; the tall patch takes the phase-centred expansion, of which no"
     echo "table is made (dashes)."
     echo
-    echo "The last column is the reference's own estimate of its error: its disc rule against the rule before it"
+    echo "The reference's own estimate of its error is its disc rule against the rule before it"
     echo "(\`DiscLightAverage\`; mean / max over the same pixels, and how many pixels the finest rule stopped before"
     echo "two rules agreed to 1e-4)."
     echo

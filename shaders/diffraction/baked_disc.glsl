@@ -118,30 +118,9 @@ vec2 discPieceWeight(DiscRows d, float u, float v) {
             -(dz + discWr.z));
 }
 
-// A piece's integral along u from u0 to u1 on the row at v, at w: read over the footprint's mip level m, or in a BRDF
-// map with `nodes` > 0 averaged over the map pixel's box of half-width h: a shift (s, t) of the pixel moves the
-// ellipse by -(s, t) in (u, v) and leaves the piece's direction as it is, so the row is read at v - t for each of
-// `nodes` shifts t and the piece over the shifts s (pieceIntegralOverBox).
-vec3 discPieceRead(float u0, float u1, float v, float w, MipFootprint m, float h, int nodes) {
-#ifdef BRDF_MAP
-    if (nodes > 0) {
-        vec3 shifted = vec3(0.0);
-        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
-            if (n >= nodes) {
-                break;
-            }
-            float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
-            shifted += pieceIntegralOverBox(u0, u1, h, nodes, v - t, w);
-        }
-        return shifted / float(nodes);
-    }
-#endif
-    return pieceIntegral(u0, u1, v, w, m);
-}
-
-// The row of the ellipse at y: its pieces' integrals (discPieceRead), each times its direction's density and gain
-// relative to the light's centre, at its direction's w; its width is added to `width`.
-vec3 discRow(DiscRows d, float y, MipFootprint m, float h, int nodes, inout float width) {
+// The row of the ellipse at y: its pieces' integrals, each times its direction's density and gain relative to the
+// light's centre, at its direction's w; its width is added to `width`.
+vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
     vec3 row = discRowAt(d, y, width);
     vec3 sum = vec3(0.0);
     for (int j = 0; j < DISC_PIECES_MAX; j++) {
@@ -151,11 +130,41 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, float h, int nodes, inout floa
         float u0 = row.y + float(j) * row.z;
         vec2 weight = discPieceWeight(d, u0 + 0.5 * row.z, row.x);
         if (weight.x != 0.0) {
-            sum += weight.x * discPieceRead(u0, u0 + row.z, row.x, weight.y, m, h, nodes);
+            sum += weight.x * pieceIntegral(u0, u0 + row.z, row.x, weight.y, m);
         }
     }
     return sum;
 }
+
+#ifdef BRDF_MAP
+// discRow averaged over a map pixel's box of half-width h: a shift (s, t) of the pixel moves the ellipse by -(s, t)
+// in (u, v) and leaves each piece's direction as it is, so the row is read at v - t for each of `nodes` shifts t and
+// its pieces over the shifts s (pieceIntegralOverBox); its width is added to `width` once.
+vec3 discRowOverBox(DiscRows d, float y, float h, int nodes, inout float width) {
+    vec3 row = discRowAt(d, y, width);
+    vec3 sum = vec3(0.0);
+    for (int j = 0; j < DISC_PIECES_MAX; j++) {
+        if (j >= d.pieces) {
+            break;
+        }
+        float u0 = row.y + float(j) * row.z;
+        vec2 weight = discPieceWeight(d, u0 + 0.5 * row.z, row.x);
+        if (weight.x == 0.0) {
+            continue;
+        }
+        vec3 shifted = vec3(0.0);
+        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
+            if (n >= nodes) {
+                break;
+            }
+            float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
+            shifted += pieceIntegralOverBox(u0, u0 + row.z, h, nodes, row.x - t, weight.y);
+        }
+        sum += weight.x * shifted / float(nodes);
+    }
+    return sum;
+}
+#endif
 
 // The disc's average of the table times the density and the gain relative to the light's centre, for the pixel of
 // setDisc, with the pixel's footprint (covariance in texels^2 of level 0). As DiscFootprint, a disc whose minor
@@ -186,22 +195,28 @@ vec3 discTableXyz(vec3 footprintTexels) {
         float spacing = 2.0 * d.reachV / float(rows);
         vec3 sum = vec3(0.0);
         float width = 0.0;
-        MipFootprint m = mipFootprint(footprintTexels);
-        float h = 0.0;
-        int nodes = 0;
 #ifdef BRDF_MAP
         // a map pixel under a disc about as wide (BakedDisc.BOX_BELOW): the rows averaged over the pixel's box, on
         // nodes at least 2 and at most DISC_BOX_NODE_TEXELS table samples apart along u and v, read at level 0
         if (mapPixelHalfWidthUv > 0.0 && d.minorAxis / spreadR < DISC_TABLE_BOX_BELOW) {
-            h = mapPixelHalfWidthUv;
-            nodes = clamp(int(ceil(2.0 * h * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
-        }
-#endif
-        for (int k = 0; k < DISC_ROWS_MAX; k++) {
-            if (k >= rows) {
-                break;
+            float h = mapPixelHalfWidthUv;
+            int nodes = clamp(int(ceil(2.0 * h * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
+            for (int k = 0; k < DISC_ROWS_MAX; k++) {
+                if (k >= rows) {
+                    break;
+                }
+                sum += discRowOverBox(d, -d.reachV + (float(k) + 0.5) * spacing, h, nodes, width);
             }
-            sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, h, nodes, width);
+        } else
+#endif
+        {
+            MipFootprint m = mipFootprint(footprintTexels);
+            for (int k = 0; k < DISC_ROWS_MAX; k++) {
+                if (k >= rows) {
+                    break;
+                }
+                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
+            }
         }
         // the rows hold the ellipse's area pi a b exactly
         xyz += width > 0.0 ? edgeWeight * sum * (d.area / width) : vec3(0.0);
