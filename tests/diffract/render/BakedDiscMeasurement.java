@@ -22,22 +22,27 @@ import org.junit.jupiter.api.Test;
  * What the baked table loses under a disc light, a measurement run on request (docs/disc-lobes.sh,
  * {@code -Ddiffract.measure=baked-disc}): the table (of the point light, the disc integrated by the lookup,
  * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch, the
- * 10 um blazed grating and the Elaphe-like skin at AFM size (elaphe-scan) at 0.53, 2, 4, 10 and 20 degrees, theta_i 0 and 30, with 257 and 513 samples along u and
- * v (13 along w); {@code -Ddiffract.measure.discs=4,10} picks the diameters, {@code
- * -Ddiffract.measure.patches=elaphe-scan} the patches of the catalogue. Both maps are drawn for the exposure of the
- * lobes method's first map, as brdfmap draws them (LobeQuadrature.shownAt). No assertion.
+ * 10 um blazed grating and the Elaphe-like skin at AFM size (elaphe-scan) at 0.53, 2, 4, 10 and 20 degrees,
+ * theta_i 0 and 30, with 257 and 513 samples along u and v and 13 along w. Properties pick parts:
+ * {@code -Ddiffract.measure.discs=4,10} the diameters, {@code -Ddiffract.measure.patches=elaphe-scan} the patches
+ * of the catalogue, {@code -Ddiffract.measure.grids=513} and {@code -Ddiffract.measure.wSamples=25} the grid. Both
+ * maps are drawn for the exposure of the lobes method's first map, as brdfmap draws them (LobeQuadrature.shownAt).
+ * No assertion.
  */
 class BakedDiscMeasurement {
     static final int SIZE = 64;
     /** The table's samples along u and v: {@code -Ddiffract.measure.grids=513} picks them. */
     static final int[] GRIDS = java.util.Arrays.stream(System.getProperty("diffract.measure.grids", "257,513")
             .split(",")).mapToInt(Integer::parseInt).toArray();
+    /** The table's samples along w: {@code -Ddiffract.measure.wSamples=25}. */
+    static final int W_SAMPLES = Integer.getInteger("diffract.measure.wSamples", 13);
 
     @Test
     void theBakedTableUnderADiscAgainstTheLobesMethod() {
         Assumptions.assumeTrue("baked-disc".equals(System.getProperty("diffract.measure")), "measurement on request");
         GlTestSupport.assumeOffscreenGl();
-        for (String name : System.getProperty("diffract.measure.patches", "elaphe-like,blazed-10um,elaphe-scan").split(",")) {
+        String patches = System.getProperty("diffract.measure.patches", "elaphe-like,blazed-10um,elaphe-scan");
+        for (String name : patches.split(",")) {
             HeightField patch = name.equals("elaphe-like") ? RenderTestSupport.ELAPHE_LIKE
                     : PatchCatalogue.named(name).build().meanSubtracted();
             measure(name, patch, PatchCatalogue.named(name).phiIDeg());
@@ -62,11 +67,11 @@ class BakedDiscMeasurement {
                         "%s, 65 um, %d px, %.2f-degree disc, theta_i %.0f: the baked table against the CPU "
                                 + "lobes method, lit mean / p95", name, SIZE, lightDeg, thetaI));
                 for (int uvSamples : GRIDS) {
-                    BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(uvSamples, 13));
+                    BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(uvSamples, W_SAMPLES));
                     BrdfMapDifference d = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, baked, wi,
                             SIZE), SIZE, wi);
-                    line.append(String.format(java.util.Locale.ROOT, "; %d x %d x 13: %.2f / %.2f", uvSamples,
-                            uvSamples, d.lit().mean(), d.lit().p95()));
+                    line.append(String.format(java.util.Locale.ROOT, "; %d x %d x %d: %.2f / %.2f", uvSamples,
+                            uvSamples, W_SAMPLES, d.lit().mean(), d.lit().p95()));
                 }
                 TestReport.line(BakedDiscMeasurement.class, line.toString());
             }
