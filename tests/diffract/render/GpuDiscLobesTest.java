@@ -106,6 +106,24 @@ class GpuDiscLobesTest {
      */
     static final double MAX_PIXEL_WIDE_DISC_LIT_MEAN = 1.0;
 
+    /** The light of the grating's maps: theta_i 30 degrees in the plane of its period. */
+    static final Direction GRATING_LIGHT = Direction.fromSphericalDeg(30, 0);
+
+    /**
+     * The 10 um blazed grating's 64 px maps under a disc of {@code lightDeg}: the CPU lobes method's and its baked
+     * table's at the commands' grid, in that order.
+     */
+    static float[][] gratingUnderADisc(double lightDeg) {
+        HeightField patch = PatchCatalogue.named("blazed-10um").build().meanSubtracted();
+        TaylorTerms terms = RenderTestSupport.terms(patch);
+        int size = BakedLobesTableTest.SIZE;
+        BrdfSettings disc = lobesUnderADisc(lightDeg);
+        float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), GRATING_LIGHT, size, Reporter.SILENT);
+        float[] gpu = RenderTestSupport.gpuXyz(terms, disc.with(b -> b.variant(Variant.BAKED)
+                .bakedSamples(COMMANDS_UV_SAMPLES, BakedLobesTableTest.W_SAMPLES)), GRATING_LIGHT, size);
+        return new float[][] {cpu, gpu};
+    }
+
     /**
      * A 2-degree disc on the 10 um blazed grating at theta_i 30: the line of orders lies on the edge between rows 31
      * and 32 of a 64 px map, and the disc reaches sin 1 degree = 0.017 across it, half a pixel, so rows 30 and 33 see
@@ -116,14 +134,10 @@ class GpuDiscLobesTest {
     @Test
     void aDiscAsWideAsAPixelStaysInItsRows() {
         GlTestSupport.assumeOffscreenGl();
-        HeightField patch = PatchCatalogue.named("blazed-10um").build().meanSubtracted();
-        TaylorTerms terms = RenderTestSupport.terms(patch);
         int size = BakedLobesTableTest.SIZE;
-        Direction wi = Direction.fromSphericalDeg(30, 0);
-        BrdfSettings disc = lobesUnderADisc(2);
-        float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, size, Reporter.SILENT);
-        float[] gpu = RenderTestSupport.gpuXyz(terms, disc.with(b -> b.variant(Variant.BAKED)
-                .bakedSamples(COMMANDS_UV_SAMPLES, BakedLobesTableTest.W_SAMPLES)), wi, size);
+        float[][] maps = gratingUnderADisc(2);
+        float[] cpu = maps[0];
+        float[] gpu = maps[1];
         double line = 0;
         double beside = 0;
         for (int column = 0; column < size; column++) {
@@ -134,7 +148,7 @@ class GpuDiscLobesTest {
                 beside = Math.max(beside, gpu[3 * (row * size + column) + 1]);
             }
         }
-        BrdfMapDifference d = RenderTestSupport.difference(cpu, gpu, size, wi);
+        BrdfMapDifference d = RenderTestSupport.difference(cpu, gpu, size, GRATING_LIGHT);
         String where = String.format(java.util.Locale.ROOT, "blazed-10um, %d px, theta_i 30, 2-degree disc, %d "
                 + "samples: the rows beside the line hold %.2e of it; against the CPU lobes method %s", size,
                 COMMANDS_UV_SAMPLES, beside / line, d.summary());
@@ -158,15 +172,9 @@ class GpuDiscLobesTest {
     @Test
     void aDiscTwoPixelsWideIsAveragedOverThePixelsBox() {
         GlTestSupport.assumeOffscreenGl();
-        HeightField patch = PatchCatalogue.named("blazed-10um").build().meanSubtracted();
-        TaylorTerms terms = RenderTestSupport.terms(patch);
         int size = BakedLobesTableTest.SIZE;
-        Direction wi = Direction.fromSphericalDeg(30, 0);
-        BrdfSettings disc = lobesUnderADisc(4);
-        float[] cpu = BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, size, Reporter.SILENT);
-        BrdfMapDifference d = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, disc.with(b -> b
-                .variant(Variant.BAKED).bakedSamples(COMMANDS_UV_SAMPLES, BakedLobesTableTest.W_SAMPLES)), wi, size),
-                size, wi);
+        float[][] maps = gratingUnderADisc(4);
+        BrdfMapDifference d = RenderTestSupport.difference(maps[0], maps[1], size, GRATING_LIGHT);
         String where = String.format(java.util.Locale.ROOT, "blazed-10um, %d px, theta_i 30, 4-degree disc, %d "
                 + "samples: the baked table against the CPU lobes method %s", size, COMMANDS_UV_SAMPLES, d.summary());
         TestReport.line(GpuDiscLobesTest.class, where);
