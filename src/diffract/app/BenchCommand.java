@@ -12,6 +12,7 @@ import diffract.bench.SweepPlan;
 import diffract.bench.Targets;
 import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
+import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.TermFormat;
@@ -536,7 +537,7 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
     private static List<Double> exposures(ReferenceMaps references, BenchPatch patch, int size, BrdfSettings base) {
         List<Double> e = new ArrayList<>();
         for (double theta : BenchRunner.LIGHTS_DEG) {
-            e.add(BenchRunner.exposure(references.xyz(patch, theta, size, base),
+            e.add(AutoExposure.ofXyz(references.xyz(patch, theta, size, base),
                     Direction.fromSphericalDeg(theta, patch.phiIDeg()), size));
         }
         return e;

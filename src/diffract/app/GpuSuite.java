@@ -8,6 +8,7 @@ import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
 import diffract.jrtr.GLInfo;
 import diffract.jrtr.OffscreenTarget;
+import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.Methods;
@@ -247,7 +248,7 @@ final class GpuSuite {
                     Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
                     float[] ref = references.xyz(patch, theta, errorSizePx, settings);
                     referenceMaps.add(ref);
-                    exposures.add(BenchRunner.exposure(ref, wi, errorSizePx));
+                    exposures.add(AutoExposure.ofXyz(ref, wi, errorSizePx));
                     maps.add(map.xyz(wi, errorSizePx));
                 }
                 ms = map.medianMsPerFrame(Direction.fromSphericalDeg(BenchRunner.TIMED_LIGHT_DEG, patch.phiIDeg()),

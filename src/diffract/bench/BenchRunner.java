@@ -172,7 +172,7 @@ public final class BenchRunner {
         for (double theta : lightsDeg) {
             float[] ref = references.xyz(patch, theta, c.sizePx(), base);
             reference.add(ref);
-            exposures.add(exposure(ref, Direction.fromSphericalDeg(theta, patch.phiIDeg()), c.sizePx()));
+            exposures.add(AutoExposure.ofXyz(ref, Direction.fromSphericalDeg(theta, patch.phiIDeg()), c.sizePx()));
         }
         // drawn for the brightest exposure its maps are compared at
         BrdfSettings shown = c.settings().shownAt(exposures.stream().mapToDouble(Double::doubleValue).max()
@@ -190,14 +190,5 @@ public final class BenchRunner {
             keptMaps.put(c.key(), variant);
         }
         return new BenchResult(c, ms, MapError.pooled(reference, variant, exposures, c.sizePx()));
-    }
-
-    /** The display exposure of a light: AutoExposure of the reference map's Y (brightest diffracted pixel = 1). */
-    public static double exposure(float[] referenceXyz, Direction wi, int size) {
-        float[] y = new float[size * size];
-        for (int p = 0; p < y.length; p++) {
-            y[p] = referenceXyz[3 * p + 1];
-        }
-        return AutoExposure.of(y, size, -wi.x(), -wi.y());
     }
 }

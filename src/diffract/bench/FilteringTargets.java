@@ -93,11 +93,7 @@ public final class FilteringTargets {
         Direction wi = Direction.fromSphericalDeg(THETA_I_DEG, patch.phiIDeg());
         ReferenceMaps.Timed timed = references.timed(patch, THETA_I_DEG, sizePx, lobesHere);
         float[] reference = timed.xyz();
-        float[] luminance = new float[sizePx * sizePx];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = reference[3 * p + 1];
-        }
-        double exposure = AutoExposure.of(luminance, sizePx, -wi.x(), -wi.y());
+        double exposure = AutoExposure.ofXyz(reference, wi, sizePx);
         // the lobes method and its table drawn for the exposure they are compared at
         BrdfSettings lobesShown = lobesHere.shownAt(exposure);
         double lambdaMin = lobesHere.spectral().lambdaMinNm();

@@ -21,6 +21,15 @@ public final class AutoExposure {
         return max > 0 && Double.isFinite(max) ? 1.0 / max : 1.0;
     }
 
+    /** {@link #of} for a map of XYZ triples ({@link BrdfMap}): its Y, with the mirror direction of {@code wi}. */
+    public static double ofXyz(float[] xyz, Direction wi, int size) {
+        float[] y = new float[size * size];
+        for (int p = 0; p < y.length; p++) {
+            y[p] = xyz[3 * p + 1];
+        }
+        return of(y, size, -wi.x(), -wi.y());
+    }
+
     /** The largest value outside the specular highlight (0 when there is none). */
     public static double brightestDiffracted(float[] luminance, int size, double specularX, double specularY) {
         double specularColumn = (specularX + 1) * size / 2 - 0.5;

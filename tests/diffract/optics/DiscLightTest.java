@@ -68,7 +68,7 @@ class DiscLightTest {
      * cancels the h^2 term.
      */
     static final double EXTRAPOLATED_FROM_DEG = 15;
-    /** The bar for the reference against independent sampling: mean CIEDE2000 over the lit pixels. */
+    /** The bar for the reference against independent sampling: mean CIEDE2000 over the lit pixels. */
     static final double MAX_LIT_MEAN_DELTA_E = 0.2;
 
     /** Minutes on two cores (brute force takes 512 directions per pixel): a long test, run by .ci/run after the rest. */

@@ -15,6 +15,7 @@ import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.optics.io.HeightFieldReader;
 import diffract.render.GpuBrdfMap;
+import diffract.util.MeasureProperties;
 import diffract.util.Reporter;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Assumptions;
@@ -22,7 +23,6 @@ import org.junit.jupiter.api.Test;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.atomic.AtomicInteger;
@@ -51,8 +51,7 @@ class DiscReference65Measurement {
     void lobesAndBakedUnderADiscAgainstTheReferencesDiscAt65Um() {
         Assumptions.assumeTrue("disc-65".equals(System.getProperty("diffract.measure")), "measurement on request");
         GlTestSupport.assumeOffscreenGl();
-        double[] discs = Arrays.stream(System.getProperty("diffract.measure.discs", "0.53,2,10,20").split(","))
-                .mapToDouble(Double::parseDouble).toArray();
+        double[] discs = MeasureProperties.doubles("diffract.measure.discs", "0.53,2,10,20");
         for (String name : System.getProperty("diffract.measure.patches", "elaphe-like").split(",")) {
             for (double discDeg : discs) {
                 TestReport.line(DiscReference65Measurement.class, measure(name, discDeg));
@@ -84,18 +83,17 @@ class DiscReference65Measurement {
                 Reporter.SILENT);
         // as brdfmap --exposure auto: a map shown brighter than the lobes' cutoff assumes is drawn again for its
         // exposure (LobeQuadrature.shownAt), the lobes method and the baked table alike
-        double firstExposure = AutoExposure.of(luminance(firstMap), SIZE, -wi.x(), -wi.y());
+        double firstExposure = AutoExposure.ofXyz(firstMap, wi, SIZE);
         BrdfSettings lobesShown = lobes.shownAt(firstExposure);
         float[] lobesMap = lobesShown == lobes ? firstMap
                 : BrdfMap.xyz(pipeline.cpuBrdf(lobesShown, lambdaMinNm, Reporter.SILENT), wi, SIZE, Reporter.SILENT);
         float[] bakedMap = bakedMap(pipeline, baked.shownAt(firstExposure), wi);
-        float[] luminance = luminance(lobesMap);
-        double exposure = AutoExposure.of(luminance, SIZE, -wi.x(), -wi.y());
+        double exposure = AutoExposure.ofXyz(lobesMap, wi, SIZE);
         boolean column = Math.abs(wi.y()) >= Math.abs(wi.x());
         List<Integer> lit = new ArrayList<>();
         for (int k = 0; k < SIZE; k++) {
             int p = pixel(column, k);
-            if (exposure * luminance[p] > BrdfMapDifference.LIT_Y) {
+            if (exposure * lobesMap[3 * p + 1] > BrdfMapDifference.LIT_Y) {
                 lit.add(p);
             }
         }
@@ -172,14 +170,6 @@ class DiscReference65Measurement {
     private static String stats(BrdfMapDifference d) {
         return d == null ? "mean -, p95 -, max -" : d.lit() == null ? "no lit pixel" : String.format(Locale.ROOT,
                 "mean %.2f, p95 %.2f, max %.2f", d.lit().mean(), d.lit().p95(), d.lit().max());
-    }
-
-    private static float[] luminance(float[] xyz) {
-        float[] y = new float[xyz.length / 3];
-        for (int p = 0; p < y.length; p++) {
-            y[p] = xyz[3 * p + 1];
-        }
-        return y;
     }
 
     /** Every second lit pixel, or {@code most} of them evenly spaced where that is fewer. */

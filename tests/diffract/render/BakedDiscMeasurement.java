@@ -13,6 +13,7 @@ import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.util.MeasureProperties;
 import diffract.util.Reporter;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Assumptions;
@@ -32,8 +33,7 @@ import org.junit.jupiter.api.Test;
 class BakedDiscMeasurement {
     static final int SIZE = 64;
     /** The table's samples along u and v: {@code -Ddiffract.measure.grids=513} picks them. */
-    static final int[] GRIDS = java.util.Arrays.stream(System.getProperty("diffract.measure.grids", "257,513")
-            .split(",")).mapToInt(Integer::parseInt).toArray();
+    static final int[] GRIDS = MeasureProperties.ints("diffract.measure.grids", "257,513");
     /** The table's samples along w: {@code -Ddiffract.measure.wSamples=25}. */
     static final int W_SAMPLES = Integer.getInteger("diffract.measure.wSamples", 13);
 
@@ -51,16 +51,14 @@ class BakedDiscMeasurement {
 
     private static void measure(String name, HeightField patch, double phiIDeg) {
         TaylorTerms terms = RenderTestSupport.terms(patch);
-        double[] discs = java.util.Arrays.stream(System.getProperty("diffract.measure.discs", "0.53,2,4,10,20")
-                .split(",")).mapToDouble(Double::parseDouble).toArray();
-        for (double lightDeg : discs) {
+        for (double lightDeg : MeasureProperties.doubles("diffract.measure.discs", "0.53,2,4,10,20")) {
             for (double thetaI : new double[] {0, 30}) {
                 BrdfSettings asked = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                         .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
                 Direction wi = Direction.fromSphericalDeg(thetaI, phiIDeg);
                 // as brdfmap --exposure auto: both maps drawn for the exposure of the first (LobeQuadrature.shownAt)
                 float[] first = BrdfMap.xyz(DiffractionBrdf.create(asked, patch, terms), wi, SIZE, Reporter.SILENT);
-                BrdfSettings disc = asked.shownAt(AutoExposure.of(luminance(first), SIZE, -wi.x(), -wi.y()));
+                BrdfSettings disc = asked.shownAt(AutoExposure.ofXyz(first, wi, SIZE));
                 float[] cpu = disc == asked ? first
                         : BrdfMap.xyz(DiffractionBrdf.create(disc, patch, terms), wi, SIZE, Reporter.SILENT);
                 StringBuilder line = new StringBuilder(String.format(java.util.Locale.ROOT,
@@ -76,13 +74,5 @@ class BakedDiscMeasurement {
                 TestReport.line(BakedDiscMeasurement.class, line.toString());
             }
         }
-    }
-
-    private static float[] luminance(float[] xyz) {
-        float[] y = new float[xyz.length / 3];
-        for (int p = 0; p < y.length; p++) {
-            y[p] = xyz[3 * p + 1];
-        }
-        return y;
     }
 }

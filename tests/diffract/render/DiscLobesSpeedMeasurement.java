@@ -8,6 +8,7 @@ import diffract.optics.LightProfile;
 import diffract.optics.PixelFilter;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Variant;
+import diffract.util.MeasureProperties;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
@@ -41,9 +42,7 @@ class DiscLobesSpeedMeasurement {
         TaylorTerms terms = RenderTestSupport.terms(patch);
         Direction wi = RenderTestSupport.light(patch, 30);
         BrdfSettings flss = BrdfSettings.thesis(Variant.FLSS);
-        double[] discs = java.util.Arrays.stream(System.getProperty("diffract.measure.discs", "0.53,2,4,10,20")
-                .split(",")).mapToDouble(Double::parseDouble).toArray();
-        for (double lightDeg : discs) {
+        for (double lightDeg : MeasureProperties.doubles("diffract.measure.discs", "0.53,2,4,10,20")) {
             BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                     .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
             BrdfSettings gaussian = disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
