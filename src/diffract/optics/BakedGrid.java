@@ -11,7 +11,11 @@ package diffract.optics;
  * lambda / (2 pi sigma_s) (the coherence window G of eq. 1.8 mapped back through s = u L / lambda), narrowest at
  * lambda_min. Trilinear interpolation of a Gaussian sampled every h errs by about h^2 / (8 sigma^2) of its peak,
  * so the automatic grid takes {@link #UV_SAMPLES_PER_SIGMA} samples per sigma. Along w the table varies through the
- * Taylor phase k w h only, on the scale of one radian of k_max |dw| max|h|.
+ * phases of texel pairs only: it holds |P|^2, whose terms turn with k w (h(x) - h(x')), up to k_max |w| 2 max|h|,
+ * twice the largest Taylor phase x = k_max |w| max|h| of {@link TaylorBound#maxPhase}. Linear interpolation of a
+ * cosine sampled every d radians errs by up to d^2 / 8 of its amplitude, so {@link #W_SAMPLES_PER_PAIR_RADIAN} = 2
+ * (d = 0.5) holds a pair's term to 3 %; on a measured scan, whose many pairs of unrelated heights all turn at once,
+ * half that density leaves CIEDE2000 above 1 under a 20-degree disc (docs/filtering.md, section 8).
  */
 public record BakedGrid(int uvSamples, int wSamples) {
     /** The largest table edge accepted (GL 3.3 guarantees 3-D textures of 256 only; drivers go to 2048+). */
@@ -20,8 +24,8 @@ public record BakedGrid(int uvSamples, int wSamples) {
     public static final double UV_SAMPLES_PER_SIGMA = 2.0;
     /** The automatic (u, v) resolution is capped here: 512^2 x w samples x 8 bytes (RGBA16F) = 2 MB per w sample. */
     public static final int MAX_AUTOMATIC_UV_SAMPLES = 512;
-    /** Samples per radian of the largest Taylor phase k_max |w| max|h| along w. */
-    public static final double W_SAMPLES_PER_RADIAN = 2.0;
+    /** Samples along w per radian of the largest phase of a texel pair, k_max |w| 2 max|h|. */
+    public static final double W_SAMPLES_PER_PAIR_RADIAN = 2.0;
     public static final double U_MIN = -2.0;
     public static final double U_MAX = 2.0;
     public static final double W_MIN = -2.0;
@@ -58,10 +62,10 @@ public record BakedGrid(int uvSamples, int wSamples) {
         return Math.min(MAX_AUTOMATIC_UV_SAMPLES, uvSamplesToResolve(settings));
     }
 
-    /** {@link #W_SAMPLES_PER_RADIAN} per radian of the largest phase (2 pi / lambda_min) 2 max|h|, at least 2. */
+    /** {@link #W_SAMPLES_PER_PAIR_RADIAN} per radian of a pair's largest phase, 2 x, at least 2. */
     public static int automaticWSamples(BrdfSettings settings, double maxAbsHeightUm) {
-        double phase = TaylorBound.maxPhase(settings.spectral().lambdaMinNm(), maxAbsHeightUm);
-        return Math.max(2, Math.min(MAX_SAMPLES, (int) Math.ceil(W_SAMPLES_PER_RADIAN * phase) + 1));
+        double pairPhase = 2 * TaylorBound.maxPhase(settings.spectral().lambdaMinNm(), maxAbsHeightUm);
+        return Math.max(2, Math.min(MAX_SAMPLES, (int) Math.ceil(W_SAMPLES_PER_PAIR_RADIAN * pairPhase) + 1));
     }
 
     /** u (or v) of sample i. */
