@@ -49,7 +49,7 @@ mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-spe
     sed 's/^/- /' target/test-reports/GpuDiscLobesTest.txt
     echo
     echo "The baked table under a disc against the CPU lobes method, by its grid (\`BakedDiscMeasurement\`; the commands"
-    echo "take 513 samples along u and v at 65 um):"
+    echo "take 513 samples along u and v at 65 um and the automatic grid along w):"
     echo
     sed 's/^/- /' target/test-reports/BakedDiscMeasurement.txt
     echo
@@ -59,4 +59,31 @@ mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-spe
     echo
     echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
 } >"$out"
+# the baked table's means into docs/filtering.md's table (section 8), between its markers
+python3 - target/test-reports/BakedDiscMeasurement.txt docs/filtering.md <<'PY'
+import re, sys
+lines, page = open(sys.argv[1]).read(), open(sys.argv[2]).read()
+cells, grids = {}, {}
+for patch, disc, theta, rest in re.findall(r"^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i (\d+): .*?lit mean / p95(.*)$",
+                                          lines, re.M):
+    for uv, w, mean in re.findall(r"; (\d+) x \d+ x (\d+): ([\d.]+) / [\d.]+", rest):
+        cells.setdefault((patch, float(disc), uv), {})[theta] = mean
+        grids[(patch, uv)] = w
+names = {"elaphe-like": "Elaphe-like", "blazed-10um": "blazed-10um", "elaphe-scan": "elaphe-scan"}
+columns = [(p, uv) for p in names for uv in ("257", "513") if (p, uv) in grids]
+head = "| disc | " + " | ".join(f"{names[p]}, theta_i 0 / 30, {uv} x {uv} x {grids[(p, uv)]}" for p, uv in columns) + " |"
+rows = [head, "|---" * (len(columns) + 1) + "|"]
+for disc in sorted({d for (_, d, _) in cells}):
+    row = [f"{disc:g} degrees"]
+    for p, uv in columns:
+        c = cells.get((p, disc, uv), {})
+        row.append(f"{c.get('0', '-')} / {c.get('30', '-')}")
+    rows.append("| " + " | ".join(row) + " |")
+table = "\n".join("  " + r for r in rows)
+page, n = re.subn(r"(<!-- baked-disc table -->\n).*?(\n *<!-- end baked-disc table -->)",
+                  lambda m: m.group(1) + table + m.group(2), page, flags=re.S)
+if n != 1:
+    sys.exit("docs/filtering.md: no baked-disc table between markers")
+open(sys.argv[2], "w").write(page)
+PY
 cat "$out"

@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.AutoExposure;
+import diffract.optics.BakedGrid;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
@@ -24,7 +25,7 @@ import org.junit.jupiter.api.Test;
  * {@code -Ddiffract.measure=baked-disc}): the table (of the point light, the disc integrated by the lookup,
  * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch, the
  * 10 um blazed grating and the Elaphe-like skin at AFM size (elaphe-scan) at 0.53, 2, 4, 10 and 20 degrees,
- * theta_i 0 and 30, with 257 and 513 samples along u and v and 13 along w. Properties pick parts:
+ * theta_i 0 and 30, with 257 and 513 samples along u and v and the automatic grid along w. Properties pick parts:
  * {@code -Ddiffract.measure.discs=4,10} the diameters, {@code -Ddiffract.measure.patches=elaphe-scan} the patches
  * of the catalogue, {@code -Ddiffract.measure.grids=513} and {@code -Ddiffract.measure.wSamples=25} the grid. Both
  * maps are drawn for the exposure of the lobes method's first map, as brdfmap draws them (LobeQuadrature.shownAt).
@@ -34,8 +35,8 @@ class BakedDiscMeasurement {
     static final int SIZE = 64;
     /** The table's samples along u and v: {@code -Ddiffract.measure.grids=513} picks them. */
     static final int[] GRIDS = MeasureProperties.ints("diffract.measure.grids", "257,513");
-    /** The table's samples along w: {@code -Ddiffract.measure.wSamples=25}. */
-    static final int W_SAMPLES = Integer.getInteger("diffract.measure.wSamples", 13);
+    /** The table's samples along w: {@code -Ddiffract.measure.wSamples=25}; 0, the default, the automatic grid. */
+    static final int W_SAMPLES = Integer.getInteger("diffract.measure.wSamples", 0);
 
     @Test
     void theBakedTableUnderADiscAgainstTheLobesMethod() {
@@ -66,10 +67,11 @@ class BakedDiscMeasurement {
                                 + "lobes method, lit mean / p95", name, SIZE, lightDeg, thetaI));
                 for (int uvSamples : GRIDS) {
                     BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(uvSamples, W_SAMPLES));
+                    int wSamples = BakedGrid.of(baked, terms.maxAbsHeightUm()).wSamples();
                     BrdfMapDifference d = RenderTestSupport.difference(cpu, RenderTestSupport.gpuXyz(terms, baked, wi,
                             SIZE), SIZE, wi);
                     line.append(String.format(java.util.Locale.ROOT, "; %d x %d x %d: %.2f / %.2f", uvSamples,
-                            uvSamples, W_SAMPLES, d.lit().mean(), d.lit().p95()));
+                            uvSamples, wSamples, d.lit().mean(), d.lit().p95()));
                 }
                 TestReport.line(BakedDiscMeasurement.class, line.toString());
             }
