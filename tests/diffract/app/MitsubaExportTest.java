@@ -54,9 +54,10 @@ class MitsubaExportTest {
         assertTrue(json.contains("\"normalisation\" : \"energy\""), json);
         int[][] shape = new int[1][];
         float[] data = NpyFile.readFloat32(dir.resolve("elaphe.npy"), shape);
-        // elaphe-like at 65 um: 2 samples per sigma of the narrowest order exceed the cap of 512; 13 along w
-        assertArrayEquals(new int[] {13, 512, 512, 3}, shape[0]);
-        assertEquals(13 * 512 * 512 * 3, data.length);
+        // elaphe-like at 65 um: 2 samples per sigma of the narrowest order exceed the cap of 512; along w 2 per
+        // radian of a texel pair's largest phase, 2 x (2 pi / 380 nm) 2 x 0.1766 um = 11.68: 24 steps, 25 samples
+        assertArrayEquals(new int[] {25, 512, 512, 3}, shape[0]);
+        assertEquals(25 * 512 * 512 * 3, data.length);
     }
 
     @Test

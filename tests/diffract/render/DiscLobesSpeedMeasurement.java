@@ -19,10 +19,10 @@ import java.util.Arrays;
  * What a disc light costs the lobes shader, a measurement run on request (docs/disc-lobes.sh,
  * {@code -Ddiffract.measure=disc-speed}): GL time per 64 x 64 map at the thesis' 65 um coherence, theta_i = 30
  * degrees, of the lobes method under a disc and under the Gaussian profile of the same diameter and of the baked
- * table under the disc (513 x 513 x 13 samples, what the commands take at 65 um), against FLSS in the thesis'
- * configuration on the same context, in alternating rounds (the median of each), so that the machine's load
- * moves all alike; {@code -Ddiffract.measure.discs=4,10} picks the diameters. No assertion: speed is reported,
- * never tested.
+ * table under the disc (what the commands take at 65 um: 513 samples along u and v, the automatic w grid, 25 on the
+ * Elaphe-like patch and 14 on the grating), against FLSS in the thesis' configuration on the same context, in
+ * alternating rounds (the median of each), so that the machine's load moves all alike;
+ * {@code -Ddiffract.measure.discs=4,10} picks the diameters. No assertion: speed is reported, never tested.
  */
 class DiscLobesSpeedMeasurement {
     /** 64 by default; a fast GPU finishes such a map in microseconds, so {@code -Ddiffract.measure.size} sets it. */
@@ -46,7 +46,7 @@ class DiscLobesSpeedMeasurement {
             BrdfSettings disc = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
                     .lightSizeDeg(lightDeg).lightProfile(LightProfile.DISC));
             BrdfSettings gaussian = disc.with(b -> b.lightProfile(LightProfile.GAUSSIAN));
-            BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(513, 13));
+            BrdfSettings baked = disc.with(b -> b.variant(Variant.BAKED).bakedSamples(513, 0));
             double[] discMs = new double[ROUNDS];
             double[] bakedMs = new double[ROUNDS];
             double[] gaussianMs = new double[ROUNDS];
