@@ -89,12 +89,8 @@ class MitsubaExportTest {
         assertEquals(0, p.exitValue(), output);
         float[] a = xyz(mitsuba);
         float[] b = xyz(reference);
-        float[] luminance = new float[SIZE * SIZE];
-        for (int q = 0; q < luminance.length; q++) {
-            luminance[q] = b[3 * q + 1];
-        }
         Direction wi = Direction.fromSphericalDeg(THETA_I_DEG, PHI_I_DEG);
-        double exposure = AutoExposure.of(luminance, SIZE, -wi.x(), -wi.y()); // brdfmap --exposure auto's
+        double exposure = AutoExposure.ofXyz(b, wi, SIZE); // brdfmap --exposure auto's
         BrdfMapDifference d = BrdfMapDifference.of(a, b, SIZE, exposure);
         System.out.println("Mitsuba 3 against brdfmap: " + d.summary());
         assertTrue(d.lit() != null && d.lit().pixels() > 50, d.summary());

@@ -249,12 +249,7 @@ class DiscLightTest {
                 from + 2, COMPARE_SIZE);
         float[] gaussian = mapAt(DiffractionBrdf.create(settings(lightDeg, LightProfile.GAUSSIAN), patch, null), WI,
                 from, from + 2, COMPARE_SIZE);
-        float[] luminance = new float[COMPARE_SIZE * COMPARE_SIZE];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = gaussian[3 * p + 1];
-        }
-        return BrdfMapDifference.of(gaussian, disc, COMPARE_SIZE, AutoExposure.of(luminance, COMPARE_SIZE, -WI.x(),
-                -WI.y()));
+        return BrdfMapDifference.of(gaussian, disc, COMPARE_SIZE, AutoExposure.ofXyz(gaussian, WI, COMPARE_SIZE));
     }
 
     @Test

@@ -115,11 +115,7 @@ class DiscLobesTest {
         double lobesSeconds = (System.nanoTime() - start) * 1e-9;
         float[] gaussian = DiscLightTest.mapAt(DiffractionBrdf.create(reference(lightDeg).with(b -> b.variant(
                 Variant.LOBES).lightProfile(LightProfile.GAUSSIAN)), patch, terms), WI, from, from + rows, size);
-        float[] luminance = new float[size * size];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = exact[3 * p + 1];
-        }
-        double exposure = AutoExposure.of(luminance, size, -WI.x(), -WI.y());
+        double exposure = AutoExposure.ofXyz(exact, WI, size);
         BrdfMapDifference d = BrdfMapDifference.of(exact, disc, size, exposure);
         BrdfMapDifference g = BrdfMapDifference.of(exact, gaussian, size, exposure);
         String line = String.format(java.util.Locale.ROOT, "blazed, %d um, %d px, %s-degree disc, %d row%s: lobes "

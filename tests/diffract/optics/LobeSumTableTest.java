@@ -190,11 +190,7 @@ class LobeSumTableTest {
     }
 
     private static BrdfMapDifference difference(float[] reference, float[] other, int size, Direction wi) {
-        float[] luminance = new float[size * size];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = reference[3 * p + 1];
-        }
-        return BrdfMapDifference.of(reference, other, size, AutoExposure.of(luminance, size, -wi.x(), -wi.y()));
+        return BrdfMapDifference.of(reference, other, size, AutoExposure.ofXyz(reference, wi, size));
     }
 
     private static double total(float[] xyz) {

@@ -71,11 +71,7 @@ class LobesAccuracyTest {
         float[] reference = strip(DiffractionBrdf.create(settings, patch, null), wi, phiDeg, size);
         float[] lobes = strip(DiffractionBrdf.create(settings.with(b -> b.variant(Variant.LOBES)
                 .lightSizeDeg(lobesLightDeg)), patch, terms), wi, phiDeg, size);
-        float[] luminance = new float[size * size];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = reference[3 * p + 1];
-        }
-        return BrdfMapDifference.of(reference, lobes, size, AutoExposure.of(luminance, size, -wi.x(), -wi.y()));
+        return BrdfMapDifference.of(reference, lobes, size, AutoExposure.ofXyz(reference, wi, size));
     }
 
     /** The map's pixels within two of the line of orders through the mirror direction (rows for phi 0, else columns). */

@@ -31,12 +31,7 @@ class LobesBandEdgesTest {
                 wi, SIZE, Reporter.SILENT);
         double[] r = moments(reference);
         double[] l = moments(lobes);
-        float[] luminance = new float[SIZE * SIZE];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = reference[3 * p + 1];
-        }
-        BrdfMapDifference d = BrdfMapDifference.of(reference, lobes, SIZE, AutoExposure.of(luminance, SIZE, -wi.x(),
-                -wi.y()));
+        BrdfMapDifference d = BrdfMapDifference.of(reference, lobes, SIZE, AutoExposure.ofXyz(reference, wi, SIZE));
         String where = String.format(java.util.Locale.ROOT, "%.0f..%.0f nm: Y %.5g (reference %.5g), centroid x %.4f "
                 + "(reference %.4f); %s", lambdaMinNm, lambdaMaxNm, l[0], r[0], l[1], r[1], d.summary());
         TestReport.line(LobesBandEdgesTest.class, where);

@@ -41,11 +41,7 @@ class ShownCutoffTest {
                 .pixelFilter(PixelFilter.POINT));
         Direction wi = Direction.fromSphericalDeg(45, 0);
         float[] reference = BrdfMap.xyz(DiffractionBrdf.create(base, field, null), wi, SIZE, Reporter.SILENT);
-        float[] y = new float[SIZE * SIZE];
-        for (int p = 0; p < y.length; p++) {
-            y[p] = reference[3 * p + 1];
-        }
-        double exposure = AutoExposure.of(y, SIZE, -wi.x(), -wi.y());
+        double exposure = AutoExposure.ofXyz(reference, wi, SIZE);
         assertTrue(exposure > 1e3, "a dim map: exposure " + exposure);
         BrdfSettings lobes = base.with(b -> b.variant(Variant.LOBES).highestOrder(20));
         TaylorTerms terms = TaylorTermComputer.compute(field, 20, Reporter.SILENT);

@@ -84,11 +84,7 @@ class GoldenImageTest {
 
     /** As the CLI: auto exposure (brightest diffracted pixel to Y = 1), then ColourPath.SRGB. */
     static float[] display(float[] xyz, Direction wi) {
-        float[] luminance = new float[SIZE * SIZE];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = xyz[3 * p + 1];
-        }
-        double exposure = AutoExposure.of(luminance, SIZE, -wi.x(), -wi.y());
+        double exposure = AutoExposure.ofXyz(xyz, wi, SIZE);
         float[] rgb = new float[xyz.length];
         for (int p = 0; p < xyz.length; p += 3) {
             float[] c = ColourPath.SRGB.displayRgb(new Xyz(xyz[p], xyz[p + 1], xyz[p + 2]).scaled(exposure));

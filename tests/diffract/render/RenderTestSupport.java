@@ -59,11 +59,7 @@ final class RenderTestSupport {
      * brightest diffracted pixel maps to Y = 1, so the orders, not the specular peak, fill the display range.
      */
     static diffract.optics.BrdfMapDifference difference(float[] cpuXyz, float[] gpuXyz, int size, Direction wi) {
-        float[] luminance = new float[size * size];
-        for (int p = 0; p < luminance.length; p++) {
-            luminance[p] = cpuXyz[3 * p + 1];
-        }
-        double exposure = diffract.optics.AutoExposure.of(luminance, size, -wi.x(), -wi.y());
+        double exposure = diffract.optics.AutoExposure.ofXyz(cpuXyz, wi, size);
         return diffract.optics.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
     }
 
