@@ -4,7 +4,7 @@
 # reference on at most 10 lit pixels of the map's line through the orders, 64 x 64 maps at theta_i = 30 degrees;
 # writes docs/bench/disc-65.md. About an hour and a half on 2 cores; from anywhere: bash docs/disc-65.sh
 # (PATCHES=elaphe-like DISCS=2 bash docs/disc-65.sh for a part; PIXELS=N at most N pixels per map, WIDE_SCAN_PIXELS=M
-# at most M on the scan's 10- and 20-degree discs, whose reference takes 6 to 8 minutes a pixel; APPEND=1 adds to the
+# at most M on the scan's 10- and 20-degree discs, whose reference takes 4 to 11 minutes a pixel; APPEND=1 adds to the
 # lines target/disc-65.txt holds instead of starting anew; REPORT_ONLY=1 writes the page from those lines, e.g. after
 # a run stopped part way).
 set -euo pipefail
@@ -44,7 +44,7 @@ out=docs/bench/disc-65.md
     echo "the plane of each patch's period, the thesis' 65 um coherence, pixels averaged over their boxes. A whole map"
     echo "of the reference's disc (\`DiscLightAverage\`) takes hours to days on 2 cores, so the reference is evaluated"
     echo "on at most ${pixels} lit pixels of the map's line through the orders (${wide_scan_pixels} on the scan under 10 and 20"
-    echo "degrees, where it takes 6 to 8 minutes a pixel; the pixels column says how many), evenly"
+    echo "degrees, where it takes 4 to 11 minutes a pixel; the pixels column says how many), evenly"
     echo "spaced (every second one where there are fewer; the column through the specular for phi_i = 90, the row for"
     echo "phi_i = 0): CIEDE2000 over those pixels at the exposure the lobes method's whole map takes, for which the"
     echo "lobes method and the baked table are drawn as brdfmap draws them (the lobes' cutoff scaled to it; the last"
@@ -63,7 +63,7 @@ out=docs/bench/disc-65.md
     echo "|---|---|---|---|---|---|---|---|"
     perl -ne 'print "| $1 | $2 | $3 ($4) | $5 / $6 / $7 | $8 / $9 / $10 | $11 | $12 / $13 ($14) | $15 |\n"
         if /^(\S+), 65 um, \d+ px, ([\d.]+)-degree disc, theta_i \d+, (\d+) of the (\d+) lit pixels of \w+ \d+: lobes mean ([\d.]+), p95 ([\d.]+), max ([\d.]+); baked mean ([\d.-]+), p95 ([\d.-]+), max ([\d.-]+); reference (\d+) s, its disc rule against the one before it mean ([\d.]+), p95 [\d.]+, max ([\d.]+) \((\d+) pixels.*?(?:the lobes. cutoff (\S+) of white)?$/' \
-        < <(for p in ${all_patches//,/ }; do grep "^$p, " "$report" || true; done)
+        < <(for p in ${all_patches//,/ }; do grep "^$p, " "$report" | sort -t, -s -k4,4g || true; done)
     echo
     echo "Rows a run did not reach are missing; the reference's seconds are wall time on this machine: $(nproc) CPU"
     echo "cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1))."

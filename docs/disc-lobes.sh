@@ -71,7 +71,9 @@ for patch, disc, theta, rest in re.findall(r"^(\S+), 65 um, \d+ px, ([\d.]+)-deg
         grids[(patch, uv)] = w
 names = {"elaphe-like": "Elaphe-like", "blazed-10um": "blazed-10um", "elaphe-scan": "elaphe-scan"}
 columns = [(p, uv) for p in names for uv in ("257", "513") if (p, uv) in grids]
-head = "| disc | " + " | ".join(f"{names[p]}, theta_i 0 / 30, {uv} x {uv} x {grids[(p, uv)]}" for p, uv in columns) + " |"
+labels = [(f"{names[p]}, theta_i 0 / 30, " if i == 0 or columns[i - 1][0] != p else "") + f"{uv} x {uv} x {grids[(p, uv)]}"
+          for i, (p, uv) in enumerate(columns)]
+head = "| disc | " + " | ".join(labels) + " |"
 rows = [head, "|---" * (len(columns) + 1) + "|"]
 for disc in sorted({d for (_, d, _) in cells}):
     row = [f"{disc:g} degrees"]
