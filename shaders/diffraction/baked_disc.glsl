@@ -6,9 +6,9 @@
 // cut into rows along v and each row into pieces along u; a piece's integral is the difference of two running sums,
 // weighted by the density 1 / (Omega d_z), the gain factor and shadowing relative to the light's centre and the w of
 // its centre direction. Included by baked.frag after baked_table.glsl.
-// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW, DISC_TABLE_EDGE_ABOVE,
-// DISC_TABLE_BOX_BELOW, DISC_BOX_NODES_MAX, DISC_BOX_NODE_TEXELS: BakedDisc's constants, defined by
-// DiffractionShaders.
+// DISC_ROWS_MAX, DISC_MIN_ROWS, DISC_FINE_ROWS_MAX, DISC_PIECES_MAX, DISC_PIECE_UV, DISC_TABLE_GAUSSIAN_BELOW,
+// DISC_TABLE_EDGE_ABOVE, DISC_TABLE_BOX_BELOW, DISC_BOX_NODES_MAX, DISC_BOX_NODE_TEXELS: BakedDisc's constants,
+// defined by DiffractionShaders.
 #ifndef BAKED_DISC_GLSL
 #define BAKED_DISC_GLSL
 
@@ -192,7 +192,6 @@ vec3 discTableXyz(vec3 footprintTexels) {
     }
     if (edgeWeight > 0.0) {
         int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
-        float spacing = 2.0 * d.reachV / float(rows);
         vec3 sum = vec3(0.0);
         float width = 0.0;
 #ifdef BRDF_MAP
@@ -201,6 +200,7 @@ vec3 discTableXyz(vec3 footprintTexels) {
         if (mapPixelHalfWidthUv > 0.0 && d.minorAxis / spreadR < DISC_TABLE_BOX_BELOW) {
             float h = mapPixelHalfWidthUv;
             int nodes = clamp(int(ceil(2.0 * h * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
+            float spacing = 2.0 * d.reachV / float(rows);
             for (int k = 0; k < DISC_ROWS_MAX; k++) {
                 if (k >= rows) {
                     break;
@@ -210,7 +210,13 @@ vec3 discTableXyz(vec3 footprintTexels) {
         } else
 #endif
         {
+            // a wide disc: rows 2^L samples apart read at level L or coarser, whose linear interpolant the midpoint
+            // rule across v sums exactly, so that a disc takes at most about DISC_FINE_ROWS_MAX rows
             MipFootprint m = mipFootprint(footprintTexels);
+            float coarsen = exp2(max(ceil(log2(float(rows) / float(DISC_FINE_ROWS_MAX))), 0.0));
+            rows = max(int(ceil(float(rows) / coarsen)), DISC_MIN_ROWS);
+            m.lod = max(m.lod, log2(coarsen));
+            float spacing = 2.0 * d.reachV / float(rows);
             for (int k = 0; k < DISC_ROWS_MAX; k++) {
                 if (k >= rows) {
                     break;

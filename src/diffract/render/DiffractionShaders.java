@@ -230,6 +230,7 @@ public final class DiffractionShaders {
                 defines.put("LIGHT_DISC", "1");
                 defines.put("DISC_ROWS_MAX", Integer.toString(BakedDisc.ROWS_MAX));
                 defines.put("DISC_MIN_ROWS", Integer.toString(BakedDisc.MIN_ROWS));
+                defines.put("DISC_FINE_ROWS_MAX", Integer.toString(BakedDisc.FINE_ROWS_MAX));
                 defines.put("DISC_PIECES_MAX", Integer.toString(BakedDisc.PIECES_MAX));
                 defines.put("DISC_TABLE_GAUSSIAN_BELOW", Float.toString((float) BakedDisc.GAUSSIAN_BELOW));
                 defines.put("DISC_TABLE_EDGE_ABOVE", Float.toString((float) BakedDisc.EDGE_ABOVE));
