@@ -182,6 +182,33 @@ class GpuDiscLobesTest {
         assertTrue(d.lit().mean() <= MAX_TWO_PIXEL_DISC_LIT_MEAN && d.lit().p95() <= MAX_TWO_PIXEL_DISC_LIT_P95, where);
     }
 
+    /**
+     * Measured 0.94 lit mean, p95 2.5 with the rows read two samples apart at level 1, 0.90 / 2.5 a sample apart at
+     * level 0 (docs/bench/disc-lobes.md).
+     */
+    static final double MAX_WIDE_DISC_LIT_MEAN = 1.2;
+    static final double MAX_WIDE_DISC_LIT_P95 = 3.5;
+
+    /**
+     * A 20-degree disc on the 10 um blazed grating at theta_i 30 in the plane of the period: it reaches sin 10 degrees
+     * along v on either side, 45 samples of the commands' table, more than BakedDisc.FINE_ROWS_MAX, so its rows are
+     * read a power of two samples apart at a coarser mip level; the map stays within the bound of the lobes method.
+     */
+    @Test
+    void aWideDiscIsReadInRowsAtACoarserLevel() {
+        GlTestSupport.assumeOffscreenGl();
+        double rowsAtLevel0 = 2 * Math.sin(Math.toRadians(10)) * (COMMANDS_UV_SAMPLES - 1) / 4.0;
+        assertTrue(rowsAtLevel0 > BakedDisc.FINE_ROWS_MAX, "rows " + rowsAtLevel0);
+        int size = BakedLobesTableTest.SIZE;
+        float[][] maps = gratingUnderADisc(20);
+        BrdfMapDifference d = RenderTestSupport.difference(maps[0], maps[1], size, GRATING_LIGHT);
+        String where = String.format(java.util.Locale.ROOT, "blazed-10um, %d px, theta_i 30, 20-degree disc, %d "
+                + "samples: the baked table against the CPU lobes method %s", size, COMMANDS_UV_SAMPLES, d.summary());
+        TestReport.line(GpuDiscLobesTest.class, where);
+        assertTrue(d.litPixels() >= 10, where);
+        assertTrue(d.lit().mean() <= MAX_WIDE_DISC_LIT_MEAN && d.lit().p95() <= MAX_WIDE_DISC_LIT_P95, where);
+    }
+
     /** A table under a disc holds the point light: discs of every size draw the one table. */
     @Test
     void everyDiscDrawsOneTable() {
