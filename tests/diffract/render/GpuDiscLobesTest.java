@@ -172,14 +172,20 @@ class GpuDiscLobesTest {
     @Test
     void aDiscTwoPixelsWideIsAveragedOverThePixelsBox() {
         GlTestSupport.assumeOffscreenGl();
+        gratingTableHeldToTheLobesMethod(4, MAX_TWO_PIXEL_DISC_LIT_MEAN, MAX_TWO_PIXEL_DISC_LIT_P95);
+    }
+
+    /** The grating's baked table under a disc of {@code lightDeg} against the CPU lobes method: lit mean and p95. */
+    private static void gratingTableHeldToTheLobesMethod(double lightDeg, double maxLitMean, double maxLitP95) {
         int size = BakedLobesTableTest.SIZE;
-        float[][] maps = gratingUnderADisc(4);
+        float[][] maps = gratingUnderADisc(lightDeg);
         BrdfMapDifference d = RenderTestSupport.difference(maps[0], maps[1], size, GRATING_LIGHT);
-        String where = String.format(java.util.Locale.ROOT, "blazed-10um, %d px, theta_i 30, 4-degree disc, %d "
-                + "samples: the baked table against the CPU lobes method %s", size, COMMANDS_UV_SAMPLES, d.summary());
+        String where = String.format(java.util.Locale.ROOT, "blazed-10um, %d px, theta_i 30, %.0f-degree disc, %d "
+                + "samples: the baked table against the CPU lobes method %s", size, lightDeg, COMMANDS_UV_SAMPLES,
+                d.summary());
         TestReport.line(GpuDiscLobesTest.class, where);
         assertTrue(d.litPixels() >= 10, where);
-        assertTrue(d.lit().mean() <= MAX_TWO_PIXEL_DISC_LIT_MEAN && d.lit().p95() <= MAX_TWO_PIXEL_DISC_LIT_P95, where);
+        assertTrue(d.lit().mean() <= maxLitMean && d.lit().p95() <= maxLitP95, where);
     }
 
     /**
@@ -199,14 +205,7 @@ class GpuDiscLobesTest {
         GlTestSupport.assumeOffscreenGl();
         double rowsAtLevel0 = 2 * Math.sin(Math.toRadians(10)) * (COMMANDS_UV_SAMPLES - 1) / 4.0;
         assertTrue(rowsAtLevel0 > BakedDisc.FINE_ROWS_MAX, "rows " + rowsAtLevel0);
-        int size = BakedLobesTableTest.SIZE;
-        float[][] maps = gratingUnderADisc(20);
-        BrdfMapDifference d = RenderTestSupport.difference(maps[0], maps[1], size, GRATING_LIGHT);
-        String where = String.format(java.util.Locale.ROOT, "blazed-10um, %d px, theta_i 30, 20-degree disc, %d "
-                + "samples: the baked table against the CPU lobes method %s", size, COMMANDS_UV_SAMPLES, d.summary());
-        TestReport.line(GpuDiscLobesTest.class, where);
-        assertTrue(d.litPixels() >= 10, where);
-        assertTrue(d.lit().mean() <= MAX_WIDE_DISC_LIT_MEAN && d.lit().p95() <= MAX_WIDE_DISC_LIT_P95, where);
+        gratingTableHeldToTheLobesMethod(20, MAX_WIDE_DISC_LIT_MEAN, MAX_WIDE_DISC_LIT_P95);
     }
 
     /** A table under a disc holds the point light: discs of every size draw the one table. */
