@@ -47,7 +47,7 @@ public final class BakedDisc {
      * coarser, so that it takes at most this many rows (and at least half as many): the midpoint rule across v sums
      * a level's linear interpolant exactly where the rows are its texels apart, and the level's blur of 2^L samples
      * is small next to the disc. At 513 samples a 20-degree disc takes 20 to 23 rows instead of 39 to 45: 1.7 to 2.3
-     * times faster on llvmpipe, 0.05 to 0.12 further from the CPU lobes method (docs/filtering.md, section 8).
+     * times faster on llvmpipe, 0.04 to 0.13 further from the CPU lobes method (docs/filtering.md, section 8).
      */
     public static final int FINE_ROWS_MAX = 24;
     /** The most pieces a row is cut into. */
