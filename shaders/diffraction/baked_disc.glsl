@@ -191,7 +191,8 @@ vec3 discTableXyz(vec3 footprintTexels) {
                 mipFootprint(footprintTexels + disc));
     }
     if (edgeWeight > 0.0) {
-        int rows = clamp(int(ceil(2.0 * d.reachV * texelsPerUv)), DISC_MIN_ROWS, DISC_ROWS_MAX);
+        float samplesAcross = ceil(2.0 * d.reachV * texelsPerUv);
+        int rows = clamp(int(samplesAcross), DISC_MIN_ROWS, DISC_ROWS_MAX);
         vec3 sum = vec3(0.0);
         float width = 0.0;
 #ifdef BRDF_MAP
@@ -213,8 +214,8 @@ vec3 discTableXyz(vec3 footprintTexels) {
             // a wide disc: rows 2^L samples apart read at level L or coarser, whose linear interpolant the midpoint
             // rule across v sums exactly, so that a disc takes at most about DISC_FINE_ROWS_MAX rows
             MipFootprint m = mipFootprint(footprintTexels);
-            float coarsen = exp2(max(ceil(log2(float(rows) / float(DISC_FINE_ROWS_MAX))), 0.0));
-            rows = max(int(ceil(float(rows) / coarsen)), DISC_MIN_ROWS);
+            float coarsen = exp2(max(ceil(log2(samplesAcross / float(DISC_FINE_ROWS_MAX))), 0.0));
+            rows = clamp(int(ceil(samplesAcross / coarsen)), DISC_MIN_ROWS, DISC_ROWS_MAX);
             m.lod = max(m.lod, log2(coarsen));
             float spacing = 2.0 * d.reachV / float(rows);
             for (int k = 0; k < DISC_ROWS_MAX; k++) {
