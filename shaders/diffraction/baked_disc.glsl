@@ -118,9 +118,30 @@ vec2 discPieceWeight(DiscRows d, float u, float v) {
             -(dz + discWr.z));
 }
 
-// The row of the ellipse at y: its pieces' integrals, each times its direction's density and gain relative to the
-// light's centre, at its direction's w; its width is added to `width`.
-vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
+// Piece [u0, u1] of the row at v, at w: its integral, or with nodes > 0 (a map pixel's box of half-width h) its
+// integral averaged over the box: a shift (s, t) of the pixel moves the ellipse by -(s, t) in (u, v) and leaves the
+// piece's direction as it is, so the piece is read at v - t for each of `nodes` shifts t and over the shifts s
+// (pieceIntegralOverBox). Callers pass nodes = 0 as a constant where there is no box, which the compiler folds away.
+vec3 discPieceIntegral(float u0, float u1, float v, float w, MipFootprint m, float h, int nodes) {
+#ifdef BRDF_MAP
+    if (nodes > 0) {
+        vec3 shifted = vec3(0.0);
+        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
+            if (n >= nodes) {
+                break;
+            }
+            float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
+            shifted += pieceIntegralOverBox(u0, u1, h, nodes, v - t, w);
+        }
+        return shifted / float(nodes);
+    }
+#endif
+    return pieceIntegral(u0, u1, v, w, m);
+}
+
+// The row of the ellipse at y: its pieces' integrals (discPieceIntegral), each times its direction's density and
+// gain relative to the light's centre, at its direction's w; its width is added to `width` once.
+vec3 discRow(DiscRows d, float y, MipFootprint m, float h, int nodes, inout float width) {
     vec3 row = discRowAt(d, y, width);
     vec3 sum = vec3(0.0);
     for (int j = 0; j < DISC_PIECES_MAX; j++) {
@@ -130,41 +151,11 @@ vec3 discRow(DiscRows d, float y, MipFootprint m, inout float width) {
         float u0 = row.y + float(j) * row.z;
         vec2 weight = discPieceWeight(d, u0 + 0.5 * row.z, row.x);
         if (weight.x != 0.0) {
-            sum += weight.x * pieceIntegral(u0, u0 + row.z, row.x, weight.y, m);
+            sum += weight.x * discPieceIntegral(u0, u0 + row.z, row.x, weight.y, m, h, nodes);
         }
     }
     return sum;
 }
-
-#ifdef BRDF_MAP
-// discRow averaged over a map pixel's box of half-width h: a shift (s, t) of the pixel moves the ellipse by -(s, t)
-// in (u, v) and leaves each piece's direction as it is, so the row is read at v - t for each of `nodes` shifts t and
-// its pieces over the shifts s (pieceIntegralOverBox); its width is added to `width` once.
-vec3 discRowOverBox(DiscRows d, float y, float h, int nodes, inout float width) {
-    vec3 row = discRowAt(d, y, width);
-    vec3 sum = vec3(0.0);
-    for (int j = 0; j < DISC_PIECES_MAX; j++) {
-        if (j >= d.pieces) {
-            break;
-        }
-        float u0 = row.y + float(j) * row.z;
-        vec2 weight = discPieceWeight(d, u0 + 0.5 * row.z, row.x);
-        if (weight.x == 0.0) {
-            continue;
-        }
-        vec3 shifted = vec3(0.0);
-        for (int n = 0; n < DISC_BOX_NODES_MAX; n++) {
-            if (n >= nodes) {
-                break;
-            }
-            float t = h * (2.0 * (float(n) + 0.5) / float(nodes) - 1.0);
-            shifted += pieceIntegralOverBox(u0, u0 + row.z, h, nodes, row.x - t, weight.y);
-        }
-        sum += weight.x * shifted / float(nodes);
-    }
-    return sum;
-}
-#endif
 
 // The disc's average of the table times the density and the gain relative to the light's centre, for the pixel of
 // setDisc, with the pixel's footprint (covariance in texels^2 of level 0). As DiscFootprint, a disc whose minor
@@ -202,11 +193,12 @@ vec3 discTableXyz(vec3 footprintTexels) {
             float h = mapPixelHalfWidthUv;
             int nodes = clamp(int(ceil(2.0 * h * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
             float spacing = 2.0 * d.reachV / float(rows);
+            MipFootprint level0 = MipFootprint(0.0, vec2(0.0));
             for (int k = 0; k < DISC_ROWS_MAX; k++) {
                 if (k >= rows) {
                     break;
                 }
-                sum += discRowOverBox(d, -d.reachV + (float(k) + 0.5) * spacing, h, nodes, width);
+                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, level0, h, nodes, width);
             }
         } else
 #endif
@@ -222,7 +214,7 @@ vec3 discTableXyz(vec3 footprintTexels) {
                 if (k >= rows) {
                     break;
                 }
-                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, width);
+                sum += discRow(d, -d.reachV + (float(k) + 0.5) * spacing, m, 0.0, 0, width);
             }
         }
         // the rows hold the ellipse's area pi a b exactly
