@@ -7,14 +7,13 @@ import diffract.bench.BenchRunner;
 import diffract.bench.FilteringTargets;
 import diffract.bench.ParetoPlot;
 import diffract.bench.ReferenceMaps;
+import diffract.bench.ReferenceSet;
 import diffract.bench.ResultsTable;
 import diffract.bench.SweepPlan;
 import diffract.bench.Targets;
 import diffract.jrtr.HeadlessGL;
 import diffract.jrtr.GLInfo;
-import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
 import diffract.optics.TermFormat;
 import diffract.optics.MapBand;
 import diffract.optics.Methods;
@@ -535,12 +534,7 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
     }
 
     private static List<Double> exposures(ReferenceMaps references, BenchPatch patch, int size, BrdfSettings base) {
-        List<Double> e = new ArrayList<>();
-        for (double theta : BenchRunner.LIGHTS_DEG) {
-            e.add(AutoExposure.ofXyz(references.xyz(patch, theta, size, base),
-                    Direction.fromSphericalDeg(theta, patch.phiIDeg()), size));
-        }
-        return e;
+        return ReferenceSet.of(references, patch, BenchRunner.LIGHTS_DEG, size, base).exposures();
     }
 
     /** CPU model and cores (/proc/cpuinfo) and the GL renderer. */

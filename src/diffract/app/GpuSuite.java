@@ -4,11 +4,11 @@ import diffract.bench.BenchPatch;
 import diffract.bench.BenchRunner;
 import diffract.bench.MapError;
 import diffract.bench.ReferenceMaps;
+import diffract.bench.ReferenceSet;
 import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
 import diffract.jrtr.GLInfo;
 import diffract.jrtr.OffscreenTarget;
-import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.Methods;
@@ -239,22 +239,16 @@ final class GpuSuite {
         int mapSize = size[1];
         for (String[] name : names(variants)) {
             BrdfSettings settings = settingsOf(name, base.settings());
-            List<float[]> referenceMaps = new ArrayList<>();
-            List<float[]> maps = new ArrayList<>();
-            List<Double> exposures = new ArrayList<>();
+            ReferenceSet against = ReferenceSet.of(references, patch, BenchRunner.LIGHTS_DEG, errorSizePx, settings);
+            BrdfSettings shown = against.drawnFor(settings);
+            List<float[]> maps;
             double ms;
-            try (GpuBrdfMap map = base.pipeline().gpuMap(settings, settings.spectral().lambdaMinNm(), reporter)) {
-                for (double theta : BenchRunner.LIGHTS_DEG) {
-                    Direction wi = Direction.fromSphericalDeg(theta, patch.phiIDeg());
-                    float[] ref = references.xyz(patch, theta, errorSizePx, settings);
-                    referenceMaps.add(ref);
-                    exposures.add(AutoExposure.ofXyz(ref, wi, errorSizePx));
-                    maps.add(map.xyz(wi, errorSizePx));
-                }
+            try (GpuBrdfMap map = base.pipeline().gpuMap(shown, shown.spectral().lambdaMinNm(), reporter)) {
+                maps = against.drawnBy(map);
                 ms = map.medianMsPerFrame(Direction.fromSphericalDeg(BenchRunner.TIMED_LIGHT_DEG, patch.phiIDeg()),
                         mapSize, 2, frames);
             }
-            MapError error = MapError.pooled(referenceMaps, maps, exposures, errorSizePx);
+            MapError error = against.error(maps);
             rows.add(log(new Row("brdf map", name[0], settings, mapSize, mapSize, ms, errorSizePx, error.mean(),
                     error.p95(), error.litPixels(), "cpu exact 1 nm")));
         }

@@ -1,7 +1,6 @@
 package diffract.bench;
 
 import diffract.jrtr.GLInfo;
-import diffract.optics.AutoExposure;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.InvalidSettingException;
@@ -166,22 +165,12 @@ public final class BenchRunner {
     }
 
     private BenchResult measure(BenchConfig c, BenchPatch patch, BrdfSettings base) {
-        List<float[]> reference = new ArrayList<>();
-        List<float[]> variant = new ArrayList<>();
-        List<Double> exposures = new ArrayList<>();
-        for (double theta : lightsDeg) {
-            float[] ref = references.xyz(patch, theta, c.sizePx(), base);
-            reference.add(ref);
-            exposures.add(AutoExposure.ofXyz(ref, Direction.fromSphericalDeg(theta, patch.phiIDeg()), c.sizePx()));
-        }
-        // drawn for the brightest exposure its maps are compared at
-        BrdfSettings shown = c.settings().shownAt(exposures.stream().mapToDouble(Double::doubleValue).max()
-                .orElse(1));
+        ReferenceSet against = ReferenceSet.of(references, patch, lightsDeg, c.sizePx(), base);
+        BrdfSettings shown = against.drawnFor(c.settings());
+        List<float[]> variant;
         double ms;
         try (GpuBrdfMap map = pipelines.get(c.patch()).gpuMap(shown, shown.spectral().lambdaMinNm(), reporter)) {
-            for (double theta : lightsDeg) {
-                variant.add(map.xyz(Direction.fromSphericalDeg(theta, patch.phiIDeg()), c.sizePx()));
-            }
+            variant = against.drawnBy(map);
             ms = map.medianMsPerFrame(Direction.fromSphericalDeg(TIMED_LIGHT_DEG, patch.phiIDeg()), c.sizePx(), 0,
                     TIMED_FRAMES);
             glInfo = map.info();
@@ -189,6 +178,6 @@ public final class BenchRunner {
         if (keepMaps.test(c)) {
             keptMaps.put(c.key(), variant);
         }
-        return new BenchResult(c, ms, MapError.pooled(reference, variant, exposures, c.sizePx()));
+        return new BenchResult(c, ms, against.error(variant));
     }
 }
