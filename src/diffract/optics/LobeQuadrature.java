@@ -25,7 +25,8 @@ import diffract.colour.HatFilteredSpectrum;
  *                       tristimulus values (D65 white = 1, before the gain factor): its weight table's bound over the
  *                       lobe's phases times the spectral weights' bound over its wavelengths times a bound on its
  *                       footprint average summed over its nodes (docs/filtering.md, "The march and the cutoff");
- *                       in [0, 1e-2], 0 keeps every lobe
+ *                       in [0, 1e-2], 0 keeps every lobe; a quadrature {@link #shownAt shown} at an exposure holds
+ *                       the cutoff scaled to it
  * @param weightTolerance the interpolation error of the tabulated lobe weights W_m(k w) ({@link LobeWeightTable}),
  *                       relative to a texel's largest weight, in [0, 1e-2]; 0 sums the coefficients at every
  *                       evaluation instead (CPU only: the shader reads the table)
@@ -34,10 +35,13 @@ import diffract.colour.HatFilteredSpectrum;
  *                       under the footprint are summed from {@link LobeSumTable} at wavelength nodes spaced so that a
  *                       lobe's passage through the footprint (the box's width and the lobe's) is seen by this many
  *                       nodes; in [0, 16], 0 marches over the lobes one by one everywhere
+ * @param askedCutoff    the cutoff as asked, for a picture shown at {@link #CUTOFF_EXPOSURE} or dimmer: the one that
+ *                       {@link #shownAt} scales, so that a quadrature shown at one exposure and then at another holds
+ *                       the second's cutoff, not both scalings compounded; at least {@code cutoff}
  */
 public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
                              double weightStepNm, int lightNodes, double cutoff, double weightTolerance,
-                             double sumNodesPerBox) {
+                             double sumNodesPerBox, double askedCutoff) {
     public static final double DEFAULT_CUTOFF = 3e-6;
     public static final double DEFAULT_WEIGHT_TOLERANCE = 1e-4;
     public static final double DEFAULT_SUM_NODES_PER_BOX = 2;
@@ -48,6 +52,14 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
                           double weightStepNm, int lightNodes) {
         this(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, DEFAULT_CUTOFF,
                 DEFAULT_WEIGHT_TOLERANCE);
+    }
+
+    /** As asked: shown at no exposure above {@link #CUTOFF_EXPOSURE}. */
+    public LobeQuadrature(double pairThreshold, double nodesPerSigma, double maxStepNm, double reachSigmas,
+                          double weightStepNm, int lightNodes, double cutoff, double weightTolerance,
+                          double sumNodesPerBox) {
+        this(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes, cutoff, weightTolerance,
+                sumNodesPerBox, cutoff);
     }
 
     /** With the default sums over texels for wide scans. */
@@ -68,20 +80,23 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
      * skipped lobe can show at {@link #CUTOFF_EXPOSURE}, so a brighter picture scales it down by
      * CUTOFF_EXPOSURE / exposure; a picture shown at that exposure or dimmer keeps it. A dim map shown at the
      * brightness of its brightest diffracted pixel (a point light's narrow orders, exposures of 10^4) would otherwise
-     * lose lobes that it shows at a tenth of white.
+     * lose lobes that it shows at a tenth of white. The scaling starts from the cutoff as asked, whatever exposure
+     * this quadrature was shown at before (a viewer's exposure keys, a scene drawn for its exposure and then shown at
+     * it): showing it at the same exposure twice changes nothing.
      */
     public LobeQuadrature shownAt(double exposure) {
-        if (!(exposure > CUTOFF_EXPOSURE) || cutoff == 0) {
+        double shown = exposure > CUTOFF_EXPOSURE ? askedCutoff * CUTOFF_EXPOSURE / exposure : askedCutoff;
+        if (shown == cutoff) {
             return this;
         }
         return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes,
-                cutoff * CUTOFF_EXPOSURE / exposure, weightTolerance, sumNodesPerBox);
+                shown, weightTolerance, sumNodesPerBox, askedCutoff);
     }
 
     /** The same knobs, with the texel sums at this many nodes per lobe's passage (0: never summed). */
     public LobeQuadrature withSumNodesPerBox(double nodes) {
         return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes,
-                cutoff, weightTolerance, nodes);
+                cutoff, weightTolerance, nodes, askedCutoff);
     }
 
     public LobeQuadrature {
@@ -109,6 +124,9 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
         }
         if (!(cutoff >= 0 && cutoff <= 1e-2)) {
             throw invalid("the cutoff must be in [0, 1e-2] of white, got " + cutoff);
+        }
+        if (!(askedCutoff >= cutoff && askedCutoff <= 1e-2)) {
+            throw invalid("the cutoff as asked must be in [cutoff, 1e-2] of white, got " + askedCutoff);
         }
         if (!(weightTolerance >= 0 && weightTolerance <= 1e-2)) {
             throw invalid("the weight tolerance must be in [0, 1e-2] (0: no table), got " + weightTolerance);

@@ -33,6 +33,26 @@ class ShownCutoffTest {
         assertEquals(q.cutoff() * LobeQuadrature.CUTOFF_EXPOSURE / 3000, s.shownAt(3000).lobes().cutoff(), 1e-20);
     }
 
+    /**
+     * Shown at one exposure and then at another, a quadrature holds the second's cutoff: a scene is drawn for its
+     * exposure and then shown at it, a viewer's exposure keys move it up and down.
+     */
+    @Test
+    void showingAgainScalesTheCutoffAsAskedNotTheShownOne() {
+        LobeQuadrature q = LobeQuadrature.DEFAULT;
+        double e = LobeQuadrature.CUTOFF_EXPOSURE;
+        LobeQuadrature shown = q.shownAt(45 * e);
+        assertEquals(q.cutoff() / 45, shown.cutoff(), 1e-20);
+        assertSame(shown, shown.shownAt(45 * e), "the same exposure again changes nothing");
+        assertEquals(q.cutoff() / 10, shown.shownAt(10 * e).cutoff(), 1e-20);
+        assertEquals(q.cutoff() / 1000, shown.shownAt(1000 * e).cutoff(), 1e-20);
+        assertEquals(q, shown.shownAt(1), "shown dim again: the cutoff as asked");
+        assertEquals(q.shownAt(10 * e), shown.shownAt(10 * e));
+        assertEquals(q.cutoff(), shown.askedCutoff());
+        BrdfSettings s = BrdfSettings.thesis(Variant.LOBES).shownAt(1353.76);
+        assertSame(s, s.shownAt(1353.76));
+    }
+
     /** The bench's case: blazed grating, 65 um, point light and point pixels, theta_i 45 degrees. */
     @Test
     void aDimMapShownAtItsOwnExposureKeepsItsLobes() {

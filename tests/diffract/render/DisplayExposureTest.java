@@ -13,7 +13,8 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 /**
  * A display material shown at a new exposure (the viewer's exposure keys): the tone map takes it, and the lobes
  * method's cutoff follows it as {@link LobeQuadrature#shownAt} scales it, so that a brighter picture keeps the dim
- * lobes it now shows; a method without a cutoff gets the tone map alone.
+ * lobes it now shows, from the cutoff as asked whatever exposure the settings were drawn for; a method without a
+ * cutoff gets the tone map alone.
  */
 class DisplayExposureTest {
     @Test
@@ -28,6 +29,20 @@ class DisplayExposureTest {
         assertEquals(base * LobeQuadrature.CUTOFF_EXPOSURE / 300, value(m, "lobeCutoff"), 1e-6 * base);
         DiffractionMaterials.setExposure(m, lobes, 3);
         assertEquals((float) base, value(m, "lobeCutoff"), "a dim picture keeps the cutoff");
+    }
+
+    /** A scene's settings are drawn for its exposure before the viewer shows them at it: the cutoff is scaled once. */
+    @Test
+    void settingsAlreadyShownAtTheExposureKeepTheirCutoff() {
+        BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES);
+        double exposure = 1353.76;
+        BrdfSettings drawn = lobes.shownAt(exposure);
+        Material m = new Material(null);
+        DiffractionMaterials.setExposure(m, drawn, exposure);
+        double once = LobeQuadrature.DEFAULT_CUTOFF * LobeQuadrature.CUTOFF_EXPOSURE / exposure;
+        assertEquals(once, value(m, "lobeCutoff"), 1e-6 * once);
+        DiffractionMaterials.setExposure(m, drawn, 3);
+        assertEquals((float) LobeQuadrature.DEFAULT_CUTOFF, value(m, "lobeCutoff"), "dim again: the cutoff as asked");
     }
 
     @Test
