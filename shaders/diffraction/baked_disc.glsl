@@ -183,7 +183,6 @@ vec3 discTableXyz(vec3 footprintTexels) {
     }
     if (edgeWeight > 0.0) {
         float samplesAcross = ceil(2.0 * d.reachV * texelsPerUv);
-        int rows = clamp(int(samplesAcross), DISC_MIN_ROWS, DISC_ROWS_MAX);
         vec3 sum = vec3(0.0);
         float width = 0.0;
 #ifdef BRDF_MAP
@@ -192,6 +191,7 @@ vec3 discTableXyz(vec3 footprintTexels) {
         if (mapPixelHalfWidthUv > 0.0 && d.minorAxis / spreadR < DISC_TABLE_BOX_BELOW) {
             float h = mapPixelHalfWidthUv;
             int nodes = clamp(int(ceil(2.0 * h * texelsPerUv / DISC_BOX_NODE_TEXELS)), 2, DISC_BOX_NODES_MAX);
+            int rows = clamp(int(samplesAcross), DISC_MIN_ROWS, DISC_ROWS_MAX);
             float spacing = 2.0 * d.reachV / float(rows);
             MipFootprint level0 = MipFootprint(0.0, vec2(0.0));
             for (int k = 0; k < DISC_ROWS_MAX; k++) {
@@ -204,10 +204,11 @@ vec3 discTableXyz(vec3 footprintTexels) {
 #endif
         {
             // a wide disc: rows 2^L samples apart read at level L or coarser, whose linear interpolant the midpoint
-            // rule across v sums exactly, so that a disc takes at most about DISC_FINE_ROWS_MAX rows
+            // rule across v sums exactly, so that a disc takes at most about DISC_FINE_ROWS_MAX rows; its own loop
+            // passes nodes = 0 as a constant (one loop for both would make the box's branch a runtime one)
             MipFootprint m = mipFootprint(footprintTexels);
             float coarsen = exp2(max(ceil(log2(samplesAcross / float(DISC_FINE_ROWS_MAX))), 0.0));
-            rows = clamp(int(ceil(samplesAcross / coarsen)), DISC_MIN_ROWS, DISC_ROWS_MAX);
+            int rows = clamp(int(ceil(samplesAcross / coarsen)), DISC_MIN_ROWS, DISC_ROWS_MAX);
             m.lod = max(m.lod, log2(coarsen));
             float spacing = 2.0 * d.reachV / float(rows);
             for (int k = 0; k < DISC_ROWS_MAX; k++) {

@@ -6,7 +6,6 @@ import diffract.optics.Direction;
 import diffract.render.GpuBrdfMap;
 
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 
 /**
@@ -22,7 +21,7 @@ public record ReferenceSet(List<Direction> lights, int sizePx, List<float[]> xyz
 
     public ReferenceSet {
         lights = List.copyOf(lights);
-        xyz = Collections.unmodifiableList(new ArrayList<>(xyz));
+        xyz = List.copyOf(xyz);
         exposures = List.copyOf(exposures);
     }
 
