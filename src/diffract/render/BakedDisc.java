@@ -2,6 +2,7 @@ package diffract.render;
 
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
+import diffract.optics.DiscFootprint;
 
 /**
  * The baked table of the lobes method under a disc light ({@code baked_disc.glsl}, docs/filtering.md section 8): the
@@ -15,8 +16,8 @@ import diffract.optics.BrdfSettings;
  * ratio and w of the piece's centre direction. Rows are a table sample apart, {@link #MIN_ROWS} to {@link #ROWS_MAX}
  * of them, a power of two samples apart beyond {@link #FINE_ROWS_MAX}; pieces are at most {@link #PIECE_WIDTH_DEG}
  * wide, at most {@link #PIECES_MAX} a row. A disc narrow next to
- * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #GAUSSIAN_BELOW} and
- * {@link #EDGE_ABOVE}. Each row is read over the footprint's Gaussian (a mip level), except in a BRDF map under a disc
+ * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #gaussianBelow} and
+ * {@link #edgeAbove} (a map pixel's box and a surface's Gaussian footprint blend differently). Each row is read over the footprint's Gaussian (a mip level), except in a BRDF map under a disc
  * narrower than {@link #BOX_BELOW} footprint spreads: there the rows are averaged over the map pixel's box, by the
  * midpoint rule on nodes at most {@link #BOX_NODE_TEXELS} samples apart along u and v, read at level 0 where the
  * running sums plus half a sample of the table give the integral up to a cell's edge, exact between the edges
@@ -32,6 +33,8 @@ import diffract.optics.BrdfSettings;
  *   <tr><td>{@code bakedLayers}</td><td>the table, mip-mapped per w slice (for the Gaussian of a narrow disc and
  *   for lights other than the disc)</td></tr>
  *   <tr><td>{@code bakedRowSums}</td><td>the running sums, RGB32F, mip-mapped per w slice</td></tr>
+ *   <tr><td>{@code DISC_TABLE_GAUSSIAN_BELOW}, {@code DISC_TABLE_EDGE_ABOVE}</td>
+ *   <td>{@link #gaussianBelow}, {@link #edgeAbove} of the program's pixels (a BRDF map's or a surface's)</td></tr>
  *   <tr><td>{@code DISC_TABLE_BOX_BELOW}, {@code DISC_BOX_NODES_MAX}, {@code DISC_BOX_NODE_TEXELS}</td>
  *   <td>{@link #BOX_BELOW}, {@link #BOX_NODES_MAX}, {@link #BOX_NODE_TEXELS}</td></tr>
  *   <tr><td>{@code lightHalfAngleRad}</td><td>the disc's half-angle R</td></tr>
@@ -55,14 +58,14 @@ public final class BakedDisc {
     /** The widest piece, in degrees of the disc. */
     public static final double PIECE_WIDTH_DEG = 5;
     /**
-     * A disc whose minor semi-axis b is below this many of the footprint's spreads s (along b) is the Gaussian of its
-     * covariance; see {@link #EDGE_ABOVE}.
+     * In a BRDF map, a disc whose minor semi-axis b is below this many of the footprint's spreads s (along b) is the
+     * Gaussian of its covariance; see {@link #EDGE_ABOVE}.
      */
     public static final double GAUSSIAN_BELOW = 0.5;
     /**
-     * Above this b / s the disc is cut into rows; between, the two are blended. Lower than the lobes method's
-     * ({@code DiscFootprint}), whose Gaussian takes a map pixel's box exactly: the table's Gaussian of the disc and
-     * the box together spreads a disc as wide as a pixel over its neighbours, where the rows keep its edge
+     * In a BRDF map, above this b / s the disc is cut into rows; between, the two are blended. Lower than the lobes
+     * method's ({@code DiscFootprint}), whose Gaussian takes a map pixel's box exactly: the table's Gaussian of the
+     * disc and the box together spreads a disc as wide as a pixel over its neighbours, where the rows keep its edge
      * (docs/bench/disc-lobes.md).
      */
     public static final double EDGE_ABOVE = 1.5;
@@ -84,6 +87,22 @@ public final class BakedDisc {
     public static final double BOX_NODE_TEXELS = 2;
 
     private BakedDisc() {
+    }
+
+    /**
+     * The b / s below which the disc is its Gaussian, for a pixel of a BRDF map (a box) or of a surface. A surface's
+     * pixel footprint is a Gaussian, which the lobes method takes too: there the table blends as {@code DiscFootprint}
+     * does, from 1 to 3, and draws the viewer's sphere under the sun at 800 x 600 closer to the lobes method
+     * (CIEDE2000 0.26 against 0.41 blended from 0.5 to 1.5) in 100 ms a frame instead of 166 on llvmpipe
+     * (docs/filtering.md, section 8).
+     */
+    public static double gaussianBelow(boolean mapPixel) {
+        return mapPixel ? GAUSSIAN_BELOW : DiscFootprint.GAUSSIAN_BELOW;
+    }
+
+    /** The b / s above which the disc is cut into rows, for a pixel of a BRDF map or of a surface (as above). */
+    public static double edgeAbove(boolean mapPixel) {
+        return mapPixel ? EDGE_ABOVE : DiscFootprint.EDGE_ABOVE;
     }
 
     /** Whether a table drawn with {@code settings} is looked up under their disc (a filtered table, a disc light). */

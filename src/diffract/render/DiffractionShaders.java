@@ -232,8 +232,9 @@ public final class DiffractionShaders {
                 defines.put("DISC_MIN_ROWS", Integer.toString(BakedDisc.MIN_ROWS));
                 defines.put("DISC_FINE_ROWS_MAX", Integer.toString(BakedDisc.FINE_ROWS_MAX));
                 defines.put("DISC_PIECES_MAX", Integer.toString(BakedDisc.PIECES_MAX));
-                defines.put("DISC_TABLE_GAUSSIAN_BELOW", Float.toString((float) BakedDisc.GAUSSIAN_BELOW));
-                defines.put("DISC_TABLE_EDGE_ABOVE", Float.toString((float) BakedDisc.EDGE_ABOVE));
+                boolean mapPixel = target == Target.BRDF_MAP;
+                defines.put("DISC_TABLE_GAUSSIAN_BELOW", Float.toString((float) BakedDisc.gaussianBelow(mapPixel)));
+                defines.put("DISC_TABLE_EDGE_ABOVE", Float.toString((float) BakedDisc.edgeAbove(mapPixel)));
                 defines.put("DISC_TABLE_BOX_BELOW", Float.toString((float) BakedDisc.BOX_BELOW));
                 defines.put("DISC_BOX_NODES_MAX", Integer.toString(BakedDisc.BOX_NODES_MAX));
                 defines.put("DISC_BOX_NODE_TEXELS", Float.toString((float) BakedDisc.BOX_NODE_TEXELS));

@@ -78,4 +78,30 @@ class GpuSuiteTest {
         BufferedImage glossy = ImageIO.read(dir.resolve("scene-glossy.png").toFile());
         assertEquals(48, glossy.getWidth());
     }
+
+    /**
+     * The viewer's default view (the sphere under the sun's disc) at 800 x 600: the lobes method's baked table against
+     * the lobes method itself. A surface's pixel blends the disc's Gaussian into its rows as the lobes method does
+     * (BakedDisc.gaussianBelow): mean 0.26, p95 1.27 (target/test-reports/GpuSuiteTest.txt); blended as a BRDF map's
+     * box is, 0.41 and 1.88.
+     */
+    @Test
+    @Tag("gl")
+    @Tag(GlTestSupport.LONG_TAG)
+    void theViewersSphereDrawsTheTableCloseToTheLobesMethod(@TempDir Path dir) throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        Object[] result = CliTest.run("bench", "--gpu-suite", "--suite-scenes-only", "--suite-size", "800x600",
+                "--variants", "baked", "--suite-scene", "assets/scenes/viewer-sphere.json", "-o", dir.toString());
+        assertEquals(0, result[0], (String) result[2]);
+        List<String> lines = Files.readAllLines(dir.resolve("gpu-suite.csv"));
+        List<String> header = List.of(lines.get(0).split(","));
+        String row = lines.stream().filter(l -> l.startsWith("scene,scene settings,")).findFirst().orElseThrow();
+        String[] f = row.split(",", -1);
+        double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
+        double p95 = Double.parseDouble(f[header.indexOf("deltaE_p95")]);
+        diffract.util.TestReport.line(GpuSuiteTest.class, "viewer-sphere.json, baked against lobes at 800 x 600: "
+                + "CIEDE2000 mean " + mean + ", p95 " + p95);
+        assertTrue(Integer.parseInt(f[header.indexOf("compared_pixels")]) > 100_000, row);
+        assertTrue(mean <= 0.33 && p95 <= 1.6, row);
+    }
 }
