@@ -32,6 +32,25 @@ class GpuSuiteTest {
         assertFalse(GpuSuite.isSoftware(nvidia));
     }
 
+    /**
+     * The map rows' light: the scene's up to the sun's disc, the sun's disc beyond (a CPU reference map under the
+     * staged scene's 15-degree key light would take days), the profile kept.
+     */
+    @Test
+    void theMapsTakeTheScenesLightUpToTheSunsDisc() {
+        diffract.optics.BrdfSettings staged = diffract.scene.SceneFile.load(Path.of("assets/scenes/snake-elaphe.json"))
+                .material().settings();
+        assertEquals(15, staged.illumination().light().angularDiameterDeg());
+        diffract.optics.BrdfSettings maps = GpuSuite.mapSettings(staged);
+        assertEquals(diffract.optics.LightSource.SUN_DEG, maps.illumination().light().angularDiameterDeg());
+        assertEquals(staged.illumination().light().profile(), maps.illumination().light().profile());
+        assertEquals(staged.with(b -> b.lightSizeDeg(diffract.optics.LightSource.SUN_DEG)), maps);
+        for (double deg : new double[] {0, 0.3, diffract.optics.LightSource.SUN_DEG}) {
+            diffract.optics.BrdfSettings narrow = staged.with(b -> b.lightSizeDeg(deg));
+            assertEquals(narrow, GpuSuite.mapSettings(narrow), deg + " degrees");
+        }
+    }
+
     @Test
     @Tag("gl")
     @Tag(GlTestSupport.LONG_TAG)
