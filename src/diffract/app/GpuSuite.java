@@ -240,9 +240,10 @@ final class GpuSuite {
         int mapSize = size[1];
         BrdfSettings mapBase = mapSettings(base.settings());
         if (mapBase != base.settings()) {
-            reporter.info("gpu suite: the BRDF maps under the sun's " + number(LightSource.SUN_DEG) + "-degree disc, not "
-                    + "the scene's " + number(base.settings().illumination().light().angularDiameterDeg())
-                    + "-degree light: the CPU reference of a map under a disc that wide takes hours");
+            double sceneDeg = base.settings().illumination().light().angularDiameterDeg();
+            reporter.info("gpu suite: the BRDF maps under the sun's " + number(LightSource.SUN_DEG) + "-degree disc, "
+                    + "not the scene's " + number(sceneDeg) + "-degree light: the CPU reference of a map under a "
+                    + "disc that wide takes hours");
         }
         for (String[] name : names(variants)) {
             BrdfSettings settings = settingsOf(name, mapBase);

@@ -17,7 +17,8 @@ import diffract.optics.DiscFootprint;
  * of them, a power of two samples apart beyond {@link #FINE_ROWS_MAX}; pieces are at most {@link #PIECE_WIDTH_DEG}
  * wide, at most {@link #PIECES_MAX} a row. A disc narrow next to
  * the pixel's footprint is the Gaussian of its covariance instead, blended between {@link #gaussianBelow} and
- * {@link #edgeAbove} (a map pixel's box and a surface's Gaussian footprint blend differently). Each row is read over the footprint's Gaussian (a mip level), except in a BRDF map under a disc
+ * {@link #edgeAbove} (a map pixel's box and a surface's Gaussian footprint blend differently). Each row is read over
+ * the footprint's Gaussian (a mip level), except in a BRDF map under a disc
  * narrower than {@link #BOX_BELOW} footprint spreads: there the rows are averaged over the map pixel's box, by the
  * midpoint rule on nodes at most {@link #BOX_NODE_TEXELS} samples apart along u and v, read at level 0 where the
  * running sums plus half a sample of the table give the integral up to a cell's edge, exact between the edges
@@ -93,7 +94,7 @@ public final class BakedDisc {
      * The b / s below which the disc is its Gaussian, for a pixel of a BRDF map (a box) or of a surface. A surface's
      * pixel footprint is a Gaussian, which the lobes method takes too: there the table blends as {@code DiscFootprint}
      * does, from 1 to 3, and draws the viewer's sphere under the sun at 800 x 600 closer to the lobes method
-     * (CIEDE2000 0.26 against 0.41 blended from 0.5 to 1.5) in 100 ms a frame instead of 166 on llvmpipe
+     * (CIEDE2000 0.26 against 0.41 blended from 0.5 to 1.5) in about 100 ms a frame instead of 166 on llvmpipe
      * (docs/filtering.md, section 8).
      */
     public static double gaussianBelow(boolean mapPixel) {

@@ -2,6 +2,10 @@ package diffract.app;
 
 import diffract.jrtr.GLInfo;
 import diffract.jrtr.GlTestSupport;
+import diffract.optics.BrdfSettings;
+import diffract.optics.LightSource;
+import diffract.scene.SceneFile;
+import diffract.util.TestReport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -38,15 +42,15 @@ class GpuSuiteTest {
      */
     @Test
     void theMapsTakeTheScenesLightUpToTheSunsDisc() {
-        diffract.optics.BrdfSettings staged = diffract.scene.SceneFile.load(Path.of("assets/scenes/snake-elaphe.json"))
+        BrdfSettings staged = SceneFile.load(Path.of("assets/scenes/snake-elaphe.json"))
                 .material().settings();
         assertEquals(15, staged.illumination().light().angularDiameterDeg());
-        diffract.optics.BrdfSettings maps = GpuSuite.mapSettings(staged);
-        assertEquals(diffract.optics.LightSource.SUN_DEG, maps.illumination().light().angularDiameterDeg());
+        BrdfSettings maps = GpuSuite.mapSettings(staged);
+        assertEquals(LightSource.SUN_DEG, maps.illumination().light().angularDiameterDeg());
         assertEquals(staged.illumination().light().profile(), maps.illumination().light().profile());
-        assertEquals(staged.with(b -> b.lightSizeDeg(diffract.optics.LightSource.SUN_DEG)), maps);
-        for (double deg : new double[] {0, 0.3, diffract.optics.LightSource.SUN_DEG}) {
-            diffract.optics.BrdfSettings narrow = staged.with(b -> b.lightSizeDeg(deg));
+        assertEquals(staged.with(b -> b.lightSizeDeg(LightSource.SUN_DEG)), maps);
+        for (double deg : new double[] {0, 0.3, LightSource.SUN_DEG}) {
+            BrdfSettings narrow = staged.with(b -> b.lightSizeDeg(deg));
             assertEquals(narrow, GpuSuite.mapSettings(narrow), deg + " degrees");
         }
     }
@@ -118,7 +122,7 @@ class GpuSuiteTest {
         String[] f = row.split(",", -1);
         double mean = Double.parseDouble(f[header.indexOf("deltaE_mean")]);
         double p95 = Double.parseDouble(f[header.indexOf("deltaE_p95")]);
-        diffract.util.TestReport.line(GpuSuiteTest.class, "viewer-sphere.json, baked against lobes at 800 x 600: "
+        TestReport.line(GpuSuiteTest.class, "viewer-sphere.json, baked against lobes at 800 x 600: "
                 + "CIEDE2000 mean " + mean + ", p95 " + p95);
         assertTrue(Integer.parseInt(f[header.indexOf("compared_pixels")]) > 100_000, row);
         assertTrue(mean <= 0.33 && p95 <= 1.6, row);

@@ -71,7 +71,7 @@ class DiscLightTest {
     /** The bar for the reference against independent sampling: mean CIEDE2000 over the lit pixels. */
     static final double MAX_LIT_MEAN_DELTA_E = 0.2;
 
-    /** Minutes on two cores (brute force takes 512 or 640 directions per pixel): a long test, run by .ci/run last. */
+    /** Minutes on two cores (512 or 640 brute-force directions a pixel): a long test, run by .ci/run after the rest. */
     @ParameterizedTest
     @ValueSource(doubles = {2, 10, 20})
     @org.junit.jupiter.api.Tag(diffract.jrtr.GlTestSupport.LONG_TAG)
