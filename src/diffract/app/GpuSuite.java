@@ -239,7 +239,8 @@ final class GpuSuite {
         ReferenceMaps references = new ReferenceMaps(DiskCache.user(), reporter);
         int mapSize = size[1];
         BrdfSettings mapBase = mapSettings(base.settings());
-        if (mapBase != base.settings()) {
+        boolean mapsUnderTheSun = mapBase != base.settings();
+        if (mapsUnderTheSun) {
             double sceneDeg = base.settings().illumination().light().angularDiameterDeg();
             reporter.info("gpu suite: the BRDF maps under the sun's " + number(LightSource.SUN_DEG) + "-degree disc, "
                     + "not the scene's " + number(sceneDeg) + "-degree light: the CPU reference of a map under a "
@@ -258,7 +259,7 @@ final class GpuSuite {
             }
             MapError error = against.error(maps);
             rows.add(log(new Row("brdf map", name[0], settings, mapSize, mapSize, ms, errorSizePx, error.mean(),
-                    error.p95(), error.litPixels(), settings.variant().filtersLight() && mapBase != base.settings()
+                    error.p95(), error.litPixels(), settings.variant().filtersLight() && mapsUnderTheSun
                     ? "cpu exact 1 nm under the sun's disc" : "cpu exact 1 nm")));
         }
         return written(rows, gl);

@@ -217,6 +217,7 @@ public final class DiffractionShaders {
                                                   boolean monochromatic, boolean pigmentation) {
         Map<String, String> defines = defines(settings, textures.highestOrder(), textures.windowRadii(),
                 textures.phaseCentres(), target, monochromatic, pigmentation);
+        boolean mapPixel = target == Target.BRDF_MAP;
         if (textures.normalisedTerms()) {
             // the term lookup de-normalises 8-bit [0, 1] terms with the per-term extrema (NormalisedTerms)
             defines.put("TERMS_UNORM8", "1");
@@ -232,7 +233,6 @@ public final class DiffractionShaders {
                 defines.put("DISC_MIN_ROWS", Integer.toString(BakedDisc.MIN_ROWS));
                 defines.put("DISC_FINE_ROWS_MAX", Integer.toString(BakedDisc.FINE_ROWS_MAX));
                 defines.put("DISC_PIECES_MAX", Integer.toString(BakedDisc.PIECES_MAX));
-                boolean mapPixel = target == Target.BRDF_MAP;
                 defines.put("DISC_TABLE_GAUSSIAN_BELOW", Float.toString((float) BakedDisc.gaussianBelow(mapPixel)));
                 defines.put("DISC_TABLE_EDGE_ABOVE", Float.toString((float) BakedDisc.edgeAbove(mapPixel)));
                 defines.put("DISC_TABLE_BOX_BELOW", Float.toString((float) BakedDisc.BOX_BELOW));
@@ -242,7 +242,7 @@ public final class DiffractionShaders {
                         BakedDisc.PIECE_WIDTH_DEG))));
             }
         }
-        GpuMethods.of(settings.variant()).addDefines(defines, settings, target == Target.BRDF_MAP);
+        GpuMethods.of(settings.variant()).addDefines(defines, settings, mapPixel);
         return defines;
     }
 
