@@ -49,6 +49,16 @@ float relativeBrdf(vec3 wi, vec3 wr, float lambdaNm) {
 
 out vec4 fragColor;
 
+// A fragment's alpha: 0 where the GL ended the lobes shader's loops before their work was done and lobes were left
+// out (lobes_spectrum.glsl), 1 elsewhere; GpuBrdfMap, BakedTable and ShortPixels count the pixels of alpha 0.
+float leftOutAlpha() {
+#ifdef SPECTRUM_REPORTS_TRUNCATION
+    return spectrumTruncated() ? 0.0 : 1.0;
+#else
+    return 1.0;
+#endif
+}
+
 #ifdef BRDF_MAP
 // ---- BRDF maps (BrdfMap): linear XYZ, or the monochromatic relative BRDF in .r, into an RGBA32F target.
 uniform vec3 omegaI;      // towards the light, unit, tangent frame
@@ -87,14 +97,11 @@ void main() {
 #ifdef MONOCHROMATIC
     fragColor = vec4(relativeBrdf(omegaI, wr, lambdaNm), 0.0, 0.0, 1.0);
 #elif defined(DISPLAY_SRGB)
-    fragColor = vec4(frameOutput(max(linearSrgbFromXyz(exposure * diffractionXyz(omegaI, wr)), vec3(0.0))), 1.0);
+    vec3 xyz = diffractionXyz(omegaI, wr);
+    fragColor = vec4(frameOutput(max(linearSrgbFromXyz(exposure * xyz), vec3(0.0))), leftOutAlpha());
 #else
     vec3 xyz = diffractionXyz(omegaI, wr);
-#ifdef SPECTRUM_REPORTS_TRUNCATION
-    fragColor = vec4(xyz, spectrumTruncated() ? 0.0 : 1.0); // alpha 0: lobes left out (GpuBrdfMap counts them)
-#else
-    fragColor = vec4(xyz, 1.0);
-#endif
+    fragColor = vec4(xyz, leftOutAlpha());
 #endif
 }
 #endif
@@ -141,7 +148,7 @@ void main() {
 #endif
 #ifdef STAGE
     vec3 staged = toneMap(stagedSurfaceLinear());
-    fragColor = vec4(frameOutput(staged), 1.0);
+    fragColor = vec4(frameOutput(staged), leftOutAlpha());
     return;
 #endif
     vec3 wi = safeNormalize(omegaITangent);
@@ -157,7 +164,7 @@ void main() {
     float fresnel = surfaceFresnel(wi, wr, refractiveIndex);
     linear = blendPigmentation(linear, pigment, fresnel, wi.z, diffuseWeight);
 #endif
-    fragColor = vec4(frameOutput(linear), 1.0);
+    fragColor = vec4(frameOutput(linear), leftOutAlpha());
 }
 #endif
 

@@ -28,6 +28,7 @@ import diffract.precompute.TermFolders;
 import diffract.precompute.ThesisFormat;
 import diffract.render.DiffractionShaders;
 import diffract.render.GpuBrdfMap;
+import diffract.render.ShortPixels;
 import diffract.scene.LightDirection;
 import diffract.util.ImageFiles;
 import diffract.util.OpenExr;
@@ -445,11 +446,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             float[] values = light.lambdaNm != null ? map.monochromatic(wi, light.lambdaNm, picture.size)
                     : map.xyz(wi, picture.size);
             if (map.truncatedPixels() > 0) {
-                reporter.warn(String.format(Locale.ROOT, "%d of the map's pixels reach more lobes than %s let one "
-                        + "fragment sum (its loops were ended early; Mesa's llvmpipe ends them after 65535 iterations): "
-                        + "they miss lobes and are too dark; draw the map with --engine cpu, at a larger --size "
-                        + "(smaller pixels reach fewer lobes), or with --variant baked", map.truncatedPixels(),
-                        map.info().renderer()));
+                reporter.warn(ShortPixels.warning(map.truncatedPixels(), (long) picture.size * picture.size,
+                        "pixels of the map", map.info().renderer(), "draw the map with --engine cpu, at a larger "
+                        + "--size (smaller pixels reach fewer lobes), or with --variant baked"));
             }
             if (engines.time) {
                 double ms = light.lambdaNm != null ? map.medianMsPerFrameMonochromatic(wi, light.lambdaNm, picture.size, 2, 10)

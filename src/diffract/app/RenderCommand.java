@@ -2,9 +2,11 @@ package diffract.app;
 
 import diffract.jrtr.OffscreenTarget;
 import diffract.render.FrameOutput;
+import diffract.render.ShortPixels;
 import diffract.scene.DisplayMode;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;
+import diffract.util.ImageFiles;
 import diffract.util.OpenExr;
 import diffract.util.OutputPaths;
 import diffract.util.Reporter;
@@ -59,6 +61,10 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
     @ArgGroup(exclusive = false, validate = false, heading = "Turntable:%n")
     TurntableOptions turntable = new TurntableOptions();
 
+    /** What draws a scene's pixels whole where the GL ended the lobes shader's loops early ({@link ShortPixels}). */
+    static final String SHORT_PIXELS_REMEDY = "draw it on a GPU, with --variant baked, or with a coarser "
+            + "--lobe-quadrature (docs/filtering.md)";
+
     /** Many frames instead of one: the camera or the light goes once round the scene. */
     static final class TurntableOptions {
         @Option(names = "--turntable", paramLabel = "FRAMES",
@@ -112,21 +118,28 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
         ViewerModel model = ViewerModel.load(setup, reporter);
         model.bakeIfNeeded(reporter);
         ViewerRenderer renderer = new ViewerRenderer(model, linear ? FrameOutput.LINEAR : FrameOutput.DISPLAY);
+        ShortPixels shortPixels = new ShortPixels();
         try (OffscreenTarget target = new OffscreenTarget(renderer)) {
             if (tiles.tile != null) {
-                writePiece(target, renderer, model, setup, frames, image, start, reporter);
-                return 0;
-            }
-            if (frames != null) {
+                writePiece(target, renderer, model, setup, frames, image, start, shortPixels, reporter);
+            } else if (frames != null) {
                 Turntable.render(target, renderer, model, frames, turntable.orbitLight, output, image,
-                        turntable.frameMs, reporter);
-            } else if (linear) {
-                OpenExr.write(output, target.renderRgb(image.width(), image.height()), image.width(), image.height(),
-                        3, exrHalf ? OpenExr.Precision.HALF : OpenExr.Precision.FLOAT,
-                        "diffract render: linear sRGB times the exposure, not tone mapped, not clipped");
+                        turntable.frameMs, shortPixels, reporter);
             } else {
-                target.writePng(output, image.width(), image.height());
+                float[] rgb = shortPixels.rgbOf(target.renderRgba(image.width(), image.height()));
+                if (linear) {
+                    OpenExr.write(output, rgb, image.width(), image.height(), 3,
+                            exrHalf ? OpenExr.Precision.HALF : OpenExr.Precision.FLOAT,
+                            "diffract render: linear sRGB times the exposure, not tone mapped, not clipped");
+                } else {
+                    ImageFiles.writePng(output, rgb, image.width(), image.height(), 3);
+                }
             }
+            shortPixels.warnIfAny(reporter, frames == null ? "pixels of the frame" : "pixels of the frames",
+                    target.info().renderer(), SHORT_PIXELS_REMEDY);
+        }
+        if (tiles.tile != null) {
+            return 0;
         }
         System.out.printf(Locale.ROOT, "wrote %s (%s%dx%d, %s, %s N=%d, lambda step %s nm) in %.1f s%n", output,
                 frames == null ? "" : frames + " frames of ", image.width(), image.height(),
@@ -185,14 +198,15 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
 
     /** With --tile: the piece's frames, as linear floats, written with their manifest into --pieces DIR. */
     private void writePiece(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, SceneSetup setup,
-                            int frames, Scene.ImageSize image, long startNanos, Reporter reporter) throws IOException {
+                            int frames, Scene.ImageSize image, long startNanos, ShortPixels shortPixels,
+                            Reporter reporter) throws IOException {
         TileOptions.Tile tile = tiles.tile;
         var band = diffract.optics.MapBand.of(tile.index(), tile.count(), frames);
         int perFrame = image.width() * image.height() * 3;
         float[] floats = new float[band.rows() * perFrame];
         long work = System.nanoTime();
         Turntable.render(target, renderer, model, frames, turntable.orbitLight, band.fromRow(), band.toRow(), image,
-                reporter, (k, rgb) -> System.arraycopy(rgb, 0, floats, (k - band.fromRow()) * perFrame, perFrame));
+                shortPixels, reporter, (k, rgb) -> System.arraycopy(rgb, 0, floats, (k - band.fromRow()) * perFrame, perFrame));
         long done = System.nanoTime();
         Map<String, String> settings = new LinkedHashMap<>();
         settings.put("version", diffract.util.Version.VERSION);

@@ -1,6 +1,7 @@
 package diffract.app;
 
 import diffract.jrtr.OffscreenTarget;
+import diffract.render.ShortPixels;
 import diffract.scene.OrbitCamera;
 import diffract.scene.Scene;
 import diffract.util.AnimatedGif;
@@ -26,11 +27,11 @@ final class Turntable {
 
     /** All FRAMES frames into {@code output}: a GIF, or the PNG sequence written frame by frame as it goes. */
     static void render(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, int frames,
-                       boolean orbitLight, Path output, Scene.ImageSize size, int frameMs, Reporter reporter)
-            throws IOException {
+                       boolean orbitLight, Path output, Scene.ImageSize size, int frameMs, ShortPixels shortPixels,
+                       Reporter reporter) throws IOException {
         boolean gif = isGif(output);
         List<float[]> pictures = new ArrayList<>();
-        render(target, renderer, model, frames, orbitLight, 0, frames, size, reporter, (k, rgb) -> {
+        render(target, renderer, model, frames, orbitLight, 0, frames, size, shortPixels, reporter, (k, rgb) -> {
             if (gif) {
                 pictures.add(rgb);
             } else {
@@ -50,11 +51,12 @@ final class Turntable {
 
     /**
      * Frames {@code from} to {@code to - 1} of FRAMES: frame k at 360 k / FRAMES degrees from the model's own view,
-     * so that any run of frames is drawn as the whole turntable draws it.
+     * so that any run of frames is drawn as the whole turntable draws it; {@code shortPixels} counts their pixels left
+     * short.
      */
     static void render(OffscreenTarget target, ViewerRenderer renderer, ViewerModel model, int frames,
-                       boolean orbitLight, int from, int to, Scene.ImageSize size, Reporter reporter, FrameSink sink)
-            throws IOException {
+                       boolean orbitLight, int from, int to, Scene.ImageSize size, ShortPixels shortPixels,
+                       Reporter reporter, FrameSink sink) throws IOException {
         OrbitCamera start = model.state().view().camera();
         for (int k = from; k < to; k++) {
             double degrees = 360.0 * k / frames;
@@ -63,7 +65,7 @@ final class Turntable {
             } else {
                 model.update(s -> s.withView(s.view().withCamera(start.orbitedBy(degrees, 0))));
             }
-            sink.accept(k, target.renderRgb(size.width(), size.height()));
+            sink.accept(k, shortPixels.rgbOf(target.renderRgba(size.width(), size.height())));
             reporter.progress("turntable", (k - from + 1.0) / (to - from));
         }
     }

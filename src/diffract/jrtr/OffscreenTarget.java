@@ -133,7 +133,8 @@ public final class OffscreenTarget implements AutoCloseable {
         framebuffer.bind(gl);
     }
 
-    static float[] dropAlpha(float[] rgba) {
+    /** The RGB of {@code rgba}, 4 floats a pixel, in its order. */
+    public static float[] dropAlpha(float[] rgba) {
         float[] rgb = new float[rgba.length / 4 * 3];
         for (int i = 0, j = 0; i < rgba.length; i += 4, j += 3) {
             rgb[j] = rgba[i];

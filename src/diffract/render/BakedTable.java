@@ -110,10 +110,8 @@ public final class BakedTable {
         }
         double seconds = (System.nanoTime() - start) * 1e-9;
         if (shortCells > 0) {
-            reporter.warn(String.format(Locale.ROOT, "%d of the table's %d cells reach more lobes than this GL lets a "
-                    + "fragment sum (its loops were ended early; Mesa's llvmpipe ends them after 65535 iterations): "
-                    + "they miss lobes and are too dark; a patch of fewer texels, or a GPU, bakes them whole",
-                    shortCells, grid.texels()));
+            reporter.warn(ShortPixels.warning(shortCells, grid.texels(), "cells of the table", "this GL",
+                    "a patch of fewer texels, or a GPU, bakes them whole"));
         }
         BakedTable table = new BakedTable(grid, rgb, precision, seconds, tabulated, shortCells);
         reporter.info(String.format(Locale.ROOT, "baked %s in %.1f s", table.describe(), seconds));
