@@ -158,21 +158,8 @@ final class OptionTypes {
      * quadrature checks the values when applied.
      */
     record LobeQuadratureChange(java.util.Map<String, Double> values) {
-        static final List<String> KEYS = List.of("pairThreshold", "nodesPerSigma", "maxStepNm", "reachSigmas",
-                "weightStepNm", "lightNodes", "cutoff", "weightTolerance", "sumNodesPerBox");
-
         LobeQuadrature applyTo(LobeQuadrature q) {
-            java.util.function.Function<String, Double> v = values::get;
-            return new LobeQuadrature(or(v.apply("pairThreshold"), q.pairThreshold()),
-                    or(v.apply("nodesPerSigma"), q.nodesPerSigma()), or(v.apply("maxStepNm"), q.maxStepNm()),
-                    or(v.apply("reachSigmas"), q.reachSigmas()), or(v.apply("weightStepNm"), q.weightStepNm()),
-                    values.containsKey("lightNodes") ? (int) Math.round(values.get("lightNodes")) : q.lightNodes(),
-                    or(v.apply("cutoff"), q.cutoff()), or(v.apply("weightTolerance"), q.weightTolerance()),
-                    or(v.apply("sumNodesPerBox"), q.sumNodesPerBox()));
-        }
-
-        private static double or(Double given, double fallback) {
-            return given != null ? given : fallback;
+            return q.withKnobs(values);
         }
 
         static final class Converter implements ITypeConverter<LobeQuadratureChange> {
@@ -182,8 +169,9 @@ final class OptionTypes {
                 for (String part : text.split(",", -1)) {
                     String[] kv = part.split("=", -1);
                     String key = kv[0].trim();
-                    if (kv.length != 2 || !KEYS.contains(key)) {
-                        throw new TypeConversionException("must be K=V pairs with K one of " + String.join(", ", KEYS)
+                    if (kv.length != 2 || !LobeQuadrature.KNOBS.contains(key)) {
+                        throw new TypeConversionException("must be K=V pairs with K one of "
+                                + String.join(", ", LobeQuadrature.KNOBS)
                                 + ", got '" + part.trim() + "'");
                     }
                     try {

@@ -66,7 +66,7 @@ public final class FloatFramebuffer {
     }
 
     /** RGBA floats, rows top-down (OpenGL's row 0 is the bottom one, images start at the top). */
-    float[] readRgbaTopDown(GL3 gl) {
+    public float[] readRgbaTopDown(GL3 gl) {
         bind(gl);
         float[] topDown = readBoundRgbaTopDown(gl, width, height);
         GLErrors.check(gl, "reading back the float framebuffer");

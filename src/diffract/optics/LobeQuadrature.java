@@ -2,6 +2,10 @@ package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
 
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
 /**
  * The accuracy knobs of the lobes method ({@link LobeSpectrum}, {@code lobes.frag}), a group of {@link BrdfSettings};
  * docs/filtering.md measures each. Every knob has one range, checked here ({@link Quantity#LOBE_QUADRATURE}).
@@ -91,6 +95,49 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
         }
         return new LobeQuadrature(pairThreshold, nodesPerSigma, maxStepNm, reachSigmas, weightStepNm, lightNodes,
                 shown, weightTolerance, sumNodesPerBox, askedCutoff);
+    }
+
+    /**
+     * The knobs by name, as the command line ({@code --lobe-quadrature K=V}) and scene files ({@code lobeQuadrature})
+     * give them: the record's components, the cutoff as asked.
+     */
+    public static final List<String> KNOBS = List.of("pairThreshold", "nodesPerSigma", "maxStepNm", "reachSigmas",
+            "weightStepNm", "lightNodes", "cutoff", "weightTolerance", "sumNodesPerBox");
+
+    /** Every knob's value by its name ({@link #KNOBS}), the cutoff as asked. */
+    public Map<String, Double> knobs() {
+        Map<String, Double> knobs = new LinkedHashMap<>();
+        knobs.put("pairThreshold", pairThreshold);
+        knobs.put("nodesPerSigma", nodesPerSigma);
+        knobs.put("maxStepNm", maxStepNm);
+        knobs.put("reachSigmas", reachSigmas);
+        knobs.put("weightStepNm", weightStepNm);
+        knobs.put("lightNodes", (double) lightNodes);
+        knobs.put("cutoff", askedCutoff);
+        knobs.put("weightTolerance", weightTolerance);
+        knobs.put("sumNodesPerBox", sumNodesPerBox);
+        return knobs;
+    }
+
+    /**
+     * These knobs with those {@code changes} names ({@link #KNOBS}) replaced, each value checked as the constructor
+     * checks it; a name that is no knob, or a fractional number of light nodes, is refused.
+     */
+    public LobeQuadrature withKnobs(Map<String, Double> changes) {
+        Map<String, Double> k = knobs();
+        for (Map.Entry<String, Double> change : changes.entrySet()) {
+            if (!k.containsKey(change.getKey())) {
+                throw invalid("no knob '" + change.getKey() + "'; the knobs are " + String.join(", ", KNOBS));
+            }
+            k.put(change.getKey(), change.getValue());
+        }
+        double lightNodes = k.get("lightNodes");
+        if (lightNodes != Math.rint(lightNodes)) {
+            throw invalid("the light nodes must be a whole number, got " + lightNodes);
+        }
+        return new LobeQuadrature(k.get("pairThreshold"), k.get("nodesPerSigma"), k.get("maxStepNm"),
+                k.get("reachSigmas"), k.get("weightStepNm"), (int) lightNodes, k.get("cutoff"),
+                k.get("weightTolerance"), k.get("sumNodesPerBox"));
     }
 
     /** The same knobs, with the texel sums at this many nodes per lobe's passage (0: never summed). */

@@ -35,6 +35,14 @@ public interface GpuMethod {
     }
 
     /**
+     * Whether its fragments write alpha 0 where the GL ended their loops before their work was done
+     * ({@link ShortPixels}), so that a reader of its pictures can count the pixels left short.
+     */
+    default boolean reportsShortPixels() {
+        return false;
+    }
+
+    /**
      * Whether a staged surface of this method reads the lobes method's baked table over the footprints of environment
      * lights wider than it sums ({@link DiffractionShaders#TABLE_BEYOND_SIGMA_RAD}).
      */

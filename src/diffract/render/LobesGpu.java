@@ -60,6 +60,12 @@ final class LobesGpu implements GpuMethod {
         m.setFloatArray("lightShifts", shifts).setInt("lightShiftCount", count);
     }
 
+    /** Its march and wavelength nodes notice loops the GL ended early (lobes_spectrum.glsl's spectrumTruncated). */
+    @Override
+    public boolean reportsShortPixels() {
+        return true;
+    }
+
     /** The cutoff scaled to what a picture shown at {@code exposure} displays ({@link LobeQuadrature#shownAt}). */
     @Override
     public void setExposure(Material m, BrdfSettings settings, double exposure) {

@@ -14,6 +14,7 @@ import diffract.optics.InvalidSettingException;
 import diffract.optics.Levelling;
 import diffract.optics.LightProfile;
 import diffract.optics.LightSource;
+import diffract.optics.LobeQuadrature;
 import diffract.optics.Methods;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
@@ -36,6 +37,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -281,7 +283,7 @@ public final class SceneFile {
             Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
             Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
             Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.FRESNEL, "fresnel"),
-            Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"),
+            Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"), Map.entry(Quantity.LOBE_QUADRATURE, "lobeQuadrature"),
             Map.entry(Quantity.SCAN_TILING, "skinUmPerTexcoord"));
 
     /**
@@ -319,6 +321,21 @@ public final class SceneFile {
         }
         throw parent.problem(key, "must be a method's label, with its parameter or as {\"type\": ..., \"of\": ...}, got "
                 + node.typeName());
+    }
+
+    /**
+     * The lobes method's knobs ({@link LobeQuadrature#KNOBS}) that the object names, the others at their defaults;
+     * each value is checked by the quadrature.
+     */
+    private static LobeQuadrature lobeQuadrature(SceneObject knobs) {
+        Map<String, Double> given = new LinkedHashMap<>();
+        for (String knob : LobeQuadrature.KNOBS) {
+            if (knobs.has(knob)) {
+                given.put(knob, knobs.number(knob, SceneObject.Range.any()));
+            }
+        }
+        knobs.finish();
+        return LobeQuadrature.DEFAULT.withKnobs(given);
     }
 
     private static Scene.MaterialSpec material(SceneObject material, LightSource lightSource,
@@ -377,6 +394,9 @@ public final class SceneFile {
                     .toUpperCase(Locale.ROOT)));
             SceneObject.Range samples = SceneObject.Range.closed(0, BakedGrid.MAX_SAMPLES);
             b.bakedSamples(material.integer("bakedUvSamples", samples, 0), material.integer("bakedWSamples", samples, 0));
+            if (material.has("lobeQuadrature")) {
+                b.lobes(lobeQuadrature(material.object("lobeQuadrature")));
+            }
         } catch (InvalidSettingException e) {
             throw material.problem(MATERIAL_KEYS.getOrDefault(e.quantity(), "variant"), e.getMessage());
         }

@@ -8,6 +8,7 @@ import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
 import diffract.optics.GpuTableSettings;
 import diffract.optics.IlluminationSettings;
+import diffract.optics.LobeQuadrature;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.RadiometricGain;
 import diffract.optics.SpectralSettings;
@@ -180,12 +181,20 @@ public final class SceneWriter {
         material.put("termFormat", gpu.termFormat().name().toLowerCase(Locale.ROOT));
         material.put("bakedUvSamples", gpu.bakedUvSamples());
         material.put("bakedWSamples", gpu.bakedWSamples());
+        material.put("lobeQuadrature", lobeQuadrature(s.lobes()));
         material.put("pigmentation", pigmentation(m.pigmentation()));
         material.put("pigmentationOn", m.pigmentationOn());
         material.put("diffuseWeight", m.diffuseWeight());
         // the radiometric gain is a function of the settings: the word keeps it one when they change
         material.put("exposure", m.exposure() == RadiometricGain.of(s) ? SceneFile.RADIOMETRIC : (Object) m.exposure());
         return material;
+    }
+
+    /** The knobs by name, the count of light nodes as a whole number. */
+    private static Map<String, Object> lobeQuadrature(LobeQuadrature q) {
+        Map<String, Object> knobs = new LinkedHashMap<>(q.knobs());
+        knobs.put("lightNodes", q.lightNodes());
+        return knobs;
     }
 
     private static Object pigmentation(Scene.PigmentationSpec p) {

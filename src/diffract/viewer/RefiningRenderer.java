@@ -9,12 +9,15 @@ import diffract.jrtr.PixelRect;
 import diffract.jrtr.TiledFrame;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
+import diffract.render.GpuMethods;
+import diffract.render.ShortPixels;
 
 import diffract.scene.DisplayMode;
 
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Queue;
 import java.util.concurrent.CompletableFuture;
@@ -304,9 +307,28 @@ public final class RefiningRenderer implements GLEventListener {
             passesCompleted++;
             if (r.isDone() && !r.waitingForTable) {
                 renderer.stats().record(frame.drawnMs());
+                noticeShortPixels(gl, shown, settings);
             }
         }
         publish(r);
+    }
+
+    /**
+     * Says in the title when pixels of the refined picture were left short: the GL ended the shader's loops before
+     * their work was done ({@link ShortPixels}; Mesa's llvmpipe after 65535 iterations), so they miss lobes and are too
+     * dark. Read once a refinement, for the methods that report it.
+     */
+    private void noticeShortPixels(GL3 gl, FloatFramebuffer picture, BrdfSettings settings) {
+        if (!GpuMethods.of(settings.variant()).reportsShortPixels()) {
+            return;
+        }
+        ShortPixels shortPixels = new ShortPixels();
+        shortPixels.rgbOf(picture.readRgbaTopDown(gl));
+        if (shortPixels.count() > 0) {
+            String text = String.format(Locale.ROOT, "%d px left short (the GL ended their loops early): too dark "
+                    + "there; a GPU or a coarser --lobe-quadrature draws them whole", shortPixels.count());
+            model.update(s -> s.withNotice(Notice.forSeconds(text, 10)));
+        }
     }
 
     /** The last complete pass scaled to the window, the tiles of the pass under way over it. */

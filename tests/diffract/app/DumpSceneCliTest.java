@@ -43,6 +43,26 @@ class DumpSceneCliTest {
             "--size", "40x32"}, "scene");
     }
 
+    /**
+     * The lobes method's knobs given on the command line are part of the dumped scene (material.lobeQuadrature): its
+     * picture is the command's, and not the default quadrature's.
+     */
+    @Test
+    void theLobesQuadratureIsDumped() throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        String[] options = {"--synthetic", "blazed", "--shape", "sphere", "--size", "40x32", "--theta-i", "35",
+            "--variant", "lobes", "--lobe-quadrature", "nodesPerSigma=0.2,maxStepNm=16,cutoff=1e-3"};
+        Object[] dumped = CliTest.run(concat(new String[] {"render"}, options, new String[] {"--dump-scene"}));
+        assertTrue(((String) dumped[1]).contains("\"nodesPerSigma\" : 0.2"), (String) dumped[1]);
+        assertSameAsDumped(options, "quadrature");
+        Path plain = dir.resolve("default-quadrature.png");
+        Object[] result = CliTest.run(concat(new String[] {"render"}, java.util.Arrays.copyOf(options,
+                options.length - 2), new String[] {"-o", plain.toString()}));
+        assertEquals(0, result[0], (String) result[2]);
+        assertFalse(java.util.Arrays.equals(Files.readAllBytes(plain),
+                Files.readAllBytes(dir.resolve("quadrature-direct.png"))), "the knobs change the picture");
+    }
+
     @Test
     void dumpingDrawsNothingAndNeedsNoOutput() {
         Object[] result = CliTest.run("render", "--synthetic", "blazed", "--dump-scene");
