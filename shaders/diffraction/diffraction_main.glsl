@@ -83,7 +83,7 @@ void main() {
     vec2 xy = 2.0 * (gl_FragCoord.xy - mapOriginPx) / mapSizePx - 1.0;
     float zz = 1.0 - xy.x * xy.x - xy.y * xy.y;
     if (!(zz > 0.0)) {
-        fragColor = vec4(0.0); // outside the unit disk (x^2 + y^2 >= 1): black, as BrdfMap
+        fragColor = vec4(0.0, 0.0, 0.0, 1.0); // outside the unit disk (x^2 + y^2 >= 1): black, as BrdfMap
         return;
     }
     vec3 wr = vec3(xy, sqrt(zz)); // Direction.fromProjected

@@ -21,7 +21,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * a turntable's frames, as {@code brdfmap} and the table's bake count theirs. A 32 x 32 sphere with a 37 um patch
  * (256 texels, 32 periods), every lobe within reach marched (no cutoff, no texel sums) at 4 nodes per sigma and 1 nm
  * at most: on llvmpipe, which ends a SIMD group's loops after 65535 iterations, hundreds of its pixels; with the
- * default quadrature none.
+ * default quadrature none, on the sphere and in its BRDF map (whose black beyond the unit disk is drawn, not short).
  */
 @Tag("gl")
 class ShortPixelsCliTest {
@@ -72,6 +72,8 @@ class ShortPixelsCliTest {
 
         Object[] plain = render("32x32", "-o", dir.resolve("default.png").toString());
         assertFalse(WARNING.matcher((String) plain[2]).find(), "the default quadrature: " + plain[2]);
+        Object[] map = render("32x32", "--brdf-map", "-o", dir.resolve("map.png").toString());
+        assertFalse(WARNING.matcher((String) map[2]).find(), "the BRDF map's black beyond the unit disk: " + map[2]);
     }
 
     @Test
