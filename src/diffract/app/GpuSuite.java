@@ -16,7 +16,6 @@ import diffract.optics.Methods;
 import diffract.optics.PixelFilter;
 import diffract.optics.Variant;
 import diffract.render.GpuBrdfMap;
-import diffract.render.ShortPixels;
 import diffract.scene.Fabricator;
 import diffract.scene.SceneSetup;
 import diffract.util.DiskCache;
@@ -211,7 +210,8 @@ final class GpuSuite {
             BrdfSettings converged = converged(settings);
             float[] reference = sceneReferences.computeIfAbsent(converged.toString(), k -> {
                 try (OffscreenTarget target = sceneTarget(base.withSettings(converged))) {
-                    float[] rgb = picture(target, size, "the converged picture of " + fileName(name));
+                    float[] rgb = RenderCommand.frameRgb(target, size[0], size[1],
+                            "pixels of the converged picture of " + fileName(name), reporter);
                     writePng("scene-reference-" + fileName(name) + ".png", rgb, size);
                     return rgb;
                 }
@@ -219,7 +219,8 @@ final class GpuSuite {
             float[] picture;
             double ms;
             try (OffscreenTarget target = sceneTarget(base.withSettings(settings))) {
-                picture = picture(target, size, "the picture of " + fileName(name));
+                picture = RenderCommand.frameRgb(target, size[0], size[1], "pixels of the picture of " + fileName(name),
+                        reporter);
                 ms = target.measureMedianMs(size[0], size[1], 2, frames);
             }
             writePng("scene-" + fileName(name) + ".png", picture, size);
@@ -312,15 +313,6 @@ final class GpuSuite {
                 r.width(), r.height(), r.msPerFrame(), r.deltaEMean(), r.deltaEP95(), r.comparedPixels(), r.errorSize(),
                 r.reference()));
         return r;
-    }
-
-    /** The scene drawn by {@code target}, with a warning where its pixels were left short ({@link ShortPixels}). */
-    private float[] picture(OffscreenTarget target, int[] size, String what) {
-        ShortPixels shortPixels = new ShortPixels();
-        float[] rgb = shortPixels.rgbOf(target.renderRgba(size[0], size[1]));
-        shortPixels.warnIfAny(reporter, "pixels of " + what, target.info().renderer(),
-                RenderCommand.SHORT_PIXELS_REMEDY);
-        return rgb;
     }
 
     private OffscreenTarget sceneTarget(SceneSetup setup) {

@@ -63,7 +63,7 @@ final class MeasureCommand implements Callable<Integer> {
         float[] structural;
         float[] mask;
         try (OffscreenTarget target = new OffscreenTarget(renderer)) {
-            structural = target.renderRgb(width, height);
+            structural = RenderCommand.frameRgb(target, width, height, "pixels of the frame", reporter);
             renderer.setMaskOnly(true);
             mask = target.renderRgb(width, height);
         }

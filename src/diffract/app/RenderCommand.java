@@ -65,6 +65,14 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
     static final String SHORT_PIXELS_REMEDY = "draw it on a GPU, with --variant baked, or with a coarser "
             + "--lobe-quadrature (docs/filtering.md)";
 
+    /** One frame drawn by {@code target}, RGB, with a warning where its pixels of {@code what} were left short. */
+    static float[] frameRgb(OffscreenTarget target, int width, int height, String what, Reporter reporter) {
+        ShortPixels shortPixels = new ShortPixels();
+        float[] rgb = shortPixels.rgbOf(target.renderRgba(width, height));
+        shortPixels.warnIfAny(reporter, what, target.info().renderer(), SHORT_PIXELS_REMEDY);
+        return rgb;
+    }
+
     /** Many frames instead of one: the camera or the light goes once round the scene. */
     static final class TurntableOptions {
         @Option(names = "--turntable", paramLabel = "FRAMES",
