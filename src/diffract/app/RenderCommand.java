@@ -214,7 +214,8 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
         float[] floats = new float[band.rows() * perFrame];
         long work = System.nanoTime();
         Turntable.render(target, renderer, model, frames, turntable.orbitLight, band.fromRow(), band.toRow(), image,
-                shortPixels, reporter, (k, rgb) -> System.arraycopy(rgb, 0, floats, (k - band.fromRow()) * perFrame, perFrame));
+                shortPixels, reporter,
+                (k, rgb) -> System.arraycopy(rgb, 0, floats, (k - band.fromRow()) * perFrame, perFrame));
         long done = System.nanoTime();
         Map<String, String> settings = new LinkedHashMap<>();
         settings.put("version", diffract.util.Version.VERSION);
