@@ -95,13 +95,9 @@ public final class GpuBrdfMap implements AutoCloseable {
     public float[] xyz(Direction wi, int size) {
         use(xyzMaterial, wi, size);
         float[] rgba = target.renderRgba(size, size);
-        float[] xyz = new float[size * size * 3];
         truncatedPixels = 0;
         truncated = new boolean[size * size];
         for (int p = 0; p < size * size; p++) {
-            xyz[3 * p] = rgba[4 * p];
-            xyz[3 * p + 1] = rgba[4 * p + 1];
-            xyz[3 * p + 2] = rgba[4 * p + 2];
             double x = BrdfMap.xOf(p % size, size);
             double y = BrdfMap.yOf(p / size, size);
             if (rgba[4 * p + 3] == 0 && x * x + y * y < 1) {
@@ -109,7 +105,7 @@ public final class GpuBrdfMap implements AutoCloseable {
                 truncated[p] = true;
             }
         }
-        return xyz;
+        return OffscreenTarget.dropAlpha(rgba);
     }
 
     /**
