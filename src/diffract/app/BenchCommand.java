@@ -49,125 +49,74 @@ import java.util.function.Function;
  * DIR} it measures only run I of N runs of the sweep's configurations, into a piece that {@code merge} assembles with
  * the others into those files ({@link SplitCommand}: {@code submit} runs it in pieces).
  */
-@Command(name = "bench", mixinStandardHelpOptions = true,
-        description = "Measure the speed/accuracy trade of the GPU variants: per configuration the median GPU time "
-                + "per frame (GL timer queries) and the CIEDE2000 error of its BRDF maps (theta_i 0, 45, 75 degrees) "
-                + "against the CPU reference (exact model, 1 nm), over the lit pixels. Writes results.csv, results.md, "
-                + "pareto.md (the Pareto-front rows), targets.md, machine.txt and pareto.png into -o DIR; reference "
-                + "maps are cached there.")
+@Command(name = "bench", mixinStandardHelpOptions = true)
 final class BenchCommand implements SplitCommand, Callable<Integer> {
     /** A measured patch's light azimuth: ridges along x, as a snake patch scanned along its scale. */
     private static final double FILE_PATCH_PHI_DEG = 90;
 
     @Mixin GpuOption gpu;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "DIR",
-            description = "Output folder. Required, except with --tile (merge writes the folder then).")
-    Path outputDir;
+    @Option(names = {"-o", "--output"}, paramLabel = "DIR") Path outputDir;
 
     @Mixin TileOptions tiles;
     @Spec CommandSpec spec;
 
-    @Option(names = "--quick", description = "A sweep that covers every variant in a few minutes (llvmpipe, 2 cores).")
-    boolean quick;
+    @Option(names = "--quick") boolean quick;
 
-    @Option(names = "--patches", defaultValue = BenchPatch.DEFAULT_NAMES, paramLabel = "LIST",
-            split = ",", completionCandidates = OptionTypes.PatchNames.class,
-            description = "Named patches, of ${COMPLETION-CANDIDATES} (default ${DEFAULT-VALUE}).")
+    @Option(names = "--patches", defaultValue = BenchPatch.DEFAULT_NAMES, paramLabel = "LIST", split = ",",
+            completionCandidates = OptionTypes.PatchNames.class)
     List<String> patches;
 
-    @Option(names = "--variants", paramLabel = "LIST", split = ",", converter = VariantConverter.class,
-            description = "Variants: flss, nmm, pq, baked (default: every GPU variant).")
+    @Option(names = "--variants", paramLabel = "LIST", split = ",", converter = VariantConverter.class)
     List<Variant> variants;
 
-    @Option(names = "--size", defaultValue = "64", paramLabel = "S", description = "Map size of the sweep (default ${DEFAULT-VALUE}).")
-    int sizePx;
+    @Option(names = "--size", defaultValue = "64", paramLabel = "S") int sizePx;
 
-    @Option(names = "--large-size", defaultValue = "128", paramLabel = "S",
-            description = "The full sweep also measures the thesis' configuration at this size (default ${DEFAULT-VALUE}).")
-    int largeSizePx;
+    @Option(names = "--large-size", defaultValue = "128", paramLabel = "S") int largeSizePx;
 
-    @Option(names = "--terms", paramLabel = "LIST", split = ",",
-            description = "Own grid: highest Taylor orders N (default 30 when another grid option is given).")
-    List<Integer> termsList;
+    @Option(names = "--terms", paramLabel = "LIST", split = ",") List<Integer> termsList;
 
-    @Option(names = "--lambda-steps", paramLabel = "LIST", split = ",", description = "Own grid: wavelength steps in nm (default 5).")
-    List<Double> stepsList;
+    @Option(names = "--lambda-steps", paramLabel = "LIST", split = ",") List<Double> stepsList;
 
-    @Option(names = "--window-radii", paramLabel = "LIST", split = ",", description = "Own grid: window radii R (default 1).")
-    List<Integer> radiiList;
+    @Option(names = "--window-radii", paramLabel = "LIST", split = ",") List<Integer> radiiList;
 
-    @Option(names = "--texture-formats", paramLabel = "LIST", split = ",", description = "Own grid: rg32f, rg16f, rg8 (default rg32f).")
-    List<TermFormat> formatsList;
+    @Option(names = "--texture-formats", paramLabel = "LIST", split = ",") List<TermFormat> formatsList;
 
-    @Option(names = "--sizes", paramLabel = "LIST", split = ",", description = "Own grid: map sizes (default --size).")
-    List<Integer> sizesList;
+    @Option(names = "--sizes", paramLabel = "LIST", split = ",") List<Integer> sizesList;
 
-    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM",
-            description = "4 sigma_s of the coherence window (default ${DEFAULT-VALUE} um, the thesis'). The "
-                    + "sweep's point-sampling variants need a short one (docs/bench.sh uses 10 um, where the orders "
-                    + "are a few map pixels wide); --filtering measures the filtering methods at this length.")
-    double coherenceLengthUm;
+    @Option(names = "--coherence-length", defaultValue = "65", paramLabel = "UM") double coherenceLengthUm;
 
-    @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
-    double lambdaMinNm;
+    @Option(names = "--lambda-min", defaultValue = "380", paramLabel = "NM") double lambdaMinNm;
 
-    @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM", description = "Default ${DEFAULT-VALUE}.")
-    double lambdaMaxNm;
+    @Option(names = "--lambda-max", defaultValue = "780", paramLabel = "NM") double lambdaMaxNm;
 
     @Mixin QuietOption quiet;
     @Mixin CacheOption cache;
 
-    @Option(names = "--gpu-suite", description = "Instead of the sweep: the GPU suite (docs/headless-gl.md): the "
-            + "default scene at 1920x1080 and BRDF maps at 1080x1080 for every variant and the thesis' configuration, "
-            + "ms/frame and CIEDE2000; 1/8 of the size on a software rasteriser. Writes gpu-suite.csv, gpu-suite.md "
-            + "and scene-*.png.")
-    boolean gpuSuite;
+    @Option(names = "--gpu-suite") boolean gpuSuite;
 
-    @Option(names = "--filtering", description = "Instead of the sweep: the filtering targets (docs/filtering.md): "
-            + "per patch and light size (--lights), the lobes method, FLSS in the thesis' configuration and the baked "
-            + "table against the filtered reference (pixels averaged over their squares), CIEDE2000 over lit pixels "
-            + "and ms per frame, on the same GL context. Writes filtering.csv and filtering.md.")
-    boolean filtering;
+    @Option(names = "--filtering") boolean filtering;
 
-    @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class,
-            description = "--filtering: the baked table's samples along u and v (each) and along w; 0 = automatic, "
-                    + "as brdfmap and the scenes take it (default 0,0).")
+    @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class)
     OptionTypes.BakedSamples bakedSamples;
 
-    @Option(names = "--lights", paramLabel = "LIST", split = ",", defaultValue = "0,2",
-            description = "--filtering: the lights' angular diameters in degrees (default ${DEFAULT-VALUE}).")
-    List<Double> lightsDeg;
+    @Option(names = "--lights", paramLabel = "LIST", split = ",", defaultValue = "0,2") List<Double> lightsDeg;
 
     /** --filtering: one more patch beside --patches, read as every command reads one. */
     @Mixin PatchOptions patch;
 
-    @Option(names = "--phi-i", paramLabel = "DEG",
-            description = "--filtering with --patch or --synthetic: the light's azimuth, in the plane of the patch's "
-                    + "period (default: 90 for a --patch FILE, ridges along x as a snake patch scanned along its "
-                    + "scale; a --synthetic patch's own).")
-    Double patchPhiDeg;
+    @Option(names = "--phi-i", paramLabel = "DEG") Double patchPhiDeg;
 
-    @Option(names = "--suite-scene", paramLabel = "FILE",
-            description = "GPU suite: the scene drawn (default: the default snake scene).")
-    Path suiteScene;
+    @Option(names = "--suite-scene", paramLabel = "FILE") Path suiteScene;
 
-    @Option(names = "--suite-scenes-only", description = "GPU suite: the scene with each of --variants only (no BRDF "
-            + "maps, no thesis row): ms per frame of what a viewer draws, against the converged picture.")
-    boolean suiteScenesOnly;
+    @Option(names = "--suite-scenes-only") boolean suiteScenesOnly;
 
-    @Option(names = "--suite-size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
-            description = "GPU suite: the scene's size (default 1920x1080, 240x135 on llvmpipe); the maps are HxH.")
+    @Option(names = "--suite-size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class)
     OptionTypes.ImageSize suiteSize;
 
-    @Option(names = "--error-size", defaultValue = "128", paramLabel = "S",
-            description = "GPU suite: size of the maps compared with the CPU reference (default ${DEFAULT-VALUE}).")
-    int errorSizePx;
+    @Option(names = "--error-size", defaultValue = "128", paramLabel = "S") int errorSizePx;
 
-    @Option(names = "--frames", defaultValue = "10", paramLabel = "N",
-            description = "GPU suite and --filtering: timed frames per row, their median (at least "
-                    + diffract.jrtr.GpuTimer.MIN_FRAMES + "; default ${DEFAULT-VALUE}).")
-    int frames;
+    @Option(names = "--frames", defaultValue = "10", paramLabel = "N") int frames;
 
     @Override
     public Integer call() throws IOException {

@@ -50,10 +50,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 /** {@code diffract brdfmap}: the BRDF of a patch for one light direction, over all viewing directions. */
-@Command(name = "brdfmap", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Render a BRDF map: pixel (i, j) of the S x S map is the viewing direction (x, y, sqrt(1 - x^2 - "
-                + "y^2)), x = 2(i + 0.5)/S - 1, y = 1 - 2(j + 0.5)/S; outside the unit disk is black. The tangent "
-                + "frame's x axis runs along the height field's columns, y along its rows.")
+@Command(name = "brdfmap", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     /** Where a map is computed. */
     enum Engine { CPU, GPU }
@@ -66,15 +63,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     @Mixin TileOptions tiles;
     @Spec CommandSpec spec;
 
-    @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG",
-            description = "Light polar angle from the patch's normal, 0.." + LightDirection.MAX_THETA_DEG_TEXT
-                    + " (default ${DEFAULT-VALUE}).")
-    double thetaIDeg;
+    @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG") double thetaIDeg;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "MAP.png|MAP.exr",
-            description = "The map to write: a PNG (display-encoded at the --exposure), or an OpenEXR file of the "
-                    + "linear values (as --exr). Required, except with --tile.")
-    Path output;
+    @Option(names = {"-o", "--output"}, paramLabel = "MAP.png|MAP.exr") Path output;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Light:%n")
     Light light = new Light();
@@ -87,66 +78,40 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
 
     /** Where the light comes from and what it holds. */
     static final class Light {
-        @Option(names = "--phi-i", paramLabel = "DEG",
-                description = "Azimuth of the light (default: in the plane of a named patch's period, else 0).")
-        Double phiIDeg;
+        @Option(names = "--phi-i", paramLabel = "DEG") Double phiIDeg;
 
-        @Option(names = "--lambda", paramLabel = "NM",
-                description = "Monochromatic map of the relative BRDF at this wavelength (grey).")
-        Double lambdaNm;
+        @Option(names = "--lambda", paramLabel = "NM") Double lambdaNm;
     }
 
     /** Where the terms come from and where the map is computed. */
     static final class Engines {
-        @Option(names = "--terms-dir", paramLabel = "DIR",
-                description = "Use precomputed terms instead of the cache: diffract's format or the thesis' Octave "
-                        + "format (detected).")
-        Path termsDir;
+        @Option(names = "--terms-dir", paramLabel = "DIR") Path termsDir;
 
         @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
-                converter = OptionTypes.HeightUnitConverter.class,
-                description = "Heights' unit of a --terms-dir from the thesis' script: auto, m or um (default "
-                        + "${DEFAULT-VALUE}).")
+                converter = OptionTypes.HeightUnitConverter.class)
         ThesisFormat.HeightUnit termsHeightUnit = ThesisFormat.HeightUnit.AUTO;
 
-        @Option(names = "--engine", paramLabel = "E",
-                description = "cpu (default; gpu with --variant auto) or gpu: the GLSL shaders rendered offscreen "
-                        + "(OpenGL 3.3).")
-        Engine engine;
+        @Option(names = "--engine", paramLabel = "E") Engine engine;
 
-        @Option(names = "--time", description = "With --engine gpu: print the median GPU time per frame (GL timer queries).")
-        boolean time;
+        @Option(names = "--time") boolean time;
     }
 
     /** The map's size and how it is shown. */
     static final class Picture {
-        @Option(names = "--size", defaultValue = "256", paramLabel = "S", converter = OptionTypes.ImageSize.Side.class,
-                description = "Map size in pixels, one side of the square map (S or SxS; default ${DEFAULT-VALUE}).")
+        @Option(names = "--size", defaultValue = "256", paramLabel = "S", converter = OptionTypes.ImageSize.Side.class)
         int size = 256;
 
-        @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto", converter = OptionTypes.Exposure.Converter.class,
-                description = "Multiplies the linear values before display encoding (default ${DEFAULT-VALUE}); auto "
-                        + "maps the brightest diffracted pixel (not the specular highlight) to 1. PFM and OpenEXR files "
-                        + "are never scaled.")
+        @Option(names = "--exposure", defaultValue = "1", paramLabel = "E|auto",
+                converter = OptionTypes.Exposure.Converter.class)
         OptionTypes.Exposure exposure = new OptionTypes.Exposure(1.0);
 
-        @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH",
-                description = "srgb (IEC 61966-2-1, default) or thesis (the 2014 shader's CIE RGB matrix and gamma 2.5).")
-        ColourPath colour = ColourPath.SRGB;
+        @Option(names = "--colour", defaultValue = "srgb", paramLabel = "PATH") ColourPath colour = ColourPath.SRGB;
 
-        @Option(names = "--pfm", paramLabel = "MAP.pfm",
-                description = "Also write floats: linear sRGB (unclipped), or the relative BRDF with --lambda.")
-        Path pfm;
+        @Option(names = "--pfm", paramLabel = "MAP.pfm") Path pfm;
 
-        @Option(names = "--exr", paramLabel = "MAP.exr",
-                description = "Also write the floats of --pfm as OpenEXR: R, G, B of linear sRGB with the Rec. 709 "
-                        + "primaries and D65 white in the header, or with --lambda one channel Y.")
-        Path exr;
+        @Option(names = "--exr", paramLabel = "MAP.exr") Path exr;
 
-        @Option(names = "--exr-half",
-                description = "OpenEXR outputs store half floats (11 significant bits, finite up to 65504) instead "
-                        + "of 32-bit floats.")
-        boolean exrHalf;
+        @Option(names = "--exr-half") boolean exrHalf;
     }
 
     @Override

@@ -5,7 +5,6 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.FresnelModel;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.LightProfile;
-import diffract.optics.LightSource;
 import diffract.optics.PixelFilter;
 import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorExpansion;
@@ -28,18 +27,10 @@ import picocli.CommandLine.Option;
  */
 final class BrdfOptions {
     @Option(names = "--variant", paramLabel = "V", converter = OptionTypes.VariantChoice.Converter.class,
-            completionCandidates = OptionTypes.VariantChoice.Candidates.class,
-            description = "${COMPLETION-CANDIDATES}: the exact CPU reference, the thesis' three shader "
-                    + "approximations, the baked table (baked(of=lobes) or baked(of=flss) names the method it holds), "
-                    + "the Gaussian lobes (pixel- and light-averaged, exact in wavelength), or auto, the cheapest "
-                    + "configuration whose measured error on this patch meets --max-delta-e (default: reference on "
-                    + "brdfmap, lobes on view and render).")
+            completionCandidates = OptionTypes.VariantChoice.Candidates.class)
     OptionTypes.VariantChoice variant;
 
-    @Option(names = "--max-delta-e", paramLabel = "DE",
-            description = "With --variant auto: the accuracy target, mean CIEDE2000 against the reference over the "
-                    + "lit pixels.")
-    Double maxDeltaE;
+    @Option(names = "--max-delta-e", paramLabel = "DE") Double maxDeltaE;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Taylor approximation:%n")
     Taylor taylor = new Taylor();
@@ -61,120 +52,70 @@ final class BrdfOptions {
 
     /** {@link diffract.optics.TaylorSettings}. */
     static final class Taylor {
-        @Option(names = "--terms", paramLabel = "N", description = "Highest Taylor order N, terms n = 0..N (default 30).")
-        Integer highestOrder;
+        @Option(names = "--terms", paramLabel = "N") Integer highestOrder;
 
-        @Option(names = "--taylor-tolerance", paramLabel = "EPS",
-                description = "Stop each lookup's Taylor loop at the first order whose Lagrange bound "
-                        + "x^(n+1) e^x/(n+1)! (x = k|w|max|h|) is <= EPS; 0 = always N (default 0).")
-        Double tolerance;
+        @Option(names = "--taylor-tolerance", paramLabel = "EPS") Double tolerance;
 
-        @Option(names = "--expansion", paramLabel = "E",
-                description = "auto (default: the thesis' series around 0 where the patch lets it reach 1e-3 in P, "
-                        + "else around the nearest of several phase centres), plain or centred. With --variant auto "
-                        + "the default is plain: the path its calibration measured.")
-        TaylorExpansion expansion;
+        @Option(names = "--expansion", paramLabel = "E") TaylorExpansion expansion;
     }
 
     /** {@link diffract.optics.WindowSettings}. */
     static final class Window {
-        @Option(names = "--window-radius", paramLabel = "R|auto", converter = OptionTypes.WindowRadius.Converter.class,
-                description = "Window of (2R+1)^2 texels (default 1); auto: per axis the smallest R capturing "
-                        + "99.73 %% of the Gaussian window's weight (sigma_f in texels).")
+        @Option(names = "--window-radius", paramLabel = "R|auto", converter = OptionTypes.WindowRadius.Converter.class)
         OptionTypes.WindowRadius radius;
 
-        @Option(names = "--pq-replicas", paramLabel = "R", description = "PQ replicas per axis; 0 spans the coherence length (default 0).")
-        Integer pqReplicas;
+        @Option(names = "--pq-replicas", paramLabel = "R") Integer pqReplicas;
 
-        @Option(names = "--window", paramLabel = "W", completionCandidates = OptionTypes.WindowPlacementNames.class,
-                description = "${COMPLETION-CANDIDATES}: the BRDF averaged over where the coherence window sits on "
-                        + "the surface (default: what a pixel or a light wider than a coherence area sees; texels add "
-                        + "as powers), one window at the DFT's origin, as the thesis (for comparisons), or local: the "
-                        + "window under each surface point of a mesh, averaged over the pixel's footprint on the skin "
-                        + "(glints of a close-up; flss and nmm on surfaces, with --skin-um-per-texcoord).")
+        @Option(names = "--window", paramLabel = "W", completionCandidates = OptionTypes.WindowPlacementNames.class)
         WindowPlacement placement;
 
-        @Option(names = "--skin-um-per-texcoord", paramLabel = "U[,V]", split = ",", hideParamSyntax = true,
-                description = "For --window local: micrometres of skin one unit of the mesh's texture coordinates "
-                        + "spans, along u and v (one number: both); the scan repeats every L / U along u.")
+        @Option(names = "--skin-um-per-texcoord", paramLabel = "U[,V]", split = ",", hideParamSyntax = true)
         double[] skinUmPerTexcoord;
     }
 
     /** {@link SpectralSettings}. */
     static final class Spectral {
-        @Option(names = "--lambda-min", paramLabel = "NM", description = "Shortest wavelength (default 380, within 360..830).")
-        Double minNm;
+        @Option(names = "--lambda-min", paramLabel = "NM") Double minNm;
 
-        @Option(names = "--lambda-max", paramLabel = "NM", description = "Longest wavelength (default 780, within 360..830).")
-        Double maxNm;
+        @Option(names = "--lambda-max", paramLabel = "NM") Double maxNm;
 
-        @Option(names = "--lambda-step", paramLabel = "NM", description = "Step of flss and pq, nmm's fallback step (default 5).")
-        Double stepNm;
+        @Option(names = "--lambda-step", paramLabel = "NM") Double stepNm;
 
-        @Option(names = "--normalisation", paramLabel = "M", completionCandidates = OptionTypes.NormalisationNames.class,
-                description = "${COMPLETION-CANDIDATES}: a flat mirror's point-sampled peak is D65 white (default, the "
-                        + "thesis; the light its lobe reflects then grows as lambda^2) or the light it reflects is "
-                        + "(Stam's k^2, what radiometric scenes use).")
+        @Option(names = "--normalisation", paramLabel = "M",
+                completionCandidates = OptionTypes.NormalisationNames.class)
         MirrorNormalisation normalisation;
     }
 
     /** {@link IlluminationSettings}. */
     static final class Illumination {
-        @Option(names = "--coherence-length", paramLabel = "UM",
-                description = "4 sigma_s of the Gaussian coherence window (default 65, filtered sunlight).")
-        Double coherenceLengthUm;
+        @Option(names = "--coherence-length", paramLabel = "UM") Double coherenceLengthUm;
 
-        @Option(names = "--refractive-index", paramLabel = "N", description = "For Schlick's Fresnel term (default 1.5).")
-        Double refractiveIndex;
+        @Option(names = "--refractive-index", paramLabel = "N") Double refractiveIndex;
 
-        @Option(names = "--pixel-filter", paramLabel = "F", completionCandidates = OptionTypes.PixelFilterNames.class,
-                description = "${COMPLETION-CANDIDATES}: a pixel shows the average over its footprint (default) or "
-                        + "the BRDF at its centre, as the thesis' maps (aliases orders narrower than a pixel). "
-                        + "Honoured by lobes and the reference.")
+        @Option(names = "--pixel-filter", paramLabel = "F", completionCandidates = OptionTypes.PixelFilterNames.class)
         PixelFilter pixelFilter;
 
-        @Option(names = "--fresnel", paramLabel = "F", completionCandidates = OptionTypes.FresnelNames.class,
-                description = "${COMPLETION-CANDIDATES}: Schlick's reflectance counted once (default) or squared, as "
-                        + "the thesis' eq. cfact prints it (for comparisons).")
+        @Option(names = "--fresnel", paramLabel = "F", completionCandidates = OptionTypes.FresnelNames.class)
         FresnelModel fresnel;
 
-        @Option(names = "--light-size-deg", paramLabel = "DEG",
-                description = "Angular diameter of the light, 0.." + (int) LightSource.MAX_DIAMETER_DEG + " degrees, of "
-                        + "the profile --light-profile names (default: 0, a point light, on brdfmap; the sun's 0.53 on "
-                        + "view, render and in scenes). Rendered by lobes, baked and the reference.")
-        Double lightSizeDeg;
+        @Option(names = "--light-size-deg", paramLabel = "DEG") Double lightSizeDeg;
 
-        @Option(names = "--light-profile", paramLabel = "P", completionCandidates = OptionTypes.LightProfileNames.class,
-                description = "${COMPLETION-CANDIDATES}: the light of --light-size-deg as a uniform disc of diameter D "
-                        + "(default: the reference integrates every direction; lobes averages each lobe over the disc "
-                        + "with C, S and w per direction; baked integrates it over a table of the point light) or a "
-                        + "Gaussian of sigma D/4 per axis linearised about its centre (for comparisons).")
+        @Option(names = "--light-profile", paramLabel = "P", completionCandidates = OptionTypes.LightProfileNames.class)
         LightProfile lightProfile;
     }
 
     /** {@link diffract.optics.LobeQuadrature}. */
     static final class Lobes {
         @Option(names = "--lobe-quadrature", paramLabel = "K=V[,K=V]",
-                converter = OptionTypes.LobeQuadratureChange.Converter.class,
-                description = "The lobes method's accuracy knobs (docs/filtering.md): nodesPerSigma (default 0.67), "
-                        + "maxStepNm (1, 2, 4, 8 or 16; default 8), reachSigmas (2..10; default 4), weightStepNm "
-                        + "(default 8), pairThreshold (default 1e-4), lightNodes (1..8; default 3), cutoff (a lobe's largest "
-                        + "contribution, of white, below which it is skipped; default 3e-6), weightTolerance (of the "
-                        + "tabulated lobe weights; default 1e-4), sumNodesPerBox (wavelength nodes per lobe's passage through "
-                        + "the pixel, where scans wider than the window are summed over texels; 0 marches lobe by lobe; "
-                        + "default 2).")
+                converter = OptionTypes.LobeQuadratureChange.Converter.class)
         OptionTypes.LobeQuadratureChange quadrature;
     }
 
     /** {@link diffract.optics.GpuTableSettings}. */
     static final class GpuTables {
-        @Option(names = "--texture-format", paramLabel = "F",
-                description = "Storage of the Taylor terms: rg32f (default, exact), rg16f (half precision) or rg8 "
-                        + "(the thesis' [0, 1]-normalised bytes, 003 eq. 1.1).")
-        TermFormat termFormat;
+        @Option(names = "--texture-format", paramLabel = "F") TermFormat termFormat;
 
-        @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class,
-                description = "baked: table samples along u and v (each) and along w; 0 = automatic (default 0,0).")
+        @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class)
         OptionTypes.BakedSamples bakedSamples;
     }
 

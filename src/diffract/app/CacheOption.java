@@ -14,10 +14,7 @@ import java.util.List;
 final class CacheOption {
     static final String FLAG = "--no-cache";
 
-    @Option(names = FLAG, description = "Neither read nor write the disk cache (" + DiskCache.ROOT_VARIABLE
-            + ", else ~/.cache/diffract): compute the Taylor terms, baked tables, calibrations and reference maps "
-            + "afresh and keep them in memory only.")
-    boolean noCache;
+    @Option(names = FLAG) boolean noCache;
 
     /** The option as given, for a command that runs another: {@code --no-cache}, or nothing. */
     List<String> arguments() {

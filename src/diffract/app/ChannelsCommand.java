@@ -14,14 +14,9 @@ import java.util.Optional;
 import java.util.concurrent.Callable;
 
 /** {@code diffract channels FILE}: what a scan file holds, and which channel {@code --patch} reads from it. */
-@Command(name = "channels", mixinStandardHelpOptions = true,
-        description = "List the channels of a scan file (Gwyddion .gwy, Igor .ibw): index, title, unit, samples and "
-                + "size. * marks the one --patch reads by default (the first in a length unit); --channel NAME|INDEX "
-                + "chooses another.")
+@Command(name = "channels", mixinStandardHelpOptions = true)
 final class ChannelsCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "FILE", description = "The scan file (.gwy or .ibw; other height-field "
-            + "files hold one field and no channels).")
-    Path file;
+    @Parameters(index = "0", paramLabel = "FILE", descriptionKey = "scan-file") Path file;
 
     @Mixin QuietOption quiet;
 

@@ -17,22 +17,13 @@ import java.util.Arrays;
 import java.util.concurrent.Callable;
 
 /** {@code diffract compare}: CIEDE2000 between two colour BRDF maps written by {@code brdfmap --pfm}. */
-@Command(name = "compare", mixinStandardHelpOptions = true,
-        description = "CIEDE2000 between two colour BRDF maps (the linear sRGB PFMs of brdfmap --pfm), pixel by pixel "
-                + "inside the unit disk: both are turned back into XYZ, multiplied by the same exposure and "
-                + "converted to L*a*b* with the D65 white. Prints mean, 95th and 99th percentile and maximum, over "
-                + "the whole disk and over the lit pixels (exposed Y above 1 %% of white in either map).")
+@Command(name = "compare", mixinStandardHelpOptions = true)
 final class CompareCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "A.pfm", description = "A colour map written by brdfmap --pfm.")
-    Path first;
+    @Parameters(index = "0", paramLabel = "A.pfm", descriptionKey = "first-map") Path first;
 
-    @Parameters(index = "1", paramLabel = "B.pfm",
-            description = "The map to compare it with (e.g. the reference), of the same size.")
-    Path second;
+    @Parameters(index = "1", paramLabel = "B.pfm", descriptionKey = "second-map") Path second;
 
-    @Option(names = "--exposure", defaultValue = "1", paramLabel = "E",
-            description = "Multiplies both maps' XYZ before L*a*b* (use the exposure the pictures were shown with).")
-    double exposure;
+    @Option(names = "--exposure", defaultValue = "1", paramLabel = "E") double exposure;
 
     @Mixin QuietOption quiet; // compare prints only its result; accepted like everywhere
 

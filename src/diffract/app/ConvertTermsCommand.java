@@ -22,23 +22,16 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /** {@code diffract convert-terms}: precomputed terms from one on-disk format into the other, without any FFT. */
-@Command(name = "convert-terms", mixinStandardHelpOptions = true,
-        description = "Convert a folder of precomputed Taylor terms between diffract's format (terms.f32 + terms.json) "
-                + "and the thesis' Octave format (AmpReIm<n>.txt + extrema.txt); see docs/formats.md.")
+@Command(name = "convert-terms", mixinStandardHelpOptions = true)
 final class ConvertTermsCommand implements Callable<Integer> {
-    @Option(names = "--from", required = true, paramLabel = "DIR", description = "Folder in either format (detected).")
-    Path from;
+    @Option(names = "--from", required = true, paramLabel = "DIR") Path from;
 
-    @Option(names = "--to", required = true, paramLabel = "DIR", description = "Folder to write.")
-    Path to;
+    @Option(names = "--to", required = true, paramLabel = "DIR") Path to;
 
-    @Option(names = "--format", paramLabel = "F",
-            description = "native or thesis; default: the other format than --from's.")
-    TermFolders.Format format;
+    @Option(names = "--format", paramLabel = "F") TermFolders.Format format;
 
     @Option(names = "--terms-height-unit", defaultValue = "auto", paramLabel = "UNIT",
-            converter = OptionTypes.HeightUnitConverter.class,
-            description = "Heights' unit of a thesis folder from the original script: auto, m or um (default ${DEFAULT-VALUE}).")
+            converter = OptionTypes.HeightUnitConverter.class)
     ThesisFormat.HeightUnit unit;
 
     @Mixin QuietOption quiet;

@@ -7,10 +7,8 @@ import picocli.CommandLine.Option;
 
 import diffract.util.ImageFiles;
 import diffract.util.OutputPaths;
-import diffract.util.UserInputException;
 
 import java.io.IOException;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -22,22 +20,16 @@ import java.util.concurrent.Callable;
  * no X server needed) to {@code out/demo.png}; without any OpenGL, the CPU reference BRDF map of a blazed grating.
  * It prints the path of every picture it writes.
  */
-@Command(name = "demo", mixinStandardHelpOptions = true,
-        description = "The demo: the viewer on the iridescent corn snake (scales with the Elaphe-like skin patch, "
-                + "pigment, sky, ground) when there is a screen; otherwise the same view rendered to out/demo.png (and, without OpenGL, the CPU BRDF map "
-                + "of a blazed grating to out/demo-brdfmap.png).")
+@Command(name = "demo", mixinStandardHelpOptions = true)
 final class DemoCommand implements Callable<Integer> {
     @Mixin GpuOption gpu;
     @Mixin QuietOption quiet;
     @Mixin CacheOption cache;
 
-    @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR",
-            description = "The folder for the pictures (demo.png, or demo-brdfmap.png without OpenGL) and, when the "
-                    + "scene is read from the jar, its copy (default ${DEFAULT-VALUE}).")
-    Path outputDir;
+    @Option(names = {"-o", "--output-dir"}, defaultValue = "out", paramLabel = "DIR") Path outputDir;
 
-    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
-            description = "Picture size (default ${DEFAULT-VALUE}).")
+    @Option(names = "--size", defaultValue = "640x400", paramLabel = "WxH",
+            converter = OptionTypes.ImageSize.Converter.class)
     OptionTypes.ImageSize size;
 
     /** The arguments of a command the demo runs, with the demo's {@code --quiet} and {@code --no-cache}. */

@@ -31,12 +31,7 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 
 /** {@code diffract export --mitsuba}: the BRDF of a patch as a table that Mitsuba 3 renders (docs/mitsuba.md). */
-@Command(name = "export", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Write the BRDF of a patch as a table for other renderers: with --mitsuba OUT.json, the lobes "
-                + "method's spectral factor in linear sRGB over (u, v, w) = -omega_i - omega_r (OUT.npy, float32) "
-                + "and a JSON header with the gain factor's constants; python/diffract_mitsuba.py renders it as the "
-                + "Mitsuba 3 BSDF 'diffract'. The scenes' settings: energy normalisation, the averaged window, the "
-                + "Fresnel term counted once; the light is a point (the renderer's emitter has the size).")
+@Command(name = "export", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class ExportCommand implements Callable<Integer> {
     /** The header's format name; the plugin refuses any other. */
     static final String FORMAT = "diffract-brdf-table";
@@ -47,9 +42,7 @@ final class ExportCommand implements Callable<Integer> {
     @Mixin QuietOption quiet;
     @Mixin CacheOption cache;
 
-    @Option(names = "--mitsuba", required = true, paramLabel = "OUT.json",
-            description = "The header to write; the table goes beside it as OUT.npy.")
-    Path mitsuba;
+    @Option(names = "--mitsuba", required = true, paramLabel = "OUT.json") Path mitsuba;
 
     /** The table's settings: the scenes' (ViewerOptions#defaults, radiometric) under a point light. */
     static BrdfSettings base() {

@@ -11,9 +11,7 @@ import java.util.List;
 final class GpuOption {
     private Integer index;
 
-    @Option(names = "--gpu", paramLabel = "N", converter = DeviceIndex.class,
-            description = "Render on EGL device N (0, 1, ...; default: the environment's " + HeadlessGL.GPU_VARIABLE
-                    + ", else the first GPU, else Mesa's software rasteriser).")
+    @Option(names = "--gpu", paramLabel = "N", converter = DeviceIndex.class)
     void setGpu(int index) {
         HeadlessGL.useGpu(index);
         this.index = index;

@@ -16,7 +16,7 @@ import picocli.CommandLine;
  * one-line message and exit code 2, without a stack trace unless {@code --debug} is given.
  */
 @Command(name = "diffract", mixinStandardHelpOptions = true, version = "diffract " + Version.VERSION,
-        description = "Structural colour from natural diffraction gratings (Single 2014, after Stam 1999).")
+        resourceBundle = "diffract.app.HelpText")
 public final class Main implements Runnable {
     /** Exit code for bad usage or bad input. */
     public static final int EXIT_USAGE = 2;
@@ -84,9 +84,7 @@ public final class Main implements Runnable {
         return cli;
     }
 
-    @Option(names = "--debug", scope = CommandLine.ScopeType.INHERIT,
-            description = "Show stack traces of errors.")
-    boolean debug;
+    @Option(names = "--debug", scope = CommandLine.ScopeType.INHERIT) boolean debug;
 
     @CommandLine.Spec
     CommandLine.Model.CommandSpec spec;

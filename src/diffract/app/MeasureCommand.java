@@ -22,15 +22,11 @@ import java.util.concurrent.Callable;
  * (pigmentation off), and prints {@link IridescenceStatistics}: the shape's share of the frame, the share of
  * saturated structural colour (of the frame and of the shape), its patches and hues.
  */
-@Command(name = "measure", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Measure a scene's picture: the shape's share of the frame, saturated structural colour's "
-                + "share of the frame and of the shape, its separate patches and hue bins (from a mask and a structural-colour-only render, "
-                + "offscreen like 'diffract render').")
+@Command(name = "measure", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class MeasureCommand implements Callable<Integer> {
     @Mixin ViewerOptions options;
 
-    @Option(names = "--save", paramLabel = "DIR", description = "Also write mask.png and structural.png into DIR.")
-    Path saveDir;
+    @Option(names = "--save", paramLabel = "DIR") Path saveDir;
 
     @Mixin GpuOption gpu;
 

@@ -21,25 +21,15 @@ import java.util.concurrent.Callable;
  * exactly as one run of that command with their options writes its result (a map's exposure, auto included, is chosen
  * on the whole map here; a GIF's palette on all its frames; a sweep's Pareto front on all its rows).
  */
-@Command(name = "merge", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Assemble the pieces of a BRDF map (brdfmap --tile I/N --pieces DIR), of a turntable (render "
-                + "--turntable F --tile I/N --pieces DIR) or of a bench sweep (bench --tile I/N --pieces DIR) into the "
-                + "result: the same files, bit for bit, as one run with the pieces' options writes (a sweep: its rows "
-                + "as measured). Pieces missing, there twice, damaged or of another result are refused, named.")
+@Command(name = "merge", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class MergeCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "DIR", description = "The folder of pieces.")
-    Path pieces;
+    @Parameters(index = "0", paramLabel = "DIR", descriptionKey = "pieces-folder") Path pieces;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT",
-            description = "What to write, as the command's -o: a map's PNG (at the pieces' --exposure) or OpenEXR "
-                    + "file; a turntable's .gif or .png name for the numbered sequence; a bench sweep's folder.")
-    Path output;
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "OUT") Path output;
 
-    @Option(names = "--pfm", paramLabel = "MAP.pfm", description = "Also write the floats, as brdfmap's --pfm.")
-    Path pfm;
+    @Option(names = "--pfm", paramLabel = "MAP.pfm") Path pfm;
 
-    @Option(names = "--exr", paramLabel = "MAP.exr", description = "Also write the floats as OpenEXR, as brdfmap's --exr.")
-    Path exr;
+    @Option(names = "--exr", paramLabel = "MAP.exr") Path exr;
 
     @Mixin QuietOption quiet;
 

@@ -18,20 +18,15 @@ import java.util.Locale;
 import java.util.concurrent.Callable;
 
 /** {@code diffract patch}: writes a named patch made by code as a Gwyddion .gsf file. */
-@Command(name = "patch", mixinStandardHelpOptions = true,
-        description = "Write a patch made by code as a Gwyddion Simple Field (.gsf, heights and pixel size in metres). "
-                + "Grating grooves run along y (rows); the period lies along x (columns). The snake patches' ridges "
-                + "run along x; their period lies along y (view them with --phi-i 90).")
+@Command(name = "patch", mixinStandardHelpOptions = true)
 final class PatchCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
-            description = "One of ${COMPLETION-CANDIDATES}; the options below change its parameters.")
+            descriptionKey = "patch-name")
     String name;
 
     @Mixin ProceduralOptions parameters;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf",
-            description = "The Gwyddion Simple Field to write (heights and pixel size in metres).")
-    Path output;
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "FILE.gsf") Path output;
 
     @Mixin QuietOption quiet;
 

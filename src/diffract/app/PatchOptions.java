@@ -18,36 +18,21 @@ import java.nio.file.Path;
  * an image or text matrix lacks) or a named patch of the {@link PatchCatalogue} ({@code --synthetic}).
  */
 final class PatchOptions {
-    @Option(names = "--patch", paramLabel = "FILE",
-            description = "Height field: PNG/BMP/TIFF (8 or 16 bit grey), text matrix (.txt/.csv, heights in um), "
-                    + "Gwyddion .gsf or .gwy, or Igor .ibw (Asylum Research).")
-    Path file;
+    @Option(names = "--patch", paramLabel = "FILE") Path file;
 
-    @Option(names = "--synthetic", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
-            description = "A patch made by code instead of --patch: ${COMPLETION-CANDIDATES} (diffract patch --help "
-                    + "says what they are); --period, --height, ... change it.")
+    @Option(names = "--synthetic", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class)
     String synthetic;
 
     @Mixin ProceduralOptions parameters;
 
-    @Option(names = "--max-height", paramLabel = "UM",
-            description = "Height of the brightest grey value in micrometres (images; rescales text/.gsf if given).")
-    Double maxHeightUm;
+    @Option(names = "--max-height", paramLabel = "UM") Double maxHeightUm;
 
-    @Option(names = "--pixel-size", paramLabel = "UM",
-            description = "Pixel size dH in micrometres (images and text; overrides a .gsf's XReal/XRes).")
-    Double pixelSizeUm;
+    @Option(names = "--pixel-size", paramLabel = "UM") Double pixelSizeUm;
 
-    @Option(names = "--channel", paramLabel = "NAME|INDEX",
-            description = "The channel of a .gwy or .ibw --patch, by title or index (default: the first in a length "
-                    + "unit; diffract channels FILE lists them).")
-    String channel;
+    @Option(names = "--channel", paramLabel = "NAME|INDEX") String channel;
 
     @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
-            converter = OptionTypes.LevellingNames.Converter.class,
-            description = "Levelling of a --patch before use: plane (the least-squares plane; the default for .gwy "
-                    + "and .ibw, which hold the scan as measured), rows (each scan line's mean) or none (the default "
-                    + "for images, text and .gsf, exported level).")
+            converter = OptionTypes.LevellingNames.Converter.class)
     Levelling level;
 
     boolean given() {

@@ -17,9 +17,7 @@ import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
 /** {@code diffract precompute}: thesis Algorithm 1, the Taylor-term DFTs of a patch, into a folder. */
-@Command(name = "precompute", mixinStandardHelpOptions = true,
-        description = "Precompute the Taylor-term DFTs DFT_n = fftshift(ifft2((i h)^n)), n = 0..N, of a height field. A "
-                + "rerun with the same patch and N reuses the folder without any FFT.")
+@Command(name = "precompute", mixinStandardHelpOptions = true)
 final class PrecomputeCommand implements Callable<Integer> {
     @Mixin PatchOptions patch;
     @Mixin QuietOption quiet;
@@ -28,25 +26,16 @@ final class PrecomputeCommand implements Callable<Integer> {
     Order order;
 
     static final class Order {
-        @Option(names = "--terms", paramLabel = "N", description = "Highest Taylor order N (terms n = 0..N).")
-        Integer highestOrder;
+        @Option(names = "--terms", paramLabel = "N") Integer highestOrder;
 
-        @Option(names = "--tolerance", paramLabel = "EPS",
-                description = "Choose the smallest N whose Lagrange remainder x^(N+1) e^x / (N+1)! <= EPS.")
-        Double tolerance;
+        @Option(names = "--tolerance", paramLabel = "EPS") Double tolerance;
     }
 
-    @Option(names = "--lambda-min", paramLabel = "NM", defaultValue = "380",
-            description = "Shortest wavelength rendered, nm (enters the bound; default ${DEFAULT-VALUE}).")
-    double lambdaMinNm;
+    @Option(names = "--lambda-min", paramLabel = "NM", defaultValue = "380") double lambdaMinNm;
 
-    @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR", description = "Output folder.")
-    Path output;
+    @Option(names = {"-o", "--output"}, required = true, paramLabel = "DIR") Path output;
 
-    @Option(names = "--format", defaultValue = "native", paramLabel = "F",
-            description = "native (terms.f32 + terms.json) or thesis (the Octave script's AmpReIm<n>.txt + extrema.txt,"
-                    + " extrema in micrometres); see docs/formats.md. Default ${DEFAULT-VALUE}.")
-    TermFolders.Format format;
+    @Option(names = "--format", defaultValue = "native", paramLabel = "F") TermFolders.Format format;
 
     @Override
     public Integer call() {

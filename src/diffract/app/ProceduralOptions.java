@@ -10,28 +10,19 @@ import picocli.CommandLine.Option;
  * {@code material.patch} keys of the same names: each replaces the catalogue's value when given.
  */
 final class ProceduralOptions {
-    @Option(names = "--period", paramLabel = "UM", description = "Grating or ridge period d (scene: periodUm).")
-    Double periodUm;
+    @Option(names = "--period", paramLabel = "UM") Double periodUm;
 
-    @Option(names = "--height", paramLabel = "UM", description = "Peak-to-valley height (scene: heightUm).")
-    Double heightUm;
+    @Option(names = "--height", paramLabel = "UM") Double heightUm;
 
-    @Option(names = "--periods", paramLabel = "P", description = "Whole periods across (scene: periods).")
-    Integer periods;
+    @Option(names = "--periods", paramLabel = "P") Integer periods;
 
-    @Option(names = {"--samples-per-period"}, paramLabel = "K",
-            description = "Gratings: pixels per period (scene: samplesPerPeriod).")
-    Integer samplesPerPeriod;
+    @Option(names = {"--samples-per-period"}, paramLabel = "K") Integer samplesPerPeriod;
 
-    @Option(names = "--rows", paramLabel = "R", description = "Gratings: rows (scene: rows).")
-    Integer rows;
+    @Option(names = "--rows", paramLabel = "R") Integer rows;
 
-    @Option(names = "--seed", paramLabel = "S", description = "Snake patches: the noise seed (scene: seed).")
-    Long seed;
+    @Option(names = "--seed", paramLabel = "S") Long seed;
 
-    @Option(names = "--size-px", paramLabel = "N", description = "Snake patches: pixels per side, a multiple of 16 "
-            + "(elaphe-scan: scan lines, a multiple of 32), up to " + MAX_SIZE_PX + " (scene: sizePx).")
-    Integer sizePx;
+    @Option(names = "--size-px", paramLabel = "N") Integer sizePx;
 
     /** The largest snake patch made by code: an AFM scan's 2048 lines. */
     static final int MAX_SIZE_PX = 2048;

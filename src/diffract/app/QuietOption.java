@@ -10,8 +10,7 @@ import picocli.CommandLine.Option;
  * more than a couple of seconds ({@link diffract.util.Progress}).
  */
 final class QuietOption {
-    @Option(names = {"-q", "--quiet"}, description = "Print no progress or notes, only warnings, errors and results.")
-    boolean quiet;
+    @Option(names = {"-q", "--quiet"}) boolean quiet;
 
     /** Where the command's notes, warnings and progress go: a fresh reporter per run. */
     Reporter reporter() {

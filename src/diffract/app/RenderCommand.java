@@ -33,11 +33,7 @@ import java.util.concurrent.Callable;
  * {@code diffract render}: one frame of what {@code view} would show, drawn offscreen into a PNG (or, as linear
  * light, an OpenEXR file), or with {@code --turntable} many frames into a looping GIF or a PNG sequence.
  */
-@Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Render one frame of the viewer offscreen and write it as a PNG, or as an OpenEXR file of "
-                + "linear light (with --turntable, frames going round into a looping GIF or a numbered PNG "
-                + "sequence): the same model, renderer and shaders as 'diffract view', without a window or X server "
-                + "(headless EGL; see docs/headless-gl.md).")
+@Command(name = "render", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class RenderCommand implements Callable<Integer>, SplitCommand {
     @Mixin GpuOption gpu;
     @Mixin ViewerOptions options;
@@ -46,17 +42,9 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
     @Mixin TileOptions tiles;
     @Spec CommandSpec spec;
 
-    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png|OUT.exr|OUT.gif",
-            description = "The PNG to write (tone mapped, display sRGB), or an OpenEXR file of the frame's linear "
-                    + "light (linear sRGB times the exposure, neither tone mapped nor clipped); with --turntable a "
-                    + ".gif (animated, looping), or a .png name for the numbered sequence OUT-000.png, OUT-001.png, "
-                    + "... Required, except with --tile.")
-    Path output;
+    @Option(names = {"-o", "--output"}, paramLabel = "OUT.png|OUT.exr|OUT.gif") Path output;
 
-    @Option(names = "--exr-half",
-            description = "With -o OUT.exr: store half floats (11 significant bits, finite up to 65504) instead of "
-                    + "32-bit floats.")
-    boolean exrHalf;
+    @Option(names = "--exr-half") boolean exrHalf;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Turntable:%n")
     TurntableOptions turntable = new TurntableOptions();
@@ -75,18 +63,11 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
 
     /** Many frames instead of one: the camera or the light goes once round the scene. */
     static final class TurntableOptions {
-        @Option(names = "--turntable", paramLabel = "FRAMES",
-                description = "Render FRAMES frames with the camera going once round the scene (2..720).")
-        Integer frames;
+        @Option(names = "--turntable", paramLabel = "FRAMES") Integer frames;
 
-        @Option(names = "--orbit-light",
-                description = "With --turntable: the key light (and the environment) goes round instead of the camera.")
-        boolean orbitLight;
+        @Option(names = "--orbit-light") boolean orbitLight;
 
-        @Option(names = "--frame-ms", defaultValue = "80", paramLabel = "MS",
-                description = "With --turntable and a .gif: milliseconds per frame, 10..10000 (default "
-                        + "${DEFAULT-VALUE}).")
-        int frameMs = 80;
+        @Option(names = "--frame-ms", defaultValue = "80", paramLabel = "MS") int frameMs = 80;
     }
 
     @Override

@@ -28,32 +28,17 @@ import java.util.stream.Stream;
  * array (its script written beside the pieces), waits for the array to end and merges them the same way, or prints the
  * merge command.
  */
-@Command(name = "submit", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Run a brdfmap command as N pieces (bands of rows), a render --turntable command as N pieces "
-                + "(runs of frames) or a bench sweep as N pieces (runs of configurations), in J local worker processes "
-                + "or as a Slurm job array, then merge them: the same files, bit for bit, as the command alone writes "
-                + "(a sweep: its rows as measured). Usage: diffract submit --local J -- brdfmap OPTIONS, or diffract "
-                + "submit --slurm --piece-count N --keep-pieces DIR -- render SCENE --turntable F OPTIONS.")
+@Command(name = "submit", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class SubmitCommand implements Callable<Integer> {
-    @Option(names = "--local", paramLabel = "J",
-            description = "How many worker processes run at once on this machine; each gets its share of the "
-                    + "processors.")
-    Integer workers;
+    @Option(names = "--local", paramLabel = "J") Integer workers;
 
-    @Option(names = "--piece-count", paramLabel = "N",
-            description = "How many pieces the map is split into (default J; more than J evens out pieces of "
-                    + "unequal cost; with --slurm required: the array's tasks).")
-    Integer pieceCount;
+    @Option(names = "--piece-count", paramLabel = "N") Integer pieceCount;
 
-    @Option(names = "--keep-pieces", paramLabel = "DIR",
-            description = "Leave the pieces and their manifests in DIR (default: a temporary folder, removed; with "
-                    + "--slurm required: a folder every node reads and writes, which also gets the job script).")
-    Path keepPieces;
+    @Option(names = "--keep-pieces", paramLabel = "DIR") Path keepPieces;
 
     @Mixin SlurmOptions slurm;
 
-    @Parameters(paramLabel = "COMMAND OPTIONS", arity = "1..*",
-            description = "After --: the brdfmap or render --turntable command as for a single run.")
+    @Parameters(paramLabel = "COMMAND OPTIONS", arity = "1..*", descriptionKey = "command-and-options")
     List<String> command;
 
     /** Outputs of brdfmap that merge writes, not the workers: each takes a value. */

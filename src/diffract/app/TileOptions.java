@@ -18,16 +18,9 @@ import java.util.List;
  * this one or on a Slurm cluster.
  */
 final class TileOptions {
-    @Option(names = "--tile", paramLabel = "I/N", converter = Tile.Converter.class,
-            description = "Compute only piece I (0..N-1) of N equal pieces of the result (brdfmap: bands of the map's "
-                    + "rows, on the CPU; render --turntable: runs of frames; bench: runs of the sweep's "
-                    + "configurations) into --pieces DIR; 'diffract merge DIR -o OUT' writes the result as one run "
-                    + "would (the outputs go to merge, not here).")
-    Tile tile;
+    @Option(names = "--tile", paramLabel = "I/N", converter = Tile.Converter.class) Tile tile;
 
-    @Option(names = "--pieces", paramLabel = "DIR",
-            description = "With --tile: the folder the piece and its manifest go to (made if missing).")
-    Path pieces;
+    @Option(names = "--pieces", paramLabel = "DIR") Path pieces;
 
     /**
      * Whether this run computes a piece: --tile given, with --pieces; --pieces without --tile is refused

@@ -22,10 +22,7 @@ import java.util.Optional;
 import java.util.concurrent.Callable;
 
 /** {@code diffract view}: the interactive viewer. */
-@Command(name = "view", mixinStandardHelpOptions = true, abbreviateSynopsis = true,
-        description = "Open the interactive viewer: a shape covered with the patch's structural colour, lit by a "
-                + "distant light, seen from a camera you orbit with the mouse. Press H in the window for the keys. "
-                + "Without a display, use 'diffract render' with the same options.")
+@Command(name = "view", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class ViewCommand implements Callable<Integer> {
     /** Set by the launcher when it runs a command under its own private Xvfb, which nobody can see. */
     static final String PRIVATE_XVFB_VARIABLE = "DIFFRACT_PRIVATE_XVFB";
@@ -36,16 +33,11 @@ final class ViewCommand implements Callable<Integer> {
     @Mixin QuietOption quiet;
     @Mixin CacheOption cache;
 
-    @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR",
-            description = "Where S saves screenshots (default ${DEFAULT-VALUE}).")
-    Path screenshotDir;
+    @Option(names = "--screenshot-dir", defaultValue = "out", paramLabel = "DIR") Path screenshotDir;
 
     @Spec CommandSpec spec;
 
-    @Option(names = "--screenshot-when-refined", hidden = true,
-            description = "Save one screenshot of the window (as the S key does) once its picture is refined, then "
-                    + "quit (docs/viewer-screenshot.sh).")
-    boolean screenshotWhenRefined;
+    @Option(names = "--screenshot-when-refined", hidden = true) boolean screenshotWhenRefined;
 
     /** The window's size unless --size or the scene says otherwise. */
     private static final Scene.ImageSize WINDOW = new Scene.ImageSize(800, 600);

@@ -47,18 +47,12 @@ import java.util.List;
  * pigmentation, diffuse weight); only {@code --shape} is refused beside a SCENE, which says its own shape.
  */
 final class ViewerOptions {
-    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE",
-            description = "A scene file (JSON, docs/scene-format.md), e.g. assets/scenes/snake-elaphe.json; options "
-                    + "given as well override what they name.")
-    Path scene;
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SCENE", descriptionKey = "scene") Path scene;
 
     @Spec(Spec.Target.MIXEE)
     CommandSpec mixee;
 
-    @Option(names = "--dump-scene", description = "Print the scene these options describe as a scene file (every key, "
-            + "defaults included, paths absolute; docs/scene-format.md) and draw nothing: save it to draw the same "
-            + "again, or to edit it.")
-    boolean dumpScene;
+    @Option(names = "--dump-scene") boolean dumpScene;
 
     @Mixin PatchOptions patch;
     @Mixin BrdfOptions brdf;
@@ -72,69 +66,43 @@ final class ViewerOptions {
     /** What the patch covers, and the pigment over it. */
     static final class Surface {
         @Option(names = "--shape", defaultValue = "sphere", paramLabel = "S", converter = ShapeConverter.class,
-                completionCandidates = OptionTypes.ShapeNames.class,
-                description = "${COMPLETION-CANDIDATES} (procedural; default ${DEFAULT-VALUE}).")
+                completionCandidates = OptionTypes.ShapeNames.class)
         Scene.ShapeKind shape = Scene.ShapeKind.SPHERE;
 
-        @Option(names = "--species", defaultValue = "elapheGuttata", paramLabel = "NAME", converter = SpeciesConverter.class,
-                description = "A snake's species, whose scales and pigment it wears: elapheGuttata or "
-                        + "xenopeltisUnicolor (default: the scene's; --shape snake's is ${DEFAULT-VALUE}).")
+        @Option(names = "--species", defaultValue = "elapheGuttata", paramLabel = "NAME",
+                converter = SpeciesConverter.class)
         SnakeSpecies species = SnakeSpecies.ELAPHE_GUTTATA;
 
-        @Option(names = "--smooth-skin",
-                description = "A snake without scales: the corn-snake pattern over a smooth skin.")
-        boolean smoothSkin;
+        @Option(names = "--smooth-skin") boolean smoothSkin;
 
-        @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z", converter = OptionTypes.Vector3.Converter.class,
-                description = "World direction of the patch's x axis (columns) on the shape, projected onto each surface point (default ${DEFAULT-VALUE}).")
+        @Option(names = "--tangent", defaultValue = "1,0,0", paramLabel = "X,Y,Z",
+                converter = OptionTypes.Vector3.Converter.class)
         OptionTypes.Vector3 tangent = new OptionTypes.Vector3(1, 0, 0);
 
-        @Option(names = "--pigmentation", paramLabel = "IMAGE",
-                description = "Pigment colours over the shape's texcoords (sRGB image); P toggles it.")
-        Path pigmentation;
+        @Option(names = "--pigmentation", paramLabel = "IMAGE") Path pigmentation;
 
-        @Option(names = "--no-pigmentation", description = "Start with the pigmentation off (structural colour only; P toggles it).")
-        boolean noPigmentation;
+        @Option(names = "--no-pigmentation") boolean noPigmentation;
 
-        @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W",
-                description = "w_d: pigment mixed in as ambient light (default: the scene's; ${DEFAULT-VALUE} for a "
-                        + "shape without a scene).")
-        double diffuseWeight = 0.2;
+        @Option(names = "--diffuse-weight", defaultValue = "0.2", paramLabel = "W") double diffuseWeight = 0.2;
     }
 
     /** The light, the orbit camera, what is shown and at what size. */
     static final class View {
-        @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG", description = "Light polar angle from the world z axis, 0.." + LightDirection.MAX_THETA_DEG_TEXT + " (default ${DEFAULT-VALUE}).")
-        double thetaIDeg = 30;
+        @Option(names = "--theta-i", defaultValue = "30", paramLabel = "DEG") double thetaIDeg = 30;
 
-        @Option(names = "--phi-i", paramLabel = "DEG",
-                description = "Light azimuth from the world x axis (default: in the plane of a named patch's period, 90 "
-                        + "for the snake patches; else 0).")
-        Double phiIDeg;
+        @Option(names = "--phi-i", paramLabel = "DEG") Double phiIDeg;
 
-        @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG", description = "Camera azimuth about the y axis (default ${DEFAULT-VALUE}).")
-        double azimuthDeg;
+        @Option(names = "--azimuth", defaultValue = "0", paramLabel = "DEG") double azimuthDeg;
 
-        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG",
-                description = "Camera elevation (default: the scene's; ${DEFAULT-VALUE} for a shape without a scene).")
-        double elevationDeg = 20;
+        @Option(names = "--elevation", defaultValue = "20", paramLabel = "DEG") double elevationDeg = 20;
 
-        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D",
-                description = "Camera distance from the look-at point (default: the scene's; ${DEFAULT-VALUE} for a "
-                        + "shape without a scene).")
-        double distance = 3.5;
+        @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D") double distance = 3.5;
 
-        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E", description = "Multiplies linear XYZ before "
-                + "display (default: the scene's, for the snake scenes the radiometric gain, the structural colour in "
-                + "the pigment's units; ${DEFAULT-VALUE} for a shape without a scene).")
-        double exposure = 10;
+        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E") double exposure = 400;
 
-        @Option(names = "--brdf-map", description = "Start with the BRDF map of the current light instead of the shape.")
-        boolean brdfMap;
+        @Option(names = "--brdf-map") boolean brdfMap;
 
-        @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class,
-                description = "The window of view, the picture of render (default: the scene's image, else 800x600 "
-                        + "for view and 512x512 for render).")
+        @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class)
         OptionTypes.ImageSize size;
     }
 

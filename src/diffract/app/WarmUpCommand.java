@@ -15,7 +15,7 @@ import java.util.stream.Stream;
  * It leaves out the reference map: with the classes of a reference map's run in the archive, Java 17 ran the
  * reference map five times slower (42.7 s against 8.2 s for the 64^2 map of docs/pieces.sh's patch, same output).
  */
-@Command(name = "warm-up", hidden = true, description = "Exercise the common code paths once (used by the launcher).")
+@Command(name = "warm-up", hidden = true)
 final class WarmUpCommand implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {

@@ -16,9 +16,7 @@ import java.util.concurrent.Callable;
  * writes {@link #DONE} and the command's exit code on a line of its own. A worker so pays Java's start and the
  * compilation of the code its pieces run once, not once per piece.
  */
-@Command(name = "worker", hidden = true, description = "Run the commands read from standard input (one JSON array of "
-        + "arguments a line) one after another in this process, each followed by a line with its exit code (used by "
-        + "submit --local).")
+@Command(name = "worker", hidden = true)
 final class WorkerCommand implements Callable<Integer> {
     /** What starts the line after a command's output: a NUL, so that no output of a command can look like it. */
     static final String DONE = "\u0000diffract worker: exit ";
