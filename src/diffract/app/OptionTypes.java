@@ -202,11 +202,11 @@ final class OptionTypes {
         }
     }
 
-    /** gaussian, disc. */
+    /** disc, gaussian. */
     static final class LightProfileNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return List.of(LightProfile.DISC.label(), LightProfile.GAUSSIAN.label()).iterator();
+            return java.util.Arrays.stream(LightProfile.values()).map(LightProfile::label).iterator();
         }
     }
 

@@ -59,7 +59,7 @@ public final class BakedTables {
      * Disk keys already worked out (they preprocess the bake's shaders), by the terms' content hash, settings and
      * method: not by the terms themselves, which would keep large terms alive.
      */
-    private static final Map<String, DiskCache.Key> DISK_KEYS = new LinkedHashMap<>(16, 0.75f, true) {
+    private final Map<String, DiskCache.Key> diskKeys = new LinkedHashMap<>(16, 0.75f, true) {
         @Override
         protected boolean removeEldestEntry(Map.Entry<String, DiskCache.Key> eldest) {
             return size() > 16;
@@ -224,17 +224,17 @@ public final class BakedTables {
     }
 
     /** The disk cache's key of an in-memory key, worked out once. */
-    private static DiskCache.Key diskKey(Key key) {
+    private DiskCache.Key diskKey(Key key) {
         String memo = key.terms().contentSha256() + " " + key.settings() + " " + key.tabulated().spec();
-        synchronized (DISK_KEYS) {
-            DiskCache.Key known = DISK_KEYS.get(memo);
+        synchronized (diskKeys) {
+            DiskCache.Key known = diskKeys.get(memo);
             if (known != null) {
                 return known;
             }
         }
         DiskCache.Key computed = BakedTableFile.key(key.terms(), key.settings(), key.tabulated());
-        synchronized (DISK_KEYS) {
-            DISK_KEYS.put(memo, computed);
+        synchronized (diskKeys) {
+            diskKeys.put(memo, computed);
         }
         return computed;
     }
@@ -299,8 +299,8 @@ public final class BakedTables {
     /** Forgets the tables in memory, as a new process starts (tests: the next request reads the disk cache). */
     public synchronized void forgetInMemory() {
         inMemory.clear();
-        synchronized (DISK_KEYS) {
-            DISK_KEYS.clear();
+        synchronized (diskKeys) {
+            diskKeys.clear();
         }
     }
 }

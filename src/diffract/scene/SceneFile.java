@@ -209,7 +209,7 @@ public final class SceneFile {
     }
 
     private static Scene.ShapeSpec shape(SceneObject shape) {
-        List<String> kinds = List.of("snake", "obj", "plane", "sphere", "cylinder");
+        List<String> kinds = java.util.Arrays.stream(Scene.ShapeKind.values()).map(Scene.ShapeKind::sceneName).toList();
         Scene.ShapeKind kind = Scene.ShapeKind.valueOf(shape.choice("kind", kinds).toUpperCase(java.util.Locale.ROOT));
         Path file = null;
         TangentSource tangents = null;
