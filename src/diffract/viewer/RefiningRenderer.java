@@ -127,6 +127,7 @@ public final class RefiningRenderer implements GLEventListener {
     private long passesCompleted;
     private volatile RefinementStatus status = RefinementStatus.STARTING;
     private volatile Thread renderThread;
+    private volatile boolean holdLastPass;
 
     public RefiningRenderer(ViewerModel model, ViewerRenderer renderer, TableBaker baker) {
         this.model = model;
@@ -137,6 +138,21 @@ public final class RefiningRenderer implements GLEventListener {
     /** The thread whose {@link #display} calls draw (the render loop's); other threads' calls only show. */
     public void drawOn(Thread thread) {
         renderThread = thread;
+    }
+
+    /**
+     * Holds the last pass of each refinement after its first tile, as if every further tile took for ever (unless the
+     * refinement starts there: its first pass always completes). The order of events this class promises (a picture
+     * before the expensive frame, input applied and a quit honoured while that frame is drawn) is then the same on a
+     * machine of any speed: tests ask for it; off unless asked.
+     */
+    void holdLastPass(boolean hold) {
+        holdLastPass = hold;
+    }
+
+    private boolean held(Refinement r) {
+        return holdLastPass && r.index == r.passes.size() - 1 && r.index > r.first && r.frame != null
+                && r.frame.tilesDrawn() > 0;
     }
 
     /** Where the refinement stands, for the title and tests. */
@@ -163,7 +179,7 @@ public final class RefiningRenderer implements GLEventListener {
         if (r == null || !readBacks.isEmpty() || needsRestart(r, model.state())) {
             return true;
         }
-        return !r.failed && !r.isDone();
+        return !r.failed && !r.isDone() && !held(r);
     }
 
     /** Whether the picture changed, or the table the refinement waited for came. */
@@ -218,7 +234,7 @@ public final class RefiningRenderer implements GLEventListener {
         try {
             // quick tiles (the background, a fast GPU) go several to a call, so showing them costs little
             do {
-                if (r.failed || r.isDone() || r.mayRestart() && needsRestart(r, model.state())) {
+                if (r.failed || r.isDone() || held(r) || r.mayRestart() && needsRestart(r, model.state())) {
                     break;
                 }
                 drawTile(gl, r);

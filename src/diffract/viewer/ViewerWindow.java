@@ -125,6 +125,11 @@ public final class ViewerWindow implements AutoCloseable {
         return renderer;
     }
 
+    /** Holds the last pass of each refinement after its first tile ({@link RefiningRenderer#holdLastPass}): tests. */
+    void holdLastPass(boolean hold) {
+        refiner.holdLastPass(hold);
+    }
+
     /** Where the refinement of the picture stands. */
     public RefinementStatus refinement() {
         return refiner.status();
