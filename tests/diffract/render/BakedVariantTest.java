@@ -116,39 +116,83 @@ class BakedVariantTest {
      * Maps of the baked variant against the CPU's FLSS and reference maps (64 x 64, theta_i 0, 45, 75), through
      * the exposure AutoExposure picks from the CPU map. What the table loses is trilinear interpolation of orders
      * that are Gaussians of sigma = lambda / (2 pi sigma_s) = 0.024..0.050 in (u, v), sampled every
-     * 4 / 128 = 0.031: about h^2 / (8 sigma^2) = 0.05..0.2 of a peak, where an order is narrow. Tolerance: mean
-     * CIEDE2000 over the disk <= 2 (measured <= 0.55) and over the lit pixels <= 8 (measured 2.5 to 5.8), i.e. the
-     * pictures are the same with visibly softened narrow orders; FLSS's own distance to the reference is printed
-     * beside it.
+     * 4 / 128 = 0.031: about h^2 / (8 sigma^2) = 0.05..0.2 of a peak, where an order is narrow, i.e. the pictures are
+     * the same with visibly softened narrow orders; FLSS's own distance to the reference is printed beside it.
+     * Measured (llvmpipe): mean CIEDE2000 over the disk 0.36 to 0.51, over the lit pixels 2.4 to 5.3. The bounds
+     * sit about half above the worst, for a GPU whose texture unit interpolates with 8-bit weights (CUDA's
+     * documented linear filtering); a table of half the samples breaks both ({@link #aCoarserTableFailsTheBounds}).
      */
+    static final double MAX_DISK_MEAN = 0.8;
+    static final double MAX_LIT_MEAN = 7.5;
+
     @Test
     void bakedMapsAgreeWithFlssAndTheReference() {
         GlTestSupport.assumeOffscreenGl();
-        for (HeightField patch : new HeightField[] {RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE}) {
+        Worst worst = compareMaps(baked(), true, RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE);
+        TestReport.printf(BakedVariantTest.class, "worst of %d maps: disk mean %.3f, lit mean %.3f%n", worst.maps,
+                worst.diskMean, worst.litMean);
+        assertTrue(worst.diskMean <= MAX_DISK_MEAN, "disk mean " + worst.diskMean);
+        assertTrue(worst.litMean <= MAX_LIT_MEAN, "lit mean " + worst.litMean);
+    }
+
+    /**
+     * The bounds catch a table that resolves the orders worse: half the samples along u and v (spacing 0.062, four
+     * times the interpolation error where an order is narrow) breaks both on the blazed grating (measured: disk 0.93
+     * to 1.21, lit 10.9 to 11.6; the Elaphe-like patch's are 1.12 to 1.39 and 5.4 to 7.9).
+     */
+    @Test
+    void aCoarserTableFailsTheBounds() {
+        GlTestSupport.assumeOffscreenGl();
+        Worst coarse = compareMaps(RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(
+                (UV_SAMPLES + 1) / 2, 0)), false, RenderTestSupport.BLAZED);
+        TestReport.printf(BakedVariantTest.class, "a table of %d uv samples, worst of %d maps: disk mean %.3f, lit "
+                + "mean %.3f%n", (UV_SAMPLES + 1) / 2, coarse.maps, coarse.diskMean, coarse.litMean);
+        assertTrue(coarse.diskMean > MAX_DISK_MEAN, "disk mean " + coarse.diskMean);
+        assertTrue(coarse.litMean > MAX_LIT_MEAN, "lit mean " + coarse.litMean);
+    }
+
+    /** The largest means over the patches and the three angles. */
+    private record Worst(int maps, double diskMean, double litMean) {
+        Worst with(BrdfMapDifference d) {
+            return new Worst(maps + 1, Math.max(diskMean, d.disk().mean()), Math.max(litMean, d.lit().mean()));
+        }
+    }
+
+    /**
+     * Every map of {@code settings} on {@code patches} against FLSS (and, with {@code againstReference}, the
+     * reference), reported.
+     */
+    private static Worst compareMaps(BrdfSettings settings, boolean againstReference, HeightField... patches) {
+        Worst worst = new Worst(0, 0, 0);
+        for (HeightField patch : patches) {
             TaylorTerms terms = RenderTestSupport.terms(patch);
             DiffractionBrdf flss = DiffractionBrdf.create(RenderTestSupport.settings(Variant.FLSS), patch, terms);
             DiffractionBrdf reference = DiffractionBrdf.create(RenderTestSupport.settings(Variant.REFERENCE), patch,
                     terms);
-            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, baked())) {
+            try (GpuBrdfMap gpu = new GpuBrdfMap(terms, settings)) {
                 for (double thetaI : new double[] {0, 45, 75}) {
                     Direction wi = RenderTestSupport.light(patch, thetaI);
                     float[] cpuFlss = BrdfMap.xyz(flss, wi, SIZE, Reporter.SILENT);
-                    float[] cpuReference = BrdfMap.xyz(reference, wi, SIZE, Reporter.SILENT);
                     float[] actual = gpu.xyz(wi, SIZE);
                     BrdfMapDifference toFlss = RenderTestSupport.difference(cpuFlss, actual, SIZE, wi);
-                    BrdfMapDifference toReference = RenderTestSupport.difference(cpuReference, actual, SIZE, wi);
-                    BrdfMapDifference flssToReference = RenderTestSupport.difference(cpuReference, cpuFlss, SIZE, wi);
-                    String where = "baked " + RenderTestSupport.name(patch) + " theta_i " + thetaI;
+                    String where = "baked (" + settings.gpu().bakedUvSamples() + " uv) " + RenderTestSupport.name(patch)
+                            + " theta_i " + thetaI;
                     TestReport.line(BakedVariantTest.class, where + " vs CPU flss: " + toFlss.summary());
-                    TestReport.line(BakedVariantTest.class, where + " vs CPU reference: " + toReference.summary()
-                            + "; flss vs reference: " + flssToReference.summary());
                     assertTrue(toFlss.litPixels() >= 20, where + ": too few lit pixels");
-                    assertTrue(toFlss.disk().mean() <= 2.0, where + " vs flss: " + toFlss.summary());
-                    assertTrue(toFlss.lit().mean() <= 8.0, where + " vs flss: " + toFlss.summary());
-                    assertTrue(toReference.disk().mean() <= 2.0, where + " vs reference: " + toReference.summary());
+                    worst = worst.with(toFlss);
+                    if (againstReference) {
+                        float[] cpuReference = BrdfMap.xyz(reference, wi, SIZE, Reporter.SILENT);
+                        BrdfMapDifference toReference = RenderTestSupport.difference(cpuReference, actual, SIZE, wi);
+                        BrdfMapDifference flssToReference = RenderTestSupport.difference(cpuReference, cpuFlss, SIZE,
+                                wi);
+                        TestReport.line(BakedVariantTest.class, where + " vs CPU reference: " + toReference.summary()
+                                + "; flss vs reference: " + flssToReference.summary());
+                        worst = worst.with(toReference);
+                    }
                 }
             }
         }
+        return worst;
     }
 
     /**
