@@ -17,14 +17,20 @@ public final class ShortPixels {
     private long pixels;
     private long shortPixels;
 
-    /** The RGB of {@code rgba} (4 floats a pixel, in its order), counting its pixels of alpha 0. */
-    public float[] rgbOf(float[] rgba) {
+    /** Counts the pixels of alpha 0 of {@code rgba} (4 floats a pixel). */
+    public ShortPixels countIn(float[] rgba) {
         for (int i = 3; i < rgba.length; i += 4) {
             if (rgba[i] == 0) {
                 shortPixels++;
             }
         }
         pixels += rgba.length / 4;
+        return this;
+    }
+
+    /** The RGB of {@code rgba} (4 floats a pixel, in its order), counting its pixels of alpha 0. */
+    public float[] rgbOf(float[] rgba) {
+        countIn(rgba);
         return OffscreenTarget.dropAlpha(rgba);
     }
 

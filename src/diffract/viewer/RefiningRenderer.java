@@ -338,11 +338,10 @@ public final class RefiningRenderer implements GLEventListener {
         if (!GpuMethods.of(settings.variant()).reportsShortPixels()) {
             return;
         }
-        ShortPixels shortPixels = new ShortPixels();
-        shortPixels.rgbOf(picture.readRgbaTopDown(gl));
-        if (shortPixels.count() > 0) {
+        long count = new ShortPixels().countIn(picture.readRgbaTopDown(gl)).count();
+        if (count > 0) {
             String text = String.format(Locale.ROOT, "%d px left short (the GL ended their loops early): too dark "
-                    + "there; a GPU or a coarser --lobe-quadrature draws them whole", shortPixels.count());
+                    + "there; a GPU or a coarser --lobe-quadrature draws them whole", count);
             model.update(s -> s.withNotice(Notice.forSeconds(text, 10)));
         }
     }
