@@ -6,6 +6,9 @@ import diffract.optics.FresnelModel;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.LightProfile;
 import diffract.optics.PixelFilter;
+import diffract.optics.Polarisation;
+import diffract.optics.RigorousSettings;
+import diffract.optics.rigorous.Resolution;
 import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TermFormat;
@@ -50,6 +53,9 @@ final class BrdfOptions {
     @ArgGroup(exclusive = false, validate = false, heading = "GPU tables:%n")
     GpuTables gpu = new GpuTables();
 
+    @ArgGroup(exclusive = false, validate = false, heading = "Rigorous method:%n")
+    Rigorous rigorous = new Rigorous();
+
     /** {@link diffract.optics.TaylorSettings}. */
     static final class Taylor {
         @Option(names = "--terms", paramLabel = "N") Integer highestOrder;
@@ -90,7 +96,8 @@ final class BrdfOptions {
     static final class Illumination {
         @Option(names = "--coherence-length", paramLabel = "UM") Double coherenceLengthUm;
 
-        @Option(names = "--refractive-index", paramLabel = "N") Double refractiveIndex;
+        @Option(names = "--refractive-index", paramLabel = "N[+Ki]", converter = OptionTypes.ComplexIndexConverter.class)
+        diffract.optics.rigorous.ComplexIndex refractiveIndex;
 
         @Option(names = "--pixel-filter", paramLabel = "F", completionCandidates = OptionTypes.PixelFilterNames.class)
         PixelFilter pixelFilter;
@@ -117,6 +124,19 @@ final class BrdfOptions {
 
         @Option(names = "--baked-samples", paramLabel = "UV,W", converter = OptionTypes.BakedSamples.Converter.class)
         OptionTypes.BakedSamples bakedSamples;
+    }
+
+    /** {@link diffract.optics.RigorousSettings}. */
+    static final class Rigorous {
+        @Option(names = "--harmonics", paramLabel = "M|auto", converter = OptionTypes.Harmonics.Converter.class)
+        OptionTypes.Harmonics harmonics;
+
+        @Option(names = "--layers", paramLabel = "L") Integer layers;
+
+        @Option(names = "--no-layer-extrapolation") boolean noExtrapolation;
+
+        @Option(names = "--polarisation", paramLabel = "P", completionCandidates = OptionTypes.PolarisationNames.class)
+        Polarisation polarisation;
     }
 
     boolean auto() {
@@ -188,9 +208,11 @@ final class BrdfOptions {
                     : s.normalisation()));
         }
         IlluminationSettings i = base.illumination();
-        if (illumination.coherenceLengthUm != null || illumination.refractiveIndex != null) {
-            b.illumination(i.withCoherenceLengthUm(or(illumination.coherenceLengthUm, i.coherenceLengthUm()))
-                    .withRefractiveIndex(or(illumination.refractiveIndex, i.refractiveIndex())));
+        if (illumination.coherenceLengthUm != null) {
+            b.coherenceLengthUm(illumination.coherenceLengthUm);
+        }
+        if (illumination.refractiveIndex != null) {
+            b.material(illumination.refractiveIndex);
         }
         if (illumination.lightSizeDeg != null) {
             b.lightSizeDeg(illumination.lightSizeDeg);
@@ -213,7 +235,32 @@ final class BrdfOptions {
         if (gpu.bakedSamples != null) {
             b.bakedSamples(gpu.bakedSamples.uv(), gpu.bakedSamples.w());
         }
+        if (rigorous.harmonics != null || rigorous.layers != null || rigorous.noExtrapolation
+                || rigorous.polarisation != null) {
+            b.rigorous(rigorousSettings(base.rigorous()));
+        }
         return b.build();
+    }
+
+    private RigorousSettings rigorousSettings(RigorousSettings base) {
+        Resolution r = base.resolution();
+        int maxOrder = rigorous.harmonics != null ? rigorous.harmonics.maxOrder() : r.maxOrder();
+        int layers = rigorous.layers != null ? rigorous.layers : r.layers();
+        boolean extrapolate = !rigorous.noExtrapolation && r.extrapolate();
+        if (maxOrder > Resolution.MAX_ORDER || maxOrder < 0) {
+            throw new InvalidSettingException(Quantity.HARMONICS, "the highest harmonic must be in [1, "
+                    + Resolution.MAX_ORDER + "] or auto, got " + maxOrder);
+        }
+        if (layers < 1 || layers > Resolution.MAX_LAYERS) {
+            throw new InvalidSettingException(Quantity.LAYERS, "the staircase's layers must be in [1, "
+                    + Resolution.MAX_LAYERS + "], got " + layers);
+        }
+        if (extrapolate && layers % 2 != 0) {
+            throw new InvalidSettingException(Quantity.LAYERS, "the staircase is extrapolated from L / 2 and L "
+                    + "layers: give an even L, or add --no-layer-extrapolation; got " + layers);
+        }
+        return new RigorousSettings(new Resolution(maxOrder, layers, extrapolate),
+                rigorous.polarisation != null ? rigorous.polarisation : base.polarisation());
     }
 
     private static double or(Double given, double fallback) {

@@ -40,7 +40,9 @@ public final class HelpText extends ResourceBundle {
             "value.min-frames", Integer.toString(GpuTimer.MIN_FRAMES),
             "value.cache-variable", DiskCache.ROOT_VARIABLE,
             "value.gpu-variable", HeadlessGL.GPU_VARIABLE,
-            "value.max-size-px", Integer.toString(ProceduralOptions.MAX_SIZE_PX));
+            "value.max-size-px", Integer.toString(ProceduralOptions.MAX_SIZE_PX),
+            "value.harmonics-margin", Integer.toString(diffract.optics.rigorous.Resolution.AUTO_MARGIN),
+            "value.rigorous-layers", Integer.toString(diffract.optics.rigorous.Resolution.DEFAULT.layers()));
 
     private final Map<String, String> entries = new LinkedHashMap<>();
 

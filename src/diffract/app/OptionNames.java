@@ -29,6 +29,9 @@ final class OptionNames {
         FLAGS.put(Quantity.MONOCHROMATIC_LAMBDA, "--lambda");
         FLAGS.put(Quantity.COHERENCE_LENGTH, "--coherence-length");
         FLAGS.put(Quantity.REFRACTIVE_INDEX, "--refractive-index");
+        FLAGS.put(Quantity.HARMONICS, "--harmonics");
+        FLAGS.put(Quantity.LAYERS, "--layers");
+        FLAGS.put(Quantity.POLARISATION, "--polarisation");
         FLAGS.put(Quantity.LIGHT_SIZE, "--light-size-deg");
         FLAGS.put(Quantity.LIGHT_PROFILE, "--light-profile");
         FLAGS.put(Quantity.FRESNEL, "--fresnel");

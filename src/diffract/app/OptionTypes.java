@@ -84,6 +84,32 @@ final class OptionTypes {
         }
     }
 
+    /** {@code --harmonics M|auto}: the rigorous method's highest harmonic, or (0) chosen per wavelength. */
+    record Harmonics(int maxOrder) {
+        static final class Converter implements ITypeConverter<Harmonics> {
+            @Override
+            public Harmonics convert(String text) {
+                if (text.trim().equalsIgnoreCase("auto")) {
+                    return new Harmonics(0);
+                }
+                return new Harmonics(whole(text, "a whole number of harmonics or auto"));
+            }
+        }
+    }
+
+    /** {@code --refractive-index N[+Ki]}: a complex index, n alone for a lossless material. */
+    static final class ComplexIndexConverter implements ITypeConverter<diffract.optics.rigorous.ComplexIndex> {
+        @Override
+        public diffract.optics.rigorous.ComplexIndex convert(String text) {
+            try {
+                return diffract.optics.rigorous.ComplexIndex.parse(text);
+            } catch (IllegalArgumentException e) {
+                throw new picocli.CommandLine.TypeConversionException("'" + text + "' is not a refractive index: write n "
+                        + "or n+ki, e.g. 1.56 or 1.56+0.03i");
+            }
+        }
+    }
+
     /** {@code --exposure E|auto}: a positive factor, or (null) the brightest diffracted pixel mapped to 1. */
     record Exposure(Double factor) {
         boolean automatic() {
@@ -199,6 +225,15 @@ final class OptionTypes {
         @Override
         public Iterator<String> iterator() {
             return java.util.Arrays.stream(FresnelModel.values()).map(FresnelModel::label).iterator();
+        }
+    }
+
+    /** unpolarised, s, p. */
+    static final class PolarisationNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return java.util.Arrays.stream(diffract.optics.Polarisation.values())
+                    .map(diffract.optics.Polarisation::label).iterator();
         }
     }
 

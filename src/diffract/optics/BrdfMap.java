@@ -39,6 +39,7 @@ public final class BrdfMap {
      */
     public static float[] xyz(DiffractionBrdf brdf, Direction wi, int size, MapBand band, Reporter reporter) {
         float[] out = new float[size * band.rows() * 3];
+        brdf.prepare(wi, reporter);
         forEachPixel(size, band, reporter, "BRDF map " + size + "x" + size + band.label(size), (i, j) -> {
             Xyz c = brdf.mapPixel(wi, i, j, size);
             int p = 3 * ((j - band.fromRow()) * size + i);
@@ -58,6 +59,7 @@ public final class BrdfMap {
     public static float[] monochromatic(DiffractionBrdf brdf, Direction wi, double lambdaNm, int size, MapBand band,
                                         Reporter reporter) {
         float[] out = new float[size * band.rows()];
+        brdf.prepare(wi, reporter);
         forEachPixel(size, band, reporter, "BRDF map " + size + "x" + size + band.label(size) + " at " + lambdaNm
                 + " nm", (i, j) -> {
             double x = xOf(i, size);

@@ -15,11 +15,12 @@ import java.util.function.Consumer;
  * variant into {@link Variant}.
  */
 public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSettings taylor, WindowSettings window,
-                           IlluminationSettings illumination, LobeQuadrature lobes, GpuTableSettings gpu) {
+                           IlluminationSettings illumination, LobeQuadrature lobes, GpuTableSettings gpu,
+                           RigorousSettings rigorous) {
 
     public BrdfSettings {
         if (variant == null || spectral == null || taylor == null || window == null || illumination == null
-                || lobes == null || gpu == null) {
+                || lobes == null || gpu == null || rigorous == null) {
             throw new NullPointerException("the variant and every group of settings are required");
         }
         if (window.placement() == WindowPlacement.LOCAL && !variant.drawsLocalWindow()) {
@@ -30,7 +31,7 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
     /** The thesis' configuration for a variant. */
     public static BrdfSettings thesis(Variant variant) {
         return new BrdfSettings(variant, SpectralSettings.thesis(), TaylorSettings.thesis(), WindowSettings.thesis(),
-                IlluminationSettings.thesis(), LobeQuadrature.DEFAULT, GpuTableSettings.exact());
+                IlluminationSettings.thesis(), LobeQuadrature.DEFAULT, GpuTableSettings.exact(), RigorousSettings.DEFAULT);
     }
 
     /** A builder that starts from the thesis' configuration for {@code variant}. */
@@ -86,6 +87,7 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
         private IlluminationSettings illumination;
         private LobeQuadrature lobes;
         private GpuTableSettings gpu;
+        private RigorousSettings rigorous;
 
         private Builder(BrdfSettings s) {
             variant = s.variant;
@@ -95,6 +97,7 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
             illumination = s.illumination;
             lobes = s.lobes;
             gpu = s.gpu;
+            rigorous = s.rigorous;
         }
 
         public Builder variant(Variant v) {
@@ -187,6 +190,11 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
             return illumination(illumination.withRefractiveIndex(n));
         }
 
+        /** The surface's complex index n + i k. */
+        public Builder material(diffract.optics.rigorous.ComplexIndex index) {
+            return illumination(illumination.withMaterial(index));
+        }
+
         /** The light's angular diameter in degrees (0: a point light), its profile kept. */
         public Builder lightSizeDeg(double diameterDeg) {
             return illumination(illumination.withLight(new LightSource(diameterDeg, illumination.light().profile())));
@@ -226,8 +234,14 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
             return gpu(new GpuTableSettings(gpu.termFormat(), uvSamples, wSamples));
         }
 
+        /** The rigorous method's settings as a whole. */
+        public Builder rigorous(RigorousSettings r) {
+            rigorous = r;
+            return this;
+        }
+
         public BrdfSettings build() {
-            return new BrdfSettings(variant, spectral, taylor, window, illumination, lobes, gpu);
+            return new BrdfSettings(variant, spectral, taylor, window, illumination, lobes, gpu, rigorous);
         }
     }
 }

@@ -2,6 +2,8 @@ package diffract.optics;
 
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
+import diffract.util.DiskCache;
+import diffract.util.Reporter;
 
 /**
  * The relative diffraction BRDF of a patch (004): monochromatic, rho_lambda = C(omega_i, omega_r) S |P|^2
@@ -20,6 +22,8 @@ public final class DiffractionBrdf {
     private final DiscLightAverage discLight;
     /** The lobes method (LOBES), else null. */
     private final LobeSpectrum lobes;
+    /** The rigorous method, else null. */
+    private final RigorousBrdf rigorous;
 
     /**
      * A spectrum integrated over {@code sampling} under a point light, each direction point-sampled, with the
@@ -39,11 +43,17 @@ public final class DiffractionBrdf {
 
     private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, IlluminationSettings illumination,
                             FilteredReference filteredReference, LobeSpectrum lobes) {
+        this(spectrum, sampling, illumination, filteredReference, lobes, null);
+    }
+
+    private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, IlluminationSettings illumination,
+                            FilteredReference filteredReference, LobeSpectrum lobes, RigorousBrdf rigorous) {
         this.spectrum = spectrum;
         this.sampling = sampling;
         this.illumination = illumination;
         this.filteredReference = filteredReference;
         this.lobes = lobes;
+        this.rigorous = rigorous;
         this.discLight = filteredReference != null && illumination.light().isDisc()
                 ? new DiscLightAverage(filteredReference, illumination.light()) : null;
     }
@@ -76,6 +86,26 @@ public final class DiffractionBrdf {
         return new DiffractionBrdf(exact, WavelengthSampling.uniform(spectral.lambdaMinNm(),
                 spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM, spectral.normalisation()),
                 illumination, filtered, null);
+    }
+
+    /**
+     * The rigorous method (called by its method class): the patch's orders from Maxwell's equations
+     * ({@link RigorousOrders}) drawn as the reference draws its lobes, kept in the user's disk cache.
+     */
+    static DiffractionBrdf rigorous(BrdfSettings settings, HeightField meanSubtracted) {
+        RigorousPatch patch = RigorousPatch.of(meanSubtracted);
+        return new DiffractionBrdf(null, null, settings.illumination(), null, null,
+                new RigorousBrdf(patch, settings, DiskCache.user()));
+    }
+
+    /**
+     * Readies the BRDF for maps lit from {@code wi}, reporting progress: the rigorous method solves its orders for
+     * that direction here (minutes); every other method has nothing to do.
+     */
+    public void prepare(Direction wi, Reporter reporter) {
+        if (rigorous != null) {
+            rigorous.prepare(wi, reporter);
+        }
     }
 
     /**
@@ -184,6 +214,9 @@ public final class DiffractionBrdf {
 
     /** The relative BRDF at one wavelength (grey BRDF maps, grating-equation tests). */
     public double relative(Direction wi, Direction wr, double lambdaNm) {
+        if (rigorous != null) {
+            return rigorous.relative(wi, wr, lambdaNm);
+        }
         double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
         if (gain == 0) {
             return 0;
@@ -199,6 +232,9 @@ public final class DiffractionBrdf {
      * incidence): at the direction itself (no pixel), averaged over the illumination's light for the reference and lobes.
      */
     public Xyz xyz(Direction wi, Direction wr) {
+        if (rigorous != null) {
+            return rigorous.xyz(wi, wr);
+        }
         if (discLight != null) {
             return discLight.at(wi, wr);
         }
@@ -238,6 +274,9 @@ public final class DiffractionBrdf {
         double y = BrdfMap.yOf(row, size);
         if (x * x + y * y >= 1.0) {
             return new Xyz(0, 0, 0);
+        }
+        if (rigorous != null) {
+            return rigorous.mapPixel(wi, column, row, size);
         }
         Direction wr = Direction.fromProjected(x, y);
         if (illumination.pixelFilter() != PixelFilter.BOX || (filteredReference == null && lobes == null)) {

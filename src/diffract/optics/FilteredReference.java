@@ -51,32 +51,30 @@ public final class FilteredReference {
      */
     static final double SKIP_TOLERANCE = 1e-6;
 
-    private final GaussianLobes lobes;
-    private final ExactSpectrum exact;
-    private final double maxAbsHeightUm;
+    private final LobeWeights weights;
     private final SpectralDensity density;
     /** Per nanometre cell of the band from floor(lambda_min): an upper bound on f_X + f_Y + f_Z over the cell. */
     private final double[] densityBound;
     private final double extentXUm;
     private final double extentYUm;
     private final double sigmaFPerUm;
-    private final double refractiveIndex;
-    private final FresnelModel fresnel;
 
     /** Over the band and with the mirror's normalisation of {@code spectral}. */
     public FilteredReference(ExactSpectrum spectrum, CoherenceWindow window, SpectralSettings spectral,
                              double refractiveIndex, FresnelModel fresnel) {
-        this.lobes = new GaussianLobes(spectrum, spectrum.sigmaTexelsX(), spectrum.sigmaTexelsY(),
-                window.averaged() ? GaussianLobes.WHOLE_TEXELS : PAIR_THRESHOLD);
-        this.exact = spectrum;
-        this.maxAbsHeightUm = spectrum.maxAbsHeightUm();
+        this(LobeWeights.scalar(spectrum, window.averaged() ? GaussianLobes.WHOLE_TEXELS : PAIR_THRESHOLD,
+                refractiveIndex, fresnel), spectrum.extentXUm(), spectrum.extentYUm(), window, spectral);
+    }
+
+    /** The lobes of a patch of L_x x L_y weighed by {@code weights}, over the band of {@code spectral}. */
+    FilteredReference(LobeWeights weights, double extentXUm, double extentYUm, CoherenceWindow window,
+                      SpectralSettings spectral) {
+        this.weights = weights;
         this.density = new SpectralDensity(spectral.lambdaMinNm(), spectral.lambdaMaxNm(), spectral.normalisation());
         this.densityBound = densityBound(density);
-        this.extentXUm = spectrum.extentXUm();
-        this.extentYUm = spectrum.extentYUm();
+        this.extentXUm = extentXUm;
+        this.extentYUm = extentYUm;
         this.sigmaFPerUm = window.sigmaFrequencyPerUm();
-        this.refractiveIndex = refractiveIndex;
-        this.fresnel = fresnel;
     }
 
     /**
@@ -182,7 +180,7 @@ public final class FilteredReference {
         if (x * x + y * y >= 1) {
             return Double.NaN;
         }
-        return GainFactor.gainTimesShadowing(wi, Direction.fromProjected(x, y), refractiveIndex, fresnel);
+        return weights.gain(wi, Direction.fromProjected(x, y));
     }
 
     private static double wAt(Direction wi, double x, double y) {
@@ -217,7 +215,7 @@ public final class FilteredReference {
      * and W taken constant over it (use {@link #mapPixel} for map pixels).
      */
     public double[] at(Direction wi, Direction wr, Footprint footprint) {
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+        double gain = weights.gain(wi, wr);
         if (gain == 0) {
             return new double[3];
         }
@@ -270,7 +268,7 @@ public final class FilteredReference {
         double reachU = hx + REACH_SIGMAS * Math.sqrt(lobeVariance + g.xx());
         double reachV = hy + REACH_SIGMAS * Math.sqrt(lobeVariance + g.yy());
         int[] range = LobeGeometry.candidateRange(u, v, reachU, reachV, extentXUm, extentYUm, lambdaMin, lambdaMax);
-        if (!lobes.hasPairs()) {
+        if (!weights.hasPairs()) {
             return wholeTexelSum(u, v, w, hx, hy, g, linear, range, reachU, reachV);
         }
         int step = 1;
@@ -283,7 +281,7 @@ public final class FilteredReference {
                 if (interval == null) {
                     continue;
                 }
-                GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+                LobeWeights.Lobe lobe = weights.lobe(tx, ty);
                 if (lobe == null) {
                     continue;
                 }
@@ -341,15 +339,8 @@ public final class FilteredReference {
     private double lobeBound(int mx, int my, double cx, double cy, double u, double v, double w, double hx, double hy,
                              Covariance2 g, Linear linear, double from, double to) {
         double dw = Math.abs(linear.wU()) * hx + Math.abs(linear.wV()) * hy;
-        double kLo = 2 * Math.PI / (to * 1e-3);
         double kHi = 2 * Math.PI / (from * 1e-3);
-        double a1 = kLo * (w - dw);
-        double a2 = kHi * (w - dw);
-        double a3 = kLo * (w + dw);
-        double a4 = kHi * (w + dw);
-        double aLo = Math.min(Math.min(a1, a2), Math.min(a3, a4));
-        double aHi = Math.max(Math.max(a1, a2), Math.max(a3, a4));
-        double weight = exact.texelBound(mx, my, aLo, aHi);
+        double weight = weights.bound(mx, my, from, to, w, dw);
         if (weight == 0) {
             return 0;
         }
@@ -361,7 +352,7 @@ public final class FilteredReference {
         double distance = Math.exp(-0.5 * (gapU * gapU / (lobeVariance + g.xx()) + gapV * gapV / (lobeVariance + g.yy())));
         double area = axisPeak(sigmaUv, hx, g.xx()) * axisPeak(sigmaUv, hy, g.yy()) * distance;
         double gain = Math.abs(linear.gain()) + Math.abs(linear.gainU()) * hx + Math.abs(linear.gainV()) * hy;
-        double slope = 1 + 2 * kHi * dw * maxAbsHeightUm;
+        double slope = weights.slope(kHi, dw);
         return gain * slope * weight * area * densityIntegralBound(from, to);
     }
 
@@ -420,7 +411,7 @@ public final class FilteredReference {
             double[] c = candidates.get(i);
             int tx = (int) c[1];
             int ty = (int) c[2];
-            GaussianLobes.Lobe lobe = lobes.lobe(tx, ty);
+            LobeWeights.Lobe lobe = weights.lobe(tx, ty);
             if (lobe == null) {
                 continue;
             }
@@ -437,7 +428,7 @@ public final class FilteredReference {
     }
 
     /** The integral over [from, to] nm of f C S W A for one lobe, to LOBE_TOLERANCE of itself or {@code absolute}. */
-    private double[] lobeIntegral(GaussianLobes.Lobe lobe, double cx, double cy, double u, double v, double w,
+    private double[] lobeIntegral(LobeWeights.Lobe lobe, double cx, double cy, double u, double v, double w,
                                   double hx, double hy, Covariance2 g, Linear linear, double from, double to,
                                   double absolute) {
         boolean box = hx > 0 || hy > 0;
@@ -447,18 +438,17 @@ public final class FilteredReference {
             double[] f = new double[3];
             density.at(lambdaNm, f);
             double lambdaUm = lambdaNm * 1e-3;
-            double k = 2 * Math.PI / lambdaUm;
             double sigmaUv = lambdaUm * sigmaFPerUm;
             double scale;
             if (box) {
-                lobe.weightWithDerivative(k * w, weight);
-                double weightW = k * weight[1]; // dW/dw
+                lobe.weightWithDerivative(lambdaUm, w, weight);
+                double weightW = weight[1]; // dW/dw
                 LobeGeometry.boxMoments(sigmaUv, lambdaUm * cx, lambdaUm * cy, u, v, hx, hy, g, moments);
                 scale = linear.gain() * weight[0] * moments[0]
                         + (linear.gainU() * weight[0] + linear.gain() * linear.wU() * weightW) * moments[1]
                         + (linear.gainV() * weight[0] + linear.gain() * linear.wV() * weightW) * moments[2];
             } else {
-                scale = linear.gain() * lobe.weight(k * w)
+                scale = linear.gain() * lobe.weight(lambdaUm, w)
                         * LobeGeometry.averagedLobe(sigmaUv, lambdaUm * cx, lambdaUm * cy, u, v, 0, 0, g, false);
             }
             f[0] *= scale;

@@ -9,16 +9,21 @@ package diffract.optics;
  *
  * @param sigmaSpatialUm  sigma_s of the Gaussian coherence window; 4 sigma_s is the coherence length
  * @param refractiveIndex n of the surface (1.5 for snake skin)
+ * @param extinction      k of the surface, its complex index being n + i k: 0 for keratin; melanin absorbs
+ *                        (k about 0.02-0.1 over the visible). The rigorous method reads it; Schlick's Fresnel term of
+ *                        the scalar model reads n alone
  * @param light           the light's angular diameter, 0..20 degrees (0: a point light)
  * @param fresnel         Schlick's power reflectance counted once ({@link FresnelModel#PHYSICAL}) or squared as the
  *                        thesis prints it
  * @param pixelFilter     a BRDF-map pixel's value: the BRDF at its centre ({@link PixelFilter#POINT}, the thesis'
  *                        map) or its average over the pixel's square ({@link PixelFilter#BOX}, the definition)
  */
-public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex, LightSource light,
-                                   FresnelModel fresnel, PixelFilter pixelFilter) {
+public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex, double extinction,
+                                   LightSource light, FresnelModel fresnel, PixelFilter pixelFilter) {
     public static final double MAX_COHERENCE_LENGTH_UM = 40_000;
     public static final double MAX_REFRACTIVE_INDEX = 4;
+    /** The largest extinction coefficient k accepted (metals reach 3-7; a scale's pigment stays below 1). */
+    public static final double MAX_EXTINCTION = 10;
 
     public IlluminationSettings {
         if (!(sigmaSpatialUm > 0 && 4 * sigmaSpatialUm <= MAX_COHERENCE_LENGTH_UM)) {
@@ -27,6 +32,11 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
                     + InvalidSettingException.number(4 * sigmaSpatialUm));
         }
         InvalidSettingException.requireWithin(Quantity.REFRACTIVE_INDEX, refractiveIndex, 1, MAX_REFRACTIVE_INDEX);
+        if (!(extinction >= 0 && extinction <= MAX_EXTINCTION)) {
+            throw new InvalidSettingException(Quantity.REFRACTIVE_INDEX, "the extinction coefficient k of n + k i must"
+                    + " be in [0, " + InvalidSettingException.number(MAX_EXTINCTION) + "], got "
+                    + InvalidSettingException.number(extinction));
+        }
         if (light == null || fresnel == null || pixelFilter == null) {
             throw new NullPointerException("the light, the Fresnel model and the pixel filter are required");
         }
@@ -34,7 +44,7 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
 
     /** A point light, physical Fresnel, point-sampled map pixels. */
     public IlluminationSettings(double sigmaSpatialUm, double refractiveIndex) {
-        this(sigmaSpatialUm, refractiveIndex, LightSource.POINT, FresnelModel.PHYSICAL, PixelFilter.POINT);
+        this(sigmaSpatialUm, refractiveIndex, 0, LightSource.POINT, FresnelModel.PHYSICAL, PixelFilter.POINT);
     }
 
     /** From the coherence length 4 sigma_s; a point light, physical Fresnel, point-sampled map pixels. */
@@ -60,22 +70,32 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
     }
 
     public IlluminationSettings withCoherenceLengthUm(double um) {
-        return new IlluminationSettings(um / 4.0, refractiveIndex, light, fresnel, pixelFilter);
+        return new IlluminationSettings(um / 4.0, refractiveIndex, extinction, light, fresnel, pixelFilter);
     }
 
     public IlluminationSettings withRefractiveIndex(double n) {
-        return new IlluminationSettings(sigmaSpatialUm, n, light, fresnel, pixelFilter);
+        return new IlluminationSettings(sigmaSpatialUm, n, extinction, light, fresnel, pixelFilter);
+    }
+
+    /** The complex index n + i k as a whole. */
+    public IlluminationSettings withMaterial(diffract.optics.rigorous.ComplexIndex index) {
+        return new IlluminationSettings(sigmaSpatialUm, index.n(), index.k(), light, fresnel, pixelFilter);
+    }
+
+    /** The surface's complex index n + i k. */
+    public diffract.optics.rigorous.ComplexIndex material() {
+        return new diffract.optics.rigorous.ComplexIndex(refractiveIndex, extinction);
     }
 
     public IlluminationSettings withLight(LightSource l) {
-        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, l, fresnel, pixelFilter);
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, l, fresnel, pixelFilter);
     }
 
     public IlluminationSettings withFresnel(FresnelModel f) {
-        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, light, f, pixelFilter);
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, light, f, pixelFilter);
     }
 
     public IlluminationSettings withPixelFilter(PixelFilter p) {
-        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, light, fresnel, p);
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, light, fresnel, p);
     }
 }

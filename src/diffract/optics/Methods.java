@@ -15,7 +15,7 @@ public final class Methods {
     private static final Map<String, Variant> BY_LABEL = new LinkedHashMap<>();
 
     private static final Variant[] BUILT_IN = {Variant.REFERENCE, Variant.FLSS, Variant.NMM, Variant.PQ,
-            Variant.BAKED, Variant.LOBES};
+            Variant.BAKED, Variant.LOBES, Variant.RIGOROUS};
 
     static {
         for (Variant v : BUILT_IN) {

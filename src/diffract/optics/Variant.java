@@ -7,7 +7,7 @@ import java.util.Locale;
  * A way of evaluating the diffraction BRDF: one class per method, found by its {@link #label()} in {@link Methods}.
  * The methods: {@link ReferenceMethod} (the exact reference), {@link FlssMethod}, {@link NmmMethod} and
  * {@link PqMethod} (the thesis' three shader approximations), {@link BakedMethod} (a baked table, GPU only) and
- * {@link LobesMethod} (the filtered lobes method).
+ * {@link LobesMethod} (the filtered lobes method), and {@link RigorousMethod} (the orders from Maxwell's equations).
  *
  * <p>What a method says about itself (every method answers; the defaults are those of a GPU shader that samples the
  * light at its centre and has no CPU twin):
@@ -41,6 +41,7 @@ public interface Variant {
     Variant PQ = new PqMethod();
     Variant BAKED = new BakedMethod();
     Variant LOBES = new LobesMethod();
+    Variant RIGOROUS = new RigorousMethod();
 
     /** reference, flss, nmm, pq, baked, lobes: the name on the command line, in scene files and in tables. */
     String label();

@@ -65,7 +65,8 @@ public final class DiskCache {
     /** The size limit when none is set: 2 GiB. */
     public static final long DEFAULT_LIMIT_MB = 2048;
     /** The kinds of entries, one folder each; only these folders are ever sized or evicted. */
-    public static final List<String> KINDS = List.of("terms", "baked-tables", "calibration", "reference-maps");
+    public static final List<String> KINDS = List.of("terms", "baked-tables", "calibration", "reference-maps",
+            "rigorous-orders");
     /** The name ending of an entry file (a folder entry has no ending). */
     public static final String ENTRY_SUFFIX = ".entry";
 

@@ -1,0 +1,68 @@
+package diffract.optics;
+
+import static diffract.optics.Variant.Capability.CPU;
+import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
+
+import java.util.EnumSet;
+import java.util.Optional;
+import java.util.Set;
+
+/**
+ * The rigorous method: the patch read as one period of a periodic surface, its reflected orders' efficiencies solved
+ * from Maxwell's equations by the Fourier modal method ({@link diffract.optics.rigorous.FourierModalMethod}: both
+ * polarisations, the material's complex index), and drawn into maps exactly as the reference draws its orders
+ * (coherence window averaged over its position, pixel box, light, wavelength integral; {@link RigorousOrders}). The
+ * yardstick beside the reference where Stam's scalar model is in doubt: deep reliefs and periods near the
+ * wavelength (docs/rigorous.md). CPU only.
+ *
+ * <table>
+ *   <caption>Capabilities</caption>
+ *   <tr><th>label</th><td>rigorous</td></tr>
+ *   <tr><th>CPU / GPU</th><td>yes / no</td></tr>
+ *   <tr><th>extended lights</th><td>integrated as the reference does, the orders' efficiencies at the light's
+ *       centre</td></tr>
+ *   <tr><th>patches</th><td>1-D gratings (every row or column the same) of any period the harmonics resolve; 2-D
+ *       cells as far as {@link #heapMemory} allows</td></tr>
+ *   <tr><th>settings read</th><td>the band and its step (the wavelength nodes), the coherence length, the light, the
+ *       pixel filter, the complex index, {@link RigorousSettings}</td></tr>
+ * </table>
+ */
+final class RigorousMethod implements Variant {
+    @Override
+    public String label() {
+        return "rigorous";
+    }
+
+    @Override
+    public Set<Capability> capabilities() {
+        return EnumSet.of(CPU, FILTERS_LIGHT);
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
+        return DiffractionBrdf.rigorous(settings, meanSubtracted);
+    }
+
+    @Override
+    public DiffractionBrdf cpuBrdfPhaseCentred(BrdfSettings settings, PhaseCentredTerms terms) {
+        throw new IllegalArgumentException("the rigorous method needs no Taylor expansion");
+    }
+
+    @Override
+    public Optional<String> patchRefusal(BrdfSettings settings, double widthUm, double heightUm) {
+        return Optional.empty();
+    }
+
+    /** The solver's matrices per worker thread (one solve per wavelength node, the nodes in parallel). */
+    @Override
+    public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
+                                                    double fromNm, double toNm) {
+        RigorousPatch patch = RigorousPatch.of(field);
+        return RigorousCost.of(patch, settings, fromNm).memory();
+    }
+
+    @Override
+    public String toString() {
+        return name();
+    }
+}

@@ -1,0 +1,277 @@
+package diffract.optics;
+
+import diffract.optics.rigorous.ComplexIndex;
+import diffract.optics.rigorous.OrderEfficiencies;
+import diffract.optics.rigorous.RigorousSolver;
+import diffract.util.DiskCache;
+import diffract.util.Reporter;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.stream.IntStream;
+
+/**
+ * The reflected orders' efficiencies of a patch for light from one direction, solved from Maxwell's equations
+ * ({@link RigorousSolver}) at wavelength nodes over the band, and the lobe weights the filtered drawing takes from
+ * them ({@link LobeWeights}): the rigorous method's map is
+ * <pre>
+ *   rho(omega_r) = cos theta_i / R_0 * sum_m eta_m(lambda, omega_i) exp(-|(x, y) - (x_m, y_m)|^2 / (lambda sigma_f)^2)
+ * </pre>
+ * integrated over the pixel, the light and the wavelengths as the reference integrates its lobes
+ * ({@link FilteredReference}). Each order's lobe has unit integral over the projected solid angle divided by
+ * pi (lambda sigma_f)^2, so the lobe carries eta_m of the light (docs/rigorous.md; the design note's
+ * f = sum eta_pq K_lambda); cos theta_i / R_0 puts it on the relative BRDF's scale, where a flat mirror at normal
+ * incidence (eta_0 = R_0) peaks at 1. The scalar model's lobes carry C S |T_m|^2 in its place.
+ *
+ * <p>Between the nodes eta_m is interpolated linearly: it is smooth in lambda except where an order appears at
+ * grazing (a Rayleigh anomaly), where it has a square-root kink that the interpolation rounds over one node step.
+ * The efficiencies are those at the light's centre: over a disc light the lobes move with each direction, their
+ * weights do not (as the reference keeps its gain at the light's centre per disc direction, {@link DiscLightAverage}).
+ *
+ * <p>Immutable and thread-safe. Tables are kept in the disk cache by the patch's content, the material, the
+ * resolution, the band and the direction.
+ */
+final class RigorousOrders implements LobeWeights {
+    /** The disk cache's folder of these tables. */
+    static final String KIND = "rigorous-orders";
+    private static final int FORMAT = 1;
+
+    private final RigorousPatch patch;
+    private final double firstNm;
+    private final double stepNm;
+    private final int nodes;
+    /** The lowest order held. */
+    private final int firstOrder;
+    /** eta[node][order - firstOrder], for the settings' polarisation. */
+    private final double[][] eta;
+    private final double inverseR0;
+    private final double extentXUm;
+    private final double extentYUm;
+
+    private RigorousOrders(RigorousPatch patch, double firstNm, double stepNm, int firstOrder, double[][] eta,
+                           double inverseR0) {
+        this.patch = patch;
+        this.firstNm = firstNm;
+        this.stepNm = stepNm;
+        this.nodes = eta.length;
+        this.firstOrder = firstOrder;
+        this.eta = eta;
+        this.inverseR0 = inverseR0;
+        this.extentXUm = patch.field().widthUm();
+        this.extentYUm = patch.field().heightExtentUm();
+    }
+
+    /** The wavelength nodes of a band: from its start every step, and its end. */
+    static double[] nodesNm(SpectralSettings spectral) {
+        double from = spectral.lambdaMinNm();
+        double to = spectral.lambdaMaxNm();
+        double step = spectral.lambdaStepNm();
+        int count = Math.max(2, (int) Math.ceil((to - from) / step - 1e-9) + 1);
+        double[] out = new double[count];
+        for (int i = 0; i < count; i++) {
+            out[i] = Math.min(to, from + i * step);
+        }
+        return out;
+    }
+
+    /**
+     * The table of {@code patch} for light from {@code wi}, from the disk cache or solved (one solve per wavelength
+     * node, the nodes in parallel, with progress).
+     */
+    static RigorousOrders of(RigorousPatch patch, BrdfSettings settings, Direction wi, DiskCache cache,
+                             Reporter reporter) {
+        RigorousSettings rigorous = settings.rigorous();
+        ComplexIndex material = settings.illumination().material();
+        double[] lambdasNm = nodesNm(settings.spectral());
+        DiskCache.Key key = key(patch, settings, wi);
+        double inverseR0 = 1 / material.normalReflectance();
+        RigorousOrders cached = cache.load(key, in -> read(in, patch, lambdasNm, inverseR0), reporter,
+                "solving the orders again");
+        if (cached != null) {
+            return cached;
+        }
+        double[] alphaBeta = patch.incidence(wi);
+        double periodUm = patch.profile().periodUm();
+        int widest = rigorous.resolution().maxOrder(periodUm, lambdasNm[0]);
+        double[][] eta = new double[lambdasNm.length][2 * widest + 1];
+        AtomicInteger done = new AtomicInteger();
+        String task = String.format(Locale.ROOT, "rigorous orders, %d wavelengths, light at %.1f degrees",
+                lambdasNm.length, Math.toDegrees(Math.acos(Math.min(1, wi.z()))));
+        long start = System.nanoTime();
+        IntStream.range(0, lambdasNm.length).parallel().forEach(j -> {
+            OrderEfficiencies e = RigorousSolver.solve(patch.profile(), material, lambdasNm[j] * 1e-3, alphaBeta[0],
+                    alphaBeta[1], rigorous.resolution());
+            for (int i = 0; i < e.count(); i++) {
+                int order = e.order(i);
+                if (Math.abs(order) <= widest) {
+                    eta[j][order + widest] = rigorous.polarisation().of(e.reflectedS()[i], e.reflectedP()[i]);
+                }
+            }
+            reporter.progress(task, done.incrementAndGet() / (double) lambdasNm.length);
+        });
+        RigorousOrders orders = new RigorousOrders(patch, lambdasNm[0], settings.spectral().lambdaStepNm(), -widest,
+                eta, inverseR0);
+        String where = cache.store(key, out -> orders.write(out), "the rigorous orders", reporter)
+                .map(f -> "cached").orElse("not cached");
+        reporter.info(String.format(Locale.ROOT, "rigorous orders of %s: %d wavelengths in %.1f s (%s, %s)",
+                patch.describe(), lambdasNm.length, (System.nanoTime() - start) * 1e-9,
+                rigorous.resolution().describe(), where));
+        return orders;
+    }
+
+    private static DiskCache.Key key(RigorousPatch patch, BrdfSettings settings, Direction wi) {
+        return new DiskCache.Key(KIND, String.join("; ", "rigorous orders format " + FORMAT,
+                "patch sha256 " + patch.field().contentSha256(), "material " + settings.illumination().material(),
+                "rigorous " + settings.rigorous(), "spectral " + settings.spectral(),
+                "incidence " + wi.x() + " " + wi.y() + " " + wi.z()));
+    }
+
+    private void write(DataOutputStream out) throws IOException {
+        out.writeInt(nodes);
+        out.writeInt(firstOrder);
+        out.writeInt(eta[0].length);
+        for (double[] row : eta) {
+            for (double v : row) {
+                out.writeDouble(v);
+            }
+        }
+    }
+
+    private static RigorousOrders read(DataInputStream in, RigorousPatch patch, double[] lambdasNm, double inverseR0)
+            throws IOException {
+        int nodes = in.readInt();
+        int first = in.readInt();
+        int orders = in.readInt();
+        if (nodes != lambdasNm.length || orders < 1 || orders > 100_000 || first != -(orders - 1) / 2) {
+            throw new IOException("it holds " + nodes + " wavelengths of " + orders + " orders, not the band's "
+                    + lambdasNm.length);
+        }
+        double[][] eta = new double[nodes][orders];
+        for (double[] row : eta) {
+            for (int i = 0; i < orders; i++) {
+                row[i] = in.readDouble();
+            }
+        }
+        double step = lambdasNm.length > 1 ? lambdasNm[1] - lambdasNm[0] : 1;
+        return new RigorousOrders(patch, lambdasNm[0], step, first, eta, inverseR0);
+    }
+
+    /** eta_m at {@code lambdaNm}, interpolated linearly between the nodes; 0 outside the band. */
+    double efficiency(int order, double lambdaNm) {
+        int i = order - firstOrder;
+        if (i < 0 || i >= eta[0].length) {
+            return 0;
+        }
+        double t = (lambdaNm - firstNm) / stepNm;
+        if (t < -1e-9 || t > nodes - 1 + 1e-9) {
+            return 0;
+        }
+        int j = Math.min(nodes - 2, Math.max(0, (int) Math.floor(t)));
+        double f = Math.min(1, Math.max(0, t - j));
+        return eta[j][i] + f * (eta[j + 1][i] - eta[j][i]);
+    }
+
+    /** The node wavelengths, nm. */
+    double nodeNm(int j) {
+        return firstNm + j * stepNm;
+    }
+
+    int nodeCount() {
+        return nodes;
+    }
+
+    /** The relative BRDF at one wavelength, point-sampled: cos theta_i / R_0 sum_m eta_m lobe_m. */
+    double relative(Direction wi, Direction wr, double lambdaNm, double sigmaFPerUm) {
+        double gain = gain(wi, wr);
+        if (gain == 0) {
+            return 0;
+        }
+        double lambdaUm = lambdaNm * 1e-3;
+        double u = -wi.x() - wr.x();
+        double v = -wi.y() - wr.y();
+        double width2 = lambdaUm * sigmaFPerUm * lambdaUm * sigmaFPerUm;
+        double sum = 0;
+        for (int i = 0; i < eta[0].length; i++) {
+            int[] texel = patch.texel(firstOrder + i);
+            double du = u - lambdaUm * texel[0] / extentXUm;
+            double dv = v - lambdaUm * texel[1] / extentYUm;
+            double q = (du * du + dv * dv) / width2;
+            if (q < 60) {
+                sum += efficiency(firstOrder + i, lambdaNm) * Math.exp(-q);
+            }
+        }
+        return gain * sum;
+    }
+
+    @Override
+    public boolean hasPairs() {
+        return false;
+    }
+
+    @Override
+    public Lobe lobe(int twiceCx, int twiceCy) {
+        if (twiceCx % 2 != 0 || twiceCy % 2 != 0) {
+            return null;
+        }
+        java.util.Optional<Integer> order = patch.order(twiceCx / 2, twiceCy / 2);
+        if (order.isEmpty() || order.get() - firstOrder < 0 || order.get() - firstOrder >= eta[0].length) {
+            return null;
+        }
+        int m = order.get();
+        return new Lobe() {
+            @Override
+            public double weight(double lambdaUm, double w) {
+                return efficiency(m, lambdaUm * 1e3);
+            }
+
+            @Override
+            public void weightWithDerivative(double lambdaUm, double w, double[] out) {
+                out[0] = efficiency(m, lambdaUm * 1e3);
+                out[1] = 0;
+            }
+        };
+    }
+
+    @Override
+    public double bound(int mx, int my, double fromNm, double toNm, double w, double dw) {
+        java.util.Optional<Integer> order = patch.order(mx, my);
+        if (order.isEmpty()) {
+            return 0;
+        }
+        int i = order.get() - firstOrder;
+        if (i < 0 || i >= eta[0].length) {
+            return 0;
+        }
+        int from = Math.max(0, (int) Math.floor((fromNm - firstNm) / stepNm));
+        int to = Math.min(nodes - 1, (int) Math.ceil((toNm - firstNm) / stepNm));
+        double max = 0;
+        for (int j = from; j <= to; j++) {
+            max = Math.max(max, eta[j][i]);
+        }
+        return max;
+    }
+
+    /** The weights do not depend on w: they grow nowhere across a box. */
+    @Override
+    public double slope(double kHi, double dw) {
+        return 1;
+    }
+
+    /** cos theta_i / R_0 above both horizons. */
+    @Override
+    public double gain(Direction wi, Direction wr) {
+        return wi.z() > 0 && wr.z() > 0 ? wi.z() * inverseR0 : 0;
+    }
+
+    /** The sum of the reflected efficiencies at node j: the patch's reflectance there. */
+    double reflectance(int node) {
+        double sum = 0;
+        for (double v : eta[node]) {
+            sum += v;
+        }
+        return sum;
+    }
+}

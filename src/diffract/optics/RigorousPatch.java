@@ -1,0 +1,168 @@
+package diffract.optics;
+
+import diffract.optics.rigorous.Profile;
+
+import java.util.Locale;
+import java.util.Optional;
+
+/**
+ * A patch as the rigorous method reads it: one period of a periodic surface, as the DFT already reads it. A patch
+ * whose every row (or every column) is the same is a 1-D grating: its profile across the grooves, the polyline through
+ * its samples, and, where that profile repeats itself within the patch, one repeat of it (a patch of P whole periods
+ * is solved on one period with 1/P the harmonics; its orders fall on every P-th texel). Any other patch is a 2-D cell.
+ *
+ * <p>The orders map onto the texels of the scalar model: order m of a period along x leaves at
+ * omega_r.x = -omega_i.x + m lambda / period (the grating equation), where texel c's lobe sits at
+ * -omega_i.x - lambda c / L (docs/theory.md): texel c = -m P.
+ */
+final class RigorousPatch {
+    /** Relative difference (of the depth) up to which two rows, columns or repeats count as the same. */
+    static final double SAME = 1e-9;
+
+    /** Along which axis of the patch a 1-D patch's heights vary. */
+    enum Axis {
+        /** Heights vary along x (the columns); the grooves run along y. */
+        X,
+        /** Heights vary along y (the rows); the grooves run along x. */
+        Y
+    }
+
+    private final HeightField field;
+    private final Axis axis;
+    private final Profile profile;
+    private final int repeats;
+
+    private RigorousPatch(HeightField field, Axis axis, Profile profile, int repeats) {
+        this.field = field;
+        this.axis = axis;
+        this.profile = profile;
+        this.repeats = repeats;
+    }
+
+    /** The patch read as a grating: 1-D where its rows or columns are all the same, else a 2-D cell. */
+    static RigorousPatch of(HeightField field) {
+        double depth = field.maxHeightUm() - field.minHeightUm();
+        double tolerance = SAME * Math.max(depth, 1e-12);
+        int rows = field.rows();
+        int cols = field.cols();
+        if (rows == 1 || allRowsEqual(field, tolerance)) {
+            double[] line = new double[cols];
+            for (int c = 0; c < cols; c++) {
+                line[c] = field.heightUm(0, c);
+            }
+            return oneDimensional(field, Axis.X, line, field.widthUm(), tolerance);
+        }
+        if (cols == 1 || allColumnsEqual(field, tolerance)) {
+            double[] line = new double[rows];
+            for (int r = 0; r < rows; r++) {
+                line[r] = field.heightUm(r, 0);
+            }
+            return oneDimensional(field, Axis.Y, line, field.heightExtentUm(), tolerance);
+        }
+        return new RigorousPatch(field, null, null, 1);
+    }
+
+    private static RigorousPatch oneDimensional(HeightField field, Axis axis, double[] line, double extentUm,
+                                                double tolerance) {
+        int n = line.length;
+        int period = n;
+        for (int d = 1; d < n; d++) {
+            if (n % d == 0 && repeatsEvery(line, d, tolerance)) {
+                period = d;
+                break;
+            }
+        }
+        int repeats = n / period;
+        double[] one = java.util.Arrays.copyOf(line, period);
+        double periodUm = extentUm / repeats;
+        String description = String.format(Locale.ROOT, "%s profile of %d samples%s, period %.4g um", axis == Axis.X
+                ? "x" : "y", period, repeats > 1 ? " (repeated " + repeats + " times in the patch)" : "", periodUm);
+        return new RigorousPatch(field, axis, Profile.sampled(periodUm, one, description), repeats);
+    }
+
+    private static boolean repeatsEvery(double[] line, int d, double tolerance) {
+        for (int i = d; i < line.length; i++) {
+            if (Math.abs(line[i] - line[i - d]) > tolerance) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static boolean allRowsEqual(HeightField field, double tolerance) {
+        for (int r = 1; r < field.rows(); r++) {
+            for (int c = 0; c < field.cols(); c++) {
+                if (Math.abs(field.heightUm(r, c) - field.heightUm(0, c)) > tolerance) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static boolean allColumnsEqual(HeightField field, double tolerance) {
+        for (int r = 0; r < field.rows(); r++) {
+            for (int c = 1; c < field.cols(); c++) {
+                if (Math.abs(field.heightUm(r, c) - field.heightUm(r, 0)) > tolerance) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    /** Whether it is a 1-D grating (else a 2-D cell). */
+    boolean oneDimensional() {
+        return axis != null;
+    }
+
+    /** The axis along which a 1-D patch's heights vary. */
+    Axis axis() {
+        return axis;
+    }
+
+    /** One period of a 1-D patch's profile. */
+    Profile profile() {
+        return profile;
+    }
+
+    /** How many periods of the profile the patch holds. */
+    int repeats() {
+        return repeats;
+    }
+
+    HeightField field() {
+        return field;
+    }
+
+    /** The texel (cx, cy) of a 1-D patch's order m. */
+    int[] texel(int order) {
+        int c = -order * repeats;
+        return axis == Axis.X ? new int[] {c, 0} : new int[] {0, c};
+    }
+
+    /** The order of texel (cx, cy), or empty where no order of a 1-D patch lands. */
+    Optional<Integer> order(int cx, int cy) {
+        int along = axis == Axis.X ? cx : cy;
+        int across = axis == Axis.X ? cy : cx;
+        if (across != 0 || along % repeats != 0) {
+            return Optional.empty();
+        }
+        return Optional.of(-along / repeats);
+    }
+
+    /**
+     * The incident wave's direction cosines in the grating's frame (alpha across the grooves, beta along them) for
+     * light from omega_i (pointing away from the surface): the wave travels along -omega_i.
+     */
+    double[] incidence(Direction wi) {
+        return axis == Axis.X ? new double[] {-wi.x(), -wi.y()} : new double[] {-wi.y(), -wi.x()};
+    }
+
+    /** "a 1-D grating: x profile of 25 samples (repeated 26 times in the patch), period 2.5 um" or "a 2-D cell". */
+    String describe() {
+        return oneDimensional() ? "a 1-D grating: " + profile.description()
+                : String.format(Locale.ROOT, "a 2-D cell of %d x %d samples, %.4g x %.4g um", field.cols(),
+                        field.rows(), field.widthUm(), field.heightExtentUm());
+    }
+}
