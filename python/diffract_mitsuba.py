@@ -60,7 +60,8 @@ class DiffractBSDF(mi.BSDF):
         self.table = mi.Texture3f(mi.TensorXf(data), use_accel=False, filter_mode=dr.FilterMode.Linear,
                                   wrap_mode=dr.WrapMode.Clamp)
         self.r0 = float(header["schlick_r0"])
-        self.physical = header["fresnel"] == "physical"
+        self.gain = header["gain"]
+        self.n = float(header["refractive_index"])
         # mode "absolute": the BRDF in 1/sr (relative x radiometric_gain / pi); "relative": brdfmap's values / pi,
         # so that scale 1 shows what a BRDF map shows under a light of irradiance pi
         mode = props.get("mode", "absolute") if props.has_property("mode") else "absolute"
@@ -87,17 +88,46 @@ class DiffractBSDF(mi.BSDF):
         c = self.table.eval(pos)
         return mi.Color3f(c[0], c[1], c[2])
 
+    def rayleigh_rice(self, wl, wv):
+        """Rayleigh-Rice's gain, 4 cos^2 theta_i cos theta_r Q / (R_0 w^2) (diffract.optics.GainFactor.rayleighRice)."""
+        eps = self.n * self.n
+        ci = _max(wl.z, 1e-30)
+        cr = _max(wv.z, 1e-30)
+        si2 = _max(1.0 - ci * ci, 0.0)
+        sr2 = _max(1.0 - cr * cr, 0.0)
+        ri = dr.sqrt(eps - si2)
+        rr = dr.sqrt(eps - sr2)
+        sin_product = dr.sqrt(si2 * sr2)
+        cos_part = -(wl.x * wv.x + wl.y * wv.y)
+        sin_part = wl.x * wv.y - wl.y * wv.x
+        defined = sin_product >= 1e-12
+        safe = _max(sin_product, 1e-12)
+        cos_phi = dr.select(defined, cos_part / safe, 1.0)
+        cos2 = dr.select(defined, cos_part * cos_part / (safe * safe), 1.0)
+        sin2 = dr.select(defined, sin_part * sin_part / (safe * safe), 0.0)
+        e1 = eps - 1.0
+        ss = e1 / ((ci + ri) * (cr + rr))
+        sp = e1 * rr / ((ci + ri) * (eps * cr + rr))
+        ps = e1 * ri / ((eps * ci + ri) * (cr + rr))
+        pp = e1 * (ri * rr * cos_phi - eps * sin_product) / ((eps * ci + ri) * (eps * cr + rr))
+        q = 0.5 * (ss * ss * cos2 + (sp * sp + ps * ps) * sin2 + pp * pp)
+        w = ci + cr
+        return 4.0 * ci * ci * cr * q / (self.r0 * w * w)
+
     def relative(self, wl, wv):
         """brdfmap's value, the relative BRDF in linear sRGB, for the light direction wl and the view direction wv
         (local frame, both pointing away from the surface); 0 below the horizon."""
         above = (wl.z > 0) & (wv.z > 0)
+        if self.gain == "rayleigh-rice":
+            factor = self.spectral_factor(-(wl.x + wv.x), -(wl.y + wv.y), -(wl.z + wv.z))
+            return dr.select(above, factor * self.rayleigh_rice(wl, wv), mi.Color3f(0.0))
         h = wl + wv
         length = _max(dr.norm(h), 1e-30)
         cos_half_view = _min(_max(dr.dot(wv, h) / length, 0.0), 1.0)
         m = 1.0 - cos_half_view
         fresnel = self.r0 + (1.0 - self.r0) * m * m * m * m * m
         ratio = fresnel / self.r0
-        phi = ratio if self.physical else ratio * ratio
+        phi = ratio * ratio if self.gain == "thesis" else ratio
         one_plus_dot = 1.0 + dr.dot(wl, wv)
         wz = wl.z + wv.z
         gain = phi * one_plus_dot * one_plus_dot / _max(wz * wz * wv.z, 1e-30)

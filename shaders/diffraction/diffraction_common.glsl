@@ -16,7 +16,9 @@
 //   PHASE_CENTRED         expand around the nearest phase centre (taylor_centred.glsl); TAYLOR_HIGHEST_ORDER is
 //                         then the last order per centre
 //   TERMS_UNORM8          terms stored [0, 1]-normalised as 8-bit bytes (003 eq. 1.1; NormalisedTerms)
-//   FRESNEL_THESIS        the gain factor squares Schlick's reflectance as eq. cfact prints it (FresnelModel.THESIS)
+//   GAIN_RAYLEIGH_RICE    the factor in front of |P|^2 is Rayleigh-Rice's (GainModel.RAYLEIGH_RICE); without it Stam's
+//                         gain factor and shadowing
+//   FRESNEL_THESIS        Stam's gain factor squares Schlick's reflectance as eq. cfact prints it (GainModel.THESIS)
 //   WINDOW_FIXED          one coherence window at the DFT's origin: texels add as complex amplitudes, squared after
 //                         (the thesis); without it the window is averaged over its position and texels add as powers
 //                         (WindowPlacement)
@@ -116,7 +118,7 @@ float surfaceFresnel(vec3 wi, vec3 wr, float n) {
     return aboveHorizon(wi, wr) ? schlickFresnel(cosHalfToView(wi, wr), schlickR0(n)) : 1.0;
 }
 
-// The Fresnel factor of C (FresnelModel.factor): Schlick's power reflectance counted once, F / F(0), or with
+// The Fresnel factor of Stam's C (GainModel.factor): Schlick's power reflectance counted once, F / F(0), or with
 // FRESNEL_THESIS eq. cfact as printed, F^2 / F(0)^2.
 float fresnelFactor(float f, float r0) {
     float ratio = f / r0;
@@ -149,12 +151,46 @@ float shadowing(vec3 wi, vec3 wr) {
     return min(1.0, min(masking, shadow));
 }
 
-// C times the shadowing factor, 0 at or below the horizon (GainFactor.gainTimesShadowing; 003 Alg. 3 line 27).
+// Rayleigh-Rice's gain, 4 cos^2 theta_i cos theta_r Q / (R_0 w^2), Q the polarisation factor of a shallow relief
+// for unpolarised light (GainFactor.rayleighRice, which derives it). Callers check aboveHorizon first.
+float rayleighRiceGain(vec3 wi, vec3 wr) {
+    float eps = refractiveIndex * refractiveIndex;
+    float ci = wi.z;
+    float cr = wr.z;
+    float si2 = max(1.0 - ci * ci, 0.0);
+    float sr2 = max(1.0 - cr * cr, 0.0);
+    float ri = sqrt(eps - si2);
+    float rr = sqrt(eps - sr2);
+    // s_i s_r cos phi and s_i s_r sin phi, phi = 0 at the specular direction; undefined at the normal, where the
+    // sum over polarisations does not depend on it
+    float sinProduct = sqrt(si2 * sr2);
+    float cosPart = -dot(wi.xy, wr.xy);
+    float sinPart = wi.x * wr.y - wi.y * wr.x;
+    bool defined = sinProduct >= 1e-6;
+    float cosPhi = defined ? cosPart / sinProduct : 1.0;
+    float cos2 = defined ? cosPhi * cosPhi : 1.0;
+    float sin2 = defined ? (sinPart / sinProduct) * (sinPart / sinProduct) : 0.0;
+    float e1 = eps - 1.0;
+    float ss = e1 / ((ci + ri) * (cr + rr));
+    float sp = e1 * rr / ((ci + ri) * (eps * cr + rr));
+    float ps = e1 * ri / ((eps * ci + ri) * (cr + rr));
+    float pp = e1 * (ri * rr * cosPhi - eps * sinProduct) / ((eps * ci + ri) * (eps * cr + rr));
+    float q = 0.5 * (ss * ss * cos2 + (sp * sp + ps * ps) * sin2 + pp * pp);
+    float w = ci + cr;
+    return 4.0 * ci * ci * cr * q / (schlickR0(refractiveIndex) * w * w);
+}
+
+// The gain model's factor with its shadowing, 0 at or below the horizon (GainFactor.gainTimesShadowing; 003 Alg. 3
+// line 27).
 float gainTimesShadowing(vec3 wi, vec3 wr) {
     if (!aboveHorizon(wi, wr)) {
         return 0.0;
     }
+#ifdef GAIN_RAYLEIGH_RICE
+    return rayleighRiceGain(wi, wr);
+#else
     return gainFactor(wi, wr) * shadowing(wi, wr);
+#endif
 }
 
 // (u, v, w) = -omega_i - omega_r (004; 003 Algorithm 3 line 3).

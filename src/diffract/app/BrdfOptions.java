@@ -2,7 +2,7 @@ package diffract.app;
 
 import diffract.colour.MirrorNormalisation;
 import diffract.optics.BrdfSettings;
-import diffract.optics.FresnelModel;
+import diffract.optics.GainModel;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.LightProfile;
 import diffract.optics.PixelFilter;
@@ -102,8 +102,13 @@ final class BrdfOptions {
         @Option(names = "--pixel-filter", paramLabel = "F", completionCandidates = OptionTypes.PixelFilterNames.class)
         PixelFilter pixelFilter;
 
-        @Option(names = "--fresnel", paramLabel = "F", completionCandidates = OptionTypes.FresnelNames.class)
-        FresnelModel fresnel;
+        @Option(names = "--gain", paramLabel = "G", converter = OptionTypes.GainConverter.class,
+                completionCandidates = OptionTypes.GainNames.class)
+        GainModel gain;
+
+        /** The former name of --gain (its "physical" is stam), kept for scripts that use it. */
+        @Option(names = "--fresnel", paramLabel = "F", hidden = true, converter = OptionTypes.GainConverter.class)
+        GainModel fresnel;
 
         @Option(names = "--light-size-deg", paramLabel = "DEG") Double lightSizeDeg;
 
@@ -220,8 +225,8 @@ final class BrdfOptions {
         if (illumination.lightProfile != null) {
             b.lightProfile(illumination.lightProfile);
         }
-        if (illumination.fresnel != null) {
-            b.fresnel(illumination.fresnel);
+        if (illumination.gain != null || illumination.fresnel != null) {
+            b.gain(illumination.gain != null ? illumination.gain : illumination.fresnel);
         }
         if (illumination.pixelFilter != null) {
             b.pixelFilter(illumination.pixelFilter);

@@ -115,7 +115,7 @@ final class ExportCommand implements Callable<Integer> {
                 + "(brdfmap's values), times radiometric_gain / pi the BRDF in 1/sr");
         h.put("refractive_index", table.refractiveIndex());
         h.put("schlick_r0", GainFactor.schlickR0(table.refractiveIndex()));
-        h.put("fresnel", table.fresnel().label());
+        h.put("gain", table.gain().label());
         h.put("radiometric_gain", RadiometricGain.of(settings));
         h.put("coherence_length_um", settings.illumination().coherenceLengthUm());
         h.put("lambda_nm", List.of(settings.spectral().lambdaMinNm(), settings.spectral().lambdaMaxNm()));

@@ -34,7 +34,7 @@ final class OptionNames {
         FLAGS.put(Quantity.POLARISATION, "--polarisation");
         FLAGS.put(Quantity.LIGHT_SIZE, "--light-size-deg");
         FLAGS.put(Quantity.LIGHT_PROFILE, "--light-profile");
-        FLAGS.put(Quantity.FRESNEL, "--fresnel");
+        FLAGS.put(Quantity.GAIN, "--gain");
         FLAGS.put(Quantity.PIXEL_FILTER, "--pixel-filter");
         FLAGS.put(Quantity.LOBE_QUADRATURE, "--lobe-quadrature");
         FLAGS.put(Quantity.TERM_FORMAT, "--texture-format");

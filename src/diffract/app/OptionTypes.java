@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.optics.FresnelModel;
+import diffract.optics.GainModel;
 import diffract.optics.Levelling;
 import diffract.optics.LightProfile;
 import diffract.optics.LobeQuadrature;
@@ -220,11 +220,24 @@ final class OptionTypes {
         }
     }
 
-    /** physical, thesis. */
-    static final class FresnelNames implements Iterable<String> {
+    /** rayleigh-rice, stam, thesis. */
+    static final class GainNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return java.util.Arrays.stream(FresnelModel.values()).map(FresnelModel::label).iterator();
+            return java.util.Arrays.stream(GainModel.values()).map(GainModel::label).iterator();
+        }
+    }
+
+    /** {@code --gain G}: a {@link GainModel} by its label ("physical" still names stam). */
+    static final class GainConverter implements ITypeConverter<GainModel> {
+        @Override
+        public GainModel convert(String text) {
+            try {
+                return GainModel.parse(text);
+            } catch (diffract.optics.InvalidSettingException e) {
+                throw new picocli.CommandLine.TypeConversionException("'" + text + "' is not a gain model: use "
+                        + String.join(", ", new GainNames()));
+            }
         }
     }
 

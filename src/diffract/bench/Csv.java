@@ -27,6 +27,6 @@ final class Csv {
     static String illuminationKey(IlluminationSettings i) {
         return String.join("-", "c" + number(i.sigmaSpatialUm()), "n" + number(i.refractiveIndex()),
                 "d" + number(i.light().angularDiameterDeg())
-                + (i.light().isDisc() ? "disc" : ""), i.pixelFilter().label(), i.fresnel().label());
+                + (i.light().isDisc() ? "disc" : ""), i.pixelFilter().label(), i.gain().label());
     }
 }

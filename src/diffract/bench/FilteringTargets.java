@@ -84,7 +84,7 @@ public final class FilteringTargets {
     /** The thesis' configuration, point-sampled under a point light, at the same coherence and Fresnel model. */
     BrdfSettings flss() {
         return BrdfSettings.thesis(Methods.Role.THESIS.method()).with(b -> b
-                .coherenceLengthUm(lobes.illumination().coherenceLengthUm()).fresnel(lobes.illumination().fresnel())
+                .coherenceLengthUm(lobes.illumination().coherenceLengthUm()).gain(lobes.illumination().gain())
                 .lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
     }
 

@@ -4,12 +4,13 @@ import java.util.function.Consumer;
 
 /**
  * Everything that decides how a variant evaluates the BRDF, by concern: the spectral model, the Taylor
- * approximation, the window between DFT texels, the illumination (coherence, light size, pixel filter, Fresnel
- * model), the lobes method's quadrature, and the GPU's tables. Each group checks its own ranges; {@link Builder} is
- * the one way to make or change settings. The defaults are the thesis' configuration (001 implementation notes;
- * 003 sec. 1.3.2): 30 Taylor terms, a 3 x 3 window, 5 nm steps over 380-780 nm, 4 sigma_s = 65 um, refractive
- * index 1.5, float32 terms, a point light and point-sampled map pixels; the Fresnel term counted once. The
- * reference reads only the spectral range and the illumination.
+ * approximation, the window between DFT texels, the illumination (coherence, light size, pixel filter, the surface's
+ * index, the gain model), the lobes method's quadrature, the GPU's tables and the rigorous method's resolution. Each
+ * group checks its own ranges; {@link Builder} is the one way to make or change settings. The defaults are the
+ * thesis' configuration (001 implementation notes; 003 sec. 1.3.2): 30 Taylor terms, a 3 x 3 window, 5 nm steps over
+ * 380-780 nm, 4 sigma_s = 65 um, float32 terms, a point light and point-sampled map pixels; where the physics measured
+ * since says otherwise, the surface is keratin (n = 1.56, the thesis took 1.5) and the gain model Rayleigh-Rice's
+ * ({@link GainModel}; docs/rigorous.md). The reference reads only the spectral range and the illumination.
  *
  * <p>A new setting goes into the group of its concern (a new group into this record and {@link Builder}); a new
  * variant into {@link Variant}.
@@ -205,8 +206,8 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
             return illumination(illumination.withLight(illumination.light().withProfile(profile)));
         }
 
-        public Builder fresnel(FresnelModel model) {
-            return illumination(illumination.withFresnel(model));
+        public Builder gain(GainModel model) {
+            return illumination(illumination.withGain(model));
         }
 
         public Builder pixelFilter(PixelFilter filter) {

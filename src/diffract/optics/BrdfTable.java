@@ -22,12 +22,12 @@ public final class BrdfTable {
     private final BakedGrid grid;
     private final float[] rgb;
     private final double refractiveIndex;
-    private final FresnelModel fresnel;
+    private final GainModel gainModel;
 
     /**
      * @param rgb linear sRGB, 3 floats per node at {@code 3 (i + n (j + n k))} (i along u, j along v, k along w)
      */
-    public BrdfTable(BakedGrid grid, float[] rgb, double refractiveIndex, FresnelModel fresnel) {
+    public BrdfTable(BakedGrid grid, float[] rgb, double refractiveIndex, GainModel gain) {
         if (rgb.length != 3 * grid.texels()) {
             throw new IllegalArgumentException("table of " + grid + " needs " + 3 * grid.texels() + " floats, got "
                     + rgb.length);
@@ -35,7 +35,7 @@ public final class BrdfTable {
         this.grid = grid;
         this.rgb = rgb;
         this.refractiveIndex = refractiveIndex;
-        this.fresnel = fresnel;
+        this.gainModel = gain;
     }
 
     /** Tabulates a lobes-method BRDF (point light) over {@code grid}, rows in parallel. */
@@ -72,7 +72,7 @@ public final class BrdfTable {
                 reporter.progress(task, finished / (double) rows);
             }
         });
-        return new BrdfTable(grid, rgb, brdf.illumination().refractiveIndex(), brdf.illumination().fresnel());
+        return new BrdfTable(grid, rgb, brdf.illumination().refractiveIndex(), brdf.illumination().gain());
     }
 
     /** A node's cell: a box of one node spacing in u and v. */
@@ -109,8 +109,8 @@ public final class BrdfTable {
         return refractiveIndex;
     }
 
-    public FresnelModel fresnel() {
-        return fresnel;
+    public GainModel gain() {
+        return gainModel;
     }
 
     /** Linear sRGB of node (i, j, k). */
@@ -155,7 +155,7 @@ public final class BrdfTable {
      * shadowing times the interpolated table. omega_i towards the light, omega_r towards the viewer.
      */
     public double[] relative(Direction wi, Direction wr) {
-        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, gainModel);
         if (gain == 0) {
             return new double[3];
         }

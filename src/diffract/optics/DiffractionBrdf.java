@@ -36,9 +36,9 @@ public final class DiffractionBrdf {
 
     /** As above with the gain factor's Fresnel model. */
     public DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, double refractiveIndex,
-                           FresnelModel fresnel) {
+                           GainModel gain) {
         this(spectrum, sampling, IlluminationSettings.ofCoherenceLength(CoherenceWindow.COHERENCE_LENGTH_UM,
-                refractiveIndex).withFresnel(fresnel), null, null);
+                refractiveIndex).withGain(gain), null, null);
     }
 
     private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, IlluminationSettings illumination,
@@ -81,7 +81,7 @@ public final class DiffractionBrdf {
         ExactSpectrum exact = new ExactSpectrum(meanSubtracted, settings.coherenceWindow());
         SpectralSettings spectral = settings.spectral();
         FilteredReference filtered = illumination.filters() ? new FilteredReference(exact,
-                settings.coherenceWindow(), spectral, illumination.refractiveIndex(), illumination.fresnel())
+                settings.coherenceWindow(), spectral, illumination.refractiveIndex(), illumination.gain())
                 : null;
         return new DiffractionBrdf(exact, WavelengthSampling.uniform(spectral.lambdaMinNm(),
                 spectral.lambdaMaxNm(), SpectralSettings.REFERENCE_STEP_NM, spectral.normalisation()),
@@ -94,6 +94,9 @@ public final class DiffractionBrdf {
      */
     static DiffractionBrdf rigorous(BrdfSettings settings, HeightField meanSubtracted) {
         RigorousPatch patch = RigorousPatch.of(meanSubtracted);
+        patch.refusal().ifPresent(why -> {
+            throw new InvalidSettingException(Quantity.VARIANT, why);
+        });
         return new DiffractionBrdf(null, null, settings.illumination(), null, null,
                 new RigorousBrdf(patch, settings, DiskCache.user()));
     }
@@ -217,7 +220,7 @@ public final class DiffractionBrdf {
         if (rigorous != null) {
             return rigorous.relative(wi, wr, lambdaNm);
         }
-        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
+        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.gain());
         if (gain == 0) {
             return 0;
         }
@@ -242,7 +245,7 @@ public final class DiffractionBrdf {
             double[] v = filteredReference.at(wi, wr, Footprint.POINT.plus(illumination.light().uvCovariance(wi)));
             return new Xyz(v[0], v[1], v[2]);
         }
-        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
+        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.gain());
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }
@@ -289,7 +292,7 @@ public final class DiffractionBrdf {
         if (filteredReference != null) {
             return filteredReference.mapPixel(wi, light, column, row, size);
         }
-        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.fresnel());
+        double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.gain());
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }
@@ -301,7 +304,7 @@ public final class DiffractionBrdf {
     /** The lobes method's view of a disc light from omega_r ({@link DiscFootprint}); null for a point or Gaussian. */
     private DiscFootprint discOf(Direction wi, Direction wr) {
         LightSource light = illumination.light();
-        return light.isDisc() ? new DiscFootprint(light, wi, wr, illumination.refractiveIndex(), illumination.fresnel())
+        return light.isDisc() ? new DiscFootprint(light, wi, wr, illumination.refractiveIndex(), illumination.gain())
                 : null;
     }
 

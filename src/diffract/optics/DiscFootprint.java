@@ -54,14 +54,14 @@ public final class DiscFootprint {
     private final Direction wi;
     private final Direction wr;
     private final double refractiveIndex;
-    private final FresnelModel fresnel;
+    private final GainModel gainModel;
     private final double centreGain;
 
     /**
      * The disc of {@code light} about {@code wi} as the pixel at {@code wr} sees it, around the pixel's (u, v) at the
      * light's centre.
      */
-    public DiscFootprint(LightSource light, Direction wi, Direction wr, double refractiveIndex, FresnelModel fresnel) {
+    public DiscFootprint(LightSource light, Direction wi, Direction wr, double refractiveIndex, GainModel gain) {
         if (!light.isDisc()) {
             throw new IllegalArgumentException("a disc light of finite size is required, got " + light);
         }
@@ -81,8 +81,8 @@ public final class DiscFootprint {
         this.wi = wi;
         this.wr = wr;
         this.refractiveIndex = refractiveIndex;
-        this.fresnel = fresnel;
-        this.centreGain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+        this.gainModel = gain;
+        this.centreGain = GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, gain);
     }
 
     /** The ellipse's semi-axis across the plane of incidence, sin R. */
@@ -235,7 +235,7 @@ public final class DiscFootprint {
             return 0;
         }
         Direction d = new Direction(dx, dy, Math.sqrt(Math.max(1e-12, dz2)));
-        return GainFactor.gainTimesShadowing(d, wr, refractiveIndex, fresnel) / centreGain;
+        return GainFactor.gainTimesShadowing(d, wr, refractiveIndex, gainModel) / centreGain;
     }
 
     private static double smoothstep(double lo, double hi, double x) {

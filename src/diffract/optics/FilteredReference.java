@@ -61,9 +61,9 @@ public final class FilteredReference {
 
     /** Over the band and with the mirror's normalisation of {@code spectral}. */
     public FilteredReference(ExactSpectrum spectrum, CoherenceWindow window, SpectralSettings spectral,
-                             double refractiveIndex, FresnelModel fresnel) {
+                             double refractiveIndex, GainModel gain) {
         this(LobeWeights.scalar(spectrum, window.averaged() ? GaussianLobes.WHOLE_TEXELS : PAIR_THRESHOLD,
-                refractiveIndex, fresnel), spectrum.extentXUm(), spectrum.extentYUm(), window, spectral);
+                refractiveIndex, gain), spectrum.extentXUm(), spectrum.extentYUm(), window, spectral);
     }
 
     /** The lobes of a patch of L_x x L_y weighed by {@code weights}, over the band of {@code spectral}. */

@@ -5,7 +5,7 @@ package diffract.optics;
  * light (004, "Spatial Coherence and Windowing": 4 sigma_s, 65 um for filtered sunlight), the light's angular size
  * ({@link LightSource}: a Gaussian of sigma D / 4 per axis), what a BRDF-map pixel shows ({@link PixelFilter}), and
  * the gain factor's Fresnel term (004 eq. {@code gainfactor}: Schlick's with refractive index n, counted as
- * {@link FresnelModel} says). docs/filtering.md defines the light and the pixel.
+ * {@link GainModel} says). docs/filtering.md defines the light and the pixel.
  *
  * @param sigmaSpatialUm  sigma_s of the Gaussian coherence window; 4 sigma_s is the coherence length
  * @param refractiveIndex n of the surface (1.5 for snake skin)
@@ -13,13 +13,13 @@ package diffract.optics;
  *                        (k about 0.02-0.1 over the visible). The rigorous method reads it; Schlick's Fresnel term of
  *                        the scalar model reads n alone
  * @param light           the light's angular diameter, 0..20 degrees (0: a point light)
- * @param fresnel         Schlick's power reflectance counted once ({@link FresnelModel#PHYSICAL}) or squared as the
- *                        thesis prints it
+ * @param gain            the factor in front of |P|^2 ({@link GainModel}: Rayleigh-Rice's, the default; Stam's;
+ *                        or the thesis' squared Schlick reflectance)
  * @param pixelFilter     a BRDF-map pixel's value: the BRDF at its centre ({@link PixelFilter#POINT}, the thesis'
  *                        map) or its average over the pixel's square ({@link PixelFilter#BOX}, the definition)
  */
 public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex, double extinction,
-                                   LightSource light, FresnelModel fresnel, PixelFilter pixelFilter) {
+                                   LightSource light, GainModel gain, PixelFilter pixelFilter) {
     public static final double MAX_COHERENCE_LENGTH_UM = 40_000;
     public static final double MAX_REFRACTIVE_INDEX = 4;
     /** The largest extinction coefficient k accepted (metals reach 3-7; a scale's pigment stays below 1). */
@@ -37,27 +37,28 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
                     + " be in [0, " + InvalidSettingException.number(MAX_EXTINCTION) + "], got "
                     + InvalidSettingException.number(extinction));
         }
-        if (light == null || fresnel == null || pixelFilter == null) {
-            throw new NullPointerException("the light, the Fresnel model and the pixel filter are required");
+        if (light == null || gain == null || pixelFilter == null) {
+            throw new NullPointerException("the light, the gain model and the pixel filter are required");
         }
     }
 
-    /** A point light, physical Fresnel, point-sampled map pixels. */
+    /** A point light, Rayleigh-Rice's gain, point-sampled map pixels. */
     public IlluminationSettings(double sigmaSpatialUm, double refractiveIndex) {
-        this(sigmaSpatialUm, refractiveIndex, 0, LightSource.POINT, FresnelModel.PHYSICAL, PixelFilter.POINT);
+        this(sigmaSpatialUm, refractiveIndex, 0, LightSource.POINT, GainModel.RAYLEIGH_RICE, PixelFilter.POINT);
     }
 
-    /** From the coherence length 4 sigma_s; a point light, physical Fresnel, point-sampled map pixels. */
+    /** From the coherence length 4 sigma_s; a point light, Rayleigh-Rice's gain, point-sampled map pixels. */
     public static IlluminationSettings ofCoherenceLength(double coherenceLengthUm, double refractiveIndex) {
         return new IlluminationSettings(coherenceLengthUm / 4.0, refractiveIndex);
     }
 
     /**
-     * The thesis' illumination, 4 sigma_s = 65 um and n = 1.5, seen as the thesis' maps see it (a point light, the
-     * BRDF at each pixel's centre), with the Fresnel term counted once.
+     * The default illumination: the thesis' 4 sigma_s = 65 um, seen as the thesis' maps see it (a point light, the BRDF
+     * at each pixel's centre), on keratin (n = 1.56; the thesis took 1.5) with the gain model that Maxwell's
+     * equations confirm for shallow reliefs (Rayleigh-Rice's; the thesis' is {@link GainModel#THESIS}).
      */
     public static IlluminationSettings thesis() {
-        return new IlluminationSettings(CoherenceWindow.COHERENCE_LENGTH_UM / 4.0, GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX);
+        return new IlluminationSettings(CoherenceWindow.COHERENCE_LENGTH_UM / 4.0, GainFactor.KERATIN_REFRACTIVE_INDEX);
     }
 
     public double coherenceLengthUm() {
@@ -70,16 +71,16 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
     }
 
     public IlluminationSettings withCoherenceLengthUm(double um) {
-        return new IlluminationSettings(um / 4.0, refractiveIndex, extinction, light, fresnel, pixelFilter);
+        return new IlluminationSettings(um / 4.0, refractiveIndex, extinction, light, gain, pixelFilter);
     }
 
     public IlluminationSettings withRefractiveIndex(double n) {
-        return new IlluminationSettings(sigmaSpatialUm, n, extinction, light, fresnel, pixelFilter);
+        return new IlluminationSettings(sigmaSpatialUm, n, extinction, light, gain, pixelFilter);
     }
 
     /** The complex index n + i k as a whole. */
     public IlluminationSettings withMaterial(diffract.optics.rigorous.ComplexIndex index) {
-        return new IlluminationSettings(sigmaSpatialUm, index.n(), index.k(), light, fresnel, pixelFilter);
+        return new IlluminationSettings(sigmaSpatialUm, index.n(), index.k(), light, gain, pixelFilter);
     }
 
     /** The surface's complex index n + i k. */
@@ -88,14 +89,14 @@ public record IlluminationSettings(double sigmaSpatialUm, double refractiveIndex
     }
 
     public IlluminationSettings withLight(LightSource l) {
-        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, l, fresnel, pixelFilter);
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, l, gain, pixelFilter);
     }
 
-    public IlluminationSettings withFresnel(FresnelModel f) {
+    public IlluminationSettings withGain(GainModel f) {
         return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, light, f, pixelFilter);
     }
 
     public IlluminationSettings withPixelFilter(PixelFilter p) {
-        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, light, fresnel, p);
+        return new IlluminationSettings(sigmaSpatialUm, refractiveIndex, extinction, light, gain, p);
     }
 }

@@ -39,9 +39,9 @@ interface LobeWeights {
     /**
      * Stam's scalar model of the exact reference: W_c(k w) of {@link GaussianLobes} over {@code exact}'s coefficients
      * (whole texels, or pairs down to {@code pairThreshold}), bounded by {@link ExactSpectrum#texelBound}, and the gain
-     * factor C (Fresnel as {@code fresnel} counts it) times Stam's shadowing.
+     * factor of {@code gain} (with its shadowing, where it has one).
      */
-    static LobeWeights scalar(ExactSpectrum exact, double pairThreshold, double refractiveIndex, FresnelModel fresnel) {
+    static LobeWeights scalar(ExactSpectrum exact, double pairThreshold, double refractiveIndex, GainModel gain) {
         GaussianLobes lobes = new GaussianLobes(exact, exact.sigmaTexelsX(), exact.sigmaTexelsY(), pairThreshold);
         double maxAbsHeightUm = exact.maxAbsHeightUm();
         return new LobeWeights() {
@@ -91,7 +91,7 @@ interface LobeWeights {
 
             @Override
             public double gain(Direction wi, Direction wr) {
-                return GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, fresnel);
+                return GainFactor.gainTimesShadowing(wi, wr, refractiveIndex, gain);
             }
         };
     }

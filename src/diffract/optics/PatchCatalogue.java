@@ -42,6 +42,14 @@ public final class PatchCatalogue {
             new Entry("elaphe-scan", "the Elaphe-like skin scanned at AFM size, 528 x 512 samples, 52 x 51 um",
                     new ProceduralPatches.Spec(ProceduralPatches.Kind.ELAPHE_SCAN, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM,
                             0.3, 50, 16, 512, 512, 0.01, 1L), 90),
+            // the snake patches' ridges alone: 1-D gratings the rigorous method solves as they are
+            new Entry("elaphe-ridge", "the Elaphe-like ridges alone (1-D), every 1.144 um, 0.3 um high, 9.2 x 0.6 um",
+                    new ProceduralPatches.Spec(ProceduralPatches.Kind.ELAPHE_RIDGE,
+                            SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, 0.3, 8, 32, 16, 128, 0, 1L), 90),
+            new Entry("xenopeltis-ridge", "the Xenopeltis-like ridges alone (1-D), every 0.65 um, 0.1 um high, 10.4 x "
+                    + "0.3 um", new ProceduralPatches.Spec(ProceduralPatches.Kind.XENOPELTIS_RIDGE,
+                            ProceduralPatches.XENOPELTIS_RIDGE_PERIOD_UM, ProceduralPatches.XENOPELTIS_RIDGE_HEIGHT_UM,
+                            16, 32, 16, 128, 0, 1L), 90),
             // x = k |w| max|h| reaches ~17: the thesis' series of 30 float32 terms no longer converges
             new Entry("tall", "the Elaphe-like profile 1 um high, 4.6 um square",
                     new ProceduralPatches.Spec(ProceduralPatches.Kind.ELAPHE_LIKE, SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM,

@@ -18,13 +18,20 @@ public final class ProceduralPatches {
     private ProceduralPatches() {
     }
 
-    /** The profiles. Gratings have grooves along the rows; the snake patches have ridges along the columns. */
+    /**
+     * The profiles. The blazed and sinusoidal gratings have grooves along the rows (their period along x); the snake
+     * patches and their ridges' cross-sections have ridges along the columns (their period along y).
+     */
     public enum Kind {
-        BLAZED, SINUSOID, ELAPHE_LIKE, XENOPELTIS_LIKE, ELAPHE_SCAN;
+        BLAZED, SINUSOID, ELAPHE_LIKE, XENOPELTIS_LIKE, ELAPHE_SCAN, ELAPHE_RIDGE, XENOPELTIS_RIDGE;
 
-        /** 1-D gratings: sized by samples per period and rows; the snake patches by a square size in pixels. */
+        /**
+         * 1-D gratings: sized by samples per period and by {@code rows}, the samples along the grooves (the rows of
+         * the blazed and sinusoidal gratings, the columns of the ridges); the snake patches by a square size in
+         * pixels.
+         */
         public boolean isGrating() {
-            return this == BLAZED || this == SINUSOID;
+            return this == BLAZED || this == SINUSOID || this == ELAPHE_RIDGE || this == XENOPELTIS_RIDGE;
         }
     }
 
@@ -58,6 +65,12 @@ public final class ProceduralPatches {
                     return SyntheticPatches.sinusoid(periodUm, heightUm, samplesPerPeriod, periods, rows);
                 case ELAPHE_SCAN:
                     return SyntheticPatches.elapheScan(sizePx, periods, periodUm, heightUm, seed);
+                case ELAPHE_RIDGE:
+                    return SyntheticPatches.ridges(SyntheticPatches::fingerProfile, periodUm, heightUm,
+                            samplesPerPeriod, periods, rows);
+                case XENOPELTIS_RIDGE:
+                    return SyntheticPatches.ridges(ProceduralPatches::xenopeltisProfile, periodUm, heightUm,
+                            samplesPerPeriod, periods, rows);
                 default:
                     return SyntheticPatches.elapheLike(sizePx, periods, periodUm, heightUm, seed);
             }
@@ -102,11 +115,16 @@ public final class ProceduralPatches {
             for (int c = 0; c < sizePx; c++) {
                 double x = c * pixelUm;
                 double y = r * pixelUm + 0.02 * periodUm * Math.sin(2 * Math.PI * x / widthUm + wavinessPhase);
-                double s = Math.sin(Math.PI * (y / periodUm));
-                h[r * sizePx + c] = heightUm * s * s + boxMean(noise, sizePx, r, c);
+                h[r * sizePx + c] = heightUm * xenopeltisProfile(y / periodUm) + boxMean(noise, sizePx, r, c);
             }
         }
         return HeightField.of(sizePx, sizePx, h, pixelUm);
+    }
+
+    /** The Xenopeltis-like ridge across its period, t in [0, 1): sin^2(pi t), peak 1 at t = 1/2. */
+    static double xenopeltisProfile(double t) {
+        double s = Math.sin(Math.PI * t);
+        return s * s;
     }
 
     private static double boxMean(double[] field, int size, int r, int c) {

@@ -26,7 +26,7 @@ public enum Quantity {
     POLARISATION("the light's polarisation"),
     LIGHT_SIZE("the light's angular diameter"),
     LIGHT_PROFILE("the light's profile"),
-    FRESNEL("the Fresnel model"),
+    GAIN("the gain model"),
     PIXEL_FILTER("the pixel filter"),
     LOBE_QUADRATURE("the lobes' quadrature"),
     TERM_FORMAT("the term texture format"),

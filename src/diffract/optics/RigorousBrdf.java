@@ -76,11 +76,25 @@ final class RigorousBrdf {
         return d.filtered.mapPixel(wi, illumination.light().uvCovariance(wi), column, row, size);
     }
 
-    /** The direction omega_r itself (no pixel), over the light and the band. */
+    /**
+     * The direction omega_r itself (no pixel), over the light and the band; under a point light summed over the
+     * reference's wavelengths (1 nm) as the reference's point-sampled map is, else integrated as its filtered one.
+     */
     Xyz xyz(Direction wi, Direction wr) {
         Drawing d = drawing(wi);
         if (d.disc != null) {
             return d.disc.at(wi, wr);
+        }
+        if (!settings.illumination().filters()) {
+            SpectralSettings spectral = settings.spectral();
+            WavelengthSampling.Quadrature q = WavelengthSampling.uniform(spectral.lambdaMinNm(), spectral.lambdaMaxNm(),
+                    SpectralSettings.REFERENCE_STEP_NM, spectral.normalisation()).quadratureFor(0, 0);
+            double sigmaF = settings.coherenceWindow().sigmaFrequencyPerUm();
+            double[] power = new double[q.lambdasNm().length];
+            for (int j = 0; j < power.length; j++) {
+                power[j] = d.orders.relative(wi, wr, q.lambdasNm()[j], sigmaF);
+            }
+            return diffract.colour.SpectralIntegrator.weightedSum(q.xyzWeights(), power);
         }
         double[] v = d.filtered.at(wi, wr, Footprint.POINT.plus(settings.illumination().light().uvCovariance(wi)));
         return new Xyz(v[0], v[1], v[2]);

@@ -58,6 +58,9 @@ final class RigorousMethod implements Variant {
     public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
                                                     double fromNm, double toNm) {
         RigorousPatch patch = RigorousPatch.of(field);
+        patch.refusal().ifPresent(why -> {
+            throw new InvalidSettingException(Quantity.VARIANT, why);
+        });
         return RigorousCost.of(patch, settings, fromNm).memory();
     }
 

@@ -73,7 +73,8 @@ final class RigorousPatch {
             }
         }
         int repeats = n / period;
-        double[] one = java.util.Arrays.copyOf(line, period);
+        // a flat line repeats every sample: its one period is a flat polyline of two
+        double[] one = period >= 2 ? java.util.Arrays.copyOf(line, period) : new double[] {line[0], line[0]};
         double periodUm = extentUm / repeats;
         String description = String.format(Locale.ROOT, "%s profile of %d samples%s, period %.4g um", axis == Axis.X
                 ? "x" : "y", period, repeats > 1 ? " (repeated " + repeats + " times in the patch)" : "", periodUm);
@@ -157,6 +158,16 @@ final class RigorousPatch {
      */
     double[] incidence(Direction wi) {
         return axis == Axis.X ? new double[] {-wi.x(), -wi.y()} : new double[] {-wi.y(), -wi.x()};
+    }
+
+    /**
+     * Why the rigorous method cannot solve this patch, or empty where it can: it solves 1-D gratings; a 2-D cell's
+     * eigenproblems grow as the cube of its harmonics in both directions.
+     */
+    Optional<String> refusal() {
+        return oneDimensional() ? Optional.empty() : Optional.of("the rigorous method solves 1-D patches (every row, or "
+                + "every column, the same), and this is " + describe() + "; a snake patch's ridges alone are 1-D "
+                + "(the named patches elaphe-ridge and xenopeltis-ridge)");
     }
 
     /** "a 1-D grating: x profile of 25 samples (repeated 26 times in the patch), period 2.5 um" or "a 2-D cell". */

@@ -133,6 +133,26 @@ public final class SyntheticPatches {
         return HeightField.of(rows, cols, h, field.pixelSizeXUm(), field.pixelSizeYUm());
     }
 
+    /**
+     * A snake patch's ridges alone, as a 1-D grating: the cross-section {@code profile} (peak 1, over t in [0, 1)) of
+     * peak-to-valley {@code heightUm}, repeating along y every {@code periodUm}, the ridges running along x over
+     * {@code along} columns, without the snake patch's meander, fingers and noise: the 1-D structure the rigorous
+     * method solves as it is.
+     */
+    public static HeightField ridges(java.util.function.DoubleUnaryOperator profile, double periodUm, double heightUm,
+                                     int samplesPerPeriod, int periods, int along) {
+        check(periodUm, heightUm, samplesPerPeriod, periods, along);
+        int rows = samplesPerPeriod * periods;
+        double[] h = new double[rows * along];
+        for (int r = 0; r < rows; r++) {
+            double height = heightUm * profile.applyAsDouble((r % samplesPerPeriod) / (double) samplesPerPeriod);
+            for (int c = 0; c < along; c++) {
+                h[r * along + c] = height;
+            }
+        }
+        return HeightField.of(rows, along, h, periodUm / samplesPerPeriod);
+    }
+
     /** The asymmetric ridge profile of {@link #elapheLike}: 0 at t = 0 and 1, peak 1 at t = 0.7, smooth. */
     static double fingerProfile(double t) {
         if (t < 0.7) {

@@ -3,7 +3,7 @@ package diffract.render;
 import diffract.jrtr.HeadlessGL;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.FresnelModel;
+import diffract.optics.GainModel;
 import diffract.optics.TaylorTerms;
 import diffract.optics.TermFormat;
 import diffract.optics.Variant;
@@ -250,7 +250,7 @@ public final class BakedTables {
      */
     private static Key key(TaylorTerms terms, BrdfSettings settings) {
         return new Key(terms, BakedDisc.heldBy(settings).with(b -> b.variant(Variant.BAKED)
-                .termFormat(TermFormat.RG32F).fresnel(FresnelModel.PHYSICAL)), tabulated(terms, settings));
+                .termFormat(TermFormat.RG32F).gain(GainModel.STAM)), tabulated(terms, settings));
     }
 
     /**

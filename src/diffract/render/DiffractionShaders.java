@@ -8,7 +8,7 @@ import diffract.optics.DiscFootprint;
 import diffract.optics.LobeSpectrum;
 import diffract.optics.Methods;
 import diffract.optics.WindowPlacement;
-import diffract.optics.FresnelModel;
+import diffract.optics.GainModel;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LightSource;
 import diffract.optics.PhaseCentres;
@@ -122,7 +122,10 @@ public final class DiffractionShaders {
         defines.put("WIDEST_HAT_NM", Integer.toString(diffract.colour.HatFilteredSpectrum.WIDEST_HAT_NM));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));
         defines.put(target.name(), "1");
-        if (settings.illumination().fresnel() == FresnelModel.THESIS) {
+        if (settings.illumination().gain() == GainModel.RAYLEIGH_RICE) {
+            defines.put("GAIN_RAYLEIGH_RICE", "1");
+        }
+        if (settings.illumination().gain() == GainModel.THESIS) {
             defines.put("FRESNEL_THESIS", "1");
         }
         if (monochromatic) {

@@ -7,7 +7,7 @@ import diffract.geometry.TangentSource;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.CoherenceWindow;
-import diffract.optics.FresnelModel;
+import diffract.optics.GainModel;
 import diffract.optics.GainFactor;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.InvalidSettingException;
@@ -56,7 +56,9 @@ public final class SceneFile {
     static final List<String> EXPANSIONS = List.of("auto", "plain", "centred");
     static final List<String> TERM_FORMATS = List.of("rg32f", "rg16f", "rg8");
     static final List<String> MODES = List.of("surface", "brdfMap");
-    static final List<String> FRESNEL_MODELS = List.of("physical", "thesis");
+    static final List<String> GAIN_MODELS = java.util.Arrays.stream(GainModel.values()).map(GainModel::label).toList();
+    /** "fresnel", the former key of "gain", took these (physical is stam). */
+    static final List<String> FRESNEL_MODELS = List.of("physical", "stam", "thesis");
     static final List<String> NORMALISATIONS = Arrays.stream(MirrorNormalisation.values())
             .map(MirrorNormalisation::key).toList();
     /** {@code material.exposure}'s word for {@link RadiometricGain}. */
@@ -282,7 +284,7 @@ public final class SceneFile {
             Map.entry(Quantity.LAMBDA_MIN, "lambdaMinNm"), Map.entry(Quantity.LAMBDA_MAX, "lambdaMaxNm"),
             Map.entry(Quantity.LAMBDA_STEP, "lambdaStepNm"), Map.entry(Quantity.COHERENCE_LENGTH, "coherenceLengthUm"),
             Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
-            Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.FRESNEL, "fresnel"),
+            Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.GAIN, "gain"),
             Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"), Map.entry(Quantity.LOBE_QUADRATURE, "lobeQuadrature"),
             Map.entry(Quantity.SCAN_TILING, "skinUmPerTexcoord"));
 
@@ -387,8 +389,7 @@ public final class SceneFile {
                 throw material.problem("window", "\"local\" needs \"skinUmPerTexcoord\": the micrometres of skin one"
                         + " unit of the mesh's texture coordinates spans, a number or [u, v]");
             }
-            b.illumination(illumination(material).withLight(lightSource)
-                    .withFresnel(FresnelModel.parse(material.choice("fresnel", FRESNEL_MODELS, "physical")))
+            b.illumination(illumination(material).withLight(lightSource).withGain(gain(material))
                     .withPixelFilter(PixelFilter.parse(material.choice("pixelFilter", PIXEL_FILTERS, "box"))));
             b.termFormat(TermFormat.valueOf(material.choice("termFormat", TERM_FORMATS, "rg32f")
                     .toUpperCase(Locale.ROOT)));
@@ -447,6 +448,17 @@ public final class SceneFile {
         b.windowRadius(material.integer("windowRadius", SceneObject.Range.closed(0, WindowSettings.MAX_RADIUS), 1));
     }
 
+    /** "gain", or its former key "fresnel" (not both); Rayleigh-Rice's by default. */
+    private static GainModel gain(SceneObject material) {
+        if (material.has("fresnel")) {
+            if (material.has("gain")) {
+                throw material.problem("fresnel", "is the former name of \"gain\": give one of them");
+            }
+            return GainModel.parse(material.choice("fresnel", FRESNEL_MODELS, "stam"));
+        }
+        return GainModel.parse(material.choice("gain", GAIN_MODELS, GainModel.RAYLEIGH_RICE.label()));
+    }
+
     /** The coherence length (or the thesis' sigma_s, a quarter of it) and the refractive index. */
     private static IlluminationSettings illumination(SceneObject material) {
         SceneObject.Range coherence = SceneObject.Range.above(0, IlluminationSettings.MAX_COHERENCE_LENGTH_UM);
@@ -462,7 +474,7 @@ public final class SceneFile {
             coherenceLengthUm = material.number("coherenceLengthUm", coherence, CoherenceWindow.COHERENCE_LENGTH_UM);
         }
         double n = material.number("refractiveIndex", SceneObject.Range.closed(1, IlluminationSettings.MAX_REFRACTIVE_INDEX),
-                GainFactor.SNAKE_SKIN_REFRACTIVE_INDEX);
+                GainFactor.KERATIN_REFRACTIVE_INDEX);
         return IlluminationSettings.ofCoherenceLength(coherenceLengthUm, n);
     }
 

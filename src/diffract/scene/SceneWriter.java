@@ -175,7 +175,7 @@ public final class SceneWriter {
         IlluminationSettings illumination = s.illumination();
         material.put("coherenceLengthUm", illumination.coherenceLengthUm());
         material.put("refractiveIndex", illumination.refractiveIndex());
-        material.put("fresnel", illumination.fresnel().label());
+        material.put("gain", illumination.gain().label());
         material.put("pixelFilter", illumination.pixelFilter().label());
         GpuTableSettings gpu = s.gpu();
         material.put("termFormat", gpu.termFormat().name().toLowerCase(Locale.ROOT));

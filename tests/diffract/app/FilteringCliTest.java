@@ -70,7 +70,7 @@ class FilteringCliTest {
             }
         }
         assertOneLine(run("--variant", "flss", "--light-size-deg", "10", "--light-profile", "disc"),
-                "(disc) needs a method that averages over it, reference, baked or lobes (or a point light");
+                "(disc) needs a method that averages over it, reference, baked, lobes or rigorous (or a point light");
     }
 
     @Test

@@ -28,7 +28,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * the viewer's keys are held by ViewerModelTest.
  */
 class LightPolicyTest {
-    static final Set<Variant> TAKE_A_WIDE_LIGHT = Set.of(Variant.REFERENCE, Variant.LOBES, Variant.BAKED);
+    static final Set<Variant> TAKE_A_WIDE_LIGHT = Set.of(Variant.REFERENCE, Variant.LOBES, Variant.BAKED,
+            Variant.RIGOROUS);
     static final HeightField PATCH = SyntheticPatches.blazed(2.5, 0.2, 20, 4, 16).meanSubtracted();
 
     static BrdfSettings settings(Variant v, double lightDeg) {
@@ -47,7 +48,7 @@ class LightPolicyTest {
                 assertEquals(0, wide.usable().illumination().light().angularDiameterDeg(), v.label());
                 assertEquals(v, wide.usable().variant());
                 assertEquals(v.label() + " samples the light at its centre only: a light of 2 degrees (disc) needs "
-                        + "a method that averages over it, reference, baked or lobes (or a point light, 0 degrees)",
+                        + "a method that averages over it, reference, baked, lobes or rigorous (or a point light, 0 degrees)",
                         wide.reason().get());
                 assertEquals(v.label() + " samples the light at its centre: the 2-degree light is drawn as a point "
                         + "light (baked and lobes filter by its size)", wide.notice().get());

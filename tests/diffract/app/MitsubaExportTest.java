@@ -50,7 +50,7 @@ class MitsubaExportTest {
     void writesAHeaderAndAFloat32TableOfTheAutomaticGrid() throws IOException {
         String json = Files.readString(header);
         assertTrue(json.contains("\"format\" : \"diffract-brdf-table\""), json);
-        assertTrue(json.contains("\"fresnel\" : \"physical\""), json);
+        assertTrue(json.contains("\"gain\" : \"rayleigh-rice\""), json);
         assertTrue(json.contains("\"normalisation\" : \"energy\""), json);
         int[][] shape = new int[1][];
         float[] data = NpyFile.readFloat32(dir.resolve("elaphe.npy"), shape);

@@ -78,7 +78,7 @@ class ToyMethodTest {
             SpectralSettings s = settings.spectral();
             return new DiffractionBrdf(flat, WavelengthSampling.uniform(s.lambdaMinNm(), s.lambdaMaxNm(),
                     s.lambdaStepNm(), s.normalisation()), settings.illumination().refractiveIndex(),
-                    settings.illumination().fresnel());
+                    settings.illumination().gain());
         }
     }
 

@@ -21,7 +21,7 @@ class DiscFootprintTest {
                                                  @ForAll @DoubleRange(min = 0, max = 360) double phiIDeg,
                                                  @ForAll @DoubleRange(min = 0, max = 80) double thetaRDeg,
                                                  @ForAll @DoubleRange(min = 0, max = 360) double phiRDeg,
-                                                 @ForAll FresnelModel fresnel) {
+                                                 @ForAll GainModel fresnel) {
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phiIDeg);
         Direction wr = Direction.fromSphericalDeg(thetaRDeg, phiRDeg);
         double centre = GainFactor.gainTimesShadowing(wi, wr, REFRACTIVE_INDEX, fresnel);
@@ -38,9 +38,9 @@ class DiscFootprintTest {
                                              @ForAll @DoubleRange(min = 0, max = 360) double phiRDeg) {
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, 0);
         Direction wr = Direction.fromSphericalDeg(thetaRDeg, phiRDeg);
-        Assume.that(GainFactor.gainTimesShadowing(wi, wr, REFRACTIVE_INDEX, FresnelModel.PHYSICAL) > 0);
+        Assume.that(GainFactor.gainTimesShadowing(wi, wr, REFRACTIVE_INDEX, GainModel.STAM) > 0);
         double bound = new DiscFootprint(new LightSource(LightSource.SUN_DEG), wi, wr, REFRACTIVE_INDEX,
-                FresnelModel.PHYSICAL).gainBound();
+                GainModel.STAM).gainBound();
         assertTrue(bound >= 1 && bound <= 1.05, "the sun's bound " + bound);
     }
 
@@ -49,7 +49,7 @@ class DiscFootprintTest {
      * alpha on 24 rings up to R and beta at 96 azimuths (e horizontal, t completing the frame about omega_i).
      */
     private static double largestRatioOverTheCone(Direction wi, Direction wr, double halfAngleRad,
-                                                  FresnelModel fresnel, double centre) {
+                                                  GainModel fresnel, double centre) {
         double sinTheta = Math.hypot(wi.x(), wi.y());
         double rx = sinTheta < 1e-12 ? 1 : wi.x() / sinTheta;
         double ry = sinTheta < 1e-12 ? 0 : wi.y() / sinTheta;

@@ -45,7 +45,7 @@ class FilteredReferenceTest {
     }
 
     static FilteredReference reference(HeightField patch) {
-        return new FilteredReference(new ExactSpectrum(patch, WINDOW), WINDOW, new SpectralSettings(380, 780, 5), 1.5, FresnelModel.PHYSICAL);
+        return new FilteredReference(new ExactSpectrum(patch, WINDOW), WINDOW, new SpectralSettings(380, 780, 5), 1.5, GainModel.STAM);
     }
 
     @ParameterizedTest
@@ -121,7 +121,8 @@ class FilteredReferenceTest {
         HeightField patch = patch(name);
         ExactSpectrum exact = new ExactSpectrum(patch, WINDOW);
         FilteredReference reference = reference(patch);
-        DiffractionBrdf fine = new DiffractionBrdf(exact, WavelengthSampling.uniform(380, 780, 0.05), 1.5);
+        DiffractionBrdf fine = new DiffractionBrdf(exact, WavelengthSampling.uniform(380, 780, 0.05), 1.5,
+                GainModel.STAM);
         Direction wi = Direction.fromSphericalDeg(30, phiOf(name));
         for (double x : new double[] {-0.72, -0.51, -0.28, 0.1, 0.6}) {
             Direction wr = Direction.fromProjected(x, 0.0);
@@ -217,7 +218,7 @@ class FilteredReferenceTest {
                     continue;
                 }
                 Direction wr = Direction.fromProjected(x, y);
-                double gain = GainFactor.gainTimesShadowing(wi, wr, 1.5, FresnelModel.PHYSICAL);
+                double gain = GainFactor.gainTimesShadowing(wi, wr, 1.5, GainModel.STAM);
                 spectralSum(exact, density, -wi.x() - x, -wi.y() - y, -wi.z() - wr.z(), stepNm, gain / (n * n), f, sum);
             }
             return sum;
@@ -228,7 +229,7 @@ class FilteredReferenceTest {
     /** The light's Gaussian in (u, v) sampled on a grid of shifts over +-5 standard deviations. */
     static double[] bruteForceLight(ExactSpectrum exact, Direction wi, Direction wr, Covariance2 light, double stepNm) {
         SpectralDensity density = new SpectralDensity(380, 780);
-        double gain = GainFactor.gainTimesShadowing(wi, wr, 1.5, FresnelModel.PHYSICAL);
+        double gain = GainFactor.gainTimesShadowing(wi, wr, 1.5, GainModel.STAM);
         double sx = Math.sqrt(light.xx());
         double sy = Math.sqrt(light.yy());
         int n = 48;

@@ -21,9 +21,9 @@ class FresnelEnergyTest {
     @Test
     void physicalAlbedoIsSchlicksReflectanceAndNeverExceedsOne() {
         double r0 = GainFactor.schlickR0(1.5);
-        double normal = integral(0, FresnelModel.PHYSICAL);
+        double normal = integral(0, GainModel.STAM);
         for (int theta = 0; theta <= 89; theta++) {
-            double albedo = r0 * integral(theta, FresnelModel.PHYSICAL) / (Math.cos(Math.toRadians(theta)) * normal);
+            double albedo = r0 * integral(theta, GainModel.STAM) / (Math.cos(Math.toRadians(theta)) * normal);
             assertTrue(albedo <= 1 + 1e-3, "albedo " + albedo + " at " + theta + " degrees");
             if (theta <= 80) {
                 double f = GainFactor.schlickFresnel(Math.cos(Math.toRadians(theta)), r0);
@@ -35,9 +35,9 @@ class FresnelEnergyTest {
     @Test
     void thesisAlbedoExceedsOneAtGrazingIncidence() {
         double r0 = GainFactor.schlickR0(1.5);
-        double normal = integral(0, FresnelModel.THESIS);
-        double at60 = r0 * integral(60, FresnelModel.THESIS) / (Math.cos(Math.toRadians(60)) * normal);
-        double at80 = r0 * integral(80, FresnelModel.THESIS) / (Math.cos(Math.toRadians(80)) * normal);
+        double normal = integral(0, GainModel.THESIS);
+        double at60 = r0 * integral(60, GainModel.THESIS) / (Math.cos(Math.toRadians(60)) * normal);
+        double at80 = r0 * integral(80, GainModel.THESIS) / (Math.cos(Math.toRadians(80)) * normal);
         double f60 = GainFactor.schlickFresnel(0.5, r0);
         double f80 = GainFactor.schlickFresnel(Math.cos(Math.toRadians(80)), r0);
         assertEquals(f60 * f60 / r0, at60, 0.01 * at60);
@@ -46,7 +46,7 @@ class FresnelEnergyTest {
     }
 
     /** integral over the disk of rho(omega_i, omega_r) dx dy, on a grid fine around the mirror direction. */
-    private static double integral(double thetaDeg, FresnelModel fresnel) {
+    private static double integral(double thetaDeg, GainModel fresnel) {
         DiffractionBrdf brdf = new DiffractionBrdf(new ExactSpectrum(FLAT, WINDOW),
                 WavelengthSampling.uniform(380, 780, 5), 1.5, fresnel);
         Direction wi = Direction.fromSphericalDeg(thetaDeg, 0);

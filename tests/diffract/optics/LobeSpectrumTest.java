@@ -127,7 +127,7 @@ class LobeSpectrumTest {
             CoherenceWindow window = new CoherenceWindow(coherenceUm / 4);
             int radius = (int) Math.ceil(8 * window.sigmaTexels(patch.widthUm())) + 1;
             DiffractionBrdf flss = new DiffractionBrdf(new TaylorGaussianSpectrum(terms, 30, radius, window),
-                    WavelengthSampling.uniform(380, 780, 0.01), 1.5);
+                    WavelengthSampling.uniform(380, 780, 0.01), 1.5, GainModel.STAM);
             LobeSpectrum fine = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), FINE);
             LobeSpectrum standard = LobeSpectrum.ofTerms(terms, 30, window, new SpectralSettings(380, 780, 5), RULE);
             Direction wi = Direction.fromSphericalDeg(30, 90);

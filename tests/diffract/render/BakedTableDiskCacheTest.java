@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
-import diffract.optics.FresnelModel;
+import diffract.optics.GainModel;
 import diffract.optics.PixelFilter;
 import diffract.optics.TaylorTerms;
 import diffract.optics.TermFormat;
@@ -195,7 +195,7 @@ class BakedTableDiskCacheTest {
     void theKeyFollowsEveryInputOfTheTable() {
         TaylorTerms terms = RenderTestSupport.terms(RenderTestSupport.BLAZED);
         BrdfSettings s = small().with(b -> b.variant(Variant.BAKED).termFormat(TermFormat.RG32F)
-                .fresnel(FresnelModel.PHYSICAL));
+                .gain(GainModel.STAM));
         DiskCache.Key key = BakedTableFile.key(terms, s, Variant.FLSS);
         assertEquals(key, BakedTableFile.key(recomputed(terms), s, Variant.FLSS), "equal content, equal key");
         for (BrdfSettings other : List.of(s.with(b -> b.lambdaStepNm(10)), s.with(b -> b.bakedSamples(11, 2)),

@@ -40,7 +40,7 @@ class PreviewPolicyTest {
         assertTrue(preview.illumination().light().isPoint(), "FLSS samples the light at its centre");
         assertEquals(PixelFilter.POINT, preview.illumination().pixelFilter());
         assertEquals(65, preview.illumination().coherenceLengthUm(), 1e-12);
-        assertEquals(lobes.illumination().fresnel(), preview.illumination().fresnel());
+        assertEquals(lobes.illumination().gain(), preview.illumination().gain());
     }
 
     @Test

@@ -1,0 +1,141 @@
+package diffract.optics;
+
+import diffract.optics.rigorous.Resolution;
+import diffract.util.DiskCache;
+import diffract.util.Reporter;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import java.nio.file.Path;
+import java.util.List;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+/**
+ * The rigorous method as a method: how it reads a patch (1-D along x or y, repeats), where its orders land on a map
+ * (the grating equation, on the same side as the scalar model's), that Rayleigh-Rice's scalar gain matches it on a
+ * shallow grating where Stam's does not, the disk cache of its orders, and its refusal of 2-D patches.
+ */
+class RigorousMethodTest {
+    private static final HeightField BLAZED = SyntheticPatches.blazed(2.5, 0.2, 25, 4, 4).meanSubtracted();
+
+    private static BrdfSettings settings() {
+        return BrdfSettings.thesis(Variant.RIGOROUS).with(b -> b.lambdaStepNm(10)
+                .rigorous(RigorousSettings.DEFAULT.withResolution(new Resolution(0, 12, true))));
+    }
+
+    @Test
+    void aPatchOfWholePeriodsIsSolvedOnOnePeriodAlongItsAxis() {
+        RigorousPatch x = RigorousPatch.of(BLAZED);
+        assertTrue(x.oneDimensional());
+        assertEquals(RigorousPatch.Axis.X, x.axis());
+        assertEquals(4, x.repeats());
+        assertEquals(2.5, x.profile().periodUm(), 1e-12);
+        assertEquals(0.2 * 24 / 25, x.profile().depthUm(), 1e-12);
+        // order m lands on texel -m P: order -1 of a 4-period patch on texel +4 along x
+        assertEquals(List.of(4, 0), List.of(x.texel(-1)[0], x.texel(-1)[1]));
+        assertEquals(java.util.Optional.of(-1), x.order(4, 0));
+        assertEquals(java.util.Optional.empty(), x.order(3, 0));
+        RigorousPatch y = RigorousPatch.of(PatchCatalogue.named("elaphe-ridge").build().meanSubtracted());
+        assertEquals(RigorousPatch.Axis.Y, y.axis());
+        assertEquals(8, y.repeats());
+        assertEquals(SyntheticPatches.ELAPHE_RIDGE_PERIOD_UM, y.profile().periodUm(), 1e-12);
+        assertEquals(List.of(0, 8), List.of(y.texel(-1)[0], y.texel(-1)[1]));
+    }
+
+    @Test
+    void aTwoDimensionalPatchIsRefusedWithTheWayOut() {
+        HeightField rough = NaiveDft.randomPatch(12, 16, 0.2, 0.1, 3);
+        InvalidSettingException e = assertThrows(InvalidSettingException.class,
+                () -> DiffractionBrdf.create(settings(), rough, null));
+        assertEquals(Quantity.VARIANT, e.quantity());
+        assertTrue(e.getMessage().contains("1-D patches") && e.getMessage().contains("elaphe-ridge"), e.getMessage());
+    }
+
+    /** Monochromatic maps: the orders sit where the grating equation puts them, and on the scalar model's side. */
+    @Test
+    void ordersLandAtTheGratingEquationOnTheScalarModelsSide() {
+        Direction wi = Direction.fromSphericalDeg(30, 0);
+        double lambdaNm = 550;
+        DiffractionBrdf rigorous = DiffractionBrdf.create(settings(), BLAZED, null);
+        DiffractionBrdf scalar = DiffractionBrdf.create(BrdfSettings.thesis(Variant.REFERENCE), BLAZED, null);
+        double brightestRigorous = 0;
+        double brightestScalar = 0;
+        int atRigorous = 0;
+        int atScalar = 0;
+        for (int m = -6; m <= 1; m++) {
+            double x = -wi.x() + m * lambdaNm * 1e-3 / 2.5;
+            if (Math.abs(x) >= 1) {
+                continue;
+            }
+            Direction wr = Direction.fromProjected(x, 0);
+            double r = rigorous.relative(wi, wr, lambdaNm);
+            double s = scalar.relative(wi, wr, lambdaNm);
+            // between the orders nothing: half-way to the next order the lobes (65 um coherence) have faded
+            Direction between = Direction.fromProjected(x + 0.5 * lambdaNm * 1e-3 / 2.5, 0);
+            assertTrue(rigorous.relative(wi, between, lambdaNm) < 1e-9 * Math.max(r, 1e-3), "between orders " + m);
+            if (m != 0 && r > brightestRigorous) {
+                brightestRigorous = r;
+                atRigorous = m;
+            }
+            if (m != 0 && s > brightestScalar) {
+                brightestScalar = s;
+                atScalar = m;
+            }
+        }
+        // the sawtooth rises along +x: both models blaze its light into the same negative order
+        assertEquals(atScalar, atRigorous);
+        assertTrue(atRigorous < 0, "the blazed order is " + atRigorous);
+    }
+
+    /**
+     * On a shallow grating (20 nm of 1 um) Rayleigh-Rice's factor is the first-order perturbation result: the scalar
+     * model with it matches the rigorous orders to 2 %, at 60 degrees too, where Stam's gain misses by more than 10 %.
+     */
+    @Test
+    void rayleighRicesGainMatchesAShallowGratingWhereStamsDoesNot() {
+        HeightField shallow = SyntheticPatches.sinusoid(1.0, 0.02, 32, 1, 1).meanSubtracted();
+        double worstStam = 0;
+        for (double theta : new double[] {0, 30, 60}) {
+            Direction wi = Direction.fromSphericalDeg(theta, 0);
+            for (double lambdaNm : new double[] {450, 650}) {
+                OrderComparison rr = OrderComparison.of(shallow, settings(), wi, lambdaNm);
+                OrderComparison stam = OrderComparison.of(shallow, settings().with(b -> b.gain(GainModel.STAM)), wi,
+                        lambdaNm);
+                for (int i = 0; i < rr.orders().size(); i++) {
+                    OrderComparison.Order o = rr.orders().get(i);
+                    if (Math.abs(o.order()) != 1) {
+                        continue;
+                    }
+                    String where = "order " + o.order() + " at " + theta + " degrees, " + lambdaNm + " nm";
+                    assertEquals(o.rigorous(), o.scalar(), 0.02 * o.rigorous(), where);
+                    worstStam = Math.max(worstStam, Math.abs(stam.orders().get(i).relativeError()));
+                }
+            }
+        }
+        assertTrue(worstStam > 0.1, "Stam's gain misses by " + worstStam);
+    }
+
+    @Test
+    void theOrdersAreKeptInTheDiskCache(@TempDir Path dir) {
+        DiskCache cache = DiskCache.at(dir);
+        Direction wi = Direction.fromSphericalDeg(20, 0);
+        RigorousPatch patch = RigorousPatch.of(BLAZED);
+        RigorousOrders solved = RigorousOrders.of(patch, settings(), wi, cache, Reporter.SILENT);
+        Reporter.Collecting reporter = new Reporter.Collecting();
+        RigorousOrders loaded = RigorousOrders.of(patch, settings(), wi, cache, reporter);
+        assertTrue(reporter.infos().isEmpty(), "loaded without a solve: " + reporter.infos());
+        for (int m = -4; m <= 4; m++) {
+            for (double lambdaNm = 380; lambdaNm <= 780; lambdaNm += 13) {
+                assertEquals(solved.efficiency(m, lambdaNm), loaded.efficiency(m, lambdaNm), 0);
+            }
+        }
+        double reflectance = 0;
+        for (int m = -6; m <= 6; m++) {
+            reflectance += solved.efficiency(m, 550);
+        }
+        assertTrue(reflectance > 0.02 && reflectance < 0.1, "the grating reflects " + reflectance + " at 550 nm");
+    }
+}
