@@ -32,6 +32,7 @@ their sums R + T for s and p ("energy"), and the seconds it took; or "error" wit
 null version and the reason under "missing". --check prints the solvers' versions (null: not importable) and exits
 0, or 3 when none imports.
 """
+import contextlib
 import json
 import math
 import os
@@ -251,7 +252,9 @@ def main(argv):
     parser.add_argument("--check", action="store_true", help="print the importable solvers' versions and exit")
     parser.add_argument("--progress", action="store_true", help="a line per result on standard error")
     args = parser.parse_args(argv)
-    found = versions()
+    # what the solvers print goes to standard error: standard output carries the JSON alone
+    with contextlib.redirect_stdout(sys.stderr):
+        found = versions()
     if args.check:
         print(json.dumps(found))
         return 0 if any(found[s] for s in SOLVERS) else 3
@@ -272,7 +275,13 @@ def main(argv):
     # that a caller can give up before the solving; second line: the results
     print(json.dumps({"versions": {s: found[s] for s in SOLVERS},
                       "missing": {s: found[s + "_error"] for s in SOLVERS if not found[s]}}), flush=True)
-    print(json.dumps({"results": run(cases, [s for s in asked if found[s]], args.progress)}))
+    try:
+        with contextlib.redirect_stdout(sys.stderr):
+            results = run(cases, [s for s in asked if found[s]], args.progress)
+    except KeyError as e:
+        print("rigorous_crosscheck: a case or incidence in %s lacks the key %s" % (args.cases, e), file=sys.stderr)
+        return 2
+    print(json.dumps({"results": results}))
     return 0
 
 
