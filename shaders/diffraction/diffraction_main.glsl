@@ -35,6 +35,9 @@ vec3 diffractionXyz(vec3 wi, vec3 wr) {
 #if defined(LIGHT_DISC) && !defined(STAGE)
     setDisc(wi, wr);
 #endif
+#ifdef RIGOROUS_ORDERS
+    setOrderIncidence(wi);
+#endif
     return gain * spectralXyz(uvwOf(wi, wr));
 }
 
@@ -44,6 +47,9 @@ float relativeBrdf(vec3 wi, vec3 wr, float lambdaNm) {
     if (gain == 0.0) {
         return 0.0;
     }
+#ifdef RIGOROUS_ORDERS
+    setOrderIncidence(wi);
+#endif
     return gain * patchPower(uvwOf(wi, wr), lambdaNm);
 }
 

@@ -26,6 +26,45 @@ uniform float lobeNodesPerSigma;
 uniform float lobeMaxStepNm;
 uniform float lobeReachSigmas;
 
+#ifdef RIGOROUS_ORDERS
+// The rigorous orders (OrderCorrection): per order of the patch's ridge, its efficiency from Maxwell's equations
+// over the scalar model's, over the wavelength and the incident direction; each lobe's weight is multiplied by its
+// order's ratio. Texel (x, y, z) of orderRatios: x the wavelength node, y alpha (the incident wave's direction
+// cosine across the ridges, -1 + y * orderAngleStep), z = (order + orderMaxOrder) * betas + |beta| node.
+uniform sampler3D orderRatios;
+uniform vec3 orderNodes;          // wavelengths, alphas, betas
+uniform int orderMaxOrder;
+uniform int orderRidges;          // ridges across the patch along its axis
+uniform int orderAxis;            // 0: the ridges' period along x, 1: along y
+uniform float orderFirstNm;
+uniform float orderStepNm;
+uniform float orderAngleStep;
+// omega_i in the patch's frame for the lobes being summed (diffractionXyz sets it)
+vec3 orderIncidence = vec3(0.0, 0.0, 1.0);
+
+void setOrderIncidence(vec3 wi) {
+    orderIncidence = wi;
+}
+
+// OrderCorrection.ratio: trilinear in (lambda, alpha, |beta|) within the order's slab of the texture.
+float orderRatio(ivec2 m, float lambdaNm) {
+    int along = orderAxis == 0 ? m.x : m.y;
+    int order = int(round(-float(along) / float(orderRidges)));
+    if (abs(order) > orderMaxOrder) {
+        return 1.0;
+    }
+    float alpha = orderAxis == 0 ? -orderIncidence.x : -orderIncidence.y;
+    float beta = abs(orderAxis == 0 ? orderIncidence.y : orderIncidence.x);
+    float tj = clamp((lambdaNm - orderFirstNm) / orderStepNm, 0.0, orderNodes.x - 1.0);
+    float ta = clamp((alpha + 1.0) / orderAngleStep, 0.0, orderNodes.y - 1.0);
+    float tb = clamp(beta / orderAngleStep, 0.0, orderNodes.z - 1.0);
+    float slabs = float(2 * orderMaxOrder + 1) * orderNodes.z;
+    vec3 stp = vec3((tj + 0.5) / orderNodes.x, (ta + 0.5) / orderNodes.y,
+            (float(order + orderMaxOrder) * orderNodes.z + tb + 0.5) / slabs);
+    return texture(orderRatios, stp).r;
+}
+#endif
+
 const int MAX_NODES = 512;   // nodes per lobe below 1 nm spacing (LobeSpectrum.MAX_NODES is a looser guard)
 // Whether this fragment's loops ended before their work did. Mesa's llvmpipe ends a shader invocation's loops after
 // 65535 iterations of its SIMD group, silently, and a fragment that reaches many lobes then leaves some out: the march
@@ -63,6 +102,19 @@ uniform float lobePhaseStepPerUm;
 uniform float lobeMaxPhasePerUm;
 // LobeQuadrature.cutoff: a lobe that can add less than this (white = 1) is skipped before its weight is read.
 uniform float lobeCutoff;
+#ifdef RIGOROUS_ORDERS
+uniform float orderLargestRatio;
+#endif
+
+// The cutoff the scalar weights' bounds are compared with: lobeCutoff, over the rigorous orders' largest ratio where
+// the lobes take them (a corrected lobe carries up to that ratio times its scalar bound).
+float scalarBoundCutoff() {
+#ifdef RIGOROUS_ORDERS
+    return lobeCutoff / orderLargestRatio;
+#else
+    return lobeCutoff;
+#endif
+}
 
 ivec2 weightTexel(ivec2 m) {
     return m + textureSize(lobeWeights, 0).xy / 2;
@@ -250,9 +302,9 @@ bool lobeReaches(ivec2 m, vec2 uv, float w, float fromNm, float toNm, float peak
     vec2 phases = passagePhases(w, fromNm, toNm);
     float bound = weightBound(m, phases.x, phases.y);
     // the band's weight first: it needs no further fetch
-    return bound * peak * lobeBandWeight >= lobeCutoff
+    return bound * peak * lobeBandWeight >= scalarBoundCutoff()
             && bound * passageDensity(fromNm, toNm) * passageMass(vec2(m) / patchExtentUm, uv, fromNm, toNm, peak)
-            >= lobeCutoff;
+            >= scalarBoundCutoff();
 }
 
 // LobeSpectrum.Shape.peak: the largest average over the footprint a lobe of peak 1 can have (sigma_uv the widest).
@@ -396,6 +448,9 @@ vec3 integrateLobe(ivec2 m, vec2 c, vec3 uvw, float fromNm, float toNm) {
         average = averagedLobe(lambdaUm * sigmaF, lambdaUm * c, uvw.xy);
 #endif
         float weight = lobeWeight(m, waveNumberPerUm(lambdaNm) * w);
+#ifdef RIGOROUS_ORDERS
+        weight *= orderRatio(m, lambdaNm);
+#endif
         xyz += weight * average * spectralWeight(lambdaNm, spacing, levelBase) * nodeEndWeight(lambdaNm, spacing);
     }
     lobesLeftOut = lobesLeftOut || reached < j1;
@@ -527,7 +582,7 @@ vec3 spectralXyz(vec3 uvw) {
                         vec2 entry = texelFetch(lobeBlockOrder, ivec3(blockOrigin + ivec2(slot % LOBE_BLOCK,
                                 slot / LOBE_BLOCK), 0), 0).rg;
                         slot++;
-                        reachable = entry.x >= 0.0 && entry.y * blockScale >= lobeCutoff;
+                        reachable = entry.x >= 0.0 && entry.y * blockScale >= scalarBoundCutoff();
                         inBlock = reachable && slot < LOBE_BLOCK * LOBE_BLOCK;
                         int offset = int(entry.x);
                         candidate = blockOrigin + ivec2(offset % LOBE_BLOCK, offset / LOBE_BLOCK) - gridHalf;
@@ -557,11 +612,11 @@ vec3 spectralXyz(vec3 uvw) {
                 // at least each texel's lobeReaches: their passages lie within the block's
                 vec2 phases = passagePhases(uvw.z, at.x, at.y);
                 float bound = at.x < at.y ? blockBound(block, phases.x, phases.y) : 0.0;
-                inBlock = at.x < at.y && bound * peak * lobeBandWeight >= lobeCutoff;
+                inBlock = at.x < at.y && bound * peak * lobeBandWeight >= scalarBoundCutoff();
                 // the band's weight first: it needs no further fetch
                 blockScale = inBlock ? min(peak * lobeBandWeight, passageDensity(at.x, at.y)
                         * blockPassageMass(lo, hi, uv, at.x, at.y, peak)) : 0.0;
-                inBlock = inBlock && bound * blockScale >= lobeCutoff;
+                inBlock = inBlock && bound * blockScale >= scalarBoundCutoff();
                 blockOrigin = block * LOBE_BLOCK;
                 slot = 0;
                 // LobeSpectrum.byRows: the rows' texels within reach, at most; rows where the bound order would test
@@ -570,7 +625,7 @@ vec3 spectralXyz(vec3 uvw) {
                 int slots = LOBE_ROWS_FACTOR * (i1 - i0 + 1) * across;
                 vec2 last = slots < LOBE_BLOCK * LOBE_BLOCK ? texelFetch(lobeBlockOrder, ivec3(blockOrigin
                         + ivec2(slots % LOBE_BLOCK, slots / LOBE_BLOCK), 0), 0).rg : vec2(-1.0, 0.0);
-                rows = inBlock && last.x >= 0.0 && last.y * blockScale >= lobeCutoff;
+                rows = inBlock && last.x >= 0.0 && last.y * blockScale >= scalarBoundCutoff();
                 i = i0 - 1;
                 m = 0; // no row: texel indices run negative, so emptiness is m > mLast, not a sentinel
                 mLast = -1;
@@ -633,7 +688,11 @@ float patchPower(vec3 uvw, float lambdaNm) {
                 continue;
             }
             vec2 d = (uvw.xy - lambdaUm * vec2(m) / patchExtentUm) / sigmaUv;
+#ifdef RIGOROUS_ORDERS
+            sum += lobeWeight(m, a) * orderRatio(m, lambdaNm) * exp(-dot(d, d));
+#else
             sum += lobeWeight(m, a) * exp(-dot(d, d));
+#endif
         }
     }
     return sum;

@@ -18,6 +18,7 @@ import diffract.optics.LightPolicy;
 import diffract.optics.LightSource;
 import diffract.optics.MapBand;
 import diffract.optics.PixelFilter;
+import diffract.optics.ScalarValidity;
 import diffract.optics.Quantity;
 import diffract.optics.Variant;
 import diffract.optics.WindowPlacement;
@@ -142,6 +143,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 settings.variant().spec(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
                 window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phi);
+        if (settings.variant() != Variant.RIGOROUS) {
+            warnWhereTheScalarModelFails(field, settings, reporter);
+        }
         if (tiles.tile != null) {
             writePiece(pipeline, settings, named, phi, shortestLambdaNm, start, reporter);
             return 0;
@@ -488,6 +492,29 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         if (picture.exr != null) {
             OpenExr.write(picture.exr, linear, picture.size, picture.size, channels, precision, comment);
         }
+    }
+
+    /**
+     * Where the patch lies outside the region where the scalar model is within a visible difference of Maxwell's
+     * equations, one line says how far (docs/validity.md) and the command that draws it rigorously: this map with
+     * --variant rigorous for a 1-D patch, its ridges' cross-section for a 2-D one.
+     */
+    private void warnWhereTheScalarModelFails(HeightField field, BrdfSettings settings, Reporter reporter) {
+        ScalarValidity.Estimate e = ScalarValidity.shipped().estimate(field, thetaIDeg,
+                settings.illumination().gain());
+        if (!e.visible()) {
+            return;
+        }
+        String how = diffract.optics.OrderComparison.refusal(field).isEmpty()
+                ? "diffract brdfmap --variant rigorous " + patch.describe() + " --theta-i " + number(thetaIDeg)
+                        + " draws it from Maxwell's equations, diffract orders lists its orders"
+                : "the rigorous method solves 1-D patches, such as a snake patch's ridges alone: diffract orders "
+                        + "--synthetic elaphe-ridge --theta-i " + number(thetaIDeg);
+        reporter.warn(e.describe() + ": " + how);
+    }
+
+    private static String number(double v) {
+        return v == Math.rint(v) ? Long.toString((long) v) : Double.toString(v);
     }
 
     /** A black (or nearly black) picture says so, and which option shows it. */

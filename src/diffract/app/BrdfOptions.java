@@ -6,6 +6,7 @@ import diffract.optics.GainModel;
 import diffract.optics.IlluminationSettings;
 import diffract.optics.LightProfile;
 import diffract.optics.PixelFilter;
+import diffract.optics.OrderWeights;
 import diffract.optics.Polarisation;
 import diffract.optics.RigorousSettings;
 import diffract.optics.rigorous.Resolution;
@@ -142,6 +143,9 @@ final class BrdfOptions {
 
         @Option(names = "--polarisation", paramLabel = "P", completionCandidates = OptionTypes.PolarisationNames.class)
         Polarisation polarisation;
+
+        @Option(names = "--orders", paramLabel = "W", completionCandidates = OptionTypes.OrderWeightsNames.class)
+        OrderWeights orders;
     }
 
     boolean auto() {
@@ -241,7 +245,7 @@ final class BrdfOptions {
             b.bakedSamples(gpu.bakedSamples.uv(), gpu.bakedSamples.w());
         }
         if (rigorous.harmonics != null || rigorous.layers != null || rigorous.noExtrapolation
-                || rigorous.polarisation != null) {
+                || rigorous.polarisation != null || rigorous.orders != null) {
             b.rigorous(rigorousSettings(base.rigorous()));
         }
         return b.build();
@@ -265,7 +269,8 @@ final class BrdfOptions {
                     + "layers: give an even L, or add --no-layer-extrapolation; got " + layers);
         }
         return new RigorousSettings(new Resolution(maxOrder, layers, extrapolate),
-                rigorous.polarisation != null ? rigorous.polarisation : base.polarisation());
+                rigorous.polarisation != null ? rigorous.polarisation : base.polarisation(),
+                rigorous.orders != null ? rigorous.orders : base.orders());
     }
 
     private static double or(Double given, double fallback) {

@@ -35,6 +35,7 @@ public final class Main implements Runnable {
         c.put("brdfmap", BrdfMapCommand::new);
         c.put("compare", CompareCommand::new);
         c.put("orders", OrdersCommand::new);
+        c.put("validity", ValidityCommand::new);
         c.put("convert-terms", ConvertTermsCommand::new);
         c.put("patch", PatchCommand::new);
         c.put("channels", ChannelsCommand::new);

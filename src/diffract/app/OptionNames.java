@@ -32,6 +32,7 @@ final class OptionNames {
         FLAGS.put(Quantity.HARMONICS, "--harmonics");
         FLAGS.put(Quantity.LAYERS, "--layers");
         FLAGS.put(Quantity.POLARISATION, "--polarisation");
+        FLAGS.put(Quantity.ORDERS, "--orders");
         FLAGS.put(Quantity.LIGHT_SIZE, "--light-size-deg");
         FLAGS.put(Quantity.LIGHT_PROFILE, "--light-profile");
         FLAGS.put(Quantity.GAIN, "--gain");

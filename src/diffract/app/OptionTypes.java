@@ -241,6 +241,15 @@ final class OptionTypes {
         }
     }
 
+    /** scalar, rigorous. */
+    static final class OrderWeightsNames implements Iterable<String> {
+        @Override
+        public Iterator<String> iterator() {
+            return java.util.Arrays.stream(diffract.optics.OrderWeights.values())
+                    .map(diffract.optics.OrderWeights::label).iterator();
+        }
+    }
+
     /** unpolarised, s, p. */
     static final class PolarisationNames implements Iterable<String> {
         @Override

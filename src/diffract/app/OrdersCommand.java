@@ -41,7 +41,7 @@ final class OrdersCommand implements Callable<Integer> {
 
     @Option(names = "--phi-i", paramLabel = "DEG") Double phiIDeg;
 
-    @Option(names = "--lambda", paramLabel = "NM[,NM...]", split = ",", defaultValue = "450,550,650")
+    @Option(names = "--lambdas", paramLabel = "NM[,NM...]", split = ",", defaultValue = "450,550,650")
     List<Double> lambdasNm;
 
     @Option(names = "--convergence") boolean convergence;
@@ -62,7 +62,7 @@ final class OrdersCommand implements Callable<Integer> {
         }
         for (double l : lambdasNm) {
             if (!(l >= 200 && l <= 2000)) {
-                throw new UserInputException("--lambda takes wavelengths in nm within [200, 2000], got " + l);
+                throw new UserInputException("--lambdas takes wavelengths in nm within [200, 2000], got " + l);
             }
         }
         if (json != null) {

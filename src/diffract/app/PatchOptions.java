@@ -97,6 +97,16 @@ final class PatchOptions {
         return level;
     }
 
+    /** The options that name the patch, as a user would give them again: "--synthetic elaphe-like", "--patch F". */
+    String describe() {
+        if (file != null) {
+            return "--patch " + file + (maxHeightUm != null ? " --max-height " + maxHeightUm : "")
+                    + (pixelSizeUm != null ? " --pixel-size " + pixelSizeUm : "") + (channel != null ? " --channel "
+                    + channel : "");
+        }
+        return synthetic != null ? "--synthetic " + synthetic : "";
+    }
+
     /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */
     double periodAzimuthDeg(String fallback) {
         return file != null ? 0 : PatchCatalogue.named(synthetic != null ? synthetic : fallback).phiIDeg();

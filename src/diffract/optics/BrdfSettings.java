@@ -27,6 +27,15 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
         if (window.placement() == WindowPlacement.LOCAL && !variant.drawsLocalWindow()) {
             throw new InvalidSettingException(Quantity.WINDOW_PLACEMENT, DiffractionBrdf.LOCAL_NEEDS_FLSS_OR_NMM);
         }
+        if (rigorous.orders() == OrderWeights.RIGOROUS && !variant.takesRigorousOrders()) {
+            throw new InvalidSettingException(Quantity.ORDERS, variant.drawsTable()
+                    ? "the rigorous orders depend on the light's direction, which a baked table (a function of "
+                    + "-omega_i - omega_r alone) does not hold: draw them with " + Methods.listed(
+                    Variant::takesRigorousOrders, "or")
+                    : variant.label() + " draws the scalar model's orders; the rigorous orders are drawn by "
+                    + Methods.listed(Variant::takesRigorousOrders, "or") + " (and the rigorous method is Maxwell's "
+                    + "equations throughout)");
+        }
     }
 
     /** The thesis' configuration for a variant. */

@@ -24,6 +24,27 @@ public final class DiffractionBrdf {
     private final LobeSpectrum lobes;
     /** The rigorous method, else null. */
     private final RigorousBrdf rigorous;
+    /** The lobes method's orders from Maxwell's equations ({@link OrderWeights#RIGOROUS}), else null. */
+    private final LobeOrders lobeOrders;
+
+    /** The lobes' table of rigorous orders of one patch, solved (or loaded) at its first use. */
+    private static final class LobeOrders {
+        private final HeightField field;
+        private final BrdfSettings settings;
+        private OrderCorrection table;
+
+        LobeOrders(HeightField field, BrdfSettings settings) {
+            this.field = field;
+            this.settings = settings;
+        }
+
+        synchronized OrderCorrection get(Reporter reporter) {
+            if (table == null) {
+                table = OrderCorrection.of(field, settings, DiskCache.user(), reporter);
+            }
+            return table;
+        }
+    }
 
     /**
      * A spectrum integrated over {@code sampling} under a point light, each direction point-sampled, with the
@@ -43,17 +64,19 @@ public final class DiffractionBrdf {
 
     private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, IlluminationSettings illumination,
                             FilteredReference filteredReference, LobeSpectrum lobes) {
-        this(spectrum, sampling, illumination, filteredReference, lobes, null);
+        this(spectrum, sampling, illumination, filteredReference, lobes, null, null);
     }
 
     private DiffractionBrdf(PatchSpectrum spectrum, WavelengthSampling sampling, IlluminationSettings illumination,
-                            FilteredReference filteredReference, LobeSpectrum lobes, RigorousBrdf rigorous) {
+                            FilteredReference filteredReference, LobeSpectrum lobes, RigorousBrdf rigorous,
+                            LobeOrders lobeOrders) {
         this.spectrum = spectrum;
         this.sampling = sampling;
         this.illumination = illumination;
         this.filteredReference = filteredReference;
         this.lobes = lobes;
         this.rigorous = rigorous;
+        this.lobeOrders = lobeOrders;
         this.discLight = filteredReference != null && illumination.light().isDisc()
                 ? new DiscLightAverage(filteredReference, illumination.light()) : null;
     }
@@ -98,7 +121,7 @@ public final class DiffractionBrdf {
             throw new InvalidSettingException(Quantity.VARIANT, why);
         });
         return new DiffractionBrdf(null, null, settings.illumination(), null, null,
-                new RigorousBrdf(patch, settings, DiskCache.user()));
+                new RigorousBrdf(patch, settings, DiskCache.user()), null);
     }
 
     /**
@@ -109,6 +132,26 @@ public final class DiffractionBrdf {
         if (rigorous != null) {
             rigorous.prepare(wi, reporter);
         }
+        if (lobeOrders != null) {
+            lobeOrders.get(reporter);
+        }
+    }
+
+    /**
+     * This BRDF with the settings' orders: where they are the rigorous ones and this is the lobes method, its lobes
+     * take the table of {@code meanSubtracted}'s rigorous orders ({@link OrderCorrection}); otherwise this BRDF.
+     */
+    public DiffractionBrdf withOrdersOf(HeightField meanSubtracted, BrdfSettings settings) {
+        if (lobes == null || settings.rigorous().orders() != OrderWeights.RIGOROUS) {
+            return this;
+        }
+        return new DiffractionBrdf(spectrum, sampling, illumination, filteredReference, lobes, null,
+                new LobeOrders(meanSubtracted, settings));
+    }
+
+    /** The lobes for light from {@code wi}: with the rigorous orders on them where asked. */
+    private LobeSpectrum lobesFor(Direction wi) {
+        return lobeOrders == null ? lobes : lobes.withOrders(lobeOrders.get(Reporter.SILENT), wi);
     }
 
     /**
@@ -220,6 +263,11 @@ public final class DiffractionBrdf {
         if (rigorous != null) {
             return rigorous.relative(wi, wr, lambdaNm);
         }
+        if (lobeOrders != null) {
+            double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.gain());
+            return gain == 0 ? 0 : gain * lobesFor(wi).power(-wi.x() - wr.x(), -wi.y() - wr.y(), -wi.z() - wr.z(),
+                    lambdaNm, Footprint.POINT);
+        }
         double gain = GainFactor.gainTimesShadowing(wi, wr, illumination.refractiveIndex(), illumination.gain());
         if (gain == 0) {
             return 0;
@@ -250,7 +298,7 @@ public final class DiffractionBrdf {
             return new Xyz(0, 0, 0);
         }
         if (lobes != null) {
-            double[] v = lobes.xyz(-wi.x() - wr.x(), -wi.y() - wr.y(), -wi.z() - wr.z(),
+            double[] v = lobesFor(wi).xyz(-wi.x() - wr.x(), -wi.y() - wr.y(), -wi.z() - wr.z(),
                     Footprint.POINT.plus(illumination.light().uvCovariance(wi)), discOf(wi, wr));
             return new Xyz(gain * v[0], gain * v[1], gain * v[2]);
         }
@@ -296,7 +344,7 @@ public final class DiffractionBrdf {
         if (gain == 0) {
             return new Xyz(0, 0, 0);
         }
-        double[] v = lobes.xyz(-wi.x() - x, -wi.y() - y, -wi.z() - wr.z(), Footprint.mapPixel(size).plus(light),
+        double[] v = lobesFor(wi).xyz(-wi.x() - x, -wi.y() - y, -wi.z() - wr.z(), Footprint.mapPixel(size).plus(light),
                 discOf(wi, wr));
         return new Xyz(gain * v[0], gain * v[1], gain * v[2]);
     }

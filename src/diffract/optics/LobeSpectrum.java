@@ -51,6 +51,12 @@ public final class LobeSpectrum {
     private boolean blockMarch = true;
     /** The texels' sums where lobes are at least as wide as a cell ({@link LobeSumTable#applies}), or null. */
     private final LobeSumTable sums;
+    /**
+     * The rigorous orders' ratios each lobe's weight is multiplied by ({@link OrderCorrection}), for light from
+     * {@link #correctionWi}; null: the scalar weights.
+     */
+    private final OrderCorrection correction;
+    private final Direction correctionWi;
 
     /**
      * Over the band and with the mirror's normalisation of {@code spectral} (its step is the quadrature's).
@@ -78,25 +84,47 @@ public final class LobeSpectrum {
         this.sums = table != null && LobeSumTable.applies(window, quadrature, extentXUm, extentYUm)
                 ? new LobeSumTable(table, window.sigmaTexels(extentXUm), window.sigmaTexels(extentYUm))
                 : null;
+        this.correction = null;
+        this.correctionWi = null;
     }
 
-    /** A lobe's weight W_c(a) = W_c(k w): from the table, or summed from its texels' coefficients. */
+    /**
+     * A lobe's weight W_c(a) = W_c(k w) at the wavelength: from the table, or summed from its texels' coefficients;
+     * times its order's rigorous ratio there where the orders correct it.
+     */
     private interface Weight {
-        double at(double phase);
+        double at(double phase, double lambdaNm);
     }
 
     /** The lobe centred at (twiceCx, twiceCy) / 2 as a weight, or null when no stored texel or kept pair makes it. */
     private Weight weightOf(int twiceCx, int twiceCy) {
+        Weight scalar;
         if (table != null) {
             int col = twiceCx / 2 + table.cols() / 2;
             int row = twiceCy / 2 + table.rows() / 2;
             if (!TexelCoefficients.inBand(twiceCx / 2, twiceCy / 2, table.rows(), table.cols())) {
                 return null;
             }
-            return a -> table.weight(col, row, a);
+            scalar = (a, lambdaNm) -> table.weight(col, row, a);
+        } else {
+            GaussianLobes.Lobe lobe = lobes.lobe(twiceCx, twiceCy);
+            if (lobe == null) {
+                return null;
+            }
+            scalar = (a, lambdaNm) -> lobe.weight(a);
         }
-        GaussianLobes.Lobe lobe = lobes.lobe(twiceCx, twiceCy);
-        return lobe == null ? null : lobe::weight;
+        if (correction == null) {
+            return scalar;
+        }
+        // whole texels only: the correction applies where the window is averaged over its position
+        int mx = twiceCx / 2;
+        int my = twiceCy / 2;
+        return (a, lambdaNm) -> scalar.at(a, lambdaNm) * correction.ratio(mx, my, lambdaNm, correctionWi);
+    }
+
+    /** How much more than its scalar weight a lobe can carry: the orders' largest ratio, else 1. */
+    private double ordersFactor() {
+        return correction == null ? 1 : correction.largest();
     }
 
     /**
@@ -120,8 +148,8 @@ public final class LobeSpectrum {
     /** The bound {@link #reaches} compares with the cutoff, of a texel in the table's band. */
     private double bound(int twiceCx, int twiceCy, double u, double v, double w, double fromNm, double toNm,
                          Shape shape) {
-        return table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2, phaseLo(w, toNm, shape),
-                phaseHi(w, fromNm, shape)) * Math.min(shape.peak * bandWeight, spectral.maxDensity(fromNm, toNm)
+        return ordersFactor() * table.bound(twiceCx / 2 + table.cols() / 2, twiceCy / 2 + table.rows() / 2,
+                phaseLo(w, toNm, shape), phaseHi(w, fromNm, shape)) * Math.min(shape.peak * bandWeight, spectral.maxDensity(fromNm, toNm)
                 * passageMass(0.5 * twiceCx / extentXUm, 0.5 * twiceCy / extentYUm, u, v, fromNm, toNm, shape));
     }
 
@@ -198,6 +226,35 @@ public final class LobeSpectrum {
         double e = Math.exp(-across * across / (2 * s));
         double step = Math.max(1, Math.min(1e3 * Math.sqrt(2 * s) / (c * quadrature.nodesPerSigma()), widestStep));
         return Math.min(mass, 1e3 * Math.sqrt(2 * Math.PI * s) * e / c + Math.min(shape.peak, e) * step);
+    }
+
+    /** This spectrum with every lobe's weight times the rigorous orders' ratio for light from {@code wi}. */
+    private LobeSpectrum(LobeSpectrum base, OrderCorrection correction, Direction wi) {
+        this.lobes = base.lobes;
+        this.spectral = base.spectral;
+        this.bandWeight = base.bandWeight;
+        this.quadrature = base.quadrature;
+        this.extentXUm = base.extentXUm;
+        this.extentYUm = base.extentYUm;
+        this.sigmaFPerUm = base.sigmaFPerUm;
+        this.lambdaMinNm = base.lambdaMinNm;
+        this.lambdaMaxNm = base.lambdaMaxNm;
+        this.fastErf = base.fastErf;
+        this.table = base.table;
+        this.blockMarch = base.blockMarch;
+        // a texel sum adds lobes of many orders under one weight: the corrected lobes are integrated one by one
+        this.sums = null;
+        this.correction = correction;
+        this.correctionWi = wi;
+    }
+
+    /**
+     * The lobes with the rigorous orders on them ({@link OrderCorrection}): each lobe's weight W_m times its order's
+     * ratio at the node's wavelength for light from {@code wi}; the bounds grow by the table's largest ratio. A view:
+     * it shares this spectrum's tables.
+     */
+    public LobeSpectrum withOrders(OrderCorrection orders, Direction wi) {
+        return new LobeSpectrum(this, orders, wi);
     }
 
     /** Over the float32 Taylor terms, the plain series to {@code highestOrder}: what the shader reads. */
@@ -570,7 +627,8 @@ public final class LobeSpectrum {
                         at[0], at[1], shape)
                         : blockPassageMass(k0 / minorExtent, k1 / minorExtent, i0 / majorExtent, i1 / majorExtent, u, v,
                         at[0], at[1], shape);
-                double scale = Math.min(shape.peak * bandWeight, spectral.maxDensity(at[0], at[1]) * mass);
+                double scale = ordersFactor() * Math.min(shape.peak * bandWeight, spectral.maxDensity(at[0], at[1])
+                        * mass);
                 if (bound * scale < quadrature.cutoff()) {
                     continue;
                 }
@@ -797,7 +855,7 @@ public final class LobeSpectrum {
 
     /** The lobe's weight W_c(k w) at lambda. */
     private static double weight(Weight lobe, double w, double lambdaNm) {
-        return lobe.at(2 * Math.PI / (lambdaNm * 1e-3) * w);
+        return lobe.at(2 * Math.PI / (lambdaNm * 1e-3) * w, lambdaNm);
     }
 
     /**
@@ -875,10 +933,10 @@ public final class LobeSpectrum {
                 if (disc != null) {
                     disc.average(lambdaUm * sigmaFPerUm, lambdaUm * cx, lambdaUm * cy, shape.hx, shape.hy,
                             shape.gaussian, fastErf, at);
-                    sum += lobe.at(2 * Math.PI / lambdaUm * at[1]) * at[0];
+                    sum += lobe.at(2 * Math.PI / lambdaUm * at[1], lambdaNm) * at[0];
                     continue;
                 }
-                sum += lobe.at(a) * averaged(lambdaUm, cx, cy, u, v, shape);
+                sum += lobe.at(a, lambdaNm) * averaged(lambdaUm, cx, cy, u, v, shape);
             }
         }
         return sum;

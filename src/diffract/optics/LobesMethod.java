@@ -5,6 +5,7 @@ import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
 import static diffract.optics.Variant.Capability.GPU;
 import static diffract.optics.Variant.Capability.READS_TERMS;
+import static diffract.optics.Variant.Capability.TAKES_RIGOROUS_ORDERS;
 
 import java.util.EnumSet;
 import java.util.Set;
@@ -30,13 +31,14 @@ final class LobesMethod implements Variant {
 
     @Override
     public Set<Capability> capabilities() {
-        return EnumSet.of(CPU, GPU, READS_TERMS, FILTERS_LIGHT, BAKEABLE);
+        return EnumSet.of(CPU, GPU, READS_TERMS, FILTERS_LIGHT, BAKEABLE, TAKES_RIGOROUS_ORDERS);
     }
 
     @Override
     public DiffractionBrdf cpuBrdf(BrdfSettings settings, HeightField meanSubtracted, TaylorTerms terms) {
         return DiffractionBrdf.withLobes(settings, LobeSpectrum.ofTerms(terms, settings.taylor().highestOrder(),
-                settings.coherenceWindow(), settings.spectral(), settings.lobes()));
+                settings.coherenceWindow(), settings.spectral(), settings.lobes())).withOrdersOf(meanSubtracted,
+                settings);
     }
 
     @Override

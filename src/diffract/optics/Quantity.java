@@ -24,6 +24,7 @@ public enum Quantity {
     HARMONICS("the rigorous method's highest harmonic"),
     LAYERS("the rigorous method's staircase layers"),
     POLARISATION("the light's polarisation"),
+    ORDERS("the lobes method's orders"),
     LIGHT_SIZE("the light's angular diameter"),
     LIGHT_PROFILE("the light's profile"),
     GAIN("the gain model"),

@@ -125,7 +125,8 @@ final class RigorousOrders implements LobeWeights {
     private static DiskCache.Key key(RigorousPatch patch, BrdfSettings settings, Direction wi) {
         return new DiskCache.Key(KIND, String.join("; ", "rigorous orders format " + FORMAT,
                 "patch sha256 " + patch.field().contentSha256(), "material " + settings.illumination().material(),
-                "rigorous " + settings.rigorous(), "spectral " + settings.spectral(),
+                "rigorous " + settings.rigorous().resolution() + " " + settings.rigorous().polarisation(),
+                "spectral " + settings.spectral(),
                 "incidence " + wi.x() + " " + wi.y() + " " + wi.z()));
     }
 

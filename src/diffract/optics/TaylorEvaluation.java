@@ -23,6 +23,8 @@ public final class TaylorEvaluation {
 
     private final TaylorTerms plain;
     private final PhaseCentredTerms centred;
+    /** The rigorous orders the lobes method takes ({@link OrderWeights#RIGOROUS}), or null. */
+    private OrderCorrection orders;
 
     private TaylorEvaluation(TaylorTerms plain, PhaseCentredTerms centred) {
         this.plain = plain;
@@ -99,6 +101,18 @@ public final class TaylorEvaluation {
         return plain;
     }
 
+    /** These terms with the patch's table of rigorous orders, for the lobes method on the GPU. */
+    public TaylorEvaluation withOrders(OrderCorrection table) {
+        TaylorEvaluation e = new TaylorEvaluation(plain, centred);
+        e.orders = table;
+        return e;
+    }
+
+    /** The table of rigorous orders the lobes take, where the settings ask for it. */
+    public java.util.Optional<OrderCorrection> orders() {
+        return java.util.Optional.ofNullable(orders);
+    }
+
     /** The phase-centred terms, or null on the plain path. */
     public PhaseCentredTerms centredTerms() {
         return centred;
@@ -106,7 +120,7 @@ public final class TaylorEvaluation {
 
     /** The CPU BRDF of a Taylor variant on this path. */
     public DiffractionBrdf brdf(BrdfSettings settings, HeightField meanSubtracted) {
-        return centred != null ? DiffractionBrdf.createPhaseCentred(settings, centred)
+        return centred != null ? DiffractionBrdf.createPhaseCentred(settings, centred).withOrdersOf(meanSubtracted, settings)
                 : DiffractionBrdf.create(settings, meanSubtracted, plain);
     }
 

@@ -70,7 +70,12 @@ public interface Variant {
         /** A baked table can tabulate it: its shader has a bake pass that writes spectral XYZ per table sample. */
         BAKEABLE,
         /** It draws a table baked in advance ({@link #tabulated} answers for every patch). */
-        DRAWS_TABLE
+        DRAWS_TABLE,
+        /**
+         * Its lobes can take the orders' efficiencies from Maxwell's equations in place of the scalar model's
+         * ({@link OrderWeights#RIGOROUS}, {@link OrderCorrection}).
+         */
+        TAKES_RIGOROUS_ORDERS
     }
 
     /** What it can do; by default, a GPU shader that reads the Taylor terms. */
@@ -133,6 +138,11 @@ public interface Variant {
     /** {@link Capability#DRAWS_TABLE}. */
     default boolean drawsTable() {
         return capabilities().contains(Capability.DRAWS_TABLE);
+    }
+
+    /** {@link Capability#TAKES_RIGOROUS_ORDERS}. */
+    default boolean takesRigorousOrders() {
+        return capabilities().contains(Capability.TAKES_RIGOROUS_ORDERS);
     }
 
     /**

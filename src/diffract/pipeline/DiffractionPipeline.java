@@ -1,5 +1,9 @@
 package diffract.pipeline;
 
+import diffract.optics.OrderCorrection;
+import diffract.optics.OrderWeights;
+import diffract.util.DiskCache;
+
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.HeightField;
@@ -86,10 +90,12 @@ public final class DiffractionPipeline {
      */
     public TaylorEvaluation evaluation(BrdfSettings settings, TaylorTerms terms, double shortestLambdaNm,
                                        Reporter reporter) {
-        return TaylorEvaluation.choose(settings.taylor().expansion(), patch.meanSubtracted(), terms,
+        TaylorEvaluation e = TaylorEvaluation.choose(settings.taylor().expansion(), patch.meanSubtracted(), terms,
                 settings.taylor().highestOrder(), shortestLambdaNm, (field, centres) ->
                         centredByShortestLambda.computeIfAbsent(shortestLambdaNm,
                                 lambda -> TaylorTermComputer.computeCentred(field, centres, reporter)), reporter);
+        return settings.rigorous().orders() == OrderWeights.RIGOROUS
+                ? e.withOrders(OrderCorrection.of(patch.meanSubtracted(), settings, DiskCache.user(), reporter)) : e;
     }
 
     /** As above with the terms of N from the term source. */

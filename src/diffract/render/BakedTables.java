@@ -250,7 +250,8 @@ public final class BakedTables {
      */
     private static Key key(TaylorTerms terms, BrdfSettings settings) {
         return new Key(terms, BakedDisc.heldBy(settings).with(b -> b.variant(Variant.BAKED)
-                .termFormat(TermFormat.RG32F).gain(GainModel.STAM)), tabulated(terms, settings));
+                .termFormat(TermFormat.RG32F).gain(GainModel.STAM)
+                .rigorous(settings.rigorous().withOrders(diffract.optics.OrderWeights.SCALAR))), tabulated(terms, settings));
     }
 
     /**

@@ -88,8 +88,10 @@ public final class DiffractionTextures {
      */
     public static DiffractionTextures of(TaylorEvaluation evaluation, BrdfSettings settings, BakedTables tables,
                                          Reporter reporter) {
-        return evaluation.isPhaseCentred() ? ofPhaseCentred(evaluation.centredTerms(), settings)
+        DiffractionTextures t = evaluation.isPhaseCentred() ? ofPhaseCentred(evaluation.centredTerms(), settings)
                 : of(evaluation.plainTerms(), settings, tables, reporter);
+        evaluation.orders().ifPresent(t.lobes()::useOrders);
+        return t;
     }
 
     /** Terms 0..N (which the terms must hold) and the tables for the settings' wavelengths. */

@@ -8,6 +8,7 @@ import diffract.optics.InvalidSettingException;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.LobeSumTable;
 import diffract.optics.LobeWeightTable;
+import diffract.optics.OrderCorrection;
 import diffract.optics.Quantity;
 import diffract.optics.SpectralSettings;
 
@@ -32,6 +33,9 @@ public final class LobeTextures {
     private FloatTexture1D densityMax;
     private LobeSumTable sumTable;
     private FloatTextureArray sums;
+    /** The rigorous orders' ratios ({@link OrderCorrection}), or null: the scalar orders. */
+    private OrderCorrection orders;
+    private diffract.jrtr.FloatTexture3D orderRatios;
 
     LobeTextures(BiFunction<Double, Double, LobeWeightTable> weightSource, double extentXUm, double extentYUm) {
         this.weightSource = weightSource;
@@ -145,6 +149,40 @@ public final class LobeTextures {
                     .linear();
         }
         return sums;
+    }
+
+    /** Makes the lobes take the rigorous orders' ratios ({@link diffract.optics.OrderWeights#RIGOROUS}). */
+    public synchronized void useOrders(OrderCorrection table) {
+        if (orders != null && orders != table) {
+            throw new IllegalStateException("these textures hold another table of rigorous orders; make new textures");
+        }
+        orders = table;
+    }
+
+    /** The rigorous orders' table, where the lobes take it. */
+    public synchronized java.util.Optional<OrderCorrection> orders() {
+        return java.util.Optional.ofNullable(orders);
+    }
+
+    /**
+     * The rigorous orders' ratios as a 3-D texture of their table's layout (x the wavelength, y the direction cosine
+     * across the ridges, z the order times |beta| along them), trilinear, made on first use: the red channel holds the
+     * ratio.
+     */
+    public synchronized diffract.jrtr.FloatTexture3D orderRatios() {
+        if (orders == null) {
+            throw new IllegalStateException("no table of rigorous orders: the lobes take the scalar ones");
+        }
+        if (orderRatios == null) {
+            float[] ratio = orders.textureData();
+            float[] rgb = new float[3 * ratio.length];
+            for (int i = 0; i < ratio.length; i++) {
+                rgb[3 * i] = ratio[i];
+            }
+            orderRatios = new diffract.jrtr.FloatTexture3D(orders.nodes(), orders.alphas(),
+                    (2 * orders.maxOrder() + 1) * orders.betas(), rgb, diffract.jrtr.FloatTexture3D.Precision.FLOAT32);
+        }
+        return orderRatios;
     }
 
     /** The table behind {@link #weights}. */

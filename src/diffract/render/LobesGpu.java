@@ -10,6 +10,8 @@ import diffract.optics.LightSource;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.LobeSumTable;
 import diffract.optics.LobeWeightTable;
+import diffract.optics.OrderCorrection;
+import diffract.optics.OrderWeights;
 import diffract.optics.PixelFilter;
 import diffract.optics.Quantity;
 
@@ -95,8 +97,10 @@ final class LobesGpu implements GpuMethod {
         m.setTexture("lobeBlockBounds", textures.lobes().blockBounds(settings, q))
                 .setTexture("lobeBlockOrder", textures.lobes().blockOrder(settings, q));
         java.util.Optional<LobeSumTable> sums = textures.lobes().sumTable(settings, q);
+        java.util.Optional<OrderCorrection> orders = textures.lobes().orders();
+        // a texel sum adds the lobes of many orders under one weight: the corrected lobes are summed one by one
         m.setTexture("lobeSumTable", textures.lobes().sums(settings, q))
-                .setInt("lobeSums", sums.isPresent() ? 1 : 0)
+                .setInt("lobeSums", sums.isPresent() && orders.isEmpty() ? 1 : 0)
                 .setVec2("lobeSumCells", sums.map(LobeSumTable::cellsX).orElse(0),
                         sums.map(LobeSumTable::cellsY).orElse(0))
                 .setFloat("lobeSumCellTexels", sums.map(LobeSumTable::cellTexels).orElse(1))
@@ -112,6 +116,19 @@ final class LobesGpu implements GpuMethod {
                 .setFloat("lightSigmaRad", (float) light.sigmaRad())
                 .setFloat("lambdaMinNm", (float) settings.spectral().lambdaMinNm())
                 .setFloat("lambdaMaxNm", (float) settings.spectral().lambdaMaxNm());
+        if (settings.rigorous().orders() == OrderWeights.RIGOROUS) {
+            OrderCorrection ratios = orders.orElseThrow(() -> new IllegalStateException(
+                    "the settings ask for the rigorous orders and the textures hold none"));
+            m.setTexture("orderRatios", textures.lobes().orderRatios())
+                    .setFloat("orderLargestRatio", (float) ratios.largest())
+                    .setVec3("orderNodes", ratios.nodes(), ratios.alphas(), ratios.betas())
+                    .setInt("orderMaxOrder", ratios.maxOrder())
+                    .setInt("orderRidges", ratios.ridges())
+                    .setInt("orderAxis", ratios.axisIndex())
+                    .setFloat("orderFirstNm", (float) ratios.firstNm())
+                    .setFloat("orderStepNm", (float) OrderCorrection.STEP_NM)
+                    .setFloat("orderAngleStep", (float) OrderCorrection.ANGLE_STEP);
+        }
         setLobesLight(m, light.uvCovariance(Direction.fromSphericalDeg(0, 0)), q);
         if (averagesOverDisc(settings)) {
             m.setFloat("lightHalfAngleRad", (float) light.halfAngleRad());
@@ -136,6 +153,9 @@ final class LobesGpu implements GpuMethod {
         if (averagesOverDisc(settings)) {
             defines.put("LIGHT_DISC", "1");
         }
+        if (settings.rigorous().orders() == OrderWeights.RIGOROUS) {
+            defines.put("RIGOROUS_ORDERS", "1");
+        }
     }
 
     /**
@@ -148,10 +168,14 @@ final class LobesGpu implements GpuMethod {
         return "diffraction/baked_lobes.frag";
     }
 
-    /** Every sample of its table averages over the sample's cell: the pixel box. */
+    /**
+     * Every sample of its table averages over the sample's cell: the pixel box. A table is a function of
+     * -omega_i - omega_r alone and holds the scalar orders (the rigorous ones depend on omega_i besides).
+     */
     @Override
     public BrdfSettings bakeSettings(BrdfSettings settings) {
-        return settings.with(b -> b.pixelFilter(PixelFilter.BOX));
+        return settings.with(b -> b.pixelFilter(PixelFilter.BOX)
+                .rigorous(settings.rigorous().withOrders(OrderWeights.SCALAR)));
     }
 
     /** Environment lights wider than it sums read its baked table (ENVIRONMENT_TABLE). */

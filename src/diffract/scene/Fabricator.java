@@ -1,6 +1,7 @@
 package diffract.scene;
 
 import diffract.jrtr.Shape;
+import diffract.optics.ScalarValidity;
 import diffract.util.Reporter;
 
 import java.nio.file.Path;
@@ -20,8 +21,26 @@ public final class Fabricator {
         return fabricate(SceneFile.load(sceneFile), reporter);
     }
 
+    /**
+     * Where the patch lies outside the region where the scalar model is within a visible difference of Maxwell's
+     * equations (docs/validity.md), one line says how far, and what solves it rigorously, at the light's polar angle.
+     */
+    private static void warnWhereTheScalarModelFails(MaterialManager material, Scene scene, Reporter reporter) {
+        double[] d = scene.light().towardsLight();
+        double thetaDeg = Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, d[2] / Math.sqrt(d[0] * d[0] + d[1] * d[1]
+                + d[2] * d[2])))));
+        ScalarValidity.Estimate e = ScalarValidity.shipped().estimate(material.field(), Math.min(90, thetaDeg),
+                material.settings().illumination().gain());
+        if (e.visible()) {
+            reporter.warn(e.describe() + ": the rigorous method (diffract orders, diffract brdfmap with the variant "
+                    + "rigorous) solves 1-D patches such as the snake patches' ridges alone, elaphe-ridge and "
+                    + "xenopeltis-ridge");
+        }
+    }
+
     public static SceneSetup fabricate(Scene scene, Reporter reporter) {
         MaterialManager material = new MaterialManager(scene.material(), reporter);
+        warnWhereTheScalarModelFails(material, scene, reporter);
         Shape shape = ShapeManager.shape(scene.shape());
         Scene.MaterialSpec m = scene.material();
         var species = m.pigmentation().species();

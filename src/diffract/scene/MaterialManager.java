@@ -84,6 +84,11 @@ final class MaterialManager {
         return pipeline;
     }
 
+    /** The patch's height field, mean-subtracted. */
+    HeightField field() {
+        return pipeline.patch().meanSubtracted();
+    }
+
     BrdfSettings settings() {
         return settings;
     }

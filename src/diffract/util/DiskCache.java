@@ -66,7 +66,7 @@ public final class DiskCache {
     public static final long DEFAULT_LIMIT_MB = 2048;
     /** The kinds of entries, one folder each; only these folders are ever sized or evicted. */
     public static final List<String> KINDS = List.of("terms", "baked-tables", "calibration", "reference-maps",
-            "rigorous-orders");
+            "rigorous-orders", "order-corrections");
     /** The name ending of an entry file (a folder entry has no ending). */
     public static final String ENTRY_SUFFIX = ".entry";
 

@@ -113,7 +113,7 @@ class CliTest {
         assertEquals(1, whc[2]);
         // the field as brdfmap reads it by default (the format's levelling)
         HeightField patch = HeightFieldReader.load(grating, null, null, null, null, Reporter.SILENT);
-        BrdfSettings settings = BrdfSettings.builder(Variant.REFERENCE).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 0.5).refractiveIndex(1.5).pqReplicas(0).build();
+        BrdfSettings settings = BrdfSettings.builder(Variant.REFERENCE).highestOrder(30).windowRadius(1).lambdaRangeNm(380, 780).lambdaStepNm(5).coherenceLengthUm(4 * 0.5).pqReplicas(0).build();
         DiffractionBrdf brdf = DiffractionBrdf.create(settings, patch, null);
         Direction wi = Direction.fromSphericalDeg(20, 0);
         int lit = 0;
@@ -221,7 +221,8 @@ class CliTest {
         }
         Object[] unknown = run("patch", "zebra", "-o", dir.resolve("z.gsf").toString());
         assertEquals(2, unknown[0]);
-        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like, xenopeltis-like, blazed-10um, elaphe-scan, tall"),
+        assertTrue(((String) unknown[2]).contains("use blazed, sinusoid, elaphe-like, xenopeltis-like, blazed-10um, elaphe-scan, elaphe-ridge, "
+                + "xenopeltis-ridge, tall"),
                 (String) unknown[2]);
     }
 

@@ -552,8 +552,9 @@ class FaultsCliTest {
 
         Object[] none = run();
         assertEquals(2, none[0]);
-        assertEquals(List.of("diffract: missing command: one of demo, precompute, brdfmap, compare, convert-terms,"
-                + " patch, channels, view, render, measure, bench, export, merge, submit; try 'diffract --help'"),
+        assertEquals(List.of("diffract: missing command: one of demo, precompute, brdfmap, compare, orders, validity,"
+                + " convert-terms, patch, channels, view, render, measure, bench, export, merge, submit; try 'diffract"
+                + " --help'"),
                 err(none).lines().toList());
     }
 

@@ -73,7 +73,8 @@ class BrdfSettingsTest {
         assertEquals(new WindowSettings(1, false, 0, WindowPlacement.AVERAGED), thesis.window());
         assertEquals(new SpectralSettings(380, 780, 5), thesis.spectral());
         assertEquals(65, thesis.illumination().coherenceLengthUm(), 1e-12);
-        assertEquals(1.5, thesis.illumination().refractiveIndex());
+        assertEquals(GainFactor.KERATIN_REFRACTIVE_INDEX, thesis.illumination().refractiveIndex());
+        assertEquals(GainModel.RAYLEIGH_RICE, thesis.illumination().gain());
         assertEquals(TermFormat.RG32F, thesis.gpu().termFormat());
         assertEquals(thesis, BrdfSettings.builder(Variant.FLSS).build());
     }
