@@ -17,7 +17,7 @@ public enum ScanFormat {
     GSF("a Gwyddion Simple Field", "Gwyddion Simple Field (.gsf)", false, "gsf"),
     GWY("a Gwyddion file", "Gwyddion (.gwy)", true, "gwy"),
     IBW("an Igor binary wave", "Igor binary wave (.ibw, Asylum Research)", true, "ibw"),
-    NANOSCOPE("a Bruker NanoScope file", "Bruker NanoScope (.spm, .000, .001, ...)", true, "spm"),
+    NANOSCOPE("a Bruker NanoScope file", "Bruker NanoScope (.spm, .di, .000, .001, ...)", true, "spm", "di"),
     JPK("a JPK scan", "JPK (.jpk)", true, "jpk", "jpk-qi-image"),
     PARK("a Park Systems TIFF", "Park Systems (.tiff)", true),
     MDT("an NT-MDT file", "NT-MDT (.mdt)", true, "mdt"),
