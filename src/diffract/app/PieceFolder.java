@@ -100,6 +100,15 @@ final class PieceFolder {
                 throw new UserInputException("merge: " + file + " is not a piece manifest (format '" + m.format()
                         + "', expected '" + PieceManifest.FORMAT + "'): remove it or compute that piece again");
             }
+            // a manifest cut short or edited by hand: every field the merge compares must be there
+            String missing = m.command() == null ? "command" : m.inputSha256() == null ? "inputSha256"
+                    : m.settings() == null ? "settings" : m.picture() == null ? "picture"
+                    : m.arguments() == null ? "arguments" : m.floatsFile() == null ? "floatsFile"
+                    : m.floatsSha256() == null ? "floatsSha256" : null;
+            if (missing != null) {
+                throw new UserInputException("merge: " + file + " is not a complete piece manifest (no '" + missing
+                        + "'): remove it or compute that piece again");
+            }
             return m;
         } catch (JsonProcessingException e) {
             throw new UserInputException("merge: " + file + " is not a piece manifest (" + e.getOriginalMessage()
