@@ -35,7 +35,7 @@ class ParsersFuzzTest {
     static final String[] EXTENSIONS = {"gsf", "gwy", "ibw", "spm", "001", "jpk", "tiff", "mdt", "nid", "png", "bmp",
         "txt", "csv", "bin", ""};
 
-    @FuzzTest(maxDuration = "10m")
+    @FuzzTest(maxDuration = "60m", maxExecutions = 500_000)
     void heightFields(byte[] input) {
         if (input.length == 0) {
             return;
@@ -47,20 +47,20 @@ class ParsersFuzzTest {
         oneLineOrRead(() -> HeightFieldReader.read(name, content, 0.5, 0.1, null, null, Reporter.SILENT));
     }
 
-    @FuzzTest(maxDuration = "10m")
+    @FuzzTest(maxDuration = "20m", maxExecutions = 100_000)
     void sceneFiles(byte[] input) {
         String text = new String(input, StandardCharsets.UTF_8);
         oneLineOrRead(() -> SceneFile.parse(text, "fuzz.json", Path.of("."), null));
     }
 
-    @FuzzTest(maxDuration = "10m")
+    @FuzzTest(maxDuration = "20m", maxExecutions = 100_000)
     void objMeshes(byte[] input) {
         String text = new String(input, StandardCharsets.UTF_8);
         oneLineOrRead(() -> ObjReader.parse(text, "fuzz.obj", TangentSource.fromUvs()));
     }
 
     /** The input split at its first NUL: the sidecar (or extrema.txt) and the data (or AmpReIm0.txt). */
-    @FuzzTest(maxDuration = "10m")
+    @FuzzTest(maxDuration = "20m", maxExecutions = 100_000)
     void termFolders(byte[] input) throws IOException {
         int split = indexOf(input, (byte) 0);
         byte[] first = split < 0 ? input : Arrays.copyOf(input, split);
@@ -77,7 +77,7 @@ class ParsersFuzzTest {
     }
 
     /** A cache entry is never an error: a damaged one is a warning and is made again. */
-    @FuzzTest(maxDuration = "10m")
+    @FuzzTest(maxDuration = "20m", maxExecutions = 100_000)
     void cacheEntries(byte[] input) throws IOException {
         Path dir = Files.createTempDirectory("fuzz-cache");
         try {
@@ -95,7 +95,7 @@ class ParsersFuzzTest {
         }
     }
 
-    @FuzzTest(maxDuration = "10m")
+    @FuzzTest(maxDuration = "20m", maxExecutions = 100_000)
     void pieceManifests(byte[] input) throws IOException {
         Path dir = Files.createTempDirectory("fuzz-pieces");
         try {

@@ -105,6 +105,7 @@ public final class ScanChannel {
         String name = "channel '" + title + "'";
         double toUm = LengthUnit.micrometres(unit).orElseThrow(() -> new IllegalStateException(
                 "chosen channel " + summary() + " holds no heights"));
+        ReaderSupport.requireHeap(file, values.length, name);
         double[] heightsUm = new double[values.length];
         int missing = 0;
         int firstMissing = -1;
