@@ -10,7 +10,6 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.OptionalDouble;
-import java.util.TreeMap;
 
 import static diffract.optics.io.ReaderSupport.printable;
 
@@ -32,6 +31,8 @@ final class NanoscopeReader {
     private static final String TEXT_MAGIC = "?*File list";
     private static final String FORCE_MAGIC = "\\*Force file list";
     private static final String END = "\\*File list end";
+    private static final java.util.regex.Pattern NUMBER =
+            java.util.regex.Pattern.compile("[+-]?(\\d+\\.?\\d*|\\.\\d+)([eE][+-]?\\d+)?");
     /** A header longer than this is no NanoScope header (they are tens of kilobytes). */
     private static final int MAX_HEADER_BYTES = 4 << 20;
 
@@ -87,11 +88,11 @@ final class NanoscopeReader {
         }
 
         private static double number(String s) {
-            try {
-                return Double.parseDouble(s);
-            } catch (NumberFormatException e) {
+            // checked first: a header holds hundreds of values that are no numbers, and exceptions cost
+            if (!NUMBER.matcher(s).matches()) {
                 return Double.NaN;
             }
+            return Double.parseDouble(s);
         }
 
         /** The quoted string of a select value, else its text. */
@@ -102,9 +103,11 @@ final class NanoscopeReader {
         }
     }
 
-    private record Section(String name, Map<String, Value> values) {
+    /** A header section: its values' texts by key (lower case), each parsed when it is asked for. */
+    private record Section(String name, Map<String, String> values) {
         Value get(String key) {
-            return values.get(key.toLowerCase(Locale.ROOT));
+            String text = values.get(key.toLowerCase(Locale.ROOT));
+            return text == null ? null : Value.parse(key, text);
         }
     }
 
@@ -164,7 +167,7 @@ final class NanoscopeReader {
         Section current = null;
         for (String line : text.substring(0, end).split("\r?\n")) {
             if (line.startsWith("\\*")) {
-                current = new Section(line.substring(2).strip(), new TreeMap<>());
+                current = new Section(line.substring(2).strip(), new java.util.HashMap<>());
                 sections.add(current);
             } else if (line.startsWith("\\") && current != null) {
                 String body = line.substring(1);
@@ -175,8 +178,7 @@ final class NanoscopeReader {
                     continue;
                 }
                 String key = body.substring(0, colon).strip();
-                current.values().putIfAbsent(key.toLowerCase(Locale.ROOT),
-                        Value.parse(key, body.substring(colon + 1)));
+                current.values().putIfAbsent(key.toLowerCase(Locale.ROOT), body.substring(colon + 1));
             } else if (!line.isBlank() && !line.startsWith("\\")) {
                 if (line.indexOf('\r') >= 0 || current == null) {
                     continue;
