@@ -111,8 +111,12 @@ final class PieceFolder {
             }
             return m;
         } catch (JsonProcessingException e) {
-            throw new UserInputException("merge: " + file + " is not a piece manifest (" + e.getOriginalMessage()
-                    + "): remove it or compute that piece again");
+            throw new UserInputException("merge: " + file + " is not a piece manifest ("
+                    + e.getOriginalMessage().replaceAll("\\s+", " ") + "): remove it or compute that piece again");
+        } catch (java.io.CharConversionException e) {
+            // bytes that Jackson's encoding detection takes for UTF-16 or UTF-32 and cannot decode
+            throw new UserInputException("merge: " + file + " is not a piece manifest (not UTF-8 text: "
+                    + e.getMessage().replaceAll("\\s+", " ") + "): remove it or compute that piece again");
         }
     }
 
