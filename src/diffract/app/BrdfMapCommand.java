@@ -246,6 +246,17 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 patchHeightUm, reporter);
     }
 
+    /**
+     * A point light is well defined at any angle above the horizon: the map's light goes up to 90 degrees,
+     * exclusive (the gain factor vanishes there), unlike the viewer's and scenes' lights, which stop at
+     * {@link LightDirection#MAX_THETA_DEG} so that their discs and shadows stay above it.
+     */
+    static final double HORIZON_DEG = 90;
+
+    private static String num(double v) {
+        return new java.math.BigDecimal(v).round(new java.math.MathContext(6)).stripTrailingZeros().toPlainString();
+    }
+
     private static final String PNG = ".png";
     private static final String EXR = ".exr";
 
@@ -258,9 +269,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
     private Engine validate() {
         patch.validateRequired();
         brdf.validate();
-        if (!(thetaIDeg >= 0 && thetaIDeg <= LightDirection.MAX_THETA_DEG)) {
-            throw new UserInputException("--theta-i must be in [0, " + LightDirection.MAX_THETA_DEG_TEXT
-                    + "] degrees, got " + thetaIDeg);
+        if (!(thetaIDeg >= 0 && thetaIDeg < HORIZON_DEG)) {
+            throw new UserInputException("--theta-i must be in [0, 90) degrees (a point light up to the horizon,"
+                    + " which it never reaches), got " + thetaIDeg);
         }
         if (light.lambdaNm != null && !(light.lambdaNm > 0)) {
             throw new UserInputException("--lambda must be > 0 nm, got " + light.lambdaNm);
@@ -290,6 +301,14 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                     + DiffractionBrdf.LOCAL_NEEDS_A_SURFACE);
         }
         LightSource lightSource = settings.illumination().light();
+        double rimDeg = thetaIDeg + lightSource.angularDiameterDeg() / 2;
+        if (!lightSource.isPoint() && !(rimDeg < HORIZON_DEG)) {
+            throw new UserInputException(String.format(Locale.ROOT, "--theta-i %s with --light-size-deg %s puts part"
+                    + " of the light's disc below the horizon (theta_i + D/2 = %s degrees); a disc stays above it"
+                    + " up to --theta-i below %s, a point light (--light-size-deg 0) up to 90", num(thetaIDeg),
+                    num(lightSource.angularDiameterDeg()), num(rimDeg),
+                    num(HORIZON_DEG - lightSource.angularDiameterDeg() / 2)));
+        }
         if (!lightSource.isPoint() && light.lambdaNm != null) {
             throw new UserInputException("--lambda maps sample the light at its centre: drop --light-size-deg");
         }

@@ -3,6 +3,7 @@ package diffract.app;
 import diffract.optics.io.ChannelChoice;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.ScanChannel;
+import diffract.optics.io.ScanFormat;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Parameters;
@@ -22,13 +23,16 @@ final class ChannelsCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
+        ScanFormat format = HeightFieldReader.formatOf(file);
         List<ScanChannel> channels = HeightFieldReader.channels(file, quiet.reporter());
         if (channels.isEmpty()) {
-            System.out.println(file + ": one height field, no channels (only .gwy and .ibw files have them)");
+            System.out.println(file + ": " + format.words() + ", one height field, no channels (only the"
+                    + " instruments' files have them)");
             return 0;
         }
         Optional<ScanChannel> chosen = ChannelChoice.byDefault(channels);
-        System.out.println(file + ": " + channels.size() + (channels.size() == 1 ? " channel" : " channels")
+        System.out.println(file + ": " + format.words() + ", " + channels.size()
+                + (channels.size() == 1 ? " channel" : " channels")
                 + (chosen.isPresent() ? "" : "; none holds heights (a length unit such as m)"));
         for (ScanChannel c : channels) {
             String extent = Double.isNaN(c.widthUm()) ? "" : String.format(Locale.ROOT, ", %s x %s um",

@@ -1,9 +1,12 @@
 package diffract.app;
 
 import diffract.optics.HeightField;
+import diffract.optics.Levelling;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.io.GsfWriter;
+import diffract.optics.io.HeightFieldReader;
+import diffract.optics.io.ScanFormat;
 import diffract.util.MemoryEstimate;
 import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
@@ -17,12 +20,27 @@ import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
-/** {@code diffract patch}: writes a named patch made by code as a Gwyddion .gsf file. */
+/**
+ * {@code diffract patch}: writes a named patch made by code, or with {@code --from FILE} the height field every
+ * command reads from a file (its channel, units, pixel size and levelling), as a Gwyddion .gsf file.
+ */
 @Command(name = "patch", mixinStandardHelpOptions = true)
 final class PatchCommand implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
+    @Parameters(index = "0", arity = "0..1", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class,
             descriptionKey = "patch-name")
     String name;
+
+    @Option(names = "--from", paramLabel = "FILE") Path from;
+
+    @Option(names = "--channel", paramLabel = "NAME|INDEX") String channel;
+
+    @Option(names = "--level", paramLabel = "L", completionCandidates = OptionTypes.LevellingNames.class,
+            converter = OptionTypes.LevellingNames.Converter.class)
+    Levelling level;
+
+    @Option(names = "--max-height", paramLabel = "UM") Double maxHeightUm;
+
+    @Option(names = "--pixel-size", paramLabel = "UM") Double pixelSizeUm;
 
     @Mixin ProceduralOptions parameters;
 
@@ -35,7 +53,22 @@ final class PatchCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
+        if ((name == null) == (from == null)) {
+            throw new UserInputException(name == null ? "give a patch NAME to make, or --from FILE to write the height"
+                    + " field read from a file" : "give a patch NAME or --from FILE, not both");
+        }
+        if (from == null && (channel != null || level != null || maxHeightUm != null || pixelSizeUm != null)) {
+            throw new UserInputException("--channel, --level, --max-height and --pixel-size read a file: add --from"
+                    + " FILE");
+        }
+        if (from != null && parameters.given()) {
+            throw new UserInputException("--period, --height, --periods, --samples-per-period, --rows, --seed and"
+                    + " --size-px change a patch made by code, not one read --from a file");
+        }
         OutputPaths.requireWritableFile(output, "-o", "patch.gsf", ".gsf");
+        if (from != null) {
+            return writeFromFile();
+        }
         ProceduralPatches.Spec spec = parameters.spec(PatchCatalogue.named(name));
         if (spec.kind().isGrating()) {
             checkGratingSize(spec);
@@ -44,6 +77,24 @@ final class PatchCommand implements Callable<Integer> {
         GsfWriter.write(output, field);
         System.out.printf(Locale.ROOT, "wrote %s: %d x %d pixels of %.4f um (%.2f x %.2f um)%n", output, field.cols(),
                 field.rows(), field.pixelSizeXUm(), field.widthUm(), field.heightExtentUm());
+        return 0;
+    }
+
+    /**
+     * The height field exactly as the other commands read it (the chosen channel in micrometres, its pixel size,
+     * levelled as asked, mean subtracted) into a .gsf that Gwyddion opens, so that what goes into a BRDF can be
+     * checked; heights are stored as float32 metres, a relative rounding of at most 2^-24.
+     */
+    private int writeFromFile() throws IOException {
+        ScanFormat format = HeightFieldReader.formatOf(from);
+        HeightField field = HeightFieldReader.load(from, maxHeightUm, pixelSizeUm, channel, level, quiet.reporter());
+        MemoryEstimate.of("the file's buffer", 4L * field.sampleCount()).require("writing " + output,
+                "crop the scan");
+        GsfWriter.write(output, field);
+        System.out.printf(Locale.ROOT, "wrote %s: %s read as %s, %d x %d pixels of %.6g x %.6g um (%.4g x %.4g um),"
+                        + " peak to valley %.6g um%n", output, from, format.words(), field.cols(), field.rows(),
+                field.pixelSizeXUm(), field.pixelSizeYUm(), field.widthUm(), field.heightExtentUm(),
+                field.maxHeightUm() - field.minHeightUm());
         return 0;
     }
 

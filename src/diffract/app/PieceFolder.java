@@ -65,7 +65,7 @@ final class PieceFolder {
     /** Every piece in {@code dir}, checked against each other and their hashes, as one result. */
     static Assembled read(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) {
-            throw new UserInputException("merge: " + dir + " is not a folder of pieces (brdfmap, render or bench "
+            throw refusal("merge: " + dir + " is not a folder of pieces (brdfmap, render or bench "
                     + "--tile I/N --pieces DIR writes one)");
         }
         Map<Path, PieceManifest> manifests = new TreeMap<>();
@@ -75,14 +75,14 @@ final class PieceFolder {
             }
         }
         if (manifests.isEmpty()) {
-            throw new UserInputException("merge: " + dir + " holds no pieces (piece-I-of-N.json, written by brdfmap, "
+            throw refusal("merge: " + dir + " holds no pieces (piece-I-of-N.json, written by brdfmap, "
                     + "render or bench --tile I/N --pieces " + dir + ")");
         }
         PieceManifest first = agreeing(dir, manifests);
         PieceManifest[] byIndex = complete(dir, manifests, first.pieces());
         long total = (long) first.items() * first.floatsPerItem();
         if (total > Integer.MAX_VALUE - 8) {
-            throw new UserInputException("merge: " + dir + ": the result has " + total + " floats, more than one "
+            throw refusal("merge: " + dir + ": the result has " + total + " floats, more than one "
                     + "array holds");
         }
         float[] all = new float[(int) total];
@@ -97,13 +97,26 @@ final class PieceFolder {
         try {
             PieceManifest m = JSON.readValue(file.toFile(), PieceManifest.class);
             if (!PieceManifest.FORMAT.equals(m.format())) {
-                throw new UserInputException("merge: " + file + " is not a piece manifest (format '" + m.format()
+                throw refusal("merge: " + file + " is not a piece manifest (format '" + m.format()
                         + "', expected '" + PieceManifest.FORMAT + "'): remove it or compute that piece again");
+            }
+            // a manifest cut short or edited by hand: every field the merge compares must be there
+            String missing = m.command() == null ? "command" : m.inputSha256() == null ? "inputSha256"
+                    : m.settings() == null ? "settings" : m.picture() == null ? "picture"
+                    : m.arguments() == null ? "arguments" : m.floatsFile() == null ? "floatsFile"
+                    : m.floatsSha256() == null ? "floatsSha256" : null;
+            if (missing != null) {
+                throw refusal("merge: " + file + " is not a complete piece manifest (no '" + missing
+                        + "'): remove it or compute that piece again");
             }
             return m;
         } catch (JsonProcessingException e) {
-            throw new UserInputException("merge: " + file + " is not a piece manifest (" + e.getOriginalMessage()
-                    + "): remove it or compute that piece again");
+            throw refusal("merge: " + file + " is not a piece manifest ("
+                    + e.getOriginalMessage().replaceAll("\\s+", " ") + "): remove it or compute that piece again");
+        } catch (java.io.CharConversionException e) {
+            // bytes that Jackson's encoding detection takes for UTF-16 or UTF-32 and cannot decode
+            throw refusal("merge: " + file + " is not a piece manifest (not UTF-8 text: "
+                    + e.getMessage().replaceAll("\\s+", " ") + "): remove it or compute that piece again");
         }
     }
 
@@ -121,7 +134,7 @@ final class PieceFolder {
         PieceManifest reference = manifests.get(most.get(0));
         List<Path> others = manifests.keySet().stream().filter(f -> !most.contains(f)).toList();
         PieceManifest other = manifests.get(others.get(0));
-        throw new UserInputException("merge: " + dir + ": " + names(others) + " belong to another "
+        throw refusal("merge: " + dir + ": " + names(others) + " belong to another "
                 + what(reference) + " than " + names(most) + " (" + difference(reference, other) + "): compute them "
                 + "again with the same options");
     }
@@ -178,7 +191,7 @@ final class PieceFolder {
         List<String> twice = byIndex.entrySet().stream().filter(e -> e.getValue().size() > 1)
                 .map(e -> e.getKey() + "/" + count + " (" + names(e.getValue()) + ")").toList();
         if (!twice.isEmpty()) {
-            throw new UserInputException("merge: " + dir + ": piece" + (twice.size() > 1 ? "s " : " ")
+            throw refusal("merge: " + dir + ": piece" + (twice.size() > 1 ? "s " : " ")
                     + String.join(", ", twice) + (twice.size() > 1 ? " are" : " is") + " there more than once: "
                     + "remove the extra manifests");
         }
@@ -194,7 +207,7 @@ final class PieceFolder {
         }
         if (!missing.isEmpty()) {
             String command = manifests.values().iterator().next().command();
-            throw new UserInputException("merge: " + dir + ": piece" + (missing.size() > 1 ? "s " : " ")
+            throw refusal("merge: " + dir + ": piece" + (missing.size() > 1 ? "s " : " ")
                     + String.join(", ", missing) + (missing.size() > 1 ? " are" : " is") + " missing: run " + command
                     + " --tile " + missing.get(0) + " --pieces " + dir + " with the same options");
         }
@@ -202,7 +215,7 @@ final class PieceFolder {
             TileOptions.Tile tile = new TileOptions.Tile(m.piece(), m.pieces());
             var band = diffract.optics.MapBand.of(m.piece(), m.pieces(), m.items());
             if (band.fromRow() != m.from() || band.toRow() != m.to()) {
-                throw new UserInputException("merge: " + dir + ": piece " + tile + " covers " + items(m) + " "
+                throw refusal("merge: " + dir + ": piece " + tile + " covers " + items(m) + " "
                         + m.from() + ".." + (m.to() - 1) + ", not " + band + ": compute it again");
             }
         }
@@ -225,19 +238,19 @@ final class PieceFolder {
         boolean beside = name != null && !name.isEmpty() && Path.of(name).getFileName().toString().equals(name);
         Path file = beside ? dir.resolve(name) : dir;
         if (!beside || !Files.isRegularFile(file)) {
-            throw new UserInputException("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
+            throw refusal("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
                     + ") are missing: compute that piece again");
         }
         byte[] bytes;
         try {
             bytes = Files.readAllBytes(file);
         } catch (NoSuchFileException e) {
-            throw new UserInputException("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
+            throw refusal("merge: " + dir + ": piece " + m.label() + "'s floats (" + name
                     + ") are missing: compute that piece again");
         }
         int expected = (m.to() - m.from()) * m.floatsPerItem();
         if (bytes.length != 4L * expected || !sha256(bytes).equals(m.floatsSha256())) {
-            throw new UserInputException("merge: " + dir + ": piece " + m.label() + " is damaged: " + name
+            throw refusal("merge: " + dir + ": piece " + m.label() + " is damaged: " + name
                     + " does not match its manifest's SHA-256: compute that piece again");
         }
         float[] floats = new float[expected];
@@ -261,5 +274,13 @@ final class PieceFolder {
         } catch (NoSuchAlgorithmException e) {
             throw new IllegalStateException("SHA-256 is part of every Java runtime", e);
         }
+    }
+
+    /**
+     * A one-line refusal: manifests are read from disk and may hold anything, so control characters from them (a
+     * line break in a format or a file name) become '?'.
+     */
+    private static UserInputException refusal(String message) {
+        return new UserInputException(message.replaceAll("\\p{Cntrl}", "?"));
     }
 }

@@ -105,8 +105,10 @@ public final class ObjReader {
             } catch (NumberFormatException e) {
                 throw problem(line, "malformed number '" + fields[k + 1] + "' in a '" + fields[0] + "' line");
             }
-            if (!Double.isFinite(values[k])) {
-                throw problem(line, "'" + fields[k + 1] + "' is not a finite number");
+            // the mesh keeps floats: a double beyond their range would become infinite there
+            if (!Double.isFinite(values[k]) || !Float.isFinite((float) values[k])) {
+                throw problem(line, "'" + fields[k + 1] + "' is not a finite number (a mesh's numbers stay within"
+                        + " +-3.4e38)");
             }
         }
         return values;

@@ -33,7 +33,7 @@ class BadInputCliTest {
     static void writeFiles() throws IOException {
         Files.write(dir.resolve("empty.png"), new byte[0]);
         Files.writeString(dir.resolve("corrupt.png"), "not a PNG at all");
-        Files.writeString(dir.resolve("heights.xyz"), "0 0 1\n");
+        Files.writeString(dir.resolve("heights.xyz"), "x y z\n0 0 1\n");
         Files.writeString(dir.resolve("matrix.txt"), "0 0.1 0.2\n0.1 0.2 0\n0.2 0 0.1\n");
         Files.write(dir.resolve("nan.gsf"), gsfWithNaN());
         Files.writeString(dir.resolve("single.txt"), "0.1\n");
@@ -112,7 +112,7 @@ class BadInputCliTest {
             missing height field     | brdfmap --theta-i 10 --patch DIR/nope.png --max-height 0.3 --pixel-size 0.1                 | nope.png: no such file; check the path
             empty height field       | brdfmap --theta-i 10 --patch DIR/empty.png --max-height 0.3 --pixel-size 0.1                | the file is empty (0 bytes)
             corrupt image            | brdfmap --theta-i 10 --patch DIR/corrupt.png --max-height 0.3 --pixel-size 0.1              | not a readable image
-            unsupported file type    | brdfmap --theta-i 10 --patch DIR/heights.xyz --max-height 0.3 --pixel-size 0.1              | unsupported file type '.xyz'; supported:
+            unsupported file type    | brdfmap --theta-i 10 --patch DIR/heights.xyz --max-height 0.3 --pixel-size 0.1              | not a height-field file diffract reads (its content matches none of them and '.xyz' is not their extension); read are:
             NaN in a .gsf            | brdfmap --theta-i 10 --patch DIR/nan.gsf                                                    | 1 sample is NaN or infinite (missing data), at row 0, column 1
             negative maxH            | precompute --patch DIR/matrix.txt --pixel-size 0.1 --max-height -1 --terms 2   | --max-height: DIR/matrix.txt: the height of the brightest grey value -1.0 is not valid
             negative pixel size      | precompute --patch DIR/matrix.txt --pixel-size -0.1 --terms 2                  | --pixel-size: DIR/matrix.txt: the pixel size -0.1 is not valid
@@ -150,10 +150,10 @@ class BadInputCliTest {
     void channelsListsWhatAScanFileHoldsAndMarksTheDefault() {
         Object[] result = CliTest.run("channels", dir.resolve("channels.gwy").toString());
         assertEquals(0, result[0], (String) result[2]);
-        assertEquals(dir.resolve("channels.gwy") + ": 2 channels\n  0 'Phase' (deg, 8 x 8), 0.8 x 0.8 um\n"
+        assertEquals(dir.resolve("channels.gwy") + ": a Gwyddion file, 2 channels\n  0 'Phase' (deg, 8 x 8), 0.8 x 0.8 um\n"
                 + "* 1 'Height' (m, 8 x 8), 0.8 x 0.8 um\n", ((String) result[1]).replace("\r\n", "\n"));
         Object[] none = CliTest.run("channels", dir.resolve("phase.gwy").toString());
-        assertTrue(((String) none[1]).startsWith(dir.resolve("phase.gwy") + ": 1 channel; none holds heights"),
+        assertTrue(((String) none[1]).startsWith(dir.resolve("phase.gwy") + ": a Gwyddion file, 1 channel; none holds heights"),
                 (String) none[1]);
         Object[] broken = CliTest.run("channels", dir.resolve("truncated.ibw").toString());
         assertEquals(2, broken[0]);

@@ -24,7 +24,8 @@ class OptionConsistencyTest {
             "--output", "each command writes its own kind of file or folder",
             "--terms", "bench's sweep takes a list of N where the others take one",
             "--exposure", "a BRDF map may take auto (its brightest order); a scene is exposed radiometrically",
-            "--size", "bench's sweep and a BRDF map are square (S); pictures are WxH");
+            "--size", "bench's sweep and a BRDF map are square (S); pictures are WxH",
+            "--from", "convert-terms converts a folder of terms; patch writes what it reads from a height-field file");
 
     @Test
     void everySharedOptionTakesTheSameValueEverywhere() {

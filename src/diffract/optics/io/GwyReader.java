@@ -248,7 +248,7 @@ final class GwyReader {
             Map<String, Component> components = new LinkedHashMap<>();
             while (pos < objectEnd) {
                 String name = string("a component name of " + type);
-                char kind = (char) u8("the type of " + type + "'s '" + name + "'");
+                char kind = (char) u8("the type of " + type + "'s '" + printable(name) + "'");
                 Component component = new Component(kind, value(type, name, kind, depth));
                 if (components.putIfAbsent(name, component) != null) {
                     throw new UserInputException(file + ": " + type + " holds '" + printable(name) + "' twice; the"

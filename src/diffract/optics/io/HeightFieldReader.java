@@ -48,28 +48,8 @@ public final class HeightFieldReader {
      */
     static final double MIN_EXTENT_UM = SpectralSettings.LAMBDA_MIN_NM / 1000.0;
 
-    static final String SUPPORTED = ".png, .bmp, .tif, .tiff (grey images), .txt, .csv, .asc, .dat (text"
-            + " matrices), .gsf (Gwyddion Simple Field), .gwy (Gwyddion), .ibw (Igor binary wave, Asylum Research)";
-
-    private enum Format {
-        IMAGE("a grey image"), TEXT("a text matrix"), GSF("a Gwyddion Simple Field"), GWY("a Gwyddion file"),
-        IBW("an Igor binary wave");
-
-        final String words;
-
-        Format(String words) {
-            this.words = words;
-        }
-
-        boolean hasChannels() {
-            return this == GWY || this == IBW;
-        }
-
-        /** The instruments' own files, which hold a scan as measured (levelled by default). */
-        boolean isInstrumentFile() {
-            return this == GWY || this == IBW;
-        }
-    }
+    /** Every format read, for messages. */
+    static final String SUPPORTED = ScanFormat.listing();
 
     private HeightFieldReader() {
     }
@@ -102,18 +82,38 @@ public final class HeightFieldReader {
         checkOption(file, Quantity.MAX_HEIGHT, maxHeightUm,
                 "the peak-to-valley height of the structure in micrometres");
         checkOption(file, Quantity.PIXEL_SIZE, pixelSizeUm, "the sample spacing in micrometres");
-        byte[] bytes = readBytes(file);
-        Format format = detect(file, bytes);
+        return read(file, readBytes(file), maxHeightUm, pixelSizeUm, channel, levelling, reporter);
+    }
+
+    /**
+     * As {@link #load(Path, Double, Double, String, Levelling, Reporter)} for a file's content already in memory.
+     *
+     * @param file    the file's name, for messages and the extension
+     * @param content the file's bytes
+     */
+    public static HeightField read(Path file, byte[] content, Double maxHeightUm, Double pixelSizeUm, String channel,
+                                   Levelling levelling, Reporter reporter) {
+        checkOption(file, Quantity.MAX_HEIGHT, maxHeightUm,
+                "the peak-to-valley height of the structure in micrometres");
+        checkOption(file, Quantity.PIXEL_SIZE, pixelSizeUm, "the sample spacing in micrometres");
+        byte[] bytes = content;
+        if (bytes.length == 0) {
+            throw new UserInputException(file + ": the file is empty (0 bytes); export the height field again");
+        }
+        ScanFormat format = ScanFormat.detect(file, bytes);
+        nameIfUnexpected(file, format, reporter);
         if (channel != null && !format.hasChannels()) {
-            throw new InvalidSettingException(Quantity.CHANNEL, file + ": " + format.words + " holds one height field,"
-                    + " no channels to choose from (only .gwy and .ibw files have channels); leave the channel out");
+            throw new InvalidSettingException(Quantity.CHANNEL, file + ": " + format.words() + " holds one height"
+                    + " field, no channels to choose from (only the instruments' files have channels); leave the"
+                    + " channel out");
         }
 
         HeightField raw;
         switch (format) {
             case IMAGE:
                 requireImageOptions(file, maxHeightUm, pixelSizeUm);
-                raw = ImageHeightFieldReader.read(file, maxHeightUm, pixelSizeUm, reporter);
+                ImageHeader.requireDecodable(file, bytes);
+                raw = ImageHeightFieldReader.read(file, bytes, maxHeightUm, pixelSizeUm, reporter);
                 break;
             case TEXT:
                 if (pixelSizeUm == null) {
@@ -125,14 +125,10 @@ public final class HeightFieldReader {
             case GSF:
                 raw = GsfReader.read(file, bytes, pixelSizeUm, reporter);
                 break;
-            case GWY:
-                raw = GwyReader.read(file, bytes, channel, pixelSizeUm, reporter);
-                break;
-            case IBW:
-                raw = IbwReader.read(file, bytes, channel, pixelSizeUm, reporter);
-                break;
             default:
-                throw new IllegalStateException("unhandled format " + format);
+                raw = ChannelChoice.choose(file, channels(file, format, bytes, reporter), channel, reporter)
+                        .heightField(file, pixelSizeUm, reporter);
+                break;
         }
 
         // the warning first: a pixel size in the wrong unit is the likely reason for a scan too small to use
@@ -146,7 +142,7 @@ public final class HeightFieldReader {
         if (levelling == null) {
             levelling = Levelling.defaultFor(format.isInstrumentFile());
             if (levelling != Levelling.NONE) {
-                reporter.info(file + ": " + levelling.label() + " levelled (the default for " + format.words
+                reporter.info(file + ": " + levelling.label() + " levelled (the default for " + format.words()
                         + "; a levelling of none keeps the heights as read)");
             }
         }
@@ -159,7 +155,7 @@ public final class HeightFieldReader {
             reporter.warn(file + ": levelling (" + levelling.label() + ") leaves the height field flat: it is "
                     + (levelling == Levelling.ROWS ? "constant along every row" : "a tilted plane") + " without"
                     + " structure, which only reflects specularly and shows no diffraction colours");
-        } else if (format != Format.IMAGE) {
+        } else if (format != ScanFormat.IMAGE) {
             if (maxHeightUm != null) {
                 levelled = rescaled(file, levelled, rangeUm, maxHeightUm, reporter);
             } else {
@@ -167,8 +163,8 @@ public final class HeightFieldReader {
                 ReaderSupport.warnIfImplausible(file, "peak-to-valley height", rangeUm, "", MIN_PLAUSIBLE_HEIGHT_UM,
                         MAX_PLAUSIBLE_HEIGHT_UM, switch (format) {
                             case GSF -> "the file's heights and ZUnits";
-                            case GWY, IBW -> "the channel's heights and unit";
-                            default -> "the file's heights, read as micrometres";
+                            case TEXT -> "the file's heights, read as micrometres";
+                            default -> "the channel's heights and unit";
                         }, reporter);
             }
         }
@@ -176,18 +172,39 @@ public final class HeightFieldReader {
     }
 
     /**
-     * The channels of a .gwy or .ibw file (each with its index, title, unit and size); empty for the formats that
+     * The channels of an instrument's file (each with its index, title, unit and size); empty for the formats that
      * hold one height field.
      *
      * @throws UserInputException for a file that cannot be read
      */
     public static List<ScanChannel> channels(Path file, Reporter reporter) {
         byte[] bytes = readBytes(file);
-        return switch (detect(file, bytes)) {
+        return channels(file, ScanFormat.detect(file, bytes), bytes, reporter);
+    }
+
+    /** The format of a file by its content (else its extension), as every command reads it. */
+    public static ScanFormat formatOf(Path file) {
+        return ScanFormat.detect(file, readBytes(file));
+    }
+
+    private static List<ScanChannel> channels(Path file, ScanFormat format, byte[] bytes, Reporter reporter) {
+        return switch (format) {
             case GWY -> GwyReader.channels(file, bytes, reporter);
             case IBW -> IbwReader.channels(file, bytes);
+            case NANOSCOPE -> NanoscopeReader.channels(file, bytes);
+            case JPK -> JpkReader.channels(file, bytes);
+            case PARK -> ParkReader.channels(file, bytes);
+            case MDT -> MdtReader.channels(file, bytes);
+            case NID -> NidReader.channels(file, bytes);
             default -> List.of();
         };
+    }
+
+    /** A file whose content is another format than its name says is read as what it is, and told so. */
+    private static void nameIfUnexpected(Path file, ScanFormat format, Reporter reporter) {
+        if (!format.matchesExtension(file)) {
+            reporter.info(file + ": read as " + format.words() + " (found by its content)");
+        }
     }
 
     /**
@@ -269,6 +286,12 @@ public final class HeightFieldReader {
         }
         byte[] bytes;
         try {
+            long size = Files.size(file);
+            if (size > Integer.MAX_VALUE - 8) {
+                throw new UserInputException(file + ": the file is " + size + " bytes, larger than a height field"
+                        + " diffract reads (2 GB); crop the scan");
+            }
+            ReaderSupport.requireHeap(file, size / 8 + 1, "the file");
             bytes = Files.readAllBytes(file);
         } catch (IOException | OutOfMemoryError e) {
             // OutOfMemoryError: readAllBytes refuses files over 2 GiB with one, and the array is gone again.
@@ -282,66 +305,13 @@ public final class HeightFieldReader {
         return bytes;
     }
 
-    /** Signatures first, so a mis-named file still loads; the extension decides for text. */
-    private static Format detect(Path file, byte[] bytes) {
-        if (GsfReader.looksLikeGsf(bytes)) {
-            return Format.GSF;
-        }
-        if (GwyReader.looksLikeGwy(bytes)) {
-            return Format.GWY;
-        }
-        if (startsWith(bytes, 0x89, 'P', 'N', 'G') || startsWith(bytes, 'B', 'M')
-                || startsWith(bytes, 'I', 'I', 42, 0) || startsWith(bytes, 'M', 'M', 0, 42)) {
-            return Format.IMAGE;
-        }
-        if (IbwReader.looksLikeIbw(bytes)) {
-            return Format.IBW;
-        }
-        String name = file.getFileName() == null ? "" : file.getFileName().toString();
-        int dot = name.lastIndexOf('.');
-        String extension = dot < 0 ? "" : name.substring(dot + 1).toLowerCase(Locale.ROOT);
-        switch (extension) {
-            case "png":
-            case "bmp":
-            case "tif":
-            case "tiff":
-                return Format.IMAGE; // the decoder will say it is damaged
-            case "txt":
-            case "csv":
-            case "asc":
-            case "dat":
-                return Format.TEXT;
-            case "gsf":
-                return Format.GSF; // GsfReader explains what the first line should be
-            case "gwy":
-                return Format.GWY; // and GwyReader the magic
-            case "ibw":
-                return Format.IBW; // and IbwReader the version and checksum
-            default:
-                throw new UserInputException(file + ": unsupported file type"
-                        + (extension.isEmpty() ? " (no extension)" : " '." + extension + "'")
-                        + "; supported: " + SUPPORTED);
-        }
-    }
-
-    private static boolean startsWith(byte[] bytes, int... signature) {
-        if (bytes.length < signature.length) {
-            return false;
-        }
-        for (int i = 0; i < signature.length; i++) {
-            if ((bytes[i] & 0xFF) != signature[i]) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private static void warnAboutPixelSize(Path file, Format format, HeightField field, Double pixelSizeUm,
+    private static void warnAboutPixelSize(Path file, ScanFormat format, HeightField field, Double pixelSizeUm,
                                            Reporter reporter) {
         String source = pixelSizeUm != null ? "the given pixel size" : switch (format) {
             case GWY -> "xreal/xres, yreal/yres of the data field";
             case IBW -> "the wave's step per point (sfA)";
-            default -> "XReal/XRes, YReal/YRes in the header";
+            case GSF -> "XReal/XRes, YReal/YRes in the header";
+            default -> "the scan size in the file's header";
         };
         boolean square = field.pixelSizeYUm() == field.pixelSizeXUm();
         ReaderSupport.warnIfImplausible(file, square ? "pixel size" : "pixel size along x", field.pixelSizeXUm(),

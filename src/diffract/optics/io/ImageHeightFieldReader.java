@@ -11,6 +11,7 @@ import java.awt.image.ColorModel;
 import java.awt.image.DataBuffer;
 import java.awt.image.IndexColorModel;
 import java.awt.image.Raster;
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.nio.file.Path;
 
@@ -29,8 +30,8 @@ final class ImageHeightFieldReader {
     private ImageHeightFieldReader() {
     }
 
-    static HeightField read(Path file, double maxHeightUm, double pixelSizeUm, Reporter reporter) {
-        BufferedImage image = decode(file);
+    static HeightField read(Path file, byte[] bytes, double maxHeightUm, double pixelSizeUm, Reporter reporter) {
+        BufferedImage image = decode(file, bytes);
         int cols = image.getWidth();
         int rows = image.getHeight();
         if ((long) rows * cols > Integer.MAX_VALUE - 8) {
@@ -45,10 +46,10 @@ final class ImageHeightFieldReader {
         return ReaderSupport.build(file, rows, cols, heightsUm, pixelSizeUm, pixelSizeUm);
     }
 
-    private static BufferedImage decode(Path file) {
+    private static BufferedImage decode(Path file, byte[] bytes) {
         BufferedImage image;
         try {
-            image = ImageIO.read(file.toFile());
+            image = ImageIO.read(new ByteArrayInputStream(bytes));
         } catch (IOException | RuntimeException e) {
             // Decoders throw anything from IIOException to ArrayIndexOutOfBounds on damaged files.
             throw new UserInputException(file + ": the image is corrupt or truncated and cannot be decoded ("

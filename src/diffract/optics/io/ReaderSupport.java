@@ -1,6 +1,7 @@
 package diffract.optics.io;
 
 import diffract.optics.HeightField;
+import diffract.util.MemoryEstimate;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
@@ -85,5 +86,50 @@ final class ReaderSupport {
                 ? "1 sample is NaN or infinite (missing data), at " + where + ": " + firstValue
                 : count + " samples are NaN or infinite (missing data), the first at " + where + ": " + firstValue)
                 + "; " + FILL_MISSING);
+    }
+
+    /**
+     * Bytes of the heap a channel of {@code samples} values takes on its way to a levelled height field: its values
+     * as read, the heights in micrometres, the field's own copy and the levelled copy, 8 bytes each.
+     */
+    static final long HEAP_BYTES_PER_SAMPLE = 32;
+
+    /**
+     * Refuses a header's image size before anything is allocated: a size that is not positive, more samples than
+     * the file holds (at {@code sampleBytes} each) or than one Java array takes, or more than the heap can hold.
+     *
+     * @param what the channel or image in messages
+     */
+    static void requireSize(Path file, long cols, long rows, long sampleBytes, long fileBytes, String what) {
+        if (cols <= 0 || rows <= 0) {
+            throw new UserInputException(file + ": " + what + " is " + cols + " x " + rows + " samples, not an image;"
+                    + " the file is damaged, save it again");
+        }
+        if (cols > Integer.MAX_VALUE || rows > Integer.MAX_VALUE || cols * rows > Integer.MAX_VALUE - 8) {
+            throw new UserInputException(file + ": " + what + " claims " + cols + " x " + rows + " samples, more than"
+                    + " one array holds; crop the scan");
+        }
+        long samples = cols * rows;
+        if (sampleBytes > 0 && samples * sampleBytes > fileBytes) {
+            throw new UserInputException(file + ": " + what + " claims " + cols + " x " + rows + " samples of "
+                    + sampleBytes + " bytes (" + samples * sampleBytes + " bytes), more than the file's " + fileBytes
+                    + "; the file is truncated or damaged, copy or save it again");
+        }
+        requireHeap(file, samples, what);
+    }
+
+    /** Refuses {@code samples} values that the heap cannot take ({@link #HEAP_BYTES_PER_SAMPLE} each). */
+    static void requireHeap(Path file, long samples, String what) {
+        MemoryEstimate.of("its samples", HEAP_BYTES_PER_SAMPLE * samples).require(file + ": " + what + " of "
+                + samples + " samples", "crop the scan");
+    }
+
+    /** Row-major values with their rows in reverse order (a file that stores the bottom row first). */
+    static double[] flippedRows(double[] values, int cols, int rows) {
+        double[] out = new double[values.length];
+        for (int r = 0; r < rows; r++) {
+            System.arraycopy(values, (rows - 1 - r) * cols, out, r * cols, cols);
+        }
+        return out;
     }
 }

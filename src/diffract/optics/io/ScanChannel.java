@@ -68,6 +68,11 @@ public final class ScanChannel {
         return rows;
     }
 
+    /** The value at row {@code row} (0 the top) and column {@code col}, in {@link #unit()}. */
+    public double value(int row, int col) {
+        return values[row * cols + col];
+    }
+
     /** True when the values are lengths (m, nm, ...): a topography channel, not a phase, a current or a signal. */
     public boolean holdsHeights() {
         return LengthUnit.isLength(unit);
@@ -100,6 +105,7 @@ public final class ScanChannel {
         String name = "channel '" + title + "'";
         double toUm = LengthUnit.micrometres(unit).orElseThrow(() -> new IllegalStateException(
                 "chosen channel " + summary() + " holds no heights"));
+        ReaderSupport.requireHeap(file, values.length, name);
         double[] heightsUm = new double[values.length];
         int missing = 0;
         int firstMissing = -1;

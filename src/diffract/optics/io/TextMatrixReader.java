@@ -24,6 +24,33 @@ final class TextMatrixReader {
     private TextMatrixReader() {
     }
 
+    /**
+     * Whether the bytes read as a text matrix: no NUL or other binary byte in the first 4 kB, and the first line
+     * that is neither blank nor a comment starts with a plain decimal number.
+     */
+    static boolean looksLikeText(byte[] bytes) {
+        int n = Math.min(bytes.length, 4096);
+        for (int i = 0; i < n; i++) {
+            int c = bytes[i] & 0xFF;
+            if (c < 0x09 || c > 0x0D && c < 0x20) {
+                return false;
+            }
+        }
+        String head = new String(bytes, 0, n, StandardCharsets.UTF_8);
+        if (head.startsWith("\uFEFF")) {
+            head = head.substring(1);
+        }
+        for (String line : head.split("\r\n|\r|\n")) {
+            int hash = line.indexOf('#');
+            String data = (hash >= 0 ? line.substring(0, hash) : line).strip();
+            if (!data.isEmpty()) {
+                String[] tokens = SEPARATORS.split(data);
+                return tokens.length > 0 && NUMBER.matcher(tokens[0]).matches();
+            }
+        }
+        return false;
+    }
+
     static HeightField read(Path file, byte[] bytes, double pixelSizeUm) {
         String text = new String(bytes, StandardCharsets.UTF_8);
         if (text.startsWith("\uFEFF")) {

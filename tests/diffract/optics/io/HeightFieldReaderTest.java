@@ -51,11 +51,13 @@ class HeightFieldReaderTest {
         Path jpeg = dir.resolve("photo.jpg");
         Files.writeString(jpeg, "not really a jpeg");
         assertUserError(jpeg, () -> HeightFieldReader.load(jpeg, 1.0, 0.1, Reporter.SILENT),
-                "unsupported file type '.jpg'", ".png", ".tiff", ".csv", ".gsf");
+                "not a height-field file diffract reads (its content matches none of them and '.jpg' is not their"
+                        + " extension); read are: ", ".png", ".tiff", ".csv", ".gsf", ".jpk", ".nid");
 
         Path bare = dir.resolve("heights");
-        Files.writeString(bare, "1 2\n");
-        assertUserError(bare, () -> HeightFieldReader.load(bare, 1.0, 0.1, Reporter.SILENT), "no extension");
+        Files.writeString(bare, "heights\n");
+        assertUserError(bare, () -> HeightFieldReader.load(bare, 1.0, 0.1, Reporter.SILENT),
+                "its content matches none of them); read are: ");
     }
 
     @Test
@@ -144,7 +146,7 @@ class HeightFieldReaderTest {
         InvalidSettingException e = assertThrows(InvalidSettingException.class, () -> HeightFieldReader.load(file,
                 null, 0.1, "Height", Levelling.PLANE, Reporter.SILENT));
         assertEquals(Quantity.CHANNEL, e.quantity());
-        assertEquals(file + ": a text matrix holds one height field, no channels to choose from (only .gwy and .ibw"
+        assertEquals(file + ": a text matrix holds one height field, no channels to choose from (only the instruments'"
                 + " files have channels); leave the channel out", e.getMessage());
         assertEquals(List.of(), HeightFieldReader.channels(file, Reporter.SILENT));
     }
