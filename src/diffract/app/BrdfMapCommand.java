@@ -155,7 +155,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             // the exposure is the map's own: where it shows the map brighter than the cutoff assumed, draw it again
             // for that exposure (the map can only gain light, so the exposure found first is never too low)
             BrdfSettings shown = settings.shownAt(AutoExposure.of(luminance(map), picture.size, -wi.x(), -wi.y()));
-            if (shown != settings) {
+            // only the lobes method (and a table baked of it) reads the cutoff: other maps would come out the same
+            boolean readsCutoff = settings.variant() == Variant.LOBES || settings.variant().drawsTable();
+            if (shown != settings && readsCutoff) {
                 reporter.info(String.format(Locale.ROOT, "drawn again for its exposure: the lobes' cutoff %.3g of "
                         + "white", shown.lobes().cutoff()));
                 settings = shown;

@@ -16,11 +16,14 @@ import diffract.optics.LightProfile;
 import diffract.optics.LightSource;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.Methods;
+import diffract.optics.OrderWeights;
 import diffract.optics.PatchCatalogue;
 import diffract.optics.PixelFilter;
+import diffract.optics.Polarisation;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.Quantity;
 import diffract.optics.RadiometricGain;
+import diffract.optics.RigorousSettings;
 import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorExpansion;
 import diffract.optics.TaylorSettings;
@@ -29,6 +32,7 @@ import diffract.optics.Variant;
 import diffract.optics.ScanTiling;
 import diffract.optics.WindowPlacement;
 import diffract.optics.WindowSettings;
+import diffract.optics.rigorous.Resolution;
 import diffract.util.UserInputException;
 
 import java.io.IOException;
@@ -63,6 +67,8 @@ public final class SceneFile {
             .map(MirrorNormalisation::key).toList();
     /** {@code material.exposure}'s word for {@link RadiometricGain}. */
     static final String RADIOMETRIC = "radiometric";
+    static final List<String> POLARISATIONS = Arrays.stream(Polarisation.values()).map(Polarisation::label).toList();
+    static final List<String> ORDER_WEIGHTS = Arrays.stream(OrderWeights.values()).map(OrderWeights::label).toList();
     static final List<String> PIXEL_FILTERS = List.of("box", "point");
     static final List<String> LIGHT_PROFILES = List.of("disc", "gaussian");
     static final List<String> WINDOW_PLACEMENTS = List.of("averaged", "fixed", "local");
@@ -286,7 +292,9 @@ public final class SceneFile {
             Map.entry(Quantity.REFRACTIVE_INDEX, "refractiveIndex"), Map.entry(Quantity.TERM_FORMAT, "termFormat"),
             Map.entry(Quantity.BAKED_SAMPLES, "bakedUvSamples"), Map.entry(Quantity.GAIN, "gain"),
             Map.entry(Quantity.PIXEL_FILTER, "pixelFilter"), Map.entry(Quantity.LOBE_QUADRATURE, "lobeQuadrature"),
-            Map.entry(Quantity.SCAN_TILING, "skinUmPerTexcoord"));
+            Map.entry(Quantity.SCAN_TILING, "skinUmPerTexcoord"), Map.entry(Quantity.HARMONICS, "harmonics"),
+            Map.entry(Quantity.LAYERS, "layers"), Map.entry(Quantity.POLARISATION, "polarisation"),
+            Map.entry(Quantity.ORDERS, "orders"));
 
     /**
      * A method: its label, its label with its parameter ({@code "label(of=inner)"}), or an object
@@ -398,6 +406,7 @@ public final class SceneFile {
             if (material.has("lobeQuadrature")) {
                 b.lobes(lobeQuadrature(material.object("lobeQuadrature")));
             }
+            b.rigorous(rigorous(material));
         } catch (InvalidSettingException e) {
             throw material.problem(MATERIAL_KEYS.getOrDefault(e.quantity(), "variant"), e.getMessage());
         }
@@ -459,7 +468,35 @@ public final class SceneFile {
         return GainModel.parse(material.choice("gain", GAIN_MODELS, GainModel.RAYLEIGH_RICE.label()));
     }
 
-    /** The coherence length (or the thesis' sigma_s, a quarter of it) and the refractive index. */
+    /**
+     * Maxwell's equations' settings: "orders" (whether the lobes method takes its orders from them), "harmonics" (a
+     * whole number or "auto"), "layers", "layerExtrapolation" and "polarisation"; each at its default when absent.
+     */
+    private static RigorousSettings rigorous(SceneObject material) {
+        Resolution r = Resolution.DEFAULT;
+        int maxOrder = r.maxOrder();
+        if (material.has("harmonics") && material.raw("harmonics").value() instanceof String text) {
+            if (!text.equals("auto")) {
+                throw material.problem("harmonics", "must be a whole number in [1, " + Resolution.MAX_ORDER
+                        + "] or \"auto\", got \"" + text + "\"");
+            }
+        } else if (material.has("harmonics")) {
+            maxOrder = material.integer("harmonics", SceneObject.Range.closed(1, Resolution.MAX_ORDER));
+        }
+        int layers = material.integer("layers", SceneObject.Range.closed(1, Resolution.MAX_LAYERS), r.layers());
+        boolean extrapolate = material.bool("layerExtrapolation", r.extrapolate());
+        if (extrapolate && layers % 2 != 0) {
+            throw material.problem("layers", "the staircase is extrapolated from L / 2 and L layers: give an even"
+                    + " number, or \"layerExtrapolation\": false; got " + layers);
+        }
+        Polarisation polarisation = Polarisation.parse(material.choice("polarisation", POLARISATIONS,
+                RigorousSettings.DEFAULT.polarisation().label()));
+        OrderWeights orders = OrderWeights.parse(material.choice("orders", ORDER_WEIGHTS,
+                RigorousSettings.DEFAULT.orders().label()));
+        return new RigorousSettings(new Resolution(maxOrder, layers, extrapolate), polarisation, orders);
+    }
+
+    /** The coherence length (or the thesis' sigma_s, a quarter of it) and the complex refractive index n + i k. */
     private static IlluminationSettings illumination(SceneObject material) {
         SceneObject.Range coherence = SceneObject.Range.above(0, IlluminationSettings.MAX_COHERENCE_LENGTH_UM);
         double coherenceLengthUm;
@@ -475,7 +512,9 @@ public final class SceneFile {
         }
         double n = material.number("refractiveIndex", SceneObject.Range.closed(1, IlluminationSettings.MAX_REFRACTIVE_INDEX),
                 GainFactor.KERATIN_REFRACTIVE_INDEX);
-        return IlluminationSettings.ofCoherenceLength(coherenceLengthUm, n);
+        double k = material.number("extinction", SceneObject.Range.closed(0, IlluminationSettings.MAX_EXTINCTION), 0);
+        return IlluminationSettings.ofCoherenceLength(coherenceLengthUm, n)
+                .withMaterial(new diffract.optics.rigorous.ComplexIndex(n, k));
     }
 
     private static Scene.PigmentationSpec pigmentation(SceneObject material) {

@@ -11,9 +11,11 @@ import diffract.optics.IlluminationSettings;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.ProceduralPatches;
 import diffract.optics.RadiometricGain;
+import diffract.optics.RigorousSettings;
 import diffract.optics.SpectralSettings;
 import diffract.optics.TaylorSettings;
 import diffract.optics.WindowSettings;
+import diffract.optics.rigorous.Resolution;
 
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
@@ -175,6 +177,7 @@ public final class SceneWriter {
         IlluminationSettings illumination = s.illumination();
         material.put("coherenceLengthUm", illumination.coherenceLengthUm());
         material.put("refractiveIndex", illumination.refractiveIndex());
+        material.put("extinction", illumination.extinction());
         material.put("gain", illumination.gain().label());
         material.put("pixelFilter", illumination.pixelFilter().label());
         GpuTableSettings gpu = s.gpu();
@@ -182,6 +185,13 @@ public final class SceneWriter {
         material.put("bakedUvSamples", gpu.bakedUvSamples());
         material.put("bakedWSamples", gpu.bakedWSamples());
         material.put("lobeQuadrature", lobeQuadrature(s.lobes()));
+        RigorousSettings rigorous = s.rigorous();
+        material.put("orders", rigorous.orders().label());
+        Resolution resolution = rigorous.resolution();
+        material.put("harmonics", resolution.maxOrder() == 0 ? "auto" : (Object) resolution.maxOrder());
+        material.put("layers", resolution.layers());
+        material.put("layerExtrapolation", resolution.extrapolate());
+        material.put("polarisation", rigorous.polarisation().label());
         material.put("pigmentation", pigmentation(m.pigmentation()));
         material.put("pigmentationOn", m.pigmentationOn());
         material.put("diffuseWeight", m.diffuseWeight());

@@ -6,20 +6,21 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * Energy of a flat mirror under the two Fresnel models. Its directional albedo (absolute: the normal-incidence
+ * Energy of a flat mirror under the gain models. Its directional albedo (absolute: the normal-incidence
  * mirror reflects F_0 of the light) is
  * a(theta_i) = F_0 integral rho(omega_i, omega_r) cos theta_r d omega_r / (cos theta_i integral rho(omega_0,
  * omega_r) cos theta_r d omega_r), with cos theta_r d omega_r = dx dy over the unit disk of omega_r's projection.
  * Integrated numerically over the disk at 550 nm with a mirror lobe narrow enough to follow F and wide enough to grid (4 sigma_s = 80
- * um), theta_i = 0..89 degrees: physical counts Schlick's reflectance once and stays at F(theta_i) &lt;= 1; the
- * thesis' squared factor gives F^2 / F_0, above 1 beyond about 72 degrees.
+ * um), theta_i = 0..89 degrees: Stam's counts Schlick's reflectance once and stays at F(theta_i) &lt;= 1; the
+ * thesis' squared factor gives F^2 / F_0, above 1 beyond about 72 degrees; Rayleigh-Rice's reflects Fresnel's exact
+ * unpolarised reflectance, computed here from the amplitude coefficients.
  */
 class FresnelEnergyTest {
     private static final HeightField FLAT = SyntheticPatches.flat(16, 16, 0.5).meanSubtracted();
     private static final CoherenceWindow WINDOW = new CoherenceWindow(20.0);
 
     @Test
-    void physicalAlbedoIsSchlicksReflectanceAndNeverExceedsOne() {
+    void stamsAlbedoIsSchlicksReflectanceAndNeverExceedsOne() {
         double r0 = GainFactor.schlickR0(1.5);
         double normal = integral(0, GainModel.STAM);
         for (int theta = 0; theta <= 89; theta++) {
@@ -28,6 +29,26 @@ class FresnelEnergyTest {
             if (theta <= 80) {
                 double f = GainFactor.schlickFresnel(Math.cos(Math.toRadians(theta)), r0);
                 assertEquals(f, albedo, 0.01 * f, "albedo at " + theta + " degrees");
+            }
+        }
+    }
+
+    @Test
+    void rayleighRiceAlbedoIsFresnelsExactReflectance() {
+        double n = GainFactor.KERATIN_REFRACTIVE_INDEX;
+        double r0 = GainFactor.normalReflectance(n);
+        double normal = integral(0, GainModel.RAYLEIGH_RICE, n);
+        assertEquals(Math.pow((n - 1) / (n + 1), 2), r0, 1e-15);
+        for (int theta = 0; theta <= 89; theta++) {
+            double albedo = r0 * integral(theta, GainModel.RAYLEIGH_RICE, n) / (Math.cos(Math.toRadians(theta)) * normal);
+            double c = Math.cos(Math.toRadians(theta));
+            double t = Math.sqrt(n * n - (1 - c * c));
+            double rs = (c - t) / (c + t);
+            double rp = (n * n * c - t) / (n * n * c + t);
+            double exact = 0.5 * (rs * rs + rp * rp);
+            assertTrue(albedo <= 1 + 1e-3, "albedo " + albedo + " at " + theta + " degrees");
+            if (theta <= 80) {
+                assertEquals(exact, albedo, 0.01 * exact, "albedo at " + theta + " degrees");
             }
         }
     }
@@ -46,9 +67,13 @@ class FresnelEnergyTest {
     }
 
     /** integral over the disk of rho(omega_i, omega_r) dx dy, on a grid fine around the mirror direction. */
-    private static double integral(double thetaDeg, GainModel fresnel) {
+    private static double integral(double thetaDeg, GainModel model) {
+        return integral(thetaDeg, model, 1.5);
+    }
+
+    private static double integral(double thetaDeg, GainModel model, double refractiveIndex) {
         DiffractionBrdf brdf = new DiffractionBrdf(new ExactSpectrum(FLAT, WINDOW),
-                WavelengthSampling.uniform(380, 780, 5), 1.5, fresnel);
+                WavelengthSampling.uniform(380, 780, 5), refractiveIndex, model);
         Direction wi = Direction.fromSphericalDeg(thetaDeg, 0);
         double lobe = 0.55 * WINDOW.sigmaFrequencyPerUm(); // lambda sigma_f: |P|^2 = exp(-|uv|^2 / lobe^2)
         double centre = -wi.x();

@@ -95,7 +95,7 @@ class SceneFileTest {
         assertEquals(diffract.optics.RadiometricGain.of(m.settings()), m.exposure(), 0);
         assertEquals(1619, m.exposure(), 1); // pi R_0 / Omega(555 nm) at 65 um on keratin, n = 1.56
         Files.writeString(file, valid(",\n    \"coherenceLengthUm\": 130, \"exposure\": \"radiometric\""));
-        assertEquals(4 * 1354, SceneFile.load(file).material().exposure(), 4, "the gain grows as the coherence length "
+        assertEquals(4 * m.exposure(), SceneFile.load(file).material().exposure(), 1e-9 * m.exposure(), "the gain grows as the coherence length "
                 + "squared");
         Files.writeString(file, valid(",\n    \"exposure\": 3"));
         assertEquals(diffract.colour.MirrorNormalisation.PEAK,
@@ -286,6 +286,42 @@ class SceneFileTest {
         assertEquals(0, s.gpu().bakedUvSamples(), "automatic unless given");
         assertEquals("elaphe-like", ((Scene.ProceduralPatch) scene.material().patch()).name(),
                 "a camelCase name is the catalogue's patch");
+    }
+
+    /** Maxwell's equations' keys: the lobes method's orders, the resolution, the polarisation, the complex index. */
+    @Test
+    void theRigorousKeysMeanWhatTheOptionsMean() throws IOException {
+        Path file = dir.resolve("rigorous.json");
+        Files.writeString(file, valid(",\n    \"orders\": \"rigorous\", \"harmonics\": 30, \"layers\": 40,"
+                + " \"polarisation\": \"s\", \"refractiveIndex\": 1.6, \"extinction\": 0.05")
+                .replace("\"flss\"", "\"lobes\""));
+        diffract.optics.BrdfSettings s = SceneFile.load(file).material().settings();
+        assertEquals(diffract.optics.OrderWeights.RIGOROUS, s.rigorous().orders());
+        assertEquals(new diffract.optics.rigorous.Resolution(30, 40, true), s.rigorous().resolution());
+        assertEquals(diffract.optics.Polarisation.S, s.rigorous().polarisation());
+        assertEquals(new diffract.optics.rigorous.ComplexIndex(1.6, 0.05), s.illumination().material());
+
+        Path auto = dir.resolve("auto.json");
+        Files.writeString(auto, valid(",\n    \"harmonics\": \"auto\", \"layers\": 7, \"layerExtrapolation\": false"));
+        diffract.optics.BrdfSettings a = SceneFile.load(auto).material().settings();
+        assertEquals(new diffract.optics.rigorous.Resolution(0, 7, false), a.rigorous().resolution());
+        assertEquals(diffract.optics.OrderWeights.SCALAR, a.rigorous().orders(), "the scalar orders by default");
+        assertEquals(diffract.optics.GainFactor.KERATIN_REFRACTIVE_INDEX, a.illumination().refractiveIndex());
+    }
+
+    /** Each rigorous key's mistake is named at its key with the way out. */
+    @Test
+    void theRigorousKeysMistakesAreNamed() throws IOException {
+        String odd = message(valid(",\n    \"layers\": 7"));
+        assertTrue(odd.startsWith("7: material.layers: the staircase is extrapolated from L / 2 and L layers"), odd);
+        String word = message(valid(",\n    \"harmonics\": \"many\""));
+        assertTrue(word.startsWith("7: material.harmonics: must be a whole number in [1, 2000] or \"auto\""), word);
+        String flss = message(valid(",\n    \"orders\": \"rigorous\""));
+        assertTrue(flss.startsWith("7: material.orders: flss draws the scalar model's orders"), flss);
+        String polar = message(valid(",\n    \"polarisation\": \"q\""));
+        assertTrue(polar.contains("material.polarisation: unknown value \"q\""), polar);
+        String k = message(valid(",\n    \"extinction\": -1"));
+        assertTrue(k.contains("material.extinction:"), k);
     }
 
     /** A value the settings refuse is reported at its key, in the settings' words. */

@@ -74,6 +74,23 @@ class SceneWriterTest {
         assertFalse(text.contains("environment"), "no stage was asked for:\n" + text);
     }
 
+    /** The rigorous orders, an explicit resolution and a complex index are written and read back as themselves. */
+    @Test
+    void theRigorousSettingsReadBackAsThemselves() {
+        Scene scene = SceneFile.parse("""
+                {"camera": {"eye": [0, 0, 3]}, "light": {"thetaDeg": 30}, "shape": {"kind": "sphere"},
+                 "material": {"patch": {"procedural": "elaphe-ridge"}, "orders": "rigorous", "harmonics": 25,
+                  "layers": 9, "layerExtrapolation": false, "polarisation": "p", "extinction": 0.02}}
+                """, "rigorous.json", Path.of("/"), null);
+        String text = SceneWriter.json(scene);
+        for (String key : List.of("\"orders\" : \"rigorous\"", "\"harmonics\" : 25", "\"layers\" : 9",
+                "\"layerExtrapolation\" : false", "\"polarisation\" : \"p\"", "\"extinction\" : 0.02")) {
+            assertTrue(text.contains(key), key + " in\n" + text);
+        }
+        Scene again = SceneFile.parse(text, "dumped", Path.of("/"), null);
+        assertEquals(scene.material().settings(), again.material().settings());
+    }
+
     @Test
     void theLocalWindowKeepsItsTiling() {
         Scene local = SceneFile.parse("""
