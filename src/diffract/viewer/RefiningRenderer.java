@@ -398,7 +398,7 @@ public final class RefiningRenderer implements GLEventListener {
 
     private boolean tableReady(ViewerState state) {
         BrdfSettings s = state.drawableSettings();
-        return s.variant().drawsTable() && model.pipeline().tables().isBaked(state.terms(), s);
+        return s.variant().drawsTable() && model.pipeline().tables().isReady(state.terms(), s);
     }
 
     /**
