@@ -98,13 +98,18 @@ final class ViewerOptions {
 
         @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D") double distance = 3.5;
 
-        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E") double exposure = 400;
+        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E|auto",
+                converter = OptionTypes.Exposure.Converter.class)
+        OptionTypes.Exposure exposure = new OptionTypes.Exposure(400.0);
 
         @Option(names = "--brdf-map") boolean brdfMap;
 
         @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class)
         OptionTypes.ImageSize size;
     }
+
+    /** The exposure of a shape without a scene, and where --exposure auto starts. */
+    static final double DEFAULT_EXPOSURE = 400;
 
     /** The patch a command line without --patch or --synthetic shows. */
     static final String DEFAULT_PATCH = "elaphe-like";
@@ -237,7 +242,8 @@ final class ViewerOptions {
         return new SceneOverrides(given("--azimuth") ? view.azimuthDeg : null,
                 given("--elevation") ? view.elevationDeg : null, given("--distance") ? view.distance : null,
                 given("--theta-i") ? view.thetaIDeg : null, given("--phi-i") ? view.phiIDeg : null,
-                given("--exposure") ? view.exposure : null, given("--diffuse-weight") ? surface.diffuseWeight : null,
+                given("--exposure") && !view.exposure.automatic() ? view.exposure.factor() : null,
+                given("--diffuse-weight") ? surface.diffuseWeight : null,
                 surface.noPigmentation, view.brdfMap);
     }
 
@@ -252,6 +258,10 @@ final class ViewerOptions {
     boolean dumpedScene(Scene.ImageSize defaultSize) {
         if (!dumpScene) {
             return false;
+        }
+        if (exposureAuto()) {
+            throw new UserInputException("--dump-scene writes a scene of one exposure; --exposure auto measures the "
+                    + "picture: run without --dump-scene to see its choice (it says 'auto exposure E'), then give it");
         }
         if (brdf.auto()) {
             throw new UserInputException("--dump-scene writes a scene of one method; --variant auto chooses its "
@@ -275,7 +285,8 @@ final class ViewerOptions {
         Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null, TangentSource.projected(1, 0, 0),
                 SnakeMesh.RidgeDirection.ALONG_BODY, Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
         Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null,
-                Scene.PigmentationSpec.none(), false, surface.diffuseWeight, view.exposure);
+                Scene.PigmentationSpec.none(), false, surface.diffuseWeight,
+                view.exposure.automatic() ? DEFAULT_EXPOSURE : view.exposure.factor());
         return new Scene(null, size, camera, light, shapeSpec, material, DisplayMode.SURFACE, StageSpec.none());
     }
 
@@ -309,11 +320,30 @@ final class ViewerOptions {
      */
     SceneSetup setup(Scene.ImageSize defaultSize, Reporter reporter) {
         SceneSetup s = Fabricator.fabricate(scene(defaultSize), reporter);
-        if (!brdf.auto()) {
-            return s;
+        if (brdf.auto()) {
+            AutoChoice choice = AutoVariant.choose(s.patch(), s.light().phiDeg(), s.settings(), brdf.maxDeltaE,
+                    reporter);
+            System.out.println(choice.explanation());
+            s = s.withSettings(AutoVariant.settings(choice, s.settings().taylor().expansion()));
         }
-        AutoChoice choice = AutoVariant.choose(s.patch(), s.light().phiDeg(), s.settings(), brdf.maxDeltaE, reporter);
-        System.out.println(choice.explanation());
-        return s.withSettings(AutoVariant.settings(choice, s.settings().taylor().expansion()));
+        if (exposureAuto()) {
+            Scene.ImageSize size = imageSize(defaultSize);
+            StructuralProbe probe = StructuralProbe.of(s, size.width(), size.height(), reporter);
+            double exposure = probe.autoExposure(s.exposure());
+            reporter.info(String.format(java.util.Locale.ROOT, "auto exposure %.4g (the scene's %.4g)%s", exposure,
+                    s.exposure(), probe.brightY() > 0 ? "" : ": no structural colour to expose, the scene's kept"));
+            s = s.withExposure(exposure);
+        }
+        return s;
+    }
+
+    /** What the scene shows (validate() first). */
+    Scene.ShapeKind shapeKind() {
+        return parsedScene != null ? parsedScene.shape().kind() : surface.shape;
+    }
+
+    /** Whether --exposure auto was given: the exposure that maps the picture's bright structural colour to 1. */
+    boolean exposureAuto() {
+        return given("--exposure") && view.exposure.automatic();
     }
 }
