@@ -337,6 +337,30 @@ final class ViewerOptions {
         return s;
     }
 
+    /**
+     * {@code current} with another shape, as the viewer's frame switches it: the snake is the shipped viewer snake's
+     * scene (its scales, pigment and camera) with the current settings; a sphere, plane or cylinder the options' shape
+     * under the current light, the orbit camera's start, no pigment and no stage.
+     */
+    Scene withShape(Scene current, Scene.ShapeKind kind) {
+        Scene.MaterialSpec m = current.material();
+        if (kind == Scene.ShapeKind.SNAKE) {
+            Scene snake = ShippedScenes.load(ShippedScenes.VIEWER_SNAKE);
+            Scene.MaterialSpec s = snake.material();
+            return snake.withMaterial(new Scene.MaterialSpec(m.patch(), m.settings(), null, s.pigmentation(),
+                    s.pigmentationOn(), s.diffuseWeight(), s.exposure()));
+        }
+        double[] eye = new OrbitCamera(0, 20, 3.5, 0, 0, 0).eye();
+        Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
+                SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
+        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(kind, null, TangentSource.projected(1, 0, 0),
+                SnakeMesh.RidgeDirection.ALONG_BODY, Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
+        Scene.MaterialSpec material = new Scene.MaterialSpec(m.patch(), m.settings(), null,
+                Scene.PigmentationSpec.none(), false, m.diffuseWeight(), m.exposure());
+        return new Scene(null, current.image(), camera, current.light(), shapeSpec, material, current.mode(),
+                StageSpec.none());
+    }
+
     /** What the scene shows (validate() first). */
     Scene.ShapeKind shapeKind() {
         return parsedScene != null ? parsedScene.shape().kind() : surface.shape;

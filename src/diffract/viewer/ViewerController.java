@@ -6,6 +6,8 @@ import com.jogamp.newt.event.MouseAdapter;
 import com.jogamp.newt.event.MouseEvent;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightPolicy;
+import diffract.optics.LightProfile;
+import diffract.scene.LightDirection;
 import diffract.optics.TaylorSettings;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
@@ -142,6 +144,96 @@ public final class ViewerController implements AutoCloseable {
             return;
         }
         updateView(v -> v.withPigmentationOn(!v.pigmentationOn()));
+    }
+
+    // ---- the frame's controls: each sets one value, as the keys change one; settings a method refuses are said
+
+    /** The light at (theta_i, phi_i) in degrees (theta_i kept within LightDirection's range). */
+    public void setLight(double thetaDeg, double phiDeg) {
+        updateView(v -> v.withLight(new LightDirection(thetaDeg, phiDeg)));
+    }
+
+    /** N; more terms than at hand start a background precompute. */
+    public void setTaylorOrder(int n) {
+        changeSettings(b -> b.highestOrder(n)).ifPresent(precomputer::ensureTermsFor);
+    }
+
+    public void setLambdaStep(double stepNm) {
+        changeSettings(b -> b.lambdaStepNm(stepNm));
+    }
+
+    public void setCoherenceLength(double um) {
+        changeSettings(b -> b.coherenceLengthUm(um));
+    }
+
+    /** The light's angular diameter; a method that cannot take it draws a point light and says so. */
+    public void setLightSize(double diameterDeg) {
+        changeSettings(b -> b.lightSizeDeg(diameterDeg)).ifPresent(this::noticeLightPolicy);
+    }
+
+    public void setLightProfile(LightProfile profile) {
+        changeSettings(b -> b.lightProfile(profile));
+    }
+
+    /** The window radius R, or with {@code radius} null the automatic one. */
+    public void setWindowRadius(Integer radius) {
+        changeSettings(b -> {
+            if (radius == null) {
+                b.automaticWindowRadius(true);
+            } else {
+                b.automaticWindowRadius(false).windowRadius(radius);
+            }
+        });
+    }
+
+    public void setExposure(double exposure) {
+        if (exposure > 0 && Double.isFinite(exposure)) {
+            updateView(v -> v.withExposure(exposure));
+        }
+    }
+
+    public void setPigmentation(boolean on) {
+        if (on && model.pigmentationImage().isEmpty()) {
+            togglePigmentation(); // says there is none
+            return;
+        }
+        updateView(v -> v.withPigmentationOn(on));
+    }
+
+    public void setMode(DisplayMode mode) {
+        updateView(v -> v.withMode(mode));
+    }
+
+    /** An A/B split of the picture ({@code null}: off); B's light as the light policy draws it, said. */
+    public void setSplit(ViewerState.Split split) {
+        updateView(v -> v.withSplit(split));
+        if (split != null) {
+            LightPolicy.of(split.other()).notice().ifPresent(text -> model.update(s -> s.withNotice(
+                    Notice.forSeconds("B: " + text, NOTICE_SECONDS))));
+        }
+    }
+
+    /** Moves the split's divider (a fraction of the picture's width); nothing without a split. */
+    public void setSplitDivider(double divider) {
+        updateView(v -> v.split() == null ? v : v.withSplit(v.split().withDivider(divider)));
+    }
+
+    /**
+     * The settings changed by {@code change}: the new state, or empty with a notice when the settings refuse the value
+     * (its range, said as the settings say it).
+     */
+    private java.util.Optional<ViewerState> changeSettings(java.util.function.Consumer<BrdfSettings.Builder> change) {
+        try {
+            return java.util.Optional.of(model.update(s -> s.withSettings(s.settings().with(change))));
+        } catch (diffract.optics.InvalidSettingException | IllegalArgumentException e) {
+            model.update(s -> s.withNotice(Notice.forSeconds(e.getMessage(), NOTICE_SECONDS)));
+            return java.util.Optional.empty();
+        }
+    }
+
+    private void noticeLightPolicy(ViewerState state) {
+        LightPolicy.of(state.settings()).notice().ifPresent(text -> model.update(s -> s.withNotice(
+                Notice.forSeconds(text, NOTICE_SECONDS))));
     }
 
     public void reset() {
