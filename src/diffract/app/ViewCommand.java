@@ -45,8 +45,7 @@ final class ViewCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        // interactive: the baked table of the lobes method (one lookup per pixel, baked behind the preview)
-        options.defaultVariant(Methods.Role.TABLE.method());
+        defaults(options);
         options.validate();
         if (options.dumpedScene(WINDOW)) {
             return 0;
@@ -89,6 +88,16 @@ final class ViewCommand implements Callable<Integer> {
             frame.awaitCloseRequest();
         }
         return 0;
+    }
+
+    /**
+     * What {@code view} shows when the options do not say: the baked table of the lobes method (one lookup per pixel,
+     * baked behind the preview), and a shape without a scene under the first look's soft light
+     * ({@link ViewerOptions#firstLook}).
+     */
+    static void defaults(ViewerOptions options) {
+        options.defaultVariant(Methods.Role.TABLE.method());
+        options.firstLook();
     }
 
     /**

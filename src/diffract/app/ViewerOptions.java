@@ -278,7 +278,8 @@ final class ViewerOptions {
      */
     private Scene optionsScene(Scene.ImageSize size) {
         double phi = view.phiIDeg != null ? view.phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
-        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, view.distance, 0, 0, 0).eye();
+        double distance = given("--distance") ? view.distance : defaultDistance;
+        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, distance, 0, 0, 0).eye();
         Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
                 SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
         Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(view.thetaIDeg, phi)), "D65");
@@ -286,7 +287,7 @@ final class ViewerOptions {
                 SnakeMesh.RidgeDirection.ALONG_BODY, Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
         Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null,
                 Scene.PigmentationSpec.none(), false, surface.diffuseWeight,
-                view.exposure.automatic() ? DEFAULT_EXPOSURE : view.exposure.factor());
+                given("--exposure") && !view.exposure.automatic() ? view.exposure.factor() : defaultExposure);
         return new Scene(null, size, camera, light, shapeSpec, material, DisplayMode.SURFACE, StageSpec.none());
     }
 
@@ -296,8 +297,33 @@ final class ViewerOptions {
      * degrees), each pixel its footprint's average, the Fresnel term counted once.
      */
     BrdfSettings defaults() {
-        return BrdfSettings.thesis(defaultVariant).with(b -> b.lightSizeDeg(LightSource.SUN_DEG)
+        return BrdfSettings.thesis(defaultVariant).with(b -> b.lightSizeDeg(defaultLightDeg)
                 .pixelFilter(PixelFilter.BOX));
+    }
+
+    /** The light's size, the camera's distance and the exposure of a shape without a scene, where none is given. */
+    private double defaultLightDeg = LightSource.SUN_DEG;
+    private double defaultDistance = DEFAULT_DISTANCE;
+    private double defaultExposure = DEFAULT_EXPOSURE;
+
+    /** The camera's distance of a shape without a scene. */
+    static final double DEFAULT_DISTANCE = 3.5;
+    /** The viewer's first look: a soft light beside the camera (as the staged scenes' key light), in degrees. */
+    static final double FIRST_LOOK_LIGHT_DEG = 15;
+    /** ... the camera closer, the sphere filling most of the window. */
+    static final double FIRST_LOOK_DISTANCE = 2.3;
+    /** ... and the exposure that shows its orders unclipped (auto's choice, 1.9e3, rounded down). */
+    static final double FIRST_LOOK_EXPOSURE = 1600;
+
+    /**
+     * {@code view}'s first look at a shape without a scene, where the options do not say otherwise: under the sun a
+     * grating's orders are as thin as the sun, and the sphere showed 0.5 % of its window in saturated structural
+     * colour; under a 15-degree soft light, closer, 5.9 % (docs/viewer.md). Before {@link #validate}.
+     */
+    void firstLook() {
+        defaultLightDeg = FIRST_LOOK_LIGHT_DEG;
+        defaultDistance = FIRST_LOOK_DISTANCE;
+        defaultExposure = FIRST_LOOK_EXPOSURE;
     }
 
     /** The variant when none is given: {@link Variant#LOBES} unless the command says otherwise. */

@@ -394,6 +394,16 @@ public final class RefiningRenderer implements GLEventListener {
         if (r != null && r.frame != null && r.frame.tilesDrawn() > 0) {
             r.frame.blitDrawnPart(gl, r.framebuffer, target, windowWidth, windowHeight);
         }
+        ViewerState.Split split = r != null ? r.state.view().split() : null;
+        if (split != null) {
+            // the A/B divider: a column of light grey across the window
+            int x = (int) Math.round(split.divider() * windowWidth);
+            gl.glEnable(GL.GL_SCISSOR_TEST);
+            gl.glScissor(Math.max(0, Math.min(windowWidth - 1, x)), 0, 1, windowHeight);
+            gl.glClearColor(0.8f, 0.8f, 0.8f, 1f);
+            gl.glClear(GL.GL_COLOR_BUFFER_BIT);
+            gl.glDisable(GL.GL_SCISSOR_TEST);
+        }
     }
 
     /** Reads the picture just shown (the back buffer, before the swap) for the waiting read-backs. */

@@ -322,18 +322,35 @@ public final class ViewerController implements AutoCloseable {
         return true;
     }
 
-    /** Left drag orbits, right drag moves the light, the wheel zooms (queued, as keys are). */
+    /** How near the A/B split's divider a left drag takes it instead of orbiting, in window pixels. */
+    static final int DIVIDER_GRAB_PX = 6;
+
+    /** The width of the window an event came from (0 when it is not a window's). */
+    private static int widthOf(MouseEvent e) {
+        return e.getSource() instanceof com.jogamp.newt.Window w ? w.getSurfaceWidth() : 0;
+    }
+
+    /**
+     * Left drag orbits (or, started on an A/B split's divider, moves it), right drag moves the light, the wheel zooms
+     * (queued, as keys are).
+     */
     public MouseAdapter mouseListener() {
         return new MouseAdapter() {
             private int lastX;
             private int lastY;
             private short button;
 
+            private boolean onDivider;
+
             @Override
             public void mousePressed(MouseEvent e) {
                 lastX = e.getX();
                 lastY = e.getY();
                 button = e.getButton();
+                int width = widthOf(e);
+                ViewerState.Split split = model.state().view().split();
+                onDivider = button == MouseEvent.BUTTON1 && split != null && width > 0
+                        && Math.abs(e.getX() - split.divider() * width) <= DIVIDER_GRAB_PX;
             }
 
             @Override
@@ -342,7 +359,11 @@ public final class ViewerController implements AutoCloseable {
                 int dy = e.getY() - lastY;
                 lastX = e.getX();
                 lastY = e.getY();
-                if (button == MouseEvent.BUTTON3) {
+                int width = widthOf(e);
+                if (onDivider && width > 0) {
+                    double divider = e.getX() / (double) width;
+                    queue(c -> c.setSplitDivider(divider));
+                } else if (button == MouseEvent.BUTTON3) {
                     queue(c -> c.moveLightByPixels(dx, dy));
                 } else {
                     queue(c -> c.orbitByPixels(dx, dy));

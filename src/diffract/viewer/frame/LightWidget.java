@@ -147,7 +147,7 @@ public final class LightWidget extends JComponent {
                 g.drawOval(at[0] - ring, at[1] - ring, 2 * ring, 2 * ring);
             }
             g.setColor(getForeground());
-            g.drawString(String.format(Locale.ROOT, "theta_i %.0f, phi_i %.0f; camera %.0f, %.0f", light.thetaDeg(),
+            g.drawString(String.format(Locale.ROOT, "light %.0f, %.0f; camera %.0f, %.0f", light.thetaDeg(),
                     light.phiDeg(), theta, phi < 0 ? phi + 360 : phi), 2, getHeight() - 3);
         }
         g.dispose();

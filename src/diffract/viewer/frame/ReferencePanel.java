@@ -115,7 +115,7 @@ public final class ReferencePanel extends JPanel {
         state = s;
         boolean wide = s.settings().illumination().light().angularDiameterDeg() > LightSource.SUN_DEG + 1e-9;
         compare.setEnabled(!busy && !wide);
-        reason.setText(wide ? "<html><body style='width:250px'>the CPU reference under a "
+        reason.setText(wide ? "<html><body style='width:230px'>the CPU reference under a "
                 + SettingsPanel.number(s.settings().illumination().light().angularDiameterDeg()) + "-degree light "
                 + "takes hours to days: compare under the sun (light size 0.53)</body></html>" : " ");
         Comparison c = last;
@@ -141,7 +141,7 @@ public final class ReferencePanel extends JPanel {
                 last = c;
                 SwingUtilities.invokeLater(() -> show(c));
             } catch (RuntimeException e) {
-                SwingUtilities.invokeLater(() -> numbers.setText("<html><body style='width:250px'>the comparison "
+                SwingUtilities.invokeLater(() -> numbers.setText("<html><body style='width:230px'>the comparison "
                         + "failed: " + e.getMessage() + "</body></html>"));
             } finally {
                 busy = false;

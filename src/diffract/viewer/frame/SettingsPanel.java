@@ -86,7 +86,7 @@ public final class SettingsPanel extends JPanel {
     private long changedAtMillis;
     static final long QUIET_MS = 2000;
 
-    /** A control, its name, and the reason it is disabled (empty when enabled). */
+    /** A control, its label (which shows a slider's value), and the reason it is disabled (empty when enabled). */
     private record Row(JComponent control, JLabel value, JLabel reason) {
     }
 
@@ -122,39 +122,35 @@ public final class SettingsPanel extends JPanel {
         c.gridx = 0;
         c.anchor = GridBagConstraints.WEST;
         c.insets = new Insets(2, 2, 0, 4);
-        add(new JLabel(name), c);
+        JLabel label = new JLabel(name);
+        add(label, c);
         c.gridx = 1;
         c.fill = GridBagConstraints.HORIZONTAL;
         c.weightx = 1;
         add(control, c);
-        JLabel value = new JLabel("");
-        value.setPreferredSize(new Dimension(44, value.getPreferredSize().height));
-        c.gridx = 2;
-        c.weightx = 0;
-        c.fill = GridBagConstraints.NONE;
-        add(value, c);
         JLabel reason = new JLabel("");
         reason.setFont(reason.getFont().deriveFont(Font.PLAIN, 10f));
         reason.setForeground(new Color(150, 70, 40));
         reason.setVisible(false);
         c.gridy = row + 1;
         c.gridx = 0;
-        c.gridwidth = 3;
+        c.gridwidth = 2;
         c.insets = new Insets(0, 6, 2, 2);
         add(reason, c);
-        rows.put(name, new Row(control, value, reason));
+        rows.put(name, new Row(control, label, reason));
     }
 
     private static JComboBox<String> combo(String[] items) {
         JComboBox<String> c = new JComboBox<>(items);
         c.setFocusable(false); // the keys stay with the view
+        c.setPrototypeDisplayValue("coherence");
         return c;
     }
 
     private static JSlider slider(int min, int max) {
         JSlider s = new JSlider(min, max, min);
         s.setFocusable(false);
-        s.setPreferredSize(new Dimension(110, s.getPreferredSize().height));
+        s.setPreferredSize(new Dimension(100, s.getPreferredSize().height));
         return s;
     }
 
@@ -327,7 +323,7 @@ public final class SettingsPanel extends JPanel {
             Variant v = b.variant();
             method.setSelectedItem(v.label());
             terms.setValue(b.taylor().highestOrder());
-            rows.get("N").value().setText(Integer.toString(b.taylor().highestOrder()));
+            rows.get("N").value().setText("N = " + b.taylor().highestOrder());
             select(lambdaStep, LAMBDA_STEPS_NM, b.spectral().lambdaStepNm());
             select(coherence, COHERENCE_UM, 4 * b.illumination().sigmaSpatialUm());
             double size = b.illumination().light().angularDiameterDeg();
@@ -335,7 +331,7 @@ public final class SettingsPanel extends JPanel {
             profile.setSelectedItem(b.illumination().light().profile().label());
             window.setSelectedItem(b.window().automatic() ? "auto" : Integer.toString(b.window().radius()));
             exposure.setValue(sliderOf(s.view().exposure()));
-            rows.get("exposure").value().setText(String.format(Locale.ROOT, "%.3g", s.view().exposure()));
+            rows.get("exposure").value().setText(String.format(Locale.ROOT, "exposure %.3g", s.view().exposure()));
             pigment.setSelected(s.view().pigmentationOn());
             brdfMap.setSelected(s.view().mode() == DisplayMode.BRDF_MAP);
             shape.setSelectedItem(scene.shape().kind().sceneName());
@@ -372,7 +368,7 @@ public final class SettingsPanel extends JPanel {
     }
 
     private static void showReason(Row row, String reason) {
-        row.reason().setText(reason.isEmpty() ? "" : "<html><body style='width:250px'>" + reason + "</body></html>");
+        row.reason().setText(reason.isEmpty() ? "" : "<html><body style='width:230px'>" + reason + "</body></html>");
         row.reason().setVisible(!reason.isEmpty());
         row.control().setToolTipText(reason.isEmpty() ? null : reason);
     }
@@ -419,7 +415,8 @@ public final class SettingsPanel extends JPanel {
         public Component getListCellRendererComponent(JList<?> list, Object value, int index, boolean selected,
                                                       boolean focused) {
             Component c = super.getListCellRendererComponent(list, value, index, selected, focused);
-            if (value instanceof String label && refusal(Variant.parse(label)).isPresent()) {
+            if (value instanceof String label && Arrays.asList(methodLabels()).contains(label)
+                    && refusal(Variant.parse(label)).isPresent()) {
                 c.setForeground(Color.GRAY);
             }
             return c;

@@ -142,7 +142,7 @@ public final class ViewerFrame implements AutoCloseable {
             left.add(c);
         }
         left.add(javax.swing.Box.createVerticalGlue());
-        JPanel side = new JPanel();
+        JPanel side = new WidthTracking();
         side.setLayout(new BoxLayout(side, BoxLayout.Y_AXIS));
         for (JComponent c : List.of(settings, reference)) {
             c.setAlignmentX(Component.LEFT_ALIGNMENT);
@@ -520,6 +520,34 @@ public final class ViewerFrame implements AutoCloseable {
             Thread.currentThread().interrupt();
         } catch (java.lang.reflect.InvocationTargetException e) {
             throw e.getCause() instanceof RuntimeException r ? r : new IllegalStateException(e.getCause());
+        }
+    }
+
+    /** A panel as wide as its scroll pane's viewport (its rows wrap rather than run out of sight), scrolled up and down. */
+    static final class WidthTracking extends JPanel implements javax.swing.Scrollable {
+        @Override
+        public Dimension getPreferredScrollableViewportSize() {
+            return getPreferredSize();
+        }
+
+        @Override
+        public int getScrollableUnitIncrement(Rectangle visible, int orientation, int direction) {
+            return 16;
+        }
+
+        @Override
+        public int getScrollableBlockIncrement(Rectangle visible, int orientation, int direction) {
+            return visible.height - 16;
+        }
+
+        @Override
+        public boolean getScrollableTracksViewportWidth() {
+            return true;
+        }
+
+        @Override
+        public boolean getScrollableTracksViewportHeight() {
+            return false;
         }
     }
 

@@ -234,6 +234,14 @@ class ViewerFrameTest {
                 left, right);
         assertEquals(0, left, "A's half is A's picture");
         assertTrue(right > 20, "B's half draws B: " + right);
+        // the divider dragged in the view, as the mouse does it
+        var mouse = frame.view().controller().mouseListener();
+        var glWindow = frame.view().window().glWindow();
+        int w = glWindow.getSurfaceWidth();
+        mouse.mousePressed(newtMouse(com.jogamp.newt.event.MouseEvent.EVENT_MOUSE_PRESSED, w / 2, 20));
+        mouse.mouseDragged(newtMouse(com.jogamp.newt.event.MouseEvent.EVENT_MOUSE_DRAGGED, w / 4, 20));
+        awaitState(() -> state().view().split() != null && Math.abs(state().view().split().divider() - (w / 4)
+                / (double) w) < 1e-9, "the divider dragged to a quarter");
         frame.view().controller().queue(c -> c.setSplit(null));
         frame.view().model().reset(null);
     }
@@ -346,6 +354,11 @@ class ViewerFrameTest {
         short code = KeyEvent.utf16ToVKey(key);
         frame.view().controller().keyListener().keyPressed(KeyEvent.create(KeyEvent.EVENT_KEY_PRESSED,
                 frame.view().window().glWindow(), System.currentTimeMillis(), 0, code, code, key));
+    }
+
+    static com.jogamp.newt.event.MouseEvent newtMouse(short type, int x, int y) {
+        return new com.jogamp.newt.event.MouseEvent(type, frame.view().window().glWindow(), System.currentTimeMillis(),
+                0, x, y, (short) 1, com.jogamp.newt.event.MouseEvent.BUTTON1, new float[] {0, 0, 0}, 1f);
     }
 
     /** Hands {@code file} to the frame's drop target as a drag and drop of files does. */
