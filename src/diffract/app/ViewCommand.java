@@ -70,6 +70,7 @@ final class ViewCommand implements Callable<Integer> {
         // the frame opens at once: the view shows a preview while it refines, and bakes a baked table in the background
         try (ViewerFrame frame = new ViewerFrame(scene, model, window.width(), window.height(), screenshotDir,
                 options::withShape, RecentFiles.user(), reporter)) {
+            reportFirstPicture(frame, reporter);
             if (screenshotWhenRefined) {
                 while (!frame.view().refinement().isRefined(frame.view().model().state())
                         && !frame.isCloseRequested()) {
@@ -88,6 +89,27 @@ final class ViewCommand implements Callable<Integer> {
             frame.awaitCloseRequest();
         }
         return 0;
+    }
+
+    /**
+     * Says, once, how long after the start of the process the view first showed a picture (a preview's pass, or the
+     * refined one): a daemon thread watches the refinement.
+     */
+    private static void reportFirstPicture(ViewerFrame frame, Reporter reporter) {
+        long startMillis = java.lang.management.ManagementFactory.getRuntimeMXBean().getStartTime();
+        Thread watcher = new Thread(() -> {
+            try {
+                while (frame.view() == null || frame.view().refinement().passesCompleted() == 0) {
+                    Thread.sleep(20);
+                }
+                reporter.info(String.format(java.util.Locale.ROOT, "first picture %.1f s after the start",
+                        (System.currentTimeMillis() - startMillis) / 1000.0));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "diffract-viewer-first-picture");
+        watcher.setDaemon(true);
+        watcher.start();
     }
 
     /**

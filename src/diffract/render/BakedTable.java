@@ -39,8 +39,17 @@ public final class BakedTable {
     private final Variant tabulated;
     private final long shortCells;
     private float[] rowSums;
-    /** The last table spread by a disc ({@link #discTable}): worked out once per light size, the last size kept. */
-    private DiscTable discTable;
+    /**
+     * The tables spread by a disc ({@link #discTable}), worked out once per light size: the last two sizes kept (an A/B
+     * split may draw two).
+     */
+    private final java.util.LinkedHashMap<Double, DiscTable> discTables = new java.util.LinkedHashMap<>(4, 0.75f,
+            true) {
+        @Override
+        protected boolean removeEldestEntry(java.util.Map.Entry<Double, DiscTable> eldest) {
+            return size() > 2;
+        }
+    };
 
     /**
      * @param tabulated  the method whose spectrum the samples hold: point samples, or cell and light averages where it
@@ -162,7 +171,7 @@ public final class BakedTable {
 
     /**
      * This (filtered) table spread by the disc of half-angle {@code halfAngleRad} ({@link DiscTable#of}), worked out
-     * on first use per light size; the last size's is kept.
+     * on first use per light size; the last two sizes' are kept.
      */
     public DiscTable discTable(double halfAngleRad) {
         return discTable(halfAngleRad, Reporter.SILENT);
@@ -170,10 +179,12 @@ public final class BakedTable {
 
     /** As {@link #discTable(double)}, the work's progress on {@code reporter}. */
     public synchronized DiscTable discTable(double halfAngleRad, Reporter reporter) {
-        if (discTable == null || discTable.halfAngleRad() != halfAngleRad) {
-            discTable = DiscTable.of(this, halfAngleRad, reporter);
+        DiscTable spread = discTables.get(halfAngleRad);
+        if (spread == null) {
+            spread = DiscTable.of(this, halfAngleRad, reporter);
+            discTables.put(halfAngleRad, spread);
         }
-        return discTable;
+        return spread;
     }
 
     /** Whether a surface drawn with {@code settings} reads this table spread by their disc ({@link DiscTable}). */
@@ -186,8 +197,7 @@ public final class BakedTable {
      * where it reads one ({@link #spreadsDisc}), else at once.
      */
     public synchronized boolean spreadReady(BrdfSettings settings) {
-        return !spreadsDisc(settings) || discTable != null
-                && discTable.halfAngleRad() == settings.illumination().light().halfAngleRad();
+        return !spreadsDisc(settings) || discTables.containsKey(settings.illumination().light().halfAngleRad());
     }
 
     /** Works out the spread a surface drawn with {@code settings} reads ({@link #spreadReady}), if any. */
