@@ -254,11 +254,13 @@ public final class RefiningRenderer implements GLEventListener {
     private void start(ViewerState state) {
         BrdfSettings configured = state.drawableSettings();
         BrdfSettings configuredB = state.drawableSplitSettings();
-        // a table in the disk cache loads in a fraction of a second: drawn at once, not previewed while it "bakes"
+        // a table in the disk cache loads in a fraction of a second: drawn at once, not previewed while it "bakes";
+        // before the window's first picture it loads in the background instead, behind the preview (a picture first)
+        boolean loadNow = shown != null;
         boolean waitingA = configured.variant().drawsTable() && !tableReady(state, configured)
-                && !baker.loadStored(state.terms(), configured);
+                && !(loadNow && baker.loadStored(state.terms(), configured));
         boolean waitingB = configuredB != null && configuredB.variant().drawsTable()
-                && !tableReady(state, configuredB) && !baker.loadStored(state.terms(), configuredB);
+                && !tableReady(state, configuredB) && !(loadNow && baker.loadStored(state.terms(), configuredB));
         boolean waiting = waitingA || waitingB;
         BrdfSettings preview = PreviewPolicy.settings(configured, !waitingA);
         BrdfSettings previewB = configuredB == null ? null : PreviewPolicy.settings(configuredB, !waitingB);

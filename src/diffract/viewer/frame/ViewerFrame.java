@@ -244,7 +244,9 @@ public final class ViewerFrame implements AutoCloseable {
         var state = v.model().state();
         settings.refresh(state, scene, shapeChange != null);
         lightWidget.refresh(state);
-        inset.refresh(state);
+        if (v.refinement().passesCompleted() > 0) {
+            inset.refresh(state); // after the view's first picture: its own draw would compete with it for the GL
+        }
         reference.refresh(state);
         status.refresh(state, v.refinement(), v.renderer().stats(), opening.isDone() ? null : "opening");
         if (v.isCloseRequested()) {
