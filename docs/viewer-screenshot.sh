@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Screenshot of the real viewer window (docs/images/viewer.png): `diffract view` opens its window on a private
-# Xvfb screen, draws, and saves what the window shows (glReadPixels, as the S key does) once the picture is refined.
+# Screenshots of the real viewer (docs/images/viewer.png, the GL view, and docs/images/viewer-frame.png, the whole
+# frame): `diffract view` opens its frame on a private Xvfb screen, draws, and once the picture is refined and the
+# BRDF-map inset drawn saves what the view shows (glReadPixels, as the S key does) and what the screen shows of the
+# frame.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$ROOT"
@@ -9,7 +11,8 @@ shots="$(mktemp -d)"
 trap 'rm -rf "$shots"' EXIT
 # DISPLAY is set by xvfb-run here, so the launcher does not start (or flag) a second, private Xvfb
 xvfb-run -a -s "-screen 0 1280x1024x24" ./diffract view --synthetic elaphe-like --shape sphere --theta-i 30 --phi-i 90 \
-    --elevation 25 --azimuth -20 --size 480x360 --screenshot-dir "$shots" --screenshot-when-refined >/dev/null
+    --elevation 25 --azimuth -20 --size 520x460 --screenshot-dir "$shots" --screenshot-when-refined >/dev/null
 mkdir -p docs/images
-mv "$(ls "$shots"/*.png | head -1)" docs/images/viewer.png
-echo "$ROOT/docs/images/viewer.png"
+mv "$(ls "$shots"/diffract-viewer-*.png | head -1)" docs/images/viewer.png
+mv "$shots/diffract-frame.png" docs/images/viewer-frame.png
+echo "$ROOT/docs/images/viewer.png $ROOT/docs/images/viewer-frame.png"

@@ -20,6 +20,9 @@ bool discOn = false; // false for lights other than the settings' disc (a stage'
 vec3 discWi;
 vec3 discWr;
 float discCentreGain;
+#ifdef DISC_TABLE
+#include "disc_table.glsl"
+#endif
 
 // The pixel at omega_r under the disc about omega_i (diffraction_main.glsl and surface_stage.glsl call it).
 void setDisc(vec3 wi, vec3 wr) {
@@ -170,6 +173,10 @@ vec3 discTableXyz(vec3 footprintTexels) {
         return vec3(0.0);
     }
     DiscRows d = discRows();
+#ifdef DISC_TABLE
+    // a wide disc on a surface: the table spread by it (disc_table.glsl)
+    return spreadDiscXyz(d.ellipse, d.centre, footprintTexels);
+#endif
     float texelsPerUv = tableTexelsPerUv();
     vec2 r = d.ellipse.r;
     float spreadR = sqrt(max(footprintTexels.x * r.x * r.x + 2.0 * footprintTexels.y * r.x * r.y

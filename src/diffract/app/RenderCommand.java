@@ -123,6 +123,9 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
                 } else {
                     ImageFiles.writePng(output, rgb, image.width(), image.height(), 3);
                 }
+                if (!options.exposureAuto()) {
+                    warnIfDark(rgb, linear, image, setup, model, reporter);
+                }
             }
             shortPixels.warnIfAny(reporter, frames == null ? "pixels of the frame" : "pixels of the frames",
                     target.info().renderer(), SHORT_PIXELS_REMEDY);
@@ -136,6 +139,59 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
                 setup.settings().variant().spec(), setup.settings().taylor().highestOrder(),
                 setup.settings().spectral().lambdaStepNm(), (System.nanoTime() - start) * 1e-9);
         return 0;
+    }
+
+    /**
+     * Says when the still's structural colour is black or dim, and what would show it ({@link DarkStillNotice}). A
+     * picture of the structural colour alone (no pigment shown, nothing staged) is read as it is; a staged one without
+     * pigment through its {@link StructuralProbe}; a picture that shows the skin's pigment is not black. An OpenEXR
+     * file is not exposed: only a picture without any diffracted light is worth a word there.
+     */
+    private void warnIfDark(float[] rgb, boolean linear, Scene.ImageSize image, SceneSetup setup, ViewerModel model,
+                            Reporter reporter) {
+        boolean map = setup.mode() == DisplayMode.BRDF_MAP;
+        boolean pigmentShown = !map && model.state().view().pigmentationOn() && setup.pigmentation() != null;
+        if (pigmentShown) {
+            return;
+        }
+        StructuralProbe probe;
+        if (map || !setup.stage().staged()) {
+            probe = StructuralProbe.of(linear ? rgb : decoded(rgb), map ? null : coveredMask(rgb), setup.exposure());
+        } else {
+            probe = StructuralProbe.of(setup, image.width(), image.height(), reporter);
+        }
+        DarkStillNotice.check(probe, setup, map ? null : options.shapeKind())
+                .filter(n -> !linear || !n.exposureHides())
+                .ifPresent(n -> {
+                    if (n.warning()) {
+                        reporter.warn(n.text());
+                    } else {
+                        reporter.info("note: " + n.text());
+                    }
+                });
+    }
+
+    /** Display-encoded sRGB back to linear. */
+    private static float[] decoded(float[] display) {
+        float[] out = new float[display.length];
+        for (int i = 0; i < out.length; i++) {
+            out[i] = (float) diffract.colour.Srgb.decode(Math.max(0, Math.min(1, display[i])));
+        }
+        return out;
+    }
+
+    /** The pixels that are not the background's clear colour, as a white-on-black mask. */
+    private static float[] coveredMask(float[] rgb) {
+        boolean[] covered = GpuSuite.covered(rgb);
+        float[] mask = new float[rgb.length];
+        for (int p = 0; p < covered.length; p++) {
+            if (covered[p]) {
+                mask[3 * p] = 1;
+                mask[3 * p + 1] = 1;
+                mask[3 * p + 2] = 1;
+            }
+        }
+        return mask;
     }
 
     @Override

@@ -9,7 +9,8 @@ import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import diffract.viewer.KeyBindings;
 import diffract.viewer.ViewerModel;
-import diffract.viewer.ViewerWindow;
+import diffract.viewer.frame.RecentFiles;
+import diffract.viewer.frame.ViewerFrame;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Model.CommandSpec;
@@ -44,8 +45,7 @@ final class ViewCommand implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        // interactive: the baked table of the lobes method (one lookup per pixel, baked behind the preview)
-        options.defaultVariant(Methods.Role.TABLE.method());
+        defaults(options);
         options.validate();
         if (options.dumpedScene(WINDOW)) {
             return 0;
@@ -61,21 +61,65 @@ final class ViewCommand implements Callable<Integer> {
         Reporter reporter = quiet.reporter();
         Scene.ImageSize window = options.imageSize(WINDOW);
         SceneSetup setup = options.setup(window, reporter);
+        Scene scene = options.scene(window);
+        if (setup.exposure() != scene.material().exposure()) {
+            scene = scene.withMaterial(scene.material().withExposure(setup.exposure())); // --exposure auto's choice
+        }
         ViewerModel model = ViewerModel.load(setup, reporter);
         System.out.print(KeyBindings.helpText());
-        // the window opens at once: it shows a preview while it refines, and bakes a baked table in the background
-        try (ViewerWindow viewer = new ViewerWindow(model, window.width(), window.height(), screenshotDir)) {
-            viewer.start();
+        // the frame opens at once: the view shows a preview while it refines, and bakes a baked table in the background
+        try (ViewerFrame frame = new ViewerFrame(scene, model, window.width(), window.height(), screenshotDir,
+                options::withShape, RecentFiles.user(), reporter)) {
+            reportFirstPicture(frame, reporter);
             if (screenshotWhenRefined) {
-                while (!viewer.refinement().isRefined(model.state()) && !viewer.isCloseRequested()) {
+                while (!frame.view().refinement().isRefined(frame.view().model().state())
+                        && !frame.isCloseRequested()) {
                     Thread.sleep(50);
                 }
-                viewer.controller().screenshot().get();
+                frame.view().controller().screenshot().get();
+                // the inset and the panels once their map is drawn, then the whole frame as the screen shows it
+                long until = System.nanoTime() + 120_000_000_000L;
+                while (!frame.inset().showsCurrent() && System.nanoTime() < until) {
+                    Thread.sleep(50);
+                }
+                Thread.sleep(2 * diffract.viewer.frame.ViewerFrame.refreshMs());
+                System.out.println("frame: " + frame.saveFrameScreenshot());
                 return 0;
             }
-            viewer.awaitCloseRequest();
+            frame.awaitCloseRequest();
         }
         return 0;
+    }
+
+    /**
+     * Says, once, how long after the start of the process the view first showed a picture (a preview's pass, or the
+     * refined one): a daemon thread watches the refinement.
+     */
+    private static void reportFirstPicture(ViewerFrame frame, Reporter reporter) {
+        long startMillis = java.lang.management.ManagementFactory.getRuntimeMXBean().getStartTime();
+        Thread watcher = new Thread(() -> {
+            try {
+                while (frame.view() == null || frame.view().refinement().passesCompleted() == 0) {
+                    Thread.sleep(20);
+                }
+                reporter.info(String.format(java.util.Locale.ROOT, "first picture %.1f s after the start",
+                        (System.currentTimeMillis() - startMillis) / 1000.0));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "diffract-viewer-first-picture");
+        watcher.setDaemon(true);
+        watcher.start();
+    }
+
+    /**
+     * What {@code view} shows when the options do not say: the baked table of the lobes method (one lookup per pixel,
+     * baked behind the preview), and a shape without a scene under the first look's soft light
+     * ({@link ViewerOptions#firstLook}).
+     */
+    static void defaults(ViewerOptions options) {
+        options.defaultVariant(Methods.Role.TABLE.method());
+        options.firstLook();
     }
 
     /**

@@ -98,13 +98,18 @@ final class ViewerOptions {
 
         @Option(names = "--distance", defaultValue = "3.5", paramLabel = "D") double distance = 3.5;
 
-        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E") double exposure = 400;
+        @Option(names = "--exposure", defaultValue = "400", paramLabel = "E|auto",
+                converter = OptionTypes.Exposure.Converter.class)
+        OptionTypes.Exposure exposure = new OptionTypes.Exposure(400.0);
 
         @Option(names = "--brdf-map") boolean brdfMap;
 
         @Option(names = "--size", paramLabel = "WxH", converter = OptionTypes.ImageSize.Converter.class)
         OptionTypes.ImageSize size;
     }
+
+    /** The exposure of a shape without a scene, and where --exposure auto starts. */
+    static final double DEFAULT_EXPOSURE = 400;
 
     /** The patch a command line without --patch or --synthetic shows. */
     static final String DEFAULT_PATCH = "elaphe-like";
@@ -237,7 +242,8 @@ final class ViewerOptions {
         return new SceneOverrides(given("--azimuth") ? view.azimuthDeg : null,
                 given("--elevation") ? view.elevationDeg : null, given("--distance") ? view.distance : null,
                 given("--theta-i") ? view.thetaIDeg : null, given("--phi-i") ? view.phiIDeg : null,
-                given("--exposure") ? view.exposure : null, given("--diffuse-weight") ? surface.diffuseWeight : null,
+                given("--exposure") && !view.exposure.automatic() ? view.exposure.factor() : null,
+                given("--diffuse-weight") ? surface.diffuseWeight : null,
                 surface.noPigmentation, view.brdfMap);
     }
 
@@ -252,6 +258,10 @@ final class ViewerOptions {
     boolean dumpedScene(Scene.ImageSize defaultSize) {
         if (!dumpScene) {
             return false;
+        }
+        if (exposureAuto()) {
+            throw new UserInputException("--dump-scene writes a scene of one exposure; --exposure auto measures the "
+                    + "picture: run without --dump-scene to see its choice (it says 'auto exposure E'), then give it");
         }
         if (brdf.auto()) {
             throw new UserInputException("--dump-scene writes a scene of one method; --variant auto chooses its "
@@ -268,14 +278,16 @@ final class ViewerOptions {
      */
     private Scene optionsScene(Scene.ImageSize size) {
         double phi = view.phiIDeg != null ? view.phiIDeg : patch.periodAzimuthDeg(DEFAULT_PATCH);
-        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, view.distance, 0, 0, 0).eye();
+        double distance = given("--distance") ? view.distance : defaultDistance;
+        double[] eye = new OrbitCamera(view.azimuthDeg, view.elevationDeg, distance, 0, 0, 0).eye();
         Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
                 SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
         Scene.LightSpec light = new Scene.LightSpec(vector(new LightDirection(view.thetaIDeg, phi)), "D65");
         Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(surface.shape, null, TangentSource.projected(1, 0, 0),
                 SnakeMesh.RidgeDirection.ALONG_BODY, Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
         Scene.MaterialSpec material = new Scene.MaterialSpec(patch.spec(DEFAULT_PATCH), defaults(), null,
-                Scene.PigmentationSpec.none(), false, surface.diffuseWeight, view.exposure);
+                Scene.PigmentationSpec.none(), false, surface.diffuseWeight,
+                given("--exposure") && !view.exposure.automatic() ? view.exposure.factor() : defaultExposure);
         return new Scene(null, size, camera, light, shapeSpec, material, DisplayMode.SURFACE, StageSpec.none());
     }
 
@@ -285,8 +297,33 @@ final class ViewerOptions {
      * degrees), each pixel its footprint's average, the Fresnel term counted once.
      */
     BrdfSettings defaults() {
-        return BrdfSettings.thesis(defaultVariant).with(b -> b.lightSizeDeg(LightSource.SUN_DEG)
+        return BrdfSettings.thesis(defaultVariant).with(b -> b.lightSizeDeg(defaultLightDeg)
                 .pixelFilter(PixelFilter.BOX));
+    }
+
+    /** The light's size, the camera's distance and the exposure of a shape without a scene, where none is given. */
+    private double defaultLightDeg = LightSource.SUN_DEG;
+    private double defaultDistance = DEFAULT_DISTANCE;
+    private double defaultExposure = DEFAULT_EXPOSURE;
+
+    /** The camera's distance of a shape without a scene. */
+    static final double DEFAULT_DISTANCE = 3.5;
+    /** The viewer's first look: a soft light beside the camera (as the staged scenes' key light), in degrees. */
+    static final double FIRST_LOOK_LIGHT_DEG = 15;
+    /** ... the camera closer, the sphere filling most of the window. */
+    static final double FIRST_LOOK_DISTANCE = 2.3;
+    /** ... and the exposure that shows its orders unclipped (auto's choice, 1.9e3, rounded down). */
+    static final double FIRST_LOOK_EXPOSURE = 1600;
+
+    /**
+     * {@code view}'s first look at a shape without a scene, where the options do not say otherwise: under the sun a
+     * grating's orders are as thin as the sun, and the sphere showed 0.5 % of its window in saturated structural
+     * colour; under a 15-degree soft light, closer, 5.9 % (docs/viewer.md). Before {@link #validate}.
+     */
+    void firstLook() {
+        defaultLightDeg = FIRST_LOOK_LIGHT_DEG;
+        defaultDistance = FIRST_LOOK_DISTANCE;
+        defaultExposure = FIRST_LOOK_EXPOSURE;
     }
 
     /** The variant when none is given: {@link Variant#LOBES} unless the command says otherwise. */
@@ -309,11 +346,54 @@ final class ViewerOptions {
      */
     SceneSetup setup(Scene.ImageSize defaultSize, Reporter reporter) {
         SceneSetup s = Fabricator.fabricate(scene(defaultSize), reporter);
-        if (!brdf.auto()) {
-            return s;
+        if (brdf.auto()) {
+            AutoChoice choice = AutoVariant.choose(s.patch(), s.light().phiDeg(), s.settings(), brdf.maxDeltaE,
+                    reporter);
+            System.out.println(choice.explanation());
+            s = s.withSettings(AutoVariant.settings(choice, s.settings().taylor().expansion()));
         }
-        AutoChoice choice = AutoVariant.choose(s.patch(), s.light().phiDeg(), s.settings(), brdf.maxDeltaE, reporter);
-        System.out.println(choice.explanation());
-        return s.withSettings(AutoVariant.settings(choice, s.settings().taylor().expansion()));
+        if (exposureAuto()) {
+            Scene.ImageSize size = imageSize(defaultSize);
+            StructuralProbe probe = StructuralProbe.of(s, size.width(), size.height(), reporter);
+            double exposure = probe.autoExposure(s.exposure());
+            reporter.info(String.format(java.util.Locale.ROOT, "auto exposure %.4g (the scene's %.4g)%s", exposure,
+                    s.exposure(), probe.brightY() > 0 ? "" : ": no structural colour to expose, the scene's kept"));
+            s = s.withExposure(exposure);
+        }
+        return s;
+    }
+
+    /**
+     * {@code current} with another shape, as the viewer's frame switches it: the snake is the shipped viewer snake's
+     * scene (its scales, pigment and camera) with the current settings; a sphere, plane or cylinder the options' shape
+     * under the current light, the orbit camera's start, no pigment and no stage.
+     */
+    Scene withShape(Scene current, Scene.ShapeKind kind) {
+        Scene.MaterialSpec m = current.material();
+        if (kind == Scene.ShapeKind.SNAKE) {
+            Scene snake = ShippedScenes.load(ShippedScenes.VIEWER_SNAKE);
+            Scene.MaterialSpec s = snake.material();
+            return snake.withMaterial(new Scene.MaterialSpec(m.patch(), m.settings(), null, s.pigmentation(),
+                    s.pigmentationOn(), s.diffuseWeight(), s.exposure()));
+        }
+        double[] eye = new OrbitCamera(0, 20, 3.5, 0, 0, 0).eye();
+        Scene.CameraSpec camera = new Scene.CameraSpec(eye, new double[3], new double[] {0, 1, 0},
+                SceneSetup.DEFAULT_VERTICAL_FOV_DEG);
+        Scene.ShapeSpec shapeSpec = new Scene.ShapeSpec(kind, null, TangentSource.projected(1, 0, 0),
+                SnakeMesh.RidgeDirection.ALONG_BODY, Scene.Transform.identity(), SnakeMesh.Pose.S_CURVE, null, null);
+        Scene.MaterialSpec material = new Scene.MaterialSpec(m.patch(), m.settings(), null,
+                Scene.PigmentationSpec.none(), false, m.diffuseWeight(), m.exposure());
+        return new Scene(null, current.image(), camera, current.light(), shapeSpec, material, current.mode(),
+                StageSpec.none());
+    }
+
+    /** What the scene shows (validate() first). */
+    Scene.ShapeKind shapeKind() {
+        return parsedScene != null ? parsedScene.shape().kind() : surface.shape;
+    }
+
+    /** Whether --exposure auto was given: the exposure that maps the picture's bright structural colour to 1. */
+    boolean exposureAuto() {
+        return given("--exposure") && view.exposure.automatic();
     }
 }

@@ -1,5 +1,6 @@
 package diffract.jrtr;
 
+import com.jogamp.newt.awt.NewtCanvasAWT;
 import com.jogamp.newt.opengl.GLWindow;
 import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
@@ -15,6 +16,8 @@ import com.jogamp.opengl.GLEventListener;
  */
 public final class OnscreenWindow implements AutoCloseable {
     private final GLWindow window;
+    /** The AWT component the window is drawn in when it lives inside a frame ({@link #embedded}), else null. */
+    private final NewtCanvasAWT canvas;
 
     /** Creates and shows the window; throws {@link diffract.util.UserInputException} when there is no display. */
     public OnscreenWindow(String title, int width, int height, GLEventListener listener) {
@@ -23,6 +26,28 @@ public final class OnscreenWindow implements AutoCloseable {
         window.setSize(width, height);
         window.addGLEventListener(listener);
         window.setVisible(true);
+        canvas = null;
+    }
+
+    private OnscreenWindow(GLEventListener listener, int width, int height) {
+        window = GLWindow.create(GLProfiles.capabilities());
+        window.addGLEventListener(listener);
+        canvas = new NewtCanvasAWT(window);
+        canvas.setPreferredSize(new java.awt.Dimension(width, height));
+        canvas.setMinimumSize(new java.awt.Dimension(64, 64));
+    }
+
+    /**
+     * A window drawn inside an AWT or Swing frame: add {@link #canvas()} to the frame (the window appears when the frame
+     * shows it). Input listeners attach to {@link #glWindow()} as for a window of its own; the caller drives drawing.
+     */
+    public static OnscreenWindow embedded(GLEventListener listener, int width, int height) {
+        return new OnscreenWindow(listener, width, height);
+    }
+
+    /** The AWT component of an {@link #embedded} window, else null. */
+    public NewtCanvasAWT canvas() {
+        return canvas;
     }
 
     /** The NEWT window, for input listeners and window settings. */
@@ -72,6 +97,10 @@ public final class OnscreenWindow implements AutoCloseable {
     /** Destroys the window; the listener's dispose frees its GPU objects. */
     @Override
     public void close() {
-        window.destroy();
+        if (canvas != null) {
+            canvas.destroy(); // detaches the NEWT window from the frame and destroys it
+        } else {
+            window.destroy();
+        }
     }
 }

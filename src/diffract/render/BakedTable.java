@@ -39,6 +39,17 @@ public final class BakedTable {
     private final Variant tabulated;
     private final long shortCells;
     private float[] rowSums;
+    /**
+     * The tables spread by a disc ({@link #discTable}), worked out once per light size: the last two sizes kept (an A/B
+     * split may draw two).
+     */
+    private final java.util.LinkedHashMap<Double, DiscTable> discTables = new java.util.LinkedHashMap<>(4, 0.75f,
+            true) {
+        @Override
+        protected boolean removeEldestEntry(java.util.Map.Entry<Double, DiscTable> eldest) {
+            return size() > 2;
+        }
+    };
 
     /**
      * @param tabulated  the method whose spectrum the samples hold: point samples, or cell and light averages where it
@@ -156,6 +167,44 @@ public final class BakedTable {
         }
         return new FloatTexture3D(grid.uvSamples(), grid.uvSamples(), grid.wSamples(), sums,
                 FloatTexture3D.Precision.FLOAT32, true);
+    }
+
+    /**
+     * This (filtered) table spread by the disc of half-angle {@code halfAngleRad} ({@link DiscTable#of}), worked out
+     * on first use per light size; the last two sizes' are kept.
+     */
+    public DiscTable discTable(double halfAngleRad) {
+        return discTable(halfAngleRad, Reporter.SILENT);
+    }
+
+    /** As {@link #discTable(double)}, the work's progress on {@code reporter}. */
+    public synchronized DiscTable discTable(double halfAngleRad, Reporter reporter) {
+        DiscTable spread = discTables.get(halfAngleRad);
+        if (spread == null) {
+            spread = DiscTable.of(this, halfAngleRad, reporter);
+            discTables.put(halfAngleRad, spread);
+        }
+        return spread;
+    }
+
+    /** Whether a surface drawn with {@code settings} reads this table spread by their disc ({@link DiscTable}). */
+    public boolean spreadsDisc(BrdfSettings settings) {
+        return filtered() && DiscTable.applies(settings, grid);
+    }
+
+    /**
+     * Whether a surface drawn with {@code settings} finds what it reads ready: the spread by their disc worked out
+     * where it reads one ({@link #spreadsDisc}), else at once.
+     */
+    public synchronized boolean spreadReady(BrdfSettings settings) {
+        return !spreadsDisc(settings) || discTables.containsKey(settings.illumination().light().halfAngleRad());
+    }
+
+    /** Works out the spread a surface drawn with {@code settings} reads ({@link #spreadReady}), if any. */
+    public void prepareSpread(BrdfSettings settings, Reporter reporter) {
+        if (spreadsDisc(settings)) {
+            discTable(settings.illumination().light().halfAngleRad(), reporter);
+        }
     }
 
     /** A new texture of the table for one GL context (the host values are shared, not copied). */

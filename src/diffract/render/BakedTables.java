@@ -245,6 +245,15 @@ public final class BakedTables {
     }
 
     /**
+     * Whether the table of these terms and settings is baked and cached, and what a surface drawn with them reads of
+     * it besides is ready ({@link BakedTable#spreadReady}: the spread by a wide disc); answers at once.
+     */
+    public synchronized boolean isReady(TaylorTerms terms, BrdfSettings settings) {
+        BakedTable table = inMemory.get(key(terms, settings));
+        return table != null && table.spreadReady(settings);
+    }
+
+    /**
      * The table is made on float32 terms before the gain factor, whatever variant, term format and Fresnel ask, and
      * with the light it holds ({@link BakedDisc#heldBy}: a point under a disc).
      */

@@ -34,7 +34,7 @@ public final class DiffractionMaterials {
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
         Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.BRDF_MAP,
                 monochromatic, false));
-        return mapWindow(common(m, textures, settings), settings);
+        return mapWindow(common(m, textures, settings, false), settings);
     }
 
     /**
@@ -45,7 +45,7 @@ public final class DiffractionMaterials {
     public static Material brdfMapForDisplay(DiffractionTextures textures, BrdfSettings settings, float exposure,
                                              FrameOutput output) {
         Material m = new Material(DiffractionShaders.displayBrdfMapProgram(settings, textures, output));
-        return mapWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
+        return mapWindow(common(m, textures, settings, false), settings).setFloat("exposure", exposure);
     }
 
     /**
@@ -62,7 +62,7 @@ public final class DiffractionMaterials {
                                    Texture2D pigmentation, float diffuseWeight, FrameOutput output) {
         Material m = new Material(DiffractionShaders.surfaceProgram(settings, textures, pigmentation != null,
                 output));
-        surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
+        surfaceWindow(common(m, textures, settings, true), settings).setFloat("exposure", exposure);
         if (pigmentation != null) {
             m.setTexture("pigmentation", pigmentation).setFloat("diffuseWeight", diffuseWeight);
         }
@@ -80,7 +80,7 @@ public final class DiffractionMaterials {
         boolean sky = DiffractionShaders.skyTableNeeded(settings, textures, stage);
         Material m = new Material(DiffractionShaders.stagedSurfaceProgram(settings, textures, pigmentation != null,
                 stage, table.isPresent(), sky, output));
-        surfaceWindow(common(m, textures, settings), settings).setFloat("exposure", exposure);
+        surfaceWindow(common(m, textures, settings, true), settings).setFloat("exposure", exposure);
         table.ifPresent(t -> filteredTable(m, t, t.texture(), settings));
         if (sky) {
             SkyTable spread = SkyTable.of(textures.baked(), stage.environment().lights(),
@@ -137,7 +137,7 @@ public final class DiffractionMaterials {
      */
     static Material bake(DiffractionTextures textures, BrdfSettings settings, BakedGrid grid) {
         Material m = new Material(DiffractionShaders.bakeProgram(settings, textures));
-        return common(m, textures, GpuMethods.of(settings.variant()).bakeSettings(settings))
+        return common(m, textures, GpuMethods.of(settings.variant()).bakeSettings(settings), false)
                 .setVec2("bakedSamples", grid.uvSamples(), grid.wSamples());
     }
 
@@ -179,12 +179,22 @@ public final class DiffractionMaterials {
 
     /**
      * The baked method's filtered table ({@link #filteredTable}) and, under a disc ({@code baked_disc.glsl}), the
-     * running sums of its rows and the disc's half-angle.
+     * disc's half-angle and either, on a surface under a wide disc, the table spread by the disc ({@link DiscTable})
+     * or the running sums of its rows.
      */
-    private static Material bakedFilteredTable(Material m, TableTextures tables, BrdfSettings settings) {
+    private static Material bakedFilteredTable(Material m, TableTextures tables, BrdfSettings settings,
+                                               boolean surface) {
         filteredTable(m, tables.baked(), tables.texture(), settings);
-        return BakedDisc.integrates(settings, true) ? m.setTexture("bakedRowSums", tables.rowSums())
-                .setFloat("lightHalfAngleRad", (float) settings.illumination().light().halfAngleRad()) : m;
+        if (!BakedDisc.integrates(settings, true)) {
+            return m;
+        }
+        double halfAngleRad = settings.illumination().light().halfAngleRad();
+        m.setFloat("lightHalfAngleRad", (float) halfAngleRad);
+        if (surface && DiscTable.applies(settings, tables.baked().grid())) {
+            return m.setTexture("discTable", tables.discTable(halfAngleRad)).setFloat("discTableSide",
+                    tables.discTableSide(halfAngleRad));
+        }
+        return m.setTexture("bakedRowSums", tables.rowSums());
     }
 
     /**
@@ -192,12 +202,12 @@ public final class DiffractionMaterials {
      * ({@link GpuMethod}: its window, wavelengths and tables), the terms or the baked table, and the shared ones of
      * {@code diffraction_common.glsl}.
      */
-    private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings) {
+    private static Material common(Material m, DiffractionTextures textures, BrdfSettings settings, boolean surface) {
         GpuMethods.of(settings.variant()).setUniforms(m, textures, settings);
         if (textures.baked() != null) {
             // the baked lookup reads its table only: the terms stay on the CPU (they were used by the bake)
             if (textures.baked().filtered()) {
-                bakedFilteredTable(m, textures.tables(), settings)
+                bakedFilteredTable(m, textures.tables(), settings, surface)
                         .setFloat("pixelFootprintScale", pixelFootprintScale(settings));
             } else {
                 BakedGrid grid = textures.baked().grid();

@@ -243,6 +243,18 @@ public final class DiffractionShaders {
                 defines.put("DISC_BOX_NODE_TEXELS", Float.toString((float) BakedDisc.BOX_NODE_TEXELS));
                 defines.put("DISC_PIECE_UV", Float.toString((float) Math.sin(Math.toRadians(
                         BakedDisc.PIECE_WIDTH_DEG))));
+                if (!mapPixel && DiscTable.applies(settings, textures.baked().grid())) {
+                    // a wide disc on a surface: the table spread by the disc (disc_table.glsl)
+                    double[] cos = DiscTable.memberCos();
+                    StringBuilder members = new StringBuilder("float[" + cos.length + "](");
+                    for (int k = 0; k < cos.length; k++) {
+                        members.append(k > 0 ? ", " : "").append(Float.toString((float) cos[k]));
+                    }
+                    defines.put("DISC_TABLE", "1");
+                    defines.put("DISC_TABLE_MEMBERS", Integer.toString(cos.length));
+                    defines.put("DISC_TABLE_COS", members.append(')').toString());
+                    defines.put("DISC_TABLE_BLEND", Float.toString((float) DiscTable.BLEND_FRACTION));
+                }
             }
         }
         GpuMethods.of(settings.variant()).addDefines(defines, settings, mapPixel);

@@ -5,7 +5,9 @@ import diffract.jrtr.Texture;
 import diffract.util.Reporter;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.function.Function;
 
@@ -17,7 +19,8 @@ import java.util.function.Function;
  * <ul>
  *   <li>{@code bakedXyz}: a table of FLSS, XYZ(u, v, w) trilinear ({@link BakedTable}), or {@code bakedLayers}, the
  *       mip-mapped table of the lobes method;</li>
- *   <li>{@code bakedRowSums}: the running sums of that table's rows ({@link BakedDisc}), for a disc light.</li>
+ *   <li>{@code bakedRowSums}: the running sums of that table's rows ({@link BakedDisc}), for a disc light;</li>
+ *   <li>{@code discTable}: that table spread by a wide disc light ({@link DiscTable}), one per light size drawn.</li>
  * </ul>
  */
 public final class TableTextures {
@@ -26,6 +29,7 @@ public final class TableTextures {
     private final Function<Reporter, BakedTable> lobesTableSource;
     private FloatTexture3D texture;
     private FloatTexture3D rowSums;
+    private final Map<Double, FloatTexture3D> discTables = new LinkedHashMap<>();
 
     TableTextures(BakedTable baked, Function<Reporter, BakedTable> lobesTableSource) {
         this.baked = baked;
@@ -53,9 +57,22 @@ public final class TableTextures {
         return rowSums;
     }
 
+    /**
+     * The baked table spread by the disc of half-angle {@code halfAngleRad} ({@link BakedTable#discTable}), made on
+     * first use per light size.
+     */
+    public synchronized FloatTexture3D discTable(double halfAngleRad) {
+        return discTables.computeIfAbsent(halfAngleRad, r -> baked.discTable(r).texture());
+    }
+
+    /** The (u, v) samples per axis of {@link #discTable}. */
+    public int discTableSide(double halfAngleRad) {
+        return discTable(halfAngleRad).width();
+    }
+
     /** The textures made so far, which their owner releases with these tables. */
     public synchronized List<Texture> made() {
-        List<Texture> made = new ArrayList<>();
+        List<Texture> made = new ArrayList<>(discTables.values());
         if (texture != null) {
             made.add(texture);
         }

@@ -125,5 +125,9 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
         public MaterialSpec withSettings(BrdfSettings s) {
             return new MaterialSpec(patch, s, orderTolerance, pigmentation, pigmentationOn, diffuseWeight, exposure);
         }
+
+        public MaterialSpec withExposure(double e) {
+            return new MaterialSpec(patch, settings, orderTolerance, pigmentation, pigmentationOn, diffuseWeight, e);
+        }
     }
 }

@@ -78,6 +78,12 @@ public record SceneSetup(DiffractionPipeline pipeline, Shape shape, BufferedImag
                 pigmentationOn, verticalFovDeg, stage);
     }
 
+    /** The same setup shown at another exposure (the structural colour's gain). */
+    public SceneSetup withExposure(double e) {
+        return new SceneSetup(pipeline, shape, pigmentation, diffuseWeight, settings, camera, light, e, mode,
+                pigmentationOn, verticalFovDeg, stage);
+    }
+
     /** The same setup on another stage. */
     public SceneSetup withStage(Stage newStage) {
         return new SceneSetup(pipeline, shape, pigmentation, diffuseWeight, settings, camera, light, exposure, mode,

@@ -60,7 +60,8 @@ public final class KeyBindings {
     }
 
     public static final List<Binding> ALL = List.of(
-            new Binding("left drag", "orbit the camera (the shading follows it)", "drag orbit", List.of()),
+            new Binding("left drag", "orbit the camera (the shading follows it); on the A/B divider, move it", "drag orbit",
+                    List.of()),
             new Binding("wheel", "zoom", "wheel zoom", List.of()),
             new Binding("right drag", "move the light (theta_i up/down, phi_i left/right)", "right-drag light", List.of()),
             variantKeys(),

@@ -76,8 +76,8 @@ public final class RefiningRenderer implements GLEventListener {
         }
     }
 
-    /** What a draw's cost depends on besides its size. */
-    private record CostKey(BrdfSettings settings, DisplayMode mode, boolean pigmentation) {
+    /** What a draw's cost depends on besides its size (the split's right part's settings, or null). */
+    private record CostKey(BrdfSettings settings, BrdfSettings splitSettings, DisplayMode mode, boolean pigmentation) {
     }
 
     /** A refinement of one state: its passes, the one under way and its tiles. */
@@ -88,6 +88,8 @@ public final class RefiningRenderer implements GLEventListener {
         final boolean waitingForTable;
         final List<Pass> passes = new ArrayList<>();
         final List<BrdfSettings> settings = new ArrayList<>();
+        /** Per pass, the settings of an A/B split's right part, or nulls without a split. */
+        final List<BrdfSettings> splitSettings = new ArrayList<>();
         int first;
         int index;
         TiledFrame frame;
@@ -251,24 +253,35 @@ public final class RefiningRenderer implements GLEventListener {
 
     private void start(ViewerState state) {
         BrdfSettings configured = state.drawableSettings();
-        // a table in the disk cache loads in a fraction of a second: drawn at once, not previewed while it "bakes"
-        boolean waiting = configured.variant().drawsTable() && !tableReady(state)
-                && !baker.loadStored(state.terms(), configured);
-        BrdfSettings preview = PreviewPolicy.settings(configured, !waiting);
+        BrdfSettings configuredB = state.drawableSplitSettings();
+        // a table in the disk cache loads in a fraction of a second: drawn at once, not previewed while it "bakes";
+        // before the window's first picture it loads in the background instead, behind the preview (a picture first)
+        boolean loadNow = shown != null;
+        boolean waitingA = configured.variant().drawsTable() && !tableReady(state, configured)
+                && !(loadNow && baker.loadStored(state.terms(), configured));
+        boolean waitingB = configuredB != null && configuredB.variant().drawsTable()
+                && !tableReady(state, configuredB) && !(loadNow && baker.loadStored(state.terms(), configuredB));
+        boolean waiting = waitingA || waitingB;
+        BrdfSettings preview = PreviewPolicy.settings(configured, !waitingA);
+        BrdfSettings previewB = configuredB == null ? null : PreviewPolicy.settings(configuredB, !waitingB);
         Refinement r = new Refinement(state, waiting);
         for (Pass pass : LADDER) {
             Pass drawn = waiting ? new Pass(Quality.PREVIEW, pass.divisor()) : pass;
             // the same quality at the same size once is enough (a preview that is the configured settings)
             BrdfSettings settings = drawn.quality() == Quality.PREVIEW ? preview : configured;
-            boolean twice = !r.passes.isEmpty() && r.passes.get(r.passes.size() - 1).divisor() == drawn.divisor()
-                    && r.settings.get(r.settings.size() - 1).equals(settings);
+            BrdfSettings settingsB = drawn.quality() == Quality.PREVIEW ? previewB : configuredB;
+            int last = r.passes.size() - 1;
+            boolean twice = last >= 0 && r.passes.get(last).divisor() == drawn.divisor()
+                    && r.settings.get(last).equals(settings)
+                    && java.util.Objects.equals(r.splitSettings.get(last), settingsB);
             if (!twice) {
                 r.passes.add(drawn);
                 r.settings.add(settings);
+                r.splitSettings.add(settingsB);
             }
         }
         for (int i = r.passes.size() - 1; i > 0; i--) {
-            TiledFrame.Cost cost = costs.get(costKey(state, r.settings.get(i)));
+            TiledFrame.Cost cost = costs.get(costKey(state, r.settings.get(i), r.splitSettings.get(i)));
             int divisor = r.passes.get(i).divisor();
             if (cost != null && cost.frameMs(size(windowWidth, divisor), size(windowHeight, divisor), TILE_MS)
                     <= START_BUDGET_MS) {
@@ -277,8 +290,10 @@ public final class RefiningRenderer implements GLEventListener {
                 break;
             }
         }
-        if (waiting) {
+        if (waitingA) {
             baker.ensureBaked(state.terms(), configured);
+        } else if (waitingB) {
+            baker.ensureBaked(state.terms(), configuredB);
         }
         if (refinement != null && refinement.framebuffer != null) {
             spareFramebuffers.add(refinement.framebuffer);
@@ -289,7 +304,8 @@ public final class RefiningRenderer implements GLEventListener {
 
     private void drawTile(GL3 gl, Refinement r) {
         BrdfSettings settings = r.settings.get(r.index);
-        CostKey key = costKey(r.state, settings);
+        BrdfSettings settingsB = r.splitSettings.get(r.index);
+        CostKey key = costKey(r.state, settings, settingsB);
         if (r.frame == null) {
             int divisor = r.passes.get(r.index).divisor();
             r.frame = new TiledFrame(size(windowWidth, divisor), size(windowHeight, divisor), TILE_MS, profile(r, key));
@@ -300,13 +316,31 @@ public final class RefiningRenderer implements GLEventListener {
         if (frame.tilesDrawn() == 0) {
             // builds the material if new and draws the shadow map, then one pixel, for a software rasteriser
             // compiles a program at its first draw: none of this is the tiles' cost
-            renderer.prepareFrame(r.state, settings, frame.width(), frame.height());
-            renderer.displayTile(frame.width(), frame.height(), new PixelRect(0, frame.height() - 1, 1, 1));
+            for (BrdfSettings s : settingsB == null ? List.of(settings) : List.of(settingsB, settings)) {
+                renderer.prepareFrame(r.state, s, frame.width(), frame.height());
+                renderer.displayTile(frame.width(), frame.height(), new PixelRect(0, frame.height() - 1, 1, 1));
+            }
             gl.glFinish();
         }
         long start = System.nanoTime();
         PixelRect tile = frame.nextTile();
-        renderer.displayTile(frame.width(), frame.height(), tile);
+        if (settingsB == null) {
+            renderer.displayTile(frame.width(), frame.height(), tile);
+        } else {
+            // A left of the divider, B right of it: the tile's two parts, each with its own material
+            int divider = (int) Math.round(r.state.view().split().divider() * frame.width());
+            int leftWidth = Math.max(0, Math.min(tile.width(), divider - tile.x()));
+            PixelRect left = new PixelRect(tile.x(), tile.y(), leftWidth, tile.height());
+            PixelRect right = new PixelRect(tile.x() + leftWidth, tile.y(), tile.width() - leftWidth, tile.height());
+            if (!right.isEmpty()) {
+                renderer.prepareFrame(r.state, settingsB, frame.width(), frame.height());
+                renderer.displayTile(frame.width(), frame.height(), right);
+            }
+            renderer.prepareFrame(r.state, settings, frame.width(), frame.height());
+            if (!left.isEmpty()) {
+                renderer.displayTile(frame.width(), frame.height(), left);
+            }
+        }
         gl.glFinish(); // the tile's time includes the GPU's work, and no GL call is left running
         frame.tileDrawn(tile, (System.nanoTime() - start) / 1e6);
         if (frame.isComplete()) {
@@ -362,6 +396,16 @@ public final class RefiningRenderer implements GLEventListener {
         if (r != null && r.frame != null && r.frame.tilesDrawn() > 0) {
             r.frame.blitDrawnPart(gl, r.framebuffer, target, windowWidth, windowHeight);
         }
+        ViewerState.Split split = r != null ? r.state.view().split() : null;
+        if (split != null) {
+            // the A/B divider: a column of light grey across the window
+            int x = (int) Math.round(split.divider() * windowWidth);
+            gl.glEnable(GL.GL_SCISSOR_TEST);
+            gl.glScissor(Math.max(0, Math.min(windowWidth - 1, x)), 0, 1, windowHeight);
+            gl.glClearColor(0.8f, 0.8f, 0.8f, 1f);
+            gl.glClear(GL.GL_COLOR_BUFFER_BIT);
+            gl.glDisable(GL.GL_SCISSOR_TEST);
+        }
     }
 
     /** Reads the picture just shown (the back buffer, before the swap) for the waiting read-backs. */
@@ -397,8 +441,15 @@ public final class RefiningRenderer implements GLEventListener {
     }
 
     private boolean tableReady(ViewerState state) {
-        BrdfSettings s = state.drawableSettings();
-        return s.variant().drawsTable() && model.pipeline().tables().isBaked(state.terms(), s);
+        BrdfSettings a = state.drawableSettings();
+        BrdfSettings b = state.drawableSplitSettings();
+        boolean aReady = !a.variant().drawsTable() || tableReady(state, a);
+        boolean bReady = b == null || !b.variant().drawsTable() || tableReady(state, b);
+        return (a.variant().drawsTable() || b != null && b.variant().drawsTable()) && aReady && bReady;
+    }
+
+    private boolean tableReady(ViewerState state, BrdfSettings s) {
+        return s.variant().drawsTable() && model.pipeline().tables().isReady(state.terms(), s);
     }
 
     /**
@@ -417,8 +468,8 @@ public final class RefiningRenderer implements GLEventListener {
         return r.lastCost.scaledBy(ratio);
     }
 
-    private static CostKey costKey(ViewerState state, BrdfSettings settings) {
-        return new CostKey(settings, state.view().mode(), state.view().pigmentationOn());
+    private static CostKey costKey(ViewerState state, BrdfSettings settings, BrdfSettings splitSettings) {
+        return new CostKey(settings, splitSettings, state.view().mode(), state.view().pigmentationOn());
     }
 
     private static int size(int windowPx, int divisor) {

@@ -11,7 +11,9 @@ import java.util.concurrent.ExecutorService;
 
 /**
  * Bakes the baked variant's table in the background when the window needs one it has not got (a bake takes
- * minutes on a software rasteriser): the window shows the preview meanwhile, the title the bake's progress. The
+ * minutes on a software rasteriser), and spreads it by a wide disc light where the surface reads that
+ * ({@link diffract.render.DiscTable}, a second or two): the window shows the preview meanwhile, the title the
+ * progress. The
  * table goes into the pipeline's {@link BakedTables}, where the render thread finds it. One bake at a time; a request
  * during a bake is dropped, and the window asks again when the bake ends if it still needs another table. A table
  * in the disk cache is loaded on the asking thread instead ({@link #loadStored}): that takes a fraction of a second,
@@ -31,7 +33,7 @@ public final class TableBaker implements AutoCloseable {
 
     /** Starts baking the table of these terms and settings unless a bake is under way; returns at once. */
     public synchronized void ensureBaked(TaylorTerms terms, BrdfSettings settings) {
-        if (busy || model.pipeline().tables().isBaked(terms, settings)) {
+        if (busy || model.pipeline().tables().isReady(terms, settings)) {
             return;
         }
         busy = true;
@@ -44,7 +46,8 @@ public final class TableBaker implements AutoCloseable {
      * cache (a damaged entry is said as a notice, and then baked by {@link #ensureBaked}).
      */
     public boolean loadStored(TaylorTerms terms, BrdfSettings settings) {
-        return model.pipeline().tables().ofStored(terms, settings, new ProgressToModel()).isPresent();
+        return model.pipeline().tables().ofStored(terms, settings, new ProgressToModel()).isPresent()
+                && model.pipeline().tables().isReady(terms, settings);
     }
 
     /** Whether a bake is under way. */
@@ -54,7 +57,8 @@ public final class TableBaker implements AutoCloseable {
 
     private void bake(TaylorTerms terms, BrdfSettings settings) {
         try {
-            model.pipeline().tables().of(terms, settings, new ProgressToModel());
+            model.pipeline().tables().of(terms, settings, new ProgressToModel())
+                    .prepareSpread(settings, new ProgressToModel());
             model.update(s -> s.withBake(null));
         } catch (RuntimeException e) {
             // back to the fallback method, whose textures need no bake, so the window does not ask for the failing

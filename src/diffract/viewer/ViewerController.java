@@ -6,6 +6,8 @@ import com.jogamp.newt.event.MouseAdapter;
 import com.jogamp.newt.event.MouseEvent;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightPolicy;
+import diffract.optics.LightProfile;
+import diffract.scene.LightDirection;
 import diffract.optics.TaylorSettings;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
@@ -144,6 +146,96 @@ public final class ViewerController implements AutoCloseable {
         updateView(v -> v.withPigmentationOn(!v.pigmentationOn()));
     }
 
+    // ---- the frame's controls: each sets one value, as the keys change one; settings a method refuses are said
+
+    /** The light at (theta_i, phi_i) in degrees (theta_i kept within LightDirection's range). */
+    public void setLight(double thetaDeg, double phiDeg) {
+        updateView(v -> v.withLight(new LightDirection(thetaDeg, phiDeg)));
+    }
+
+    /** N; more terms than at hand start a background precompute. */
+    public void setTaylorOrder(int n) {
+        changeSettings(b -> b.highestOrder(n)).ifPresent(precomputer::ensureTermsFor);
+    }
+
+    public void setLambdaStep(double stepNm) {
+        changeSettings(b -> b.lambdaStepNm(stepNm));
+    }
+
+    public void setCoherenceLength(double um) {
+        changeSettings(b -> b.coherenceLengthUm(um));
+    }
+
+    /** The light's angular diameter; a method that cannot take it draws a point light and says so. */
+    public void setLightSize(double diameterDeg) {
+        changeSettings(b -> b.lightSizeDeg(diameterDeg)).ifPresent(this::noticeLightPolicy);
+    }
+
+    public void setLightProfile(LightProfile profile) {
+        changeSettings(b -> b.lightProfile(profile));
+    }
+
+    /** The window radius R, or with {@code radius} null the automatic one. */
+    public void setWindowRadius(Integer radius) {
+        changeSettings(b -> {
+            if (radius == null) {
+                b.automaticWindowRadius(true);
+            } else {
+                b.automaticWindowRadius(false).windowRadius(radius);
+            }
+        });
+    }
+
+    public void setExposure(double exposure) {
+        if (exposure > 0 && Double.isFinite(exposure)) {
+            updateView(v -> v.withExposure(exposure));
+        }
+    }
+
+    public void setPigmentation(boolean on) {
+        if (on && model.pigmentationImage().isEmpty()) {
+            togglePigmentation(); // says there is none
+            return;
+        }
+        updateView(v -> v.withPigmentationOn(on));
+    }
+
+    public void setMode(DisplayMode mode) {
+        updateView(v -> v.withMode(mode));
+    }
+
+    /** An A/B split of the picture ({@code null}: off); B's light as the light policy draws it, said. */
+    public void setSplit(ViewerState.Split split) {
+        updateView(v -> v.withSplit(split));
+        if (split != null) {
+            LightPolicy.of(split.other()).notice().ifPresent(text -> model.update(s -> s.withNotice(
+                    Notice.forSeconds("B: " + text, NOTICE_SECONDS))));
+        }
+    }
+
+    /** Moves the split's divider (a fraction of the picture's width); nothing without a split. */
+    public void setSplitDivider(double divider) {
+        updateView(v -> v.split() == null ? v : v.withSplit(v.split().withDivider(divider)));
+    }
+
+    /**
+     * The settings changed by {@code change}: the new state, or empty with a notice when the settings refuse the value
+     * (its range, said as the settings say it).
+     */
+    private java.util.Optional<ViewerState> changeSettings(java.util.function.Consumer<BrdfSettings.Builder> change) {
+        try {
+            return java.util.Optional.of(model.update(s -> s.withSettings(s.settings().with(change))));
+        } catch (diffract.optics.InvalidSettingException | IllegalArgumentException e) {
+            model.update(s -> s.withNotice(Notice.forSeconds(e.getMessage(), NOTICE_SECONDS)));
+            return java.util.Optional.empty();
+        }
+    }
+
+    private void noticeLightPolicy(ViewerState state) {
+        LightPolicy.of(state.settings()).notice().ifPresent(text -> model.update(s -> s.withNotice(
+                Notice.forSeconds(text, NOTICE_SECONDS))));
+    }
+
     public void reset() {
         model.reset(Notice.forSeconds("reset", 2));
     }
@@ -230,18 +322,35 @@ public final class ViewerController implements AutoCloseable {
         return true;
     }
 
-    /** Left drag orbits, right drag moves the light, the wheel zooms (queued, as keys are). */
+    /** How near the A/B split's divider a left drag takes it instead of orbiting, in window pixels. */
+    static final int DIVIDER_GRAB_PX = 6;
+
+    /** The width of the window an event came from (0 when it is not a window's). */
+    private static int widthOf(MouseEvent e) {
+        return e.getSource() instanceof com.jogamp.newt.Window w ? w.getSurfaceWidth() : 0;
+    }
+
+    /**
+     * Left drag orbits (or, started on an A/B split's divider, moves it), right drag moves the light, the wheel zooms
+     * (queued, as keys are).
+     */
     public MouseAdapter mouseListener() {
         return new MouseAdapter() {
             private int lastX;
             private int lastY;
             private short button;
 
+            private boolean onDivider;
+
             @Override
             public void mousePressed(MouseEvent e) {
                 lastX = e.getX();
                 lastY = e.getY();
                 button = e.getButton();
+                int width = widthOf(e);
+                ViewerState.Split split = model.state().view().split();
+                onDivider = button == MouseEvent.BUTTON1 && split != null && width > 0
+                        && Math.abs(e.getX() - split.divider() * width) <= DIVIDER_GRAB_PX;
             }
 
             @Override
@@ -250,7 +359,11 @@ public final class ViewerController implements AutoCloseable {
                 int dy = e.getY() - lastY;
                 lastX = e.getX();
                 lastY = e.getY();
-                if (button == MouseEvent.BUTTON3) {
+                int width = widthOf(e);
+                if (onDivider && width > 0) {
+                    double divider = e.getX() / (double) width;
+                    queue(c -> c.setSplitDivider(divider));
+                } else if (button == MouseEvent.BUTTON3) {
                     queue(c -> c.moveLightByPixels(dx, dy));
                 } else {
                     queue(c -> c.orbitByPixels(dx, dy));

@@ -25,13 +25,13 @@ import java.util.Objects;
  * textures, its program's defines (variant, N, window radius, pigmentation) or its uniforms from the settings
  * change. Per-frame values (light, exposure, map placement) are plain uniform updates. A few of each are kept, the
  * least recently used freed beyond that: the window alternates between a preview's settings and the configured
- * ones ({@link PreviewPolicy}), and neither is rebuilt when it comes back. Used on the render thread only.
+ * ones ({@link PreviewPolicy}), and between the two sides of an A/B split, and none is rebuilt when it comes back. Used on the render thread only.
  */
 final class ViewerMaterials {
-    /** Sets of term textures kept: the preview's and the configured settings'. */
-    static final int KEPT_TEXTURES = 2;
-    /** Materials kept: the preview's and the configured settings', each for a surface and a BRDF map. */
-    static final int KEPT_MATERIALS = 4;
+    /** Sets of term textures kept: the preview's and the configured settings', of each side of an A/B split. */
+    static final int KEPT_TEXTURES = 4;
+    /** Materials kept: the preview's and the configured settings', each for a surface and a BRDF map, per side. */
+    static final int KEPT_MATERIALS = 8;
 
     /** What the term and wavelength textures are made of; terms compared by identity (they are immutable). */
     private record TexturesKey(TaylorTerms terms, BrdfSettings textureSettings) {

@@ -72,14 +72,16 @@ public final class ViewerModel {
     }
 
     /**
-     * Bakes the BAKED table of the current state now, on the calling thread, if the state draws the baked variant:
+     * Bakes the BAKED table of the current state now, on the calling thread, if the state draws the baked variant
+     * (and spreads it by a wide disc light, {@link diffract.render.DiscTable}):
      * the table is then in the pipeline's {@link diffract.render.BakedTables} when an offscreen frame asks for it, and its
      * progress shows on the console (the viewer's window bakes in the background instead, {@link TableBaker}).
      */
     public void bakeIfNeeded(Reporter reporter) {
         ViewerState s = state();
         if (s.drawableSettings().variant().drawsTable()) {
-            pipeline().tables().of(s.terms(), s.drawableSettings(), reporter);
+            pipeline().tables().of(s.terms(), s.drawableSettings(), reporter)
+                    .prepareSpread(s.drawableSettings(), reporter);
         }
     }
 

@@ -23,24 +23,70 @@ import java.util.Objects;
  */
 public record ViewerState(BrdfSettings settings, View view, TaylorTerms terms, PrecomputeProgress precompute,
                           BakeProgress bake, Notice notice) {
-    /** How the user looks at the patch: the orbit camera, the light, the exposure, the mode, the pigmentation. */
+    /**
+     * How the user looks at the patch: the orbit camera, the light, the exposure, the mode, the pigmentation, and an
+     * A/B split ({@code null}: the whole picture drawn with the settings).
+     */
     public record View(OrbitCamera camera, LightDirection light, double exposure, DisplayMode mode,
-                       boolean pigmentationOn) {
+                       boolean pigmentationOn, Split split) {
         public View {
             Objects.requireNonNull(camera, "camera");
             Objects.requireNonNull(light, "light");
             Objects.requireNonNull(mode, "mode");
         }
 
-        public View withCamera(OrbitCamera c) { return new View(c, light, exposure, mode, pigmentationOn); }
+        public View(OrbitCamera camera, LightDirection light, double exposure, DisplayMode mode,
+                    boolean pigmentationOn) {
+            this(camera, light, exposure, mode, pigmentationOn, null);
+        }
 
-        public View withLight(LightDirection l) { return new View(camera, l, exposure, mode, pigmentationOn); }
+        public View withCamera(OrbitCamera c) { return new View(c, light, exposure, mode, pigmentationOn, split); }
 
-        public View withExposure(double e) { return new View(camera, light, e, mode, pigmentationOn); }
+        public View withLight(LightDirection l) { return new View(camera, l, exposure, mode, pigmentationOn, split); }
 
-        public View withMode(DisplayMode m) { return new View(camera, light, exposure, m, pigmentationOn); }
+        public View withExposure(double e) { return new View(camera, light, e, mode, pigmentationOn, split); }
 
-        public View withPigmentationOn(boolean on) { return new View(camera, light, exposure, mode, on); }
+        public View withMode(DisplayMode m) { return new View(camera, light, exposure, m, pigmentationOn, split); }
+
+        public View withPigmentationOn(boolean on) { return new View(camera, light, exposure, mode, on, split); }
+
+        public View withSplit(Split s) { return new View(camera, light, exposure, mode, pigmentationOn, s); }
+    }
+
+    /**
+     * An A/B split of the picture: left of the divider the state's settings (A), right of it {@code other} (B), the
+     * same view; each drawn through the same refinement.
+     *
+     * @param other   the settings of the right part
+     * @param divider where the parts meet, as a fraction of the picture's width, in [0, 1]
+     */
+    public record Split(BrdfSettings other, double divider) {
+        public Split {
+            Objects.requireNonNull(other, "other");
+            divider = Math.max(0, Math.min(1, divider));
+        }
+
+        public Split withDivider(double d) {
+            return new Split(other, d);
+        }
+
+        public Split withOther(BrdfSettings o) {
+            return new Split(o, divider);
+        }
+    }
+
+    /**
+     * What the shaders can draw now of the split's settings B ({@link #drawableSettings} for them); null without a
+     * split.
+     */
+    public BrdfSettings drawableSplitSettings() {
+        if (view.split() == null) {
+            return null;
+        }
+        BrdfSettings other = view.split().other();
+        BrdfSettings withTerms = other.taylor().highestOrder() <= terms.highestOrder() ? other
+                : other.with(b -> b.highestOrder(terms.highestOrder()));
+        return LightPolicy.of(withTerms).usable();
     }
 
     public ViewerState {

@@ -53,28 +53,43 @@ public final class ViewerWindow implements AutoCloseable {
     private final Thread renderLoop = new Thread(this::renderLoop, "diffract-viewer-render");
     private volatile boolean stopping;
     private volatile String shownTitle = "";
+    /** Where the title line goes when the window is embedded in a frame, else null (the window's own title). */
+    private final java.util.function.Consumer<String> titleSink;
 
     /** Opens the window (drawing starts with {@link #start}); throws UserInputException when there is no display. */
     public ViewerWindow(ViewerModel model, int widthPx, int heightPx, Path screenshotDir) {
+        this(model, widthPx, heightPx, screenshotDir, null);
+    }
+
+    /**
+     * With {@code titleSink} null, a window of its own (as above); else a window to embed in a frame
+     * ({@link #window()}{@code .canvas()}), whose title line goes to {@code titleSink} (called on the title's timer).
+     */
+    public ViewerWindow(ViewerModel model, int widthPx, int heightPx, Path screenshotDir,
+                        java.util.function.Consumer<String> titleSink) {
         this.model = model;
         this.screenshotDir = screenshotDir;
+        this.titleSink = titleSink;
         this.renderer = new ViewerRenderer(model);
         this.baker = new TableBaker(model);
         this.refiner = new RefiningRenderer(model, renderer, baker);
         refiner.drawOn(renderLoop);
-        this.window = new OnscreenWindow("diffract viewer", widthPx, heightPx, refiner);
+        this.window = titleSink == null ? new OnscreenWindow("diffract viewer", widthPx, heightPx, refiner)
+                : OnscreenWindow.embedded(refiner, widthPx, heightPx);
         this.precomputer = new TermPrecomputer(model);
         this.controller = new ViewerController(model, precomputer, this::saveScreenshot, closeRequested::countDown);
         window.glWindow().addKeyListener(controller.keyListener());
         window.glWindow().addMouseListener(controller.mouseListener());
-        // the close button only asks to quit: the window is destroyed by close(), after the render loop stopped
-        window.glWindow().setDefaultCloseOperation(WindowClosingProtocol.WindowClosingMode.DO_NOTHING_ON_CLOSE);
-        window.glWindow().addWindowListener(new WindowAdapter() {
-            @Override
-            public void windowDestroyNotify(WindowEvent e) {
-                closeRequested.countDown();
-            }
-        });
+        if (titleSink == null) {
+            // the close button only asks to quit: the window is destroyed by close(), after the render loop stopped
+            window.glWindow().setDefaultCloseOperation(WindowClosingProtocol.WindowClosingMode.DO_NOTHING_ON_CLOSE);
+            window.glWindow().addWindowListener(new WindowAdapter() {
+                @Override
+                public void windowDestroyNotify(WindowEvent e) {
+                    closeRequested.countDown();
+                }
+            });
+        }
         renderLoop.setDaemon(true);
     }
 
@@ -125,6 +140,15 @@ public final class ViewerWindow implements AutoCloseable {
         return renderer;
     }
 
+    public ViewerModel model() {
+        return model;
+    }
+
+    /** The background bake of the baked table (the frame's status bar reads whether one is under way). */
+    public TableBaker baker() {
+        return baker;
+    }
+
     /** Holds the last pass of each refinement after its first tile ({@link RefiningRenderer#holdLastPass}): tests. */
     void holdLastPass(boolean hold) {
         refiner.holdLastPass(hold);
@@ -148,7 +172,11 @@ public final class ViewerWindow implements AutoCloseable {
         try {
             String title = ViewerTitle.of(model, model.state(), renderer.stats(), refiner.status(), System.nanoTime());
             if (!title.equals(shownTitle)) {
-                window.setTitle(title);
+                if (titleSink != null) {
+                    titleSink.accept(title);
+                } else {
+                    window.setTitle(title);
+                }
                 shownTitle = title;
             }
         } catch (RuntimeException e) {

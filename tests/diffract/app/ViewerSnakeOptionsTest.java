@@ -124,7 +124,7 @@ class ViewerSnakeOptionsTest {
     private static Scene viewScene(String... args) {
         ViewCommand command = new ViewCommand();
         new CommandLine(command).parseArgs(args);
-        command.options.defaultVariant(diffract.optics.Variant.BAKED);
+        ViewCommand.defaults(command.options);
         command.options.validate();
         return command.options.scene(new Scene.ImageSize(800, 600));
     }
