@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The fast path against Maxwell's equations (docs/rigorous.md): runs RigorousMeasurement (64 x 64 maps of the
+# The fast path against Maxwell's equations (docs/rigorous.md): runs GainModelsMeasurement (the cheap gains against
+# the rigorous orders) and RigorousMeasurement (64 x 64 maps of the
 # Elaphe-like and Xenopeltis-like ridges and of the blazed grating under the sun's disc at 0 and 30 degrees: the lobes
 # method with Rayleigh-Rice's gain, with Stam's and with the rigorous orders, each against the rigorous method) with an
 # empty cache of rigorous orders, so the times include the solves and the tables; times brdfmap's GPU path with the
@@ -9,8 +10,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 out=docs/rigorous-measurements.md
 rm -rf target/test-cache/rigorous-orders target/test-cache/order-corrections target/test-reports/rigorous
-rm -f target/test-reports/RigorousMeasurement.txt
-mvn -B -ntp -q test -Dtest=RigorousMeasurement -Ddiffract.measure=rigorous
+rm -f target/test-reports/RigorousMeasurement.txt target/test-reports/GainModelsMeasurement.txt
+mvn -B -ntp -q test -Dtest='GainModelsMeasurement,RigorousMeasurement' -Ddiffract.measure=rigorous
 mkdir -p docs/images
 cp target/test-reports/rigorous/rigorous-*.png docs/images/
 # the GPU's map with the rigorous orders, after the table is in the user's cache (the first run solves it)
@@ -19,7 +20,7 @@ cp target/test-reports/rigorous/rigorous-*.png docs/images/
 ./diffract brdfmap --patch elaphe-ridge --theta-i 30 --size 64 --engine gpu -o out/rigorous-gpu-scalar.png \
     --exposure auto --time > out/rigorous-gpu-scalar.txt 2>&1 || { cat out/rigorous-gpu-scalar.txt; exit 1; }
 {
-    echo "# The lobes method's orders against Maxwell's equations"
+    echo "# The scalar model's gain and the lobes method's orders against Maxwell's equations"
     echo
     echo "Made by \`bash docs/rigorous.sh\` (\`RigorousMeasurement\`): 64 x 64 BRDF maps under the sun's disc (0.53"
     echo "degrees, pixel boxes, 380-780 nm, n = 1.56), the light at 0 and 30 degrees in the plane of the period, at the"
@@ -29,19 +30,36 @@ cp target/test-reports/rigorous/rigorous-*.png docs/images/
     echo "patch with the rigorous orders solves its table (21 wavelengths x the light's directions), which the disk"
     echo "cache keeps for every later map, scene and shader; the second theta_i shows the map alone."
     echo
-    echo "| patch | theta_i | rigorous map | lobes (Rayleigh-Rice) | lobes, Stam's gain | lobes, rigorous orders |"
-    echo "|---|---|---|---|---|---|"
+    echo "## The gain: the cheap corrections against the rigorous orders"
+    echo
+    echo "\`GainModelsMeasurement\`: keratin gratings lit at 0, 30 and 60 degrees, at 450, 550 and 650 nm; each order that"
+    echo "carries at least 5 % of the diffracted power, the scalar efficiency with each candidate gain against the"
+    echo "rigorous one (the Fourier modal method at the default resolution): worst and median relative error."
+    echo
+    echo "| relief | orders | Stam (Schlick, shadowing) | Stam, Fresnel's reflectance | Stam, Fresnel's, no shadowing | Rayleigh-Rice (the default) | Rayleigh-Rice, shadowing |"
+    echo "|---|---|---|---|---|---|---|"
+    perl -ne 'if (/^(.*?): (.*) \((\d+) orders\)/) { my ($r, $rest, $n) = ($1, $2, $3);
+        my @c = ($rest =~ /worst ([-+\d]+ %), median (\d+ %)/g); my @cells;
+        while (@c) { my $w = shift @c; my $m = shift @c; push @cells, "$w / $m"; }
+        print "| $r | $n | " . join(" | ", @cells) . " |\n"; }' target/test-reports/GainModelsMeasurement.txt
+    echo
+    echo "## The lobes method's orders against the rigorous map"
+    echo
+    echo "| patch | theta_i | rigorous map | lobes (Rayleigh-Rice) | lobes, Stam's gain | lobes, rigorous orders | rigorous orders vs scalar (lobes) |"
+    echo "|---|---|---|---|---|---|---|"
     perl -e '
         my (%rig, %m, @keys);
         while (<>) {
             if (/^(\S+), (\d+) deg, rigorous: ([\d.]+) s/) { push @keys, "$1|$2"; $rig{"$1|$2"} = $3; }
             elsif (/^(\S+), (\d+) deg, (.*?): lit mean ([\d.]+), p95 ([\d.]+) over (\d+) pixels, ([\d.]+) s/) {
                 $m{"$1|$2"}{$3} = "$4 / $5 ($7 s)"; }
+            elsif (/^(\S+), (\d+) deg, the rigorous orders against the scalar ones: lit mean ([\d.]+), p95 ([\d.]+)/) {
+                $m{"$1|$2"}{"change"} = "$3 / $4"; }
         }
         for my $k (@keys) {
             my ($p, $t) = split /\|/, $k;
-            printf "| %s | %s | %s s | %s | %s | %s |\n", $p, $t, $rig{$k}, $m{$k}{"lobes"},
-                $m{$k}{"lobes, Stam\x27s gain"}, $m{$k}{"lobes, rigorous orders"};
+            printf "| %s | %s | %s s | %s | %s | %s | %s |\n", $p, $t, $rig{$k}, $m{$k}{"lobes"},
+                $m{$k}{"lobes, Stam\x27s gain"}, $m{$k}{"lobes, rigorous orders"}, $m{$k}{"change"};
         }' target/test-reports/RigorousMeasurement.txt
     echo
     echo "CIEDE2000 lit mean / p95 (CPU seconds). The pictures: the rigorous map, the lobes method with the scalar"

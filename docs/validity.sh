@@ -2,7 +2,7 @@
 # Regenerates the validity map, docs/validity.md and docs/images/validity-*.png, and the table the commands' warnings
 # read, assets/validity/scalar-validity.csv, from the repository root: bash docs/validity.sh
 # 360 cases (3 relief shapes x 8 periods x 5 depths x 3 light angles), each a rigorous solve at 21 wavelengths and
-# three rows of BRDF maps; a few hours on 2 cores. The run writes out/validity/validity.csv after every case and reads
+# three rows of BRDF maps; about 70 minutes on 2 busy cores. The run writes out/validity/validity.csv after every case and reads
 # it back, so an interrupted run goes on where it stopped; the rigorous orders are also kept in the disk cache.
 set -euo pipefail
 cd "$(dirname "$0")/.."

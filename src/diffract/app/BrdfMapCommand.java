@@ -520,7 +520,15 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
      * equations, one line says how far (docs/validity.md) and the command that draws it rigorously: this map with
      * --variant rigorous for a 1-D patch, its ridges' cross-section for a 2-D one.
      */
+    /**
+     * One line where the scalar model is expected visibly off Maxwell's equations on this patch (docs/validity.md): the
+     * expected error, the rigorous command that would tell and, for the lobes method, the orders that close it. None
+     * where the lobes already take their orders from Maxwell's equations.
+     */
     private void warnWhereTheScalarModelFails(HeightField field, BrdfSettings settings, Reporter reporter) {
+        if (settings.rigorous().orders() == diffract.optics.OrderWeights.RIGOROUS) {
+            return;
+        }
         ScalarValidity.Estimate e = ScalarValidity.shipped().estimate(field, thetaIDeg,
                 settings.illumination().gain());
         if (!e.visible()) {
@@ -531,7 +539,9 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                         + " draws it from Maxwell's equations, diffract orders lists its orders"
                 : "the rigorous method solves 1-D patches, such as a snake patch's ridges alone: diffract orders "
                         + "--synthetic elaphe-ridge --theta-i " + number(thetaIDeg);
-        reporter.warn(e.describe() + ": " + how);
+        String fix = settings.variant().takesRigorousOrders() ? "; --orders rigorous takes the lobes' orders from "
+                + "Maxwell's equations (docs/rigorous.md)" : "";
+        reporter.warn(e.describe() + ": " + how + fix);
     }
 
     private static String number(double v) {

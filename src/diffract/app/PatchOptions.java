@@ -104,7 +104,7 @@ final class PatchOptions {
                     + (pixelSizeUm != null ? " --pixel-size " + pixelSizeUm : "") + (channel != null ? " --channel "
                     + channel : "");
         }
-        return synthetic != null ? "--synthetic " + synthetic : "";
+        return synthetic != null ? "--synthetic " + synthetic + parameters.describe() : "";
     }
 
     /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */

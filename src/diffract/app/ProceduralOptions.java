@@ -33,6 +33,26 @@ final class ProceduralOptions {
                 || seed != null || sizePx != null;
     }
 
+    /** The parameters given, as a user would give them again: " --period 1 --height 0.3", or "". */
+    String describe() {
+        StringBuilder b = new StringBuilder();
+        append(b, "--period", periodUm);
+        append(b, "--height", heightUm);
+        append(b, "--periods", periods);
+        append(b, "--samples-per-period", samplesPerPeriod);
+        append(b, "--rows", rows);
+        append(b, "--seed", seed);
+        append(b, "--size-px", sizePx);
+        return b.toString();
+    }
+
+    private static void append(StringBuilder b, String option, Number value) {
+        if (value != null) {
+            b.append(' ').append(option).append(' ').append(value instanceof Double d
+                    ? new java.math.BigDecimal(d.toString()).stripTrailingZeros().toPlainString() : value.toString());
+        }
+    }
+
     /** The named patch with the parameters given in place of its own. */
     ProceduralPatches.Spec spec(PatchCatalogue.Entry entry) {
         ProceduralPatches.Spec d = entry.spec();

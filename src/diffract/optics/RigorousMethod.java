@@ -65,6 +65,11 @@ final class RigorousMethod implements Variant {
     }
 
     @Override
+    public Optional<String> fieldRefusal(HeightField meanSubtracted) {
+        return RigorousPatch.of(meanSubtracted).refusal();
+    }
+
+    @Override
     public String toString() {
         return name();
     }

@@ -135,6 +135,14 @@ public interface Variant {
         return java.util.Optional.empty();
     }
 
+    /**
+     * Why it cannot draw the height field {@code meanSubtracted} at all, or empty when it can (every method but the
+     * rigorous one, which solves 1-D patches): for callers that offer a method only where it applies.
+     */
+    default java.util.Optional<String> fieldRefusal(HeightField meanSubtracted) {
+        return java.util.Optional.empty();
+    }
+
     /** {@link Capability#DRAWS_TABLE}. */
     default boolean drawsTable() {
         return capabilities().contains(Capability.DRAWS_TABLE);

@@ -1,6 +1,7 @@
 package diffract.scene;
 
 import diffract.jrtr.Shape;
+import diffract.optics.OrderWeights;
 import diffract.optics.ScalarValidity;
 import diffract.util.Reporter;
 
@@ -29,12 +30,17 @@ public final class Fabricator {
         double[] d = scene.light().towardsLight();
         double thetaDeg = Math.toDegrees(Math.acos(Math.max(-1, Math.min(1, d[2] / Math.sqrt(d[0] * d[0] + d[1] * d[1]
                 + d[2] * d[2])))));
+        if (material.settings().rigorous().orders() == OrderWeights.RIGOROUS) {
+            return; // the lobes take their orders from Maxwell's equations
+        }
         ScalarValidity.Estimate e = ScalarValidity.shipped().estimate(material.field(), Math.min(90, thetaDeg),
                 material.settings().illumination().gain());
         if (e.visible()) {
+            String fix = material.settings().variant().takesRigorousOrders() ? "; \"orders\": \"rigorous\" in the "
+                    + "material takes the lobes' orders from Maxwell's equations (docs/rigorous.md)" : "";
             reporter.warn(e.describe() + ": the rigorous method (diffract orders, diffract brdfmap with the variant "
                     + "rigorous) solves 1-D patches such as the snake patches' ridges alone, elaphe-ridge and "
-                    + "xenopeltis-ridge");
+                    + "xenopeltis-ridge" + fix);
         }
     }
 

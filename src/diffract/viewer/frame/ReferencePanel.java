@@ -11,7 +11,10 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.Direction;
 import diffract.optics.LightSource;
+import diffract.optics.HeightField;
 import diffract.optics.Methods;
+import diffract.optics.OrderWeights;
+import diffract.optics.Variant;
 import diffract.render.GpuBrdfMap;
 import diffract.scene.LightDirection;
 import diffract.util.DiskCache;
@@ -24,6 +27,7 @@ import javax.swing.BorderFactory;
 import javax.swing.BoxLayout;
 import javax.swing.ImageIcon;
 import javax.swing.JButton;
+import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JProgressBar;
@@ -42,8 +46,9 @@ import java.util.function.Supplier;
 
 /**
  * The view's method against the exact reference, on the BRDF map of the current light (what "users trade speed for
- * accuracy" asks to see): the method's map drawn on the GPU, the CPU reference of the same light and settings
- * ({@link Methods.Role#EXACT}, 1 nm), both at {@link #SIZE_PX} pixels, and the CIEDE2000 map between them at the view's
+ * accuracy" asks to see): the method's map drawn on the GPU, the CPU yardstick of the same light and settings, both at
+ * {@link #SIZE_PX} pixels: the scalar model's exact reference ({@link Methods.Role#EXACT}, 1 nm), or, on a 1-D patch,
+ * Maxwell's equations (the rigorous method, its orders solved every 5 nm; a 2-D patch disables it with the reason), and the CIEDE2000 map between them at the view's
  * exposure, with its mean and 95th percentile over the lit pixels (exposed Y above 1 % of white in either, as
  * {@code compare} counts). The reference is computed in the background with its progress and time left, and kept in
  * the disk cache ({@link DiskCache}, kind reference-maps), so a second look at the same light is at once. A light wider
@@ -62,7 +67,34 @@ public final class ReferencePanel extends JPanel {
 
     /** The compared maps and their difference. */
     public record Comparison(BrdfSettings method, LightDirection light, double exposure, float[] methodXyz,
-                             float[] referenceXyz, double[] deltaE, DeltaEStatistics statistics, double seconds) {
+                             float[] referenceXyz, double[] deltaE, DeltaEStatistics statistics, double seconds,
+                             Yardstick yardstick) {
+    }
+
+    /** What the method is measured against. */
+    public enum Yardstick {
+        /** The scalar model's exact reference. */
+        REFERENCE("the scalar reference"),
+        /** Maxwell's equations: the rigorous method (1-D patches). */
+        RIGOROUS("Maxwell's equations");
+
+        private final String label;
+
+        Yardstick(String label) {
+            this.label = label;
+        }
+
+        /** The yardstick's settings: the method's, drawn by its variant. */
+        BrdfSettings settings(BrdfSettings drawn) {
+            return this == REFERENCE ? drawn.with(b -> b.variant(Methods.Role.EXACT.method()).lambdaStepNm(1))
+                    : drawn.with(b -> b.variant(Variant.RIGOROUS).rigorous(drawn.rigorous()
+                            .withOrders(OrderWeights.SCALAR)));
+        }
+
+        @Override
+        public String toString() {
+            return label;
+        }
     }
 
     private final Supplier<ViewerWindow> view;
@@ -74,6 +106,10 @@ public final class ReferencePanel extends JPanel {
     private final JLabel error = picture();
     private final JLabel numbers = new JLabel(" ");
     private final JLabel reason = new JLabel(" ");
+    private final JComboBox<Yardstick> yardstick = new JComboBox<>(Yardstick.values());
+    /** The patch whose refusal of the rigorous method was last looked at, and that refusal ("" for none). */
+    private volatile HeightField refusedPatch;
+    private volatile String rigorousRefusal = "";
     private volatile ViewerState state;
     private volatile Comparison last;
     private volatile boolean busy;
@@ -84,13 +120,23 @@ public final class ReferencePanel extends JPanel {
         setBorder(BorderFactory.createTitledBorder("Against the reference (BRDF map)"));
         compare.setFocusable(false);
         compare.addActionListener(e -> start());
+        yardstick.setFocusable(false);
+        yardstick.setName("yardstick");
+        yardstick.addActionListener(e -> {
+            if (state != null) {
+                refresh(state);
+            }
+        });
         progress.setStringPainted(true);
         progress.setString("");
         JPanel pictures = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 2));
         pictures.add(captioned(method, "method"));
         pictures.add(captioned(reference, "reference"));
         pictures.add(captioned(error, "CIEDE2000"));
-        for (Component c : new Component[] {compare, progress, pictures, numbers, reason}) {
+        JPanel against = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
+        against.add(new JLabel("against"));
+        against.add(yardstick);
+        for (Component c : new Component[] {against, compare, progress, pictures, numbers, reason}) {
             ((javax.swing.JComponent) c).setAlignmentX(Component.LEFT_ALIGNMENT);
             add(c);
         }
@@ -114,10 +160,12 @@ public final class ReferencePanel extends JPanel {
     void refresh(ViewerState s) {
         state = s;
         boolean wide = s.settings().illumination().light().angularDiameterDeg() > LightSource.SUN_DEG + 1e-9;
-        compare.setEnabled(!busy && !wide);
+        String refusal = yardstick.getSelectedItem() == Yardstick.RIGOROUS ? rigorousRefusal() : "";
+        compare.setEnabled(!busy && !wide && refusal.isEmpty());
         reason.setText(wide ? "<html><body style='width:230px'>the CPU reference under a "
                 + SettingsPanel.number(s.settings().illumination().light().angularDiameterDeg()) + "-degree light "
-                + "takes hours to days: compare under the sun (light size 0.53)</body></html>" : " ");
+                + "takes hours to days: compare under the sun (light size 0.53)</body></html>"
+                : !refusal.isEmpty() ? "<html><body style='width:230px'>" + refusal + "</body></html>" : " ");
         Comparison c = last;
         if (c != null && !busy && !(c.method().equals(s.drawableSettings()) && c.light().equals(s.view().light())
                 && c.exposure() == s.view().exposure())) {
@@ -126,18 +174,38 @@ public final class ReferencePanel extends JPanel {
         }
     }
 
+    /** Why the view's patch cannot be solved by the rigorous method, or "" where it can; looked at once per patch. */
+    private String rigorousRefusal() {
+        ViewerWindow v = view.get();
+        if (v == null) {
+            return "";
+        }
+        HeightField patch = v.model().setup().patch();
+        if (patch != refusedPatch) {
+            rigorousRefusal = Variant.RIGOROUS.fieldRefusal(patch).orElse("");
+            refusedPatch = patch;
+        }
+        return rigorousRefusal;
+    }
+
+    /** Picks what the method is measured against (the yardstick's menu). */
+    public void against(Yardstick y) {
+        yardstick.setSelectedItem(y);
+    }
+
     /** Starts the comparison of the current light and settings in the background (the button's action). */
     public void start() {
         ViewerWindow v = view.get();
         ViewerState s = state;
-        if (v == null || s == null || busy) {
+        Yardstick y = (Yardstick) yardstick.getSelectedItem();
+        if (v == null || s == null || busy || (y == Yardstick.RIGOROUS && !rigorousRefusal().isEmpty())) {
             return;
         }
         busy = true;
         compare.setEnabled(false);
         worker.execute(() -> {
             try {
-                Comparison c = compare(v.model(), s, this::showProgress);
+                Comparison c = compare(v.model(), s, y, this::showProgress);
                 last = c;
                 SwingUtilities.invokeLater(() -> show(c));
             } catch (RuntimeException e) {
@@ -158,10 +226,19 @@ public final class ReferencePanel extends JPanel {
         return busy;
     }
 
+    /** Whether the compare button is enabled, and the reason shown where it is not. */
+    public boolean canCompare() {
+        return compare.isEnabled();
+    }
+
+    public String reason() {
+        return reason.getText();
+    }
+
     private void showProgress(double fraction, double secondsLeft) {
         SwingUtilities.invokeLater(() -> {
             progress.setValue((int) Math.round(1000 * fraction));
-            progress.setString(fraction >= 1 ? "done" : String.format(Locale.ROOT, "reference %d%%, about %s left",
+            progress.setString(fraction >= 1 ? "done" : String.format(Locale.ROOT, "yardstick %d%%, about %s left",
                     Math.round(100 * fraction), duration(secondsLeft)));
         });
     }
@@ -177,11 +254,11 @@ public final class ReferencePanel extends JPanel {
         method.setIcon(icon(display(c.methodXyz(), c.exposure())));
         reference.setIcon(icon(display(c.referenceXyz(), c.exposure())));
         error.setIcon(icon(errorImage(c.deltaE())));
-        numbers.setText(String.format(Locale.ROOT, "CIEDE2000 mean %.2f, p95 %.2f over %d lit px (%s, %d px)",
-                c.statistics().mean(), c.statistics().p95(), c.statistics().pixels(), c.method().variant().spec(),
-                SIZE_PX));
+        numbers.setText(String.format(Locale.ROOT, "<html><body style='width:230px'>CIEDE2000 mean %.2f, p95 %.2f over"
+                + " %d lit px (%s against %s, %d px)</body></html>", c.statistics().mean(), c.statistics().p95(),
+                c.statistics().pixels(), c.method().variant().spec(), c.yardstick(), SIZE_PX));
         progress.setValue(1000);
-        progress.setString(String.format(Locale.ROOT, "reference: %.1f s", c.seconds()));
+        progress.setString(String.format(Locale.ROOT, "%s: %.1f s", c.yardstick(), c.seconds()));
     }
 
     /** Progress of the reference: the fraction done and the seconds left. */
@@ -193,7 +270,7 @@ public final class ReferencePanel extends JPanel {
      * The comparison for the view's state: its method's GPU map and the CPU reference (from the disk cache when it is
      * there), at {@link #SIZE_PX}, and CIEDE2000 at the view's exposure.
      */
-    static Comparison compare(ViewerModel model, ViewerState s, Progress progress) {
+    static Comparison compare(ViewerModel model, ViewerState s, Yardstick yardstick, Progress progress) {
         BrdfSettings drawn = s.drawableSettings();
         double exposure = s.view().exposure();
         Direction wi = s.view().light().direction();
@@ -203,7 +280,7 @@ public final class ReferencePanel extends JPanel {
                 Reporter.SILENT)) {
             methodXyz = map.xyz(wi, SIZE_PX);
         }
-        BrdfSettings exact = drawn.with(b -> b.variant(Methods.Role.EXACT.method()).lambdaStepNm(1));
+        BrdfSettings exact = yardstick.settings(drawn);
         long start = System.nanoTime();
         DiskCache cache = DiskCache.user();
         DiskCache.Key key = new DiskCache.Key("reference-maps", String.join("; ", "viewer reference map format "
@@ -252,7 +329,8 @@ public final class ReferencePanel extends JPanel {
             any |= l;
         }
         DeltaEStatistics stats = any ? DeltaEStatistics.of(a, b, lit) : new DeltaEStatistics(0, 0, 0, 0, 0);
-        return new Comparison(drawn, s.view().light(), exposure, methodXyz, referenceXyz, deltaE, stats, seconds);
+        return new Comparison(drawn, s.view().light(), exposure, methodXyz, referenceXyz, deltaE, stats, seconds,
+                yardstick);
     }
 
     private static float[] scaled(float[] xyz, double exposure) {

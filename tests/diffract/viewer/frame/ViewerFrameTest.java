@@ -333,7 +333,40 @@ class ViewerFrameTest {
         ViewerFrame.onEdt(() -> frame.reference().start());
         assertTrue(waitFor(() -> frame.reference().last() != c && !frame.reference().isBusy(), 600));
         assertEquals(c.statistics().mean(), frame.reference().last().statistics().mean(), 1e-9);
+        // Maxwell's equations as the yardstick: refused on this 2-D patch, with the reason
+        ViewerFrame.onEdt(() -> frame.reference().against(ReferencePanel.Yardstick.RIGOROUS));
+        assertTrue(waitFor(() -> !frame.reference().canCompare(), 30), "the rigorous yardstick on a 2-D patch");
+        assertTrue(frame.reference().reason().contains("1-D patches"), frame.reference().reason());
+        ViewerFrame.onEdt(() -> frame.reference().against(ReferencePanel.Yardstick.REFERENCE));
+        assertTrue(waitFor(() -> frame.reference().canCompare(), 30));
         frame.view().model().reset(null);
+    }
+
+    /** On a 1-D grating the method is measured against Maxwell's equations (the rigorous method's map). */
+    @Test
+    @Order(6)
+    void onAGratingTheMethodIsComparedWithMaxwellsEquations() throws Exception {
+        Path file = dir.resolve("grating.json");
+        Files.writeString(file, SCENE.replace("{\"procedural\": \"elaphe-like\", \"sizePx\": 32, \"periods\": 2}",
+                "{\"procedural\": \"blazed\", \"periods\": 4}").replace("\"surface\"", "\"brdfMap\""));
+        ViewerWindow before = frame.view();
+        frame.openScene(file).get(5, java.util.concurrent.TimeUnit.MINUTES);
+        assertTrue(waitFor(() -> frame.view() != before && state().view().mode() == DisplayMode.BRDF_MAP, 300));
+        Thread.sleep(2L * ViewerFrame.REFRESH_MS);
+        ViewerFrame.onEdt(() -> frame.reference().against(ReferencePanel.Yardstick.RIGOROUS));
+        assertTrue(waitFor(() -> frame.reference().canCompare(), 30), frame.reference().reason());
+        ReferencePanel.Comparison earlier = frame.reference().last();
+        ViewerFrame.onEdt(() -> frame.reference().start());
+        assertTrue(waitFor(() -> frame.reference().last() != earlier && !frame.reference().isBusy(), 600),
+                "no comparison");
+        ReferencePanel.Comparison c = frame.reference().last();
+        TestReport.printf(ViewerFrameTest.class, Locale.ROOT, "%s on the blazed grating against Maxwell's equations, "
+                + "%d px map: CIEDE2000 mean %.2f, p95 %.2f over %d lit px, the rigorous map in %.1f s%n",
+                c.method().variant().spec(), ReferencePanel.SIZE_PX, c.statistics().mean(), c.statistics().p95(),
+                c.statistics().pixels(), c.seconds());
+        assertEquals(ReferencePanel.Yardstick.RIGOROUS, c.yardstick());
+        assertTrue(c.statistics().pixels() > 10, "lit pixels compared: " + c.statistics().pixels());
+        assertTrue(c.statistics().mean() > 0 && c.statistics().mean() < 30, "mean " + c.statistics().mean());
     }
 
     // ---- driving Swing as a user does
