@@ -143,7 +143,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                 settings.variant().spec(), field.cols(), field.rows(), field.widthUm(), field.heightExtentUm(),
                 window.sigmaTexels(field.widthUm()), window.sigmaTexels(field.heightExtentUm())));
         Direction wi = Direction.fromSphericalDeg(thetaIDeg, phi);
-        if (settings.variant() != Variant.RIGOROUS) {
+        if (!settings.variant().solvesMaxwell()) {
             warnWhereTheScalarModelFails(field, settings, reporter);
         }
         if (tiles.tile != null) {
@@ -155,9 +155,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
             // the exposure is the map's own: where it shows the map brighter than the cutoff assumed, draw it again
             // for that exposure (the map can only gain light, so the exposure found first is never too low)
             BrdfSettings shown = settings.shownAt(AutoExposure.of(luminance(map), picture.size, -wi.x(), -wi.y()));
-            // only the lobes method (and a table baked of it) reads the cutoff: other maps would come out the same
-            boolean readsCutoff = settings.variant() == Variant.LOBES || settings.variant().drawsTable();
-            if (shown != settings && readsCutoff) {
+            // only a method that reads the cutoff draws a different map at another exposure
+            if (shown != settings && settings.variant().readsCutoff()) {
                 reporter.info(String.format(Locale.ROOT, "drawn again for its exposure: the lobes' cutoff %.3g of "
                         + "white", shown.lobes().cutoff()));
                 settings = shown;

@@ -136,7 +136,7 @@ public final class ValidityMap {
     public static Result measure(Case c, Reporter reporter) {
         HeightField field = c.family().field(c.periodUm(), c.depthUm());
         Direction wi = Direction.fromSphericalDeg(c.thetaDeg(), 0);
-        float[] rigorous = row(DiffractionBrdf.create(settings(Variant.RIGOROUS, GainModel.RAYLEIGH_RICE), field,
+        float[] rigorous = row(DiffractionBrdf.create(settings(Methods.Role.MAXWELL.method(), GainModel.RAYLEIGH_RICE), field,
                 null), wi, reporter);
         float[] rayleighRice = row(scalar(field, GainModel.RAYLEIGH_RICE), wi, reporter);
         float[] stam = row(scalar(field, GainModel.STAM), wi, reporter);
@@ -179,7 +179,7 @@ public final class ValidityMap {
     private static double[] orderErrors(HeightField field, Direction wi) {
         double rr = 0;
         double st = 0;
-        BrdfSettings settings = settings(Variant.RIGOROUS, GainModel.RAYLEIGH_RICE);
+        BrdfSettings settings = settings(Methods.Role.MAXWELL.method(), GainModel.RAYLEIGH_RICE);
         double n = settings.illumination().refractiveIndex();
         for (double lambdaNm : ORDER_LAMBDAS_NM) {
             OrderComparison a = OrderComparison.of(field, settings, wi, lambdaNm);

@@ -3,6 +3,7 @@ package diffract.optics;
 import static diffract.optics.Variant.Capability.DRAWS_TABLE;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
 import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.READS_CUTOFF;
 import static diffract.optics.Variant.Capability.READS_TERMS;
 
 import java.util.EnumSet;
@@ -63,6 +64,9 @@ final class BakedMethod implements Variant {
         Set<Capability> capabilities = EnumSet.of(GPU, READS_TERMS, DRAWS_TABLE);
         if (of == null || of.filtersLight()) {
             capabilities.add(FILTERS_LIGHT);
+        }
+        if (of == null || of.readsCutoff()) {
+            capabilities.add(READS_CUTOFF);
         }
         return capabilities;
     }

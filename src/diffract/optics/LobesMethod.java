@@ -4,6 +4,7 @@ import static diffract.optics.Variant.Capability.BAKEABLE;
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
 import static diffract.optics.Variant.Capability.GPU;
+import static diffract.optics.Variant.Capability.READS_CUTOFF;
 import static diffract.optics.Variant.Capability.READS_TERMS;
 import static diffract.optics.Variant.Capability.TAKES_RIGOROUS_ORDERS;
 
@@ -31,7 +32,8 @@ final class LobesMethod implements Variant {
 
     @Override
     public Set<Capability> capabilities() {
-        return EnumSet.of(CPU, GPU, READS_TERMS, FILTERS_LIGHT, BAKEABLE, TAKES_RIGOROUS_ORDERS);
+        return EnumSet.of(CPU, GPU, READS_TERMS, FILTERS_LIGHT, BAKEABLE, TAKES_RIGOROUS_ORDERS,
+                READS_CUTOFF);
     }
 
     @Override

@@ -103,6 +103,11 @@ public final class Methods {
     public enum Role {
         /** What accuracy is measured against: {@code brdfmap}'s default, the reference maps of the bench and suite. */
         EXACT(Variant.REFERENCE),
+        /**
+         * What the scalar model itself is measured against: Maxwell's equations on periodic patches (the validity map,
+         * the viewer's second yardstick).
+         */
+        MAXWELL(Variant.RIGOROUS),
         /** The thesis' shader: the bench's speed baseline and the thesis' configuration. */
         THESIS(Variant.FLSS),
         /**

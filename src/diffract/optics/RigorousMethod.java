@@ -2,6 +2,7 @@ package diffract.optics;
 
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
+import static diffract.optics.Variant.Capability.SOLVES_MAXWELL;
 
 import java.util.EnumSet;
 import java.util.Optional;
@@ -35,7 +36,7 @@ final class RigorousMethod implements Variant {
 
     @Override
     public Set<Capability> capabilities() {
-        return EnumSet.of(CPU, FILTERS_LIGHT);
+        return EnumSet.of(CPU, FILTERS_LIGHT, SOLVES_MAXWELL);
     }
 
     @Override

@@ -17,7 +17,8 @@ import java.util.Locale;
  *   <tr><th>method</th><th>what it answers</th><th>default</th></tr>
  *   <tr><td>{@link #label}</td><td>the name on the command line, in scene files and in tables</td><td>-</td></tr>
  *   <tr><td>{@link #capabilities}</td><td>its {@link Capability} set: on the CPU, on the GPU, filters the light,
- *       reads the Taylor terms, sums a local window, can be baked, draws a table</td><td>on the GPU, reads the
+ *       reads the Taylor terms, sums a local window, can be baked, draws a table, takes the rigorous orders, reads the
+ *       exposure's cutoff, solves Maxwell's equations</td><td>on the GPU, reads the
  *       terms</td></tr>
  *   <tr><td>{@link #viewerKey}</td><td>the viewer's key that selects it</td><td>none</td></tr>
  *   <tr><td>{@link #tabulated}</td><td>the method a table of it holds</td><td>no table</td></tr>
@@ -75,7 +76,14 @@ public interface Variant {
          * Its lobes can take the orders' efficiencies from Maxwell's equations in place of the scalar model's
          * ({@link OrderWeights#RIGOROUS}, {@link OrderCorrection}).
          */
-        TAKES_RIGOROUS_ORDERS
+        TAKES_RIGOROUS_ORDERS,
+        /**
+         * Its picture depends on the exposure it is shown at: it drops the lobes fainter than a cutoff of the shown
+         * white ({@link LobeQuadrature#shownAt}), so a map whose exposure comes from the map itself is drawn again.
+         */
+        READS_CUTOFF,
+        /** Its orders come from Maxwell's equations: the scalar model's validity does not concern it. */
+        SOLVES_MAXWELL
     }
 
     /** What it can do; by default, a GPU shader that reads the Taylor terms. */
@@ -146,6 +154,16 @@ public interface Variant {
     /** {@link Capability#DRAWS_TABLE}. */
     default boolean drawsTable() {
         return capabilities().contains(Capability.DRAWS_TABLE);
+    }
+
+    /** {@link Capability#READS_CUTOFF}. */
+    default boolean readsCutoff() {
+        return capabilities().contains(Capability.READS_CUTOFF);
+    }
+
+    /** {@link Capability#SOLVES_MAXWELL}. */
+    default boolean solvesMaxwell() {
+        return capabilities().contains(Capability.SOLVES_MAXWELL);
     }
 
     /** {@link Capability#TAKES_RIGOROUS_ORDERS}. */

@@ -14,7 +14,6 @@ import diffract.optics.LightSource;
 import diffract.optics.HeightField;
 import diffract.optics.Methods;
 import diffract.optics.OrderWeights;
-import diffract.optics.Variant;
 import diffract.render.GpuBrdfMap;
 import diffract.scene.LightDirection;
 import diffract.util.DiskCache;
@@ -87,7 +86,7 @@ public final class ReferencePanel extends JPanel {
         /** The yardstick's settings: the method's, drawn by its variant. */
         BrdfSettings settings(BrdfSettings drawn) {
             return this == REFERENCE ? drawn.with(b -> b.variant(Methods.Role.EXACT.method()).lambdaStepNm(1))
-                    : drawn.with(b -> b.variant(Variant.RIGOROUS).rigorous(drawn.rigorous()
+                    : drawn.with(b -> b.variant(Methods.Role.MAXWELL.method()).rigorous(drawn.rigorous()
                             .withOrders(OrderWeights.SCALAR)));
         }
 
@@ -131,7 +130,7 @@ public final class ReferencePanel extends JPanel {
         progress.setString("");
         JPanel pictures = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 2));
         pictures.add(captioned(method, "method"));
-        pictures.add(captioned(reference, "reference"));
+        pictures.add(captioned(reference, "yardstick"));
         pictures.add(captioned(error, "CIEDE2000"));
         JPanel against = new JPanel(new FlowLayout(FlowLayout.LEFT, 2, 0));
         against.add(new JLabel("against"));
@@ -182,7 +181,7 @@ public final class ReferencePanel extends JPanel {
         }
         HeightField patch = v.model().setup().patch();
         if (patch != refusedPatch) {
-            rigorousRefusal = Variant.RIGOROUS.fieldRefusal(patch).orElse("");
+            rigorousRefusal = Methods.Role.MAXWELL.method().fieldRefusal(patch).orElse("");
             refusedPatch = patch;
         }
         return rigorousRefusal;
