@@ -102,7 +102,7 @@ public final class FilteringTargets {
         double bakedMs = Double.NaN;
         double bakeSeconds = Double.NaN;
         String bakedGrid = "-";
-        BrdfSettings baked = lobesShown.with(b -> b.variant(Methods.Role.TABLE.method())
+        BrdfSettings baked = lobesShown.with(b -> b.drawnBy(Methods.Role.TABLE.method())
                 .bakedSamples(bakedSamples, bakedWSamples));
         try (GpuBrdfMap map = pipeline.gpuMap(baked, lambdaMin, reporter)) {
             // the bake's own seconds: a table from the disk cache keeps those of the run that baked it

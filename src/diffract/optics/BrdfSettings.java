@@ -115,6 +115,20 @@ public record BrdfSettings(Variant variant, SpectralSettings spectral, TaylorSet
             return this;
         }
 
+        /**
+         * The method {@code v} for a picture the program draws on its own (a table for the environment's lights, the
+         * preview, a fallback): the rigorous orders are kept where {@code v} takes them and become the scalar ones
+         * where it does not, where {@link #variant} with the rigorous orders refuses such a method as the user's
+         * choice.
+         */
+        public Builder drawnBy(Variant v) {
+            variant = v;
+            if (rigorous.orders() == OrderWeights.RIGOROUS && !v.takesRigorousOrders()) {
+                rigorous = rigorous.withOrders(OrderWeights.SCALAR);
+            }
+            return this;
+        }
+
         /** The spectral model as a whole. */
         public Builder spectral(SpectralSettings s) {
             spectral = s;

@@ -160,14 +160,48 @@ final class RigorousPatch {
         return axis == Axis.X ? new double[] {-wi.x(), -wi.y()} : new double[] {-wi.y(), -wi.x()};
     }
 
+    /** The shortest wavelength a 2-D cell's cost is estimated at (the visible band's start). */
+    static final double ESTIMATE_LAMBDA_UM = 0.38;
+
     /**
-     * Why the rigorous method cannot solve this patch, or empty where it can: it solves 1-D gratings; a 2-D cell's
-     * eigenproblems grow as the cube of its harmonics in both directions.
+     * Why the rigorous method cannot solve this patch, or empty where it can: it solves 1-D gratings. A 2-D cell is
+     * refused with the cost its solution would have, estimated before any work: the harmonics the 1-D default keeps
+     * ({@link diffract.optics.rigorous.Resolution#maxOrder}) along both sides, N = (2 M_x + 1)(2 M_y + 1), give per
+     * staircase layer one eigenproblem of 2N complex unknowns (E_x and E_y of every harmonic), solved as its real twin
+     * of 4N (the way {@code ComplexEigen} solves the 1-D layers): 16 (2N)^2 bytes per complex matrix and about
+     * 10 (4N)^3 floating-point operations for the real QR algorithm, for each of the default's layers, wavelengths
+     * and light directions.
      */
     Optional<String> refusal() {
-        return oneDimensional() ? Optional.empty() : Optional.of("the rigorous method solves 1-D patches (every row, or "
-                + "every column, the same), and this is " + describe() + "; a snake patch's ridges alone are 1-D "
-                + "(the named patches elaphe-ridge and xenopeltis-ridge)");
+        if (oneDimensional()) {
+            return Optional.empty();
+        }
+        Cost cost = twoDimensionalCost(field.widthUm(), field.heightExtentUm());
+        return Optional.of(String.format(Locale.ROOT, "the rigorous method solves 1-D patches (every row, or every "
+                + "column, the same), and this is %s: at %.0f nm it would keep %d x %d harmonics, an eigenproblem of "
+                + "%d complex unknowns per layer (%s per matrix, about %.1g operations), for each of %d layers, every "
+                + "wavelength and direction; a snake patch's ridges alone are 1-D (the named patches elaphe-ridge and "
+                + "xenopeltis-ridge; diffract orders and --orders rigorous solve a 2-D patch's average ridge)",
+                describe(), ESTIMATE_LAMBDA_UM * 1e3, cost.harmonicsX(), cost.harmonicsY(), cost.unknowns(),
+                diffract.util.MemoryEstimate.size((long) cost.matrixBytes()), cost.operations(),
+                diffract.optics.rigorous.Resolution.DEFAULT.layers()));
+    }
+
+    /**
+     * What one staircase layer of a 2-D cell of {@code widthUm} x {@code heightUm} would cost the Fourier modal
+     * method at {@link #ESTIMATE_LAMBDA_UM}, at the default resolution.
+     */
+    static Cost twoDimensionalCost(double widthUm, double heightUm) {
+        var resolution = diffract.optics.rigorous.Resolution.DEFAULT;
+        int nx = 2 * resolution.maxOrder(widthUm, ESTIMATE_LAMBDA_UM) + 1;
+        int ny = 2 * resolution.maxOrder(heightUm, ESTIMATE_LAMBDA_UM) + 1;
+        long unknowns = 2L * nx * ny;
+        double real = 2.0 * unknowns;
+        return new Cost(nx, ny, unknowns, 16.0 * unknowns * unknowns, 10 * real * real * real);
+    }
+
+    /** One layer's eigenproblem: harmonics along x and y, complex unknowns, bytes per matrix, operations. */
+    record Cost(int harmonicsX, int harmonicsY, long unknowns, double matrixBytes, double operations) {
     }
 
     /** "a 1-D grating: x profile of 25 samples (repeated 26 times in the patch), period 2.5 um" or "a 2-D cell". */

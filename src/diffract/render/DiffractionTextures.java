@@ -130,7 +130,7 @@ public final class DiffractionTextures {
         return new DiffractionTextures(termTexture, normalised
                 ? NormalisedTerms.extremaTable(terms, highestOrder) : null, buildUniformNodeTable(settings.spectral()),
                 buildSpectralTable(settings.spectral().normalisation()), Cie1931.firstNm(), terms, settings, highestOrder,
-                new TableTextures(baked, r -> tables.of(terms, settings.with(b -> b.variant(Variant.BAKED)), r)), null,
+                new TableTextures(baked, r -> tables.of(terms, settings.with(b -> b.drawnBy(Variant.BAKED)), r)), null,
                 (lambdaMinNm, tolerance) -> LobeWeightTable.ofTerms(terms, highestOrder, lambdaMinNm, tolerance));
     }
 

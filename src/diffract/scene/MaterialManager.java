@@ -66,7 +66,7 @@ final class MaterialManager {
             // point-samples the light, under a point light (said once)
             Variant fallback = Methods.Role.FALLBACK.method();
             reporter.warn(refusal.get() + ": drawing it with " + fallback.spec() + " under a point light instead");
-            s = s.with(b -> b.variant(fallback).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
+            s = s.with(b -> b.drawnBy(fallback).lightSizeDeg(0).pixelFilter(PixelFilter.POINT));
         }
         // a point-sampling variant asked for on a scene lit by an extended light (the sun by default): it samples
         // the light at its centre, said once

@@ -33,7 +33,7 @@ public final class PreviewPolicy {
         if (drawable.variant().drawsTable() && bakedTableReady) {
             return drawable;
         }
-        return drawable.with(b -> b.variant(Methods.Role.FALLBACK.method()).windowRadius(WINDOW_RADIUS)
+        return drawable.with(b -> b.drawnBy(Methods.Role.FALLBACK.method()).windowRadius(WINDOW_RADIUS)
                 .lambdaStepNm(Math.max(LAMBDA_STEP_NM, drawable.spectral().lambdaStepNm())).lightSizeDeg(0)
                 .pixelFilter(PixelFilter.POINT));
     }

@@ -64,7 +64,7 @@ public final class TableBaker implements AutoCloseable {
             // back to the fallback method, whose textures need no bake, so the window does not ask for the failing
             // table again
             model.update(s -> s.withBake(null)
-                    .withSettings(s.settings().variant().drawsTable() ? s.settings().with(b -> b.variant(FALLBACK))
+                    .withSettings(s.settings().variant().drawsTable() ? s.settings().with(b -> b.drawnBy(FALLBACK))
                             : s.settings())
                     .withNotice(Notice.forSeconds("baking the table failed: " + e.getMessage() + "; drawing "
                             + FALLBACK.spec(), 10)));

@@ -93,7 +93,7 @@ public final class ViewerController implements AutoCloseable {
     /** The variant; one that cannot take the scene's light draws it as a point light and says so. */
     public void selectVariant(Variant variant) {
         model.update(s -> {
-            ViewerState selected = s.withSettings(s.settings().with(b -> b.variant(variant)));
+            ViewerState selected = s.withSettings(s.settings().with(b -> b.drawnBy(variant)));
             return LightPolicy.of(selected.settings()).notice()
                     .map(text -> selected.withNotice(Notice.forSeconds(text, NOTICE_SECONDS))).orElse(selected);
         });

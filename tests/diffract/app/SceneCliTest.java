@@ -137,6 +137,42 @@ class SceneCliTest {
     }
 
     /**
+     * The staged snake with its lobes taking the rigorous orders (a cheap table: one 20 nm step, few harmonics and
+     * slabs) renders: the environment's lights, which read a baked table, keep the scalar orders instead of refusing
+     * the scene, and the key light's lobes take the rigorous ones, so the picture differs from the scalar orders'.
+     */
+    @Test
+    @Tag("gl")
+    void aStagedSnakeTakesTheRigorousOrdersForItsKeyLight() throws Exception {
+        GlTestSupport.assumeOffscreenGl();
+        String[] cheap = {"assets/scenes/snake-elaphe.json", "--synthetic", "elaphe-ridge", "--lambda-min", "500",
+                "--lambda-max", "520", "--harmonics", "8", "--layers", "4", "--size", "64x40"};
+        Path scalar = dir.resolve("scalar.png");
+        Path rigorous = dir.resolve("rigorous.png");
+        Object[] a = CliTest.run(concat(new String[] {"render"}, cheap, "-o", scalar.toString()));
+        assertEquals(0, a[0], (String) a[2]);
+        Object[] b = CliTest.run(concat(new String[] {"render"}, cheap, "--orders", "rigorous", "-o",
+                rigorous.toString()));
+        assertEquals(0, b[0], (String) b[2]);
+        BufferedImage x = ImageIO.read(scalar.toFile());
+        BufferedImage y = ImageIO.read(rigorous.toFile());
+        int differing = 0;
+        for (int j = 0; j < 40; j++) {
+            for (int i = 0; i < 64; i++) {
+                differing += x.getRGB(i, j) != y.getRGB(i, j) ? 1 : 0;
+            }
+        }
+        assertTrue(differing > 0, "the rigorous orders change the key light's lobes");
+    }
+
+    private static String[] concat(String[] first, String[] second, String... rest) {
+        String[] all = java.util.Arrays.copyOf(first, first.length + second.length + rest.length);
+        System.arraycopy(second, 0, all, first.length, second.length);
+        System.arraycopy(rest, 0, all, first.length + second.length, rest.length);
+        return all;
+    }
+
+    /**
      * A snake whose scales wear a scan as wide as the coherence window (the 52 um elaphe-scan, sigma_f = 0.5 texels)
      * renders with the lobes method under the scene's sun: no notice that it falls back to another method or a
      * point light, and the snake shows structural colour (a lit pixel's channels differ).

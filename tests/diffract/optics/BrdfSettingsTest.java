@@ -113,4 +113,22 @@ class BrdfSettingsTest {
         new GpuTableSettings(TermFormat.RG8, BakedGrid.MAX_SAMPLES, 2);
         assertThrows(IllegalArgumentException.class, () -> START.with(b -> b.expansion(null)));
     }
+
+    /**
+     * The user's choice of a method that cannot take the rigorous orders is refused; the program's own switch to such a
+     * method (a table for the environment, the preview) draws it with the scalar orders, and a switch to a method that
+     * takes them keeps them.
+     */
+    @Test
+    void aMethodTheProgramDrawsByKeepsTheRigorousOrdersOnlyWhereItTakesThem() {
+        BrdfSettings rigorous = BrdfSettings.thesis(Variant.LOBES).with(b -> b.rigorous(
+                RigorousSettings.DEFAULT.withOrders(OrderWeights.RIGOROUS)));
+        InvalidSettingException refused = assertThrows(InvalidSettingException.class,
+                () -> rigorous.with(b -> b.variant(Variant.BAKED)));
+        assertEquals(Quantity.ORDERS, refused.quantity());
+        assertEquals(OrderWeights.SCALAR, rigorous.with(b -> b.drawnBy(Variant.BAKED)).rigorous().orders());
+        assertEquals(Variant.BAKED, rigorous.with(b -> b.drawnBy(Variant.BAKED)).variant());
+        assertEquals(OrderWeights.SCALAR, rigorous.with(b -> b.drawnBy(Variant.FLSS)).rigorous().orders());
+        assertEquals(OrderWeights.RIGOROUS, rigorous.with(b -> b.drawnBy(Variant.LOBES)).rigorous().orders());
+    }
 }

@@ -52,6 +52,24 @@ class RigorousMethodTest {
                 () -> DiffractionBrdf.create(settings(), rough, null));
         assertEquals(Quantity.VARIANT, e.quantity());
         assertTrue(e.getMessage().contains("1-D patches") && e.getMessage().contains("elaphe-ridge"), e.getMessage());
+        RigorousPatch.Cost cost = RigorousPatch.twoDimensionalCost(rough.widthUm(), rough.heightExtentUm());
+        assertTrue(e.getMessage().contains(cost.harmonicsX() + " x " + cost.harmonicsY() + " harmonics")
+                && e.getMessage().contains(cost.unknowns() + " complex unknowns"), e.getMessage());
+    }
+
+    /**
+     * The estimate a 2-D cell is refused with, by hand: a 1 um square cell at 380 nm keeps M = ceil(2 / 0.38) + 12 =
+     * 18 harmonics each way (37 x 37), so 2 x 37^2 = 2738 complex unknowns, 16 x 2738^2 bytes per matrix and
+     * 10 (2 x 2738)^3 operations; the snake patch's 9.152 um cell keeps 61 each way (123 x 123).
+     */
+    @Test
+    void aTwoDimensionalCellsCostIsTheHarmonicsOfBothSides() {
+        RigorousPatch.Cost square = RigorousPatch.twoDimensionalCost(1.0, 1.0);
+        assertEquals(List.of(37, 37, 2738L), List.of(square.harmonicsX(), square.harmonicsY(), square.unknowns()));
+        assertEquals(16.0 * 2738 * 2738, square.matrixBytes(), 1e-6);
+        assertEquals(10.0 * 5476 * 5476 * 5476, square.operations(), 1);
+        RigorousPatch.Cost snake = RigorousPatch.twoDimensionalCost(9.152, 9.152);
+        assertEquals(List.of(123, 123, 30258L), List.of(snake.harmonicsX(), snake.harmonicsY(), snake.unknowns()));
     }
 
     /** Monochromatic maps: the orders sit where the grating equation puts them, and on the scalar model's side. */

@@ -306,7 +306,7 @@ public final class SettingsPanel extends JPanel {
             return Optional.empty();
         }
         var patch = w.model().setup().patch();
-        return v.patchRefusal(s.settings().with(b -> b.variant(v)), patch.widthUm(), patch.heightExtentUm());
+        return v.patchRefusal(s.settings().with(b -> b.drawnBy(v)), patch.widthUm(), patch.heightExtentUm());
     }
 
     // ---- from the view to the controls
