@@ -54,10 +54,11 @@ class GainModelsMeasurement {
                     for (int i = 0; i < e.count(); i++) {
                         int m = e.order(i);
                         double eta = e.reflected(m);
-                        if (m == 0 || eta < 0.05 * diffracted) {
+                        double am = e.alpha()[i];
+                        // evanescent orders carry nothing: where only the mirror propagates, nothing is compared
+                        if (m == 0 || Math.abs(am) >= 1 || !(eta > 0) || eta < 0.05 * diffracted) {
                             continue;
                         }
-                        double am = e.alpha()[i];
                         Direction wr = new Direction(am, 0, Math.sqrt(1 - am * am));
                         double t2 = coefficientPower(p, -2 * Math.PI / lambdaUm * (wi.z() + wr.z()), m);
                         double[] c = candidates(wi, wr, n);
