@@ -31,6 +31,16 @@ final class CellModes {
      * for |p| &lt;= 2 M_x, |q| &lt;= 2 M_y ({@link CellSlab#fourier}).
      */
     static Modes of(double[][] chi, double epsRe, double epsIm, int maxX, int maxY, double[] alpha, double[] beta) {
+        ZMatrixRMaj[] pq = operators(chi, epsRe, epsIm, maxX, maxY, alpha, beta);
+        ZMatrixRMaj q = pq[1];
+        int n = alpha.length;
+        ComplexEigen eigen = ComplexEigen.of(pq[2]);
+        return modes(eigen, q, n);
+    }
+
+    /** P, Q and P Q of the slab. */
+    static ZMatrixRMaj[] operators(double[][] chi, double epsRe, double epsIm, int maxX, int maxY, double[] alpha,
+                                   double[] beta) {
         int nx = 2 * maxX + 1;
         int n = nx * (2 * maxY + 1);
         int chiWidth = 4 * maxX + 1;
@@ -79,7 +89,11 @@ final class CellModes {
         }
         ZMatrixRMaj pq = new ZMatrixRMaj(2 * n, 2 * n);
         CommonOps_ZDRM.mult(p, q, pq);
-        ComplexEigen eigen = ComplexEigen.of(pq);
+        return new ZMatrixRMaj[] {p, q, pq};
+    }
+
+    /** W = the eigenvectors, kappa the forward roots, V = -Q W kappa^-1. */
+    private static Modes modes(ComplexEigen eigen, ZMatrixRMaj q, int n) {
         ZMatrixRMaj w = eigen.vectors();
         double[] kappa = new double[4 * n];
         for (int j = 0; j < 2 * n; j++) {

@@ -42,8 +42,15 @@ public final class ComplexEigen {
     private final double[] valuesIm;
     /** Eigenvectors as columns, unit 2-norm. */
     private final ZMatrixRMaj vectors;
+    /** Whether the Schur iteration needed {@link #FALLBACK_EPSILON}. */
+    private final boolean relaxed;
 
     private ComplexEigen(double[] valuesRe, double[] valuesIm, ZMatrixRMaj vectors) {
+        this(valuesRe, valuesIm, vectors, false);
+    }
+
+    private ComplexEigen(double[] valuesRe, double[] valuesIm, ZMatrixRMaj vectors, boolean relaxed) {
+        this.relaxed = relaxed;
         this.valuesRe = valuesRe;
         this.valuesIm = valuesIm;
         this.vectors = vectors;
@@ -95,10 +102,12 @@ public final class ComplexEigen {
         }
         Array2DRowRealMatrix real = new Array2DRowRealMatrix(r, false);
         EigenDecompositionNonSymmetric eigen;
+        boolean relaxed = false;
         try {
             eigen = new EigenDecompositionNonSymmetric(real, SCHUR_EPSILON);
         } catch (org.hipparchus.exception.MathIllegalStateException stalled) {
             eigen = new EigenDecompositionNonSymmetric(real, FALLBACK_EPSILON);
+            relaxed = true;
         }
         Complex[] nu = eigen.getEigenvalues();
         int found = 0;
@@ -134,7 +143,7 @@ public final class ComplexEigen {
             throw new IllegalStateException("the eigen decomposition found " + found + " of " + n
                     + " eigenvalues above the real axis (shift " + shift + ")");
         }
-        ComplexEigen result = new ComplexEigen(re, im, x);
+        ComplexEigen result = new ComplexEigen(re, im, x, relaxed);
         result.requireSmallResiduals(m, norm);
         return result;
     }
@@ -164,6 +173,11 @@ public final class ComplexEigen {
                         "eigenpair %d of %d is inaccurate: |M x - mu x| = %.3g |M|", k, n, Math.sqrt(worst) / norm));
             }
         }
+    }
+
+    /** Whether the Schur iteration stalled at {@link #SCHUR_EPSILON} and converged at {@link #FALLBACK_EPSILON}. */
+    boolean relaxed() {
+        return relaxed;
     }
 
     public int size() {
