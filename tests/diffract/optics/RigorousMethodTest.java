@@ -58,7 +58,8 @@ class RigorousMethodTest {
         assertEquals(Quantity.VARIANT, e.quantity());
         assertTrue(e.getMessage().contains("1-D patches") && e.getMessage().contains("elaphe-ridge")
                 && e.getMessage().contains("--harmonics") && e.getMessage().contains("crop")
-                && e.getMessage().contains("up to " + RigorousPatch.MAX_UNKNOWNS + " complex unknowns"), e.getMessage());
+                && e.getMessage().contains("up to " + RigorousPatch.MAX_UNKNOWNS + " complex unknowns"),
+                e.getMessage());
         RigorousPatch.Cost cost = RigorousPatch.twoDimensionalCost(rough.widthUm(), rough.heightExtentUm(),
                 settings().rigorous().resolution(), 0.38);
         assertTrue(cost.unknowns() > RigorousPatch.MAX_UNKNOWNS);

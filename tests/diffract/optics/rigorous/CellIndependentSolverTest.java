@@ -90,7 +90,8 @@ class CellIndependentSolverTest {
                 return;
             }
             p.getOutputStream().close();
-            BufferedReader lines = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
+            BufferedReader lines = new BufferedReader(new InputStreamReader(p.getInputStream(),
+                    StandardCharsets.UTF_8));
             String first = lines.readLine();
             JsonNode versions = first == null ? null : json.readTree(first).get("versions");
             if (versions == null || !versions.hasNonNull("meent")) {
