@@ -536,7 +536,8 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         String how = diffract.optics.OrderComparison.refusal(field).isEmpty()
                 ? "diffract brdfmap --variant rigorous " + patch.describe() + " --theta-i " + number(thetaIDeg)
                         + " draws it from Maxwell's equations, diffract orders lists its orders"
-                : "the rigorous method solves 1-D patches, such as a snake patch's ridges alone: diffract orders "
+                : "the rigorous method solves 1-D patches, such as a snake patch's ridges alone, and 2-D cells of about a "
+                        + "micrometre: diffract orders "
                         + "--synthetic elaphe-ridge --theta-i " + number(thetaIDeg);
         String fix = settings.variant().takesRigorousOrders() ? "; --orders rigorous takes the lobes' orders from "
                 + "Maxwell's equations (docs/rigorous.md)" : "";

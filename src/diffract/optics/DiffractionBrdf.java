@@ -117,7 +117,7 @@ public final class DiffractionBrdf {
      */
     static DiffractionBrdf rigorous(BrdfSettings settings, HeightField meanSubtracted) {
         RigorousPatch patch = RigorousPatch.of(meanSubtracted);
-        patch.refusal().ifPresent(why -> {
+        patch.refusal(settings.rigorous().resolution(), settings.spectral().lambdaMinNm() * 1e-3).ifPresent(why -> {
             throw new InvalidSettingException(Quantity.VARIANT, why);
         });
         return new DiffractionBrdf(null, null, settings.illumination(), null, null,

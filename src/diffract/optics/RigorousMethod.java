@@ -14,7 +14,8 @@ import java.util.Set;
  * polarisations, the material's complex index), and drawn into maps exactly as the reference draws its orders
  * (coherence window averaged over its position, pixel box, light, wavelength integral; {@link RigorousOrders}). The
  * yardstick beside the reference where Stam's scalar model is in doubt: deep reliefs and periods near the
- * wavelength (docs/rigorous.md). CPU only.
+ * wavelength (docs/rigorous.md). A 2-D patch is one crossed cell ({@link diffract.optics.rigorous.CellSolver}).
+ * CPU only.
  *
  * <table>
  *   <caption>Capabilities</caption>
@@ -23,7 +24,8 @@ import java.util.Set;
  *   <tr><th>extended lights</th><td>integrated as the reference does, the orders' efficiencies at the light's
  *       centre</td></tr>
  *   <tr><th>patches</th><td>1-D gratings (every row or column the same) of any period the harmonics resolve; 2-D
- *       cells as far as {@link #heapMemory} allows</td></tr>
+ *       cells whose eigenproblem keeps at most {@link RigorousPatch#MAX_UNKNOWNS} complex unknowns per layer
+ *       (Laurent's rule; --harmonics 6 at most), larger ones refused before any work with the way out</td></tr>
  *   <tr><th>settings read</th><td>the band and its step (the wavelength nodes), the coherence length, the light, the
  *       pixel filter, the complex index, {@link RigorousSettings}</td></tr>
  * </table>
@@ -54,17 +56,24 @@ final class RigorousMethod implements Variant {
         return Optional.empty();
     }
 
-    /** The solver's matrices per worker thread (one solve per wavelength node, the nodes in parallel). */
+    /**
+     * The solver's matrices per worker thread (one solve per wavelength node, the nodes in parallel); a 2-D cell
+     * beyond {@link RigorousPatch#MAX_UNKNOWNS} at the settings' harmonics is refused here, before any work.
+     */
     @Override
     public diffract.util.MemoryEstimate heapMemory(HeightField field, BrdfSettings settings, double thetaIDeg,
                                                     double fromNm, double toNm) {
         RigorousPatch patch = RigorousPatch.of(field);
-        patch.refusal().ifPresent(why -> {
+        patch.refusal(settings.rigorous().resolution(), fromNm * 1e-3).ifPresent(why -> {
             throw new InvalidSettingException(Quantity.VARIANT, why);
         });
         return RigorousCost.of(patch, settings, fromNm).memory();
     }
 
+    /**
+     * The refusal at the default resolution from 380 nm, for callers without settings (the viewer's A/B): 1-D
+     * patches pass, and 2-D cells refused there (every one but the smallest, the default harmonics being many).
+     */
     @Override
     public Optional<String> fieldRefusal(HeightField meanSubtracted) {
         return RigorousPatch.of(meanSubtracted).refusal();

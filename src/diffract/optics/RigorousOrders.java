@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.rigorous.CellEfficiencies;
+import diffract.optics.rigorous.CellSolver;
 import diffract.optics.rigorous.ComplexIndex;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.RigorousSolver;
@@ -31,33 +33,38 @@ import java.util.stream.IntStream;
  * The efficiencies are those at the light's centre: over a disc light the lobes move with each direction, their
  * weights do not (as the reference keeps its gain at the light's centre per disc direction, {@link DiscLightAverage}).
  *
+ * <p>A 1-D patch's orders m are held as (p, q) = (m, 0); a 2-D cell's orders (p, q) come from {@link CellSolver}, each
+ * on texel (-p, -q) ({@link RigorousPatch#texel(int, int)}).
+ *
  * <p>Immutable and thread-safe. Tables are kept in the disk cache by the patch's content, the material, the
  * resolution, the band and the direction.
  */
 final class RigorousOrders implements LobeWeights {
     /** The disk cache's folder of these tables. */
     static final String KIND = "rigorous-orders";
-    private static final int FORMAT = 1;
+    private static final int FORMAT = 2;
 
     private final RigorousPatch patch;
     private final double firstNm;
     private final double stepNm;
     private final int nodes;
-    /** The lowest order held. */
-    private final int firstOrder;
-    /** eta[node][order - firstOrder], for the settings' polarisation. */
+    /** The highest orders held along x and y (M_y = 0 for a 1-D patch). */
+    private final int maxX;
+    private final int maxY;
+    /** eta[node][slot(p, q)], for the settings' polarisation. */
     private final double[][] eta;
     private final double inverseR0;
     private final double extentXUm;
     private final double extentYUm;
 
-    private RigorousOrders(RigorousPatch patch, double firstNm, double stepNm, int firstOrder, double[][] eta,
+    private RigorousOrders(RigorousPatch patch, double firstNm, double stepNm, int maxX, int maxY, double[][] eta,
                            double inverseR0) {
         this.patch = patch;
         this.firstNm = firstNm;
         this.stepNm = stepNm;
         this.nodes = eta.length;
-        this.firstOrder = firstOrder;
+        this.maxX = maxX;
+        this.maxY = maxY;
         this.eta = eta;
         this.inverseR0 = inverseR0;
         this.extentXUm = patch.field().widthUm();
@@ -94,26 +101,40 @@ final class RigorousOrders implements LobeWeights {
             return cached;
         }
         double[] alphaBeta = patch.incidence(wi);
-        double periodUm = patch.profile().periodUm();
-        int widest = rigorous.resolution().maxOrder(periodUm, lambdasNm[0]);
-        double[][] eta = new double[lambdasNm.length][2 * widest + 1];
+        int[] widest = patch.oneDimensional()
+                ? new int[] {rigorous.resolution().maxOrder(patch.profile().periodUm(), lambdasNm[0] * 1e-3), 0}
+                : CellSolver.maxOrders(patch.relief(), lambdasNm[0] * 1e-3, rigorous.resolution());
+        double[][] eta = new double[lambdasNm.length][(2 * widest[0] + 1) * (2 * widest[1] + 1)];
         AtomicInteger done = new AtomicInteger();
         String task = String.format(Locale.ROOT, "rigorous orders, %d wavelengths, light at %.1f degrees",
                 lambdasNm.length, Math.toDegrees(Math.acos(Math.min(1, wi.z()))));
         long start = System.nanoTime();
         IntStream.range(0, lambdasNm.length).parallel().forEach(j -> {
-            OrderEfficiencies e = RigorousSolver.solve(patch.profile(), material, lambdasNm[j] * 1e-3, alphaBeta[0],
-                    alphaBeta[1], rigorous.resolution());
-            for (int i = 0; i < e.count(); i++) {
-                int order = e.order(i);
-                if (Math.abs(order) <= widest) {
-                    eta[j][order + widest] = rigorous.polarisation().of(e.reflectedS()[i], e.reflectedP()[i]);
+            if (patch.oneDimensional()) {
+                OrderEfficiencies e = RigorousSolver.solve(patch.profile(), material, lambdasNm[j] * 1e-3,
+                        alphaBeta[0], alphaBeta[1], rigorous.resolution());
+                for (int i = 0; i < e.count(); i++) {
+                    int order = e.order(i);
+                    if (Math.abs(order) <= widest[0]) {
+                        eta[j][order + widest[0]] = rigorous.polarisation().of(e.reflectedS()[i], e.reflectedP()[i]);
+                    }
+                }
+            } else {
+                CellEfficiencies e = CellSolver.solve(patch.relief(), material, lambdasNm[j] * 1e-3, alphaBeta[0],
+                        alphaBeta[1], rigorous.resolution());
+                for (int i = 0; i < e.count(); i++) {
+                    int p = e.orderX(i);
+                    int q = e.orderY(i);
+                    if (Math.abs(p) <= widest[0] && Math.abs(q) <= widest[1]) {
+                        eta[j][slot(p, q, widest[0], widest[1])] = rigorous.polarisation().of(e.reflectedS()[i],
+                                e.reflectedP()[i]);
+                    }
                 }
             }
             reporter.progress(task, done.incrementAndGet() / (double) lambdasNm.length);
         });
-        RigorousOrders orders = new RigorousOrders(patch, lambdasNm[0], settings.spectral().lambdaStepNm(), -widest,
-                eta, inverseR0);
+        RigorousOrders orders = new RigorousOrders(patch, lambdasNm[0], settings.spectral().lambdaStepNm(),
+                widest[0], widest[1], eta, inverseR0);
         String where = cache.store(key, out -> orders.write(out), "the rigorous orders", reporter)
                 .map(f -> "cached").orElse("not cached");
         reporter.info(String.format(Locale.ROOT, "rigorous orders of %s: %d wavelengths in %.1f s (%s, %s)",
@@ -132,8 +153,8 @@ final class RigorousOrders implements LobeWeights {
 
     private void write(DataOutputStream out) throws IOException {
         out.writeInt(nodes);
-        out.writeInt(firstOrder);
-        out.writeInt(eta[0].length);
+        out.writeInt(maxX);
+        out.writeInt(maxY);
         for (double[] row : eta) {
             for (double v : row) {
                 out.writeDouble(v);
@@ -144,12 +165,14 @@ final class RigorousOrders implements LobeWeights {
     private static RigorousOrders read(DataInputStream in, RigorousPatch patch, double[] lambdasNm, double inverseR0)
             throws IOException {
         int nodes = in.readInt();
-        int first = in.readInt();
-        int orders = in.readInt();
-        if (nodes != lambdasNm.length || orders < 1 || orders > 100_000 || first != -(orders - 1) / 2) {
-            throw new IOException("it holds " + nodes + " wavelengths of " + orders + " orders, not the band's "
-                    + lambdasNm.length);
+        int maxX = in.readInt();
+        int maxY = in.readInt();
+        if (nodes != lambdasNm.length || maxX < 0 || maxY < 0 || maxX > 50_000 || maxY > 50_000
+                || (2L * maxX + 1) * (2L * maxY + 1) > 100_000) {
+            throw new IOException("it holds " + nodes + " wavelengths of orders up to " + maxX + ", " + maxY
+                    + ", not the band's " + lambdasNm.length);
         }
+        int orders = (2 * maxX + 1) * (2 * maxY + 1);
         double[][] eta = new double[nodes][orders];
         for (double[] row : eta) {
             for (int i = 0; i < orders; i++) {
@@ -157,13 +180,28 @@ final class RigorousOrders implements LobeWeights {
             }
         }
         double step = lambdasNm.length > 1 ? lambdasNm[1] - lambdasNm[0] : 1;
-        return new RigorousOrders(patch, lambdasNm[0], step, first, eta, inverseR0);
+        return new RigorousOrders(patch, lambdasNm[0], step, maxX, maxY, eta, inverseR0);
     }
 
-    /** eta_m at {@code lambdaNm}, interpolated linearly between the nodes; 0 outside the band. */
+    /** The index of order (p, q) in a table of orders up to (maxX, maxY): p fastest. */
+    private static int slot(int p, int q, int maxX, int maxY) {
+        return (q + maxY) * (2 * maxX + 1) + p + maxX;
+    }
+
+    /** The index of order (p, q), or -1 where it is not held. */
+    private int slot(int p, int q) {
+        return Math.abs(p) > maxX || Math.abs(q) > maxY ? -1 : slot(p, q, maxX, maxY);
+    }
+
+    /** A 1-D patch's eta_m at {@code lambdaNm}, interpolated linearly between the nodes; 0 outside the band. */
     double efficiency(int order, double lambdaNm) {
-        int i = order - firstOrder;
-        if (i < 0 || i >= eta[0].length) {
+        return efficiency(order, 0, lambdaNm);
+    }
+
+    /** eta_pq at {@code lambdaNm}, interpolated linearly between the nodes; 0 outside the band. */
+    double efficiency(int p, int q, double lambdaNm) {
+        int i = slot(p, q);
+        if (i < 0) {
             return 0;
         }
         double t = (lambdaNm - firstNm) / stepNm;
@@ -196,12 +234,14 @@ final class RigorousOrders implements LobeWeights {
         double width2 = lambdaUm * sigmaFPerUm * lambdaUm * sigmaFPerUm;
         double sum = 0;
         for (int i = 0; i < eta[0].length; i++) {
-            int[] texel = patch.texel(firstOrder + i);
+            int p = i % (2 * maxX + 1) - maxX;
+            int q = i / (2 * maxX + 1) - maxY;
+            int[] texel = patch.texel(p, q);
             double du = u - lambdaUm * texel[0] / extentXUm;
             double dv = v - lambdaUm * texel[1] / extentYUm;
-            double q = (du * du + dv * dv) / width2;
-            if (q < 60) {
-                sum += efficiency(firstOrder + i, lambdaNm) * Math.exp(-q);
+            double d2 = (du * du + dv * dv) / width2;
+            if (d2 < 60) {
+                sum += efficiency(p, q, lambdaNm) * Math.exp(-d2);
             }
         }
         return gain * sum;
@@ -217,20 +257,21 @@ final class RigorousOrders implements LobeWeights {
         if (twiceCx % 2 != 0 || twiceCy % 2 != 0) {
             return null;
         }
-        java.util.Optional<Integer> order = patch.order(twiceCx / 2, twiceCy / 2);
-        if (order.isEmpty() || order.get() - firstOrder < 0 || order.get() - firstOrder >= eta[0].length) {
+        java.util.Optional<int[]> order = patch.orders(twiceCx / 2, twiceCy / 2);
+        if (order.isEmpty() || slot(order.get()[0], order.get()[1]) < 0) {
             return null;
         }
-        int m = order.get();
+        int p = order.get()[0];
+        int q = order.get()[1];
         return new Lobe() {
             @Override
             public double weight(double lambdaUm, double w) {
-                return efficiency(m, lambdaUm * 1e3);
+                return efficiency(p, q, lambdaUm * 1e3);
             }
 
             @Override
             public void weightWithDerivative(double lambdaUm, double w, double[] out) {
-                out[0] = efficiency(m, lambdaUm * 1e3);
+                out[0] = efficiency(p, q, lambdaUm * 1e3);
                 out[1] = 0;
             }
         };
@@ -238,12 +279,12 @@ final class RigorousOrders implements LobeWeights {
 
     @Override
     public double bound(int mx, int my, double fromNm, double toNm, double w, double dw) {
-        java.util.Optional<Integer> order = patch.order(mx, my);
+        java.util.Optional<int[]> order = patch.orders(mx, my);
         if (order.isEmpty()) {
             return 0;
         }
-        int i = order.get() - firstOrder;
-        if (i < 0 || i >= eta[0].length) {
+        int i = slot(order.get()[0], order.get()[1]);
+        if (i < 0) {
             return 0;
         }
         int from = Math.max(0, (int) Math.floor((fromNm - firstNm) / stepNm));

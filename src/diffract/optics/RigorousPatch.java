@@ -1,6 +1,8 @@
 package diffract.optics;
 
+import diffract.optics.rigorous.CellRelief;
 import diffract.optics.rigorous.Profile;
+import diffract.optics.rigorous.Resolution;
 
 import java.util.Locale;
 import java.util.Optional;
@@ -9,11 +11,13 @@ import java.util.Optional;
  * A patch as the rigorous method reads it: one period of a periodic surface, as the DFT already reads it. A patch
  * whose every row (or every column) is the same is a 1-D grating: its profile across the grooves, the polyline through
  * its samples, and, where that profile repeats itself within the patch, one repeat of it (a patch of P whole periods
- * is solved on one period with 1/P the harmonics; its orders fall on every P-th texel). Any other patch is a 2-D cell.
+ * is solved on one period with 1/P the harmonics; its orders fall on every P-th texel). Any other patch is a 2-D cell:
+ * its whole extent is one period in x and in y, each sample a rectangle of the cell ({@link CellRelief}).
  *
  * <p>The orders map onto the texels of the scalar model: order m of a period along x leaves at
  * omega_r.x = -omega_i.x + m lambda / period (the grating equation), where texel c's lobe sits at
- * -omega_i.x - lambda c / L (docs/theory.md): texel c = -m P.
+ * -omega_i.x - lambda c / L (docs/theory.md): texel c = -m P. A 2-D cell's order (p, q) leaves at
+ * (-omega_i.x + p lambda / L_x, -omega_i.y + q lambda / L_y): texel (-p, -q).
  */
 final class RigorousPatch {
     /** Relative difference (of the depth) up to which two rows, columns or repeats count as the same. */
@@ -142,6 +146,24 @@ final class RigorousPatch {
         return axis == Axis.X ? new int[] {c, 0} : new int[] {0, c};
     }
 
+    /** The texel of order (p, q): a 1-D patch's order p (q is 0), a 2-D cell's (-p, -q). */
+    int[] texel(int p, int q) {
+        return oneDimensional() ? texel(p) : new int[] {-p, -q};
+    }
+
+    /** The order (p, q) of texel (cx, cy), or empty where none lands (a 1-D patch's orders have q = 0). */
+    Optional<int[]> orders(int cx, int cy) {
+        if (!oneDimensional()) {
+            return Optional.of(new int[] {-cx, -cy});
+        }
+        return order(cx, cy).map(m -> new int[] {m, 0});
+    }
+
+    /** A 2-D cell's heights: the patch's samples over its whole extent. */
+    CellRelief relief() {
+        return new CellRelief(field.widthUm(), field.heightExtentUm(), field.cols(), field.rows(), field.heightsUm());
+    }
+
     /** The order of texel (cx, cy), or empty where no order of a 1-D patch lands. */
     Optional<Integer> order(int cx, int cy) {
         int along = axis == Axis.X ? cx : cy;
@@ -157,34 +179,62 @@ final class RigorousPatch {
      * light from omega_i (pointing away from the surface): the wave travels along -omega_i.
      */
     double[] incidence(Direction wi) {
-        return axis == Axis.X ? new double[] {-wi.x(), -wi.y()} : new double[] {-wi.y(), -wi.x()};
+        return axis != Axis.Y ? new double[] {-wi.x(), -wi.y()} : new double[] {-wi.y(), -wi.x()};
     }
 
-    /** The shortest wavelength a 2-D cell's cost is estimated at (the visible band's start). */
+    /** The shortest wavelength a 2-D cell's cost is estimated at (the visible band's start) without settings. */
     static final double ESTIMATE_LAMBDA_UM = 0.38;
 
     /**
-     * Why the rigorous method cannot solve this patch, or empty where it can: it solves 1-D gratings. A 2-D cell is
-     * refused with the cost its solution would have, estimated before any work: the harmonics the 1-D default keeps
-     * ({@link diffract.optics.rigorous.Resolution#maxOrder}) along both sides, N = (2 M_x + 1)(2 M_y + 1), give per
-     * staircase layer one eigenproblem of 2N complex unknowns (E_x and E_y of every harmonic), solved as its real twin
-     * of 4N (the way {@code ComplexEigen} solves the 1-D layers): 16 (2N)^2 bytes per complex matrix and about
-     * 10 (4N)^3 floating-point operations for the real QR algorithm, for each of the default's layers, wavelengths
-     * and light directions.
+     * The most complex unknowns 2N = 2 (2 M_x + 1)(2 M_y + 1) one slab's eigenproblem of a 2-D cell may have
+     * (M_x = M_y = 6). Measured on 2 cores (beside another job) for a pillar's slab: the eigen decomposition takes
+     * 1.2 s at 2N = 242, 2.0 s at 338 (a whole one-slab solve 3.9 s), 5.8 s at 450, and at 578 Hipparchus' Schur
+     * iteration no longer converges. Each wavelength node solves every distinct slab of the staircase (a cell of few
+     * heights has few), at L and L / 2 layers.
+     */
+    static final long MAX_UNKNOWNS = 338;
+
+    /**
+     * Why the rigorous method cannot solve this patch with the default resolution from {@link #ESTIMATE_LAMBDA_UM}
+     * (what a caller without settings, the viewer's A/B, asks), or empty where it can.
      */
     Optional<String> refusal() {
+        return refusal(Resolution.DEFAULT, ESTIMATE_LAMBDA_UM);
+    }
+
+    /**
+     * Why the rigorous method cannot solve this patch at {@code resolution} from {@code fromUm} (the band's start,
+     * its widest harmonic set), or empty where it can: a 1-D grating always, a 2-D cell where its eigenproblem keeps
+     * at most {@link #MAX_UNKNOWNS} complex unknowns. A larger cell is refused with the cost its solution would have,
+     * estimated before any work ({@link #twoDimensionalCost}), and the ways out.
+     */
+    Optional<String> refusal(Resolution resolution, double fromUm) {
         if (oneDimensional()) {
             return Optional.empty();
         }
-        Cost cost = twoDimensionalCost(field.widthUm(), field.heightExtentUm());
+        Cost cost = twoDimensionalCost(field.widthUm(), field.heightExtentUm(), resolution, fromUm);
+        if (cost.unknowns() <= MAX_UNKNOWNS) {
+            return Optional.empty();
+        }
         return Optional.of(String.format(Locale.ROOT, "the rigorous method solves 1-D patches (every row, or every "
-                + "column, the same), and this is %s: at %.0f nm it would keep %d x %d harmonics, an eigenproblem of "
+                + "column, the same) and 2-D cells of up to %d complex unknowns per layer (2 (2 M + 1)^2 with "
+                + "--harmonics %d), and this is %s: at %.0f nm it would keep %d x %d harmonics, an eigenproblem of "
                 + "%d complex unknowns per layer (%s per matrix, about %.1g operations), for each of %d layers, every "
-                + "wavelength and direction; a snake patch's ridges alone are 1-D (the named patches elaphe-ridge and "
-                + "xenopeltis-ridge; diffract orders and --orders rigorous solve a 2-D patch's average ridge)",
-                describe(), ESTIMATE_LAMBDA_UM * 1e3, cost.harmonicsX(), cost.harmonicsY(), cost.unknowns(),
-                diffract.util.MemoryEstimate.size((long) cost.matrixBytes()), cost.operations(),
-                diffract.optics.rigorous.Resolution.DEFAULT.layers()));
+                + "wavelength and direction; the ways out: fewer harmonics (--harmonics), a smaller cell (resample or "
+                + "crop the patch), the snake patches' ridges alone, which are 1-D (the named patches elaphe-ridge and "
+                + "xenopeltis-ridge), or the average ridge (diffract orders, --orders rigorous)",
+                MAX_UNKNOWNS, largestSquareOrder(), describe(), fromUm * 1e3, cost.harmonicsX(), cost.harmonicsY(),
+                cost.unknowns(), diffract.util.MemoryEstimate.size((long) cost.matrixBytes()), cost.operations(),
+                resolution.layers()));
+    }
+
+    /** The largest M whose square set of harmonics stays within {@link #MAX_UNKNOWNS}. */
+    static int largestSquareOrder() {
+        int m = 0;
+        while (2L * (2 * m + 3) * (2 * m + 3) <= MAX_UNKNOWNS) {
+            m++;
+        }
+        return m;
     }
 
     /**
@@ -192,9 +242,18 @@ final class RigorousPatch {
      * method at {@link #ESTIMATE_LAMBDA_UM}, at the default resolution.
      */
     static Cost twoDimensionalCost(double widthUm, double heightUm) {
-        var resolution = diffract.optics.rigorous.Resolution.DEFAULT;
-        int nx = 2 * resolution.maxOrder(widthUm, ESTIMATE_LAMBDA_UM) + 1;
-        int ny = 2 * resolution.maxOrder(heightUm, ESTIMATE_LAMBDA_UM) + 1;
+        return twoDimensionalCost(widthUm, heightUm, Resolution.DEFAULT, ESTIMATE_LAMBDA_UM);
+    }
+
+    /**
+     * What one staircase layer of a 2-D cell costs at {@code resolution} and {@code lambdaUm}: the harmonics
+     * {@link Resolution#maxOrder} keeps along each side, N = (2 M_x + 1)(2 M_y + 1), give one eigenproblem of 2N
+     * complex unknowns (E_x and E_y of every harmonic), solved as its real twin of 4N (as {@code ComplexEigen} does):
+     * 16 (2N)^2 bytes per complex matrix and about 10 (4N)^3 floating-point operations for the real QR algorithm.
+     */
+    static Cost twoDimensionalCost(double widthUm, double heightUm, Resolution resolution, double lambdaUm) {
+        int nx = 2 * resolution.maxOrder(widthUm, lambdaUm) + 1;
+        int ny = 2 * resolution.maxOrder(heightUm, lambdaUm) + 1;
         long unknowns = 2L * nx * ny;
         double real = 2.0 * unknowns;
         return new Cost(nx, ny, unknowns, 16.0 * unknowns * unknowns, 10 * real * real * real);

@@ -145,7 +145,8 @@ public interface Variant {
 
     /**
      * Why it cannot draw the height field {@code meanSubtracted} at all, or empty when it can (every method but the
-     * rigorous one, which solves 1-D patches): for callers that offer a method only where it applies.
+     * rigorous one, which solves 1-D patches and small 2-D cells): for callers that offer a method only where it
+     * applies.
      */
     default java.util.Optional<String> fieldRefusal(HeightField meanSubtracted) {
         return java.util.Optional.empty();

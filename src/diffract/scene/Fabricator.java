@@ -40,7 +40,7 @@ public final class Fabricator {
                     + "material takes the lobes' orders from Maxwell's equations (docs/rigorous.md)" : "";
             reporter.warn(e.describe() + ": the rigorous method (diffract orders, diffract brdfmap with the variant "
                     + "rigorous) solves 1-D patches such as the snake patches' ridges alone, elaphe-ridge and "
-                    + "xenopeltis-ridge" + fix);
+                    + "xenopeltis-ridge, and 2-D cells of about a micrometre" + fix);
         }
     }
 

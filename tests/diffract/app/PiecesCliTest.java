@@ -57,6 +57,32 @@ class PiecesCliTest {
         assertEquals(-1, Files.mismatch(wholeExr, exr), "OpenEXR bytes differ");
     }
 
+    /**
+     * The rigorous method's long maps split the same way: its pieces (each solving the light's orders, or reading
+     * them from the cache) merge into the map computed whole, bit for bit. A cheap solve: a 20 nm band, few harmonics
+     * and slabs.
+     */
+    @Test
+    void theRigorousMethodsPiecesMergeIntoItsWholeMap() throws Exception {
+        List<String> rigorous = new ArrayList<>(MAP);
+        rigorous.addAll(List.of("--variant", "rigorous", "--lambda-min", "500", "--lambda-max", "520",
+                "--harmonics", "8", "--layers", "4"));
+        Path whole = dir.resolve("rigorous-whole.pfm");
+        List<String> wholeArgs = new ArrayList<>(rigorous);
+        wholeArgs.addAll(List.of("-o", dir.resolve("rigorous-whole.png").toString(), "--pfm", whole.toString()));
+        ok(CliTest.run(arguments(wholeArgs)));
+        Path folder = dir.resolve("rigorous-pieces");
+        for (int i = 0; i < 2; i++) {
+            List<String> piece = new ArrayList<>(rigorous);
+            piece.addAll(List.of("--tile", i + "/2", "--pieces", folder.toString()));
+            ok(CliTest.run(arguments(piece)));
+        }
+        Path merged = dir.resolve("rigorous-merged.pfm");
+        ok(CliTest.run("merge", folder.toString(), "-o", dir.resolve("rigorous-merged.png").toString(), "--pfm",
+                merged.toString()));
+        assertEquals(-1, Files.mismatch(whole, merged), "the merged rigorous map's floats differ from the whole's");
+    }
+
     @Test
     void computingAPieceAgainWritesTheSameBytes() throws Exception {
         Path again = dir.resolve("again");

@@ -45,16 +45,129 @@ class RigorousMethodTest {
         assertEquals(List.of(0, 8), List.of(y.texel(-1)[0], y.texel(-1)[1]));
     }
 
+    /**
+     * A 2-D cell beyond {@link RigorousPatch#MAX_UNKNOWNS} at the settings' harmonics is refused before any work, with
+     * the estimate, the limit and the ways out: a random 3.2 x 2.4 um patch at the default harmonics, the snake patch
+     * (128 x 128 samples, 9.15 um) even at --harmonics 7.
+     */
     @Test
-    void aTwoDimensionalPatchIsRefusedWithTheWayOut() {
+    void aTwoDimensionalPatchBeyondTheLimitIsRefusedWithTheWayOut() {
         HeightField rough = NaiveDft.randomPatch(12, 16, 0.2, 0.1, 3);
         InvalidSettingException e = assertThrows(InvalidSettingException.class,
                 () -> DiffractionBrdf.create(settings(), rough, null));
         assertEquals(Quantity.VARIANT, e.quantity());
-        assertTrue(e.getMessage().contains("1-D patches") && e.getMessage().contains("elaphe-ridge"), e.getMessage());
-        RigorousPatch.Cost cost = RigorousPatch.twoDimensionalCost(rough.widthUm(), rough.heightExtentUm());
+        assertTrue(e.getMessage().contains("1-D patches") && e.getMessage().contains("elaphe-ridge")
+                && e.getMessage().contains("--harmonics") && e.getMessage().contains("crop")
+                && e.getMessage().contains("up to " + RigorousPatch.MAX_UNKNOWNS + " complex unknowns"),
+                e.getMessage());
+        RigorousPatch.Cost cost = RigorousPatch.twoDimensionalCost(rough.widthUm(), rough.heightExtentUm(),
+                settings().rigorous().resolution(), 0.38);
+        assertTrue(cost.unknowns() > RigorousPatch.MAX_UNKNOWNS);
         assertTrue(e.getMessage().contains(cost.harmonicsX() + " x " + cost.harmonicsY() + " harmonics")
                 && e.getMessage().contains(cost.unknowns() + " complex unknowns"), e.getMessage());
+        assertTrue(Variant.RIGOROUS.fieldRefusal(rough).isPresent());
+        assertThrows(InvalidSettingException.class, () -> Variant.RIGOROUS.heapMemory(rough, settings(), 0, 380, 780));
+
+        HeightField snake = PatchCatalogue.named("elaphe-like").build().meanSubtracted();
+        BrdfSettings seven = settings().with(b -> b.rigorous(RigorousSettings.DEFAULT.withResolution(
+                new Resolution(7, 12, true))));
+        InvalidSettingException s = assertThrows(InvalidSettingException.class,
+                () -> DiffractionBrdf.create(seven, snake, null));
+        assertTrue(s.getMessage().contains("15 x 15 harmonics") && s.getMessage().contains("450 complex unknowns"),
+                s.getMessage());
+        assertTrue(Variant.RIGOROUS.fieldRefusal(snake).orElseThrow().contains("123 x 123 harmonics"));
+    }
+
+    /** The largest square set of harmonics within the limit: M = 6, 2 x 13^2 = 338 unknowns. */
+    @Test
+    void theLimitAllowsSixHarmonicsEachWay() {
+        assertEquals(6, RigorousPatch.largestSquareOrder());
+        assertTrue(2L * 13 * 13 <= RigorousPatch.MAX_UNKNOWNS && 2L * 15 * 15 > RigorousPatch.MAX_UNKNOWNS);
+    }
+
+    /** A square pillar of {@code side} samples in a cell of {@code samples} x {@code samples}, 1.5 um wide. */
+    static HeightField pillarCell(int samples, int side, double heightUm) {
+        double[] h = new double[samples * samples];
+        for (int r = 0; r < side; r++) {
+            for (int c = 0; c < side; c++) {
+                h[r * samples + c] = heightUm;
+            }
+        }
+        return HeightField.of(samples, samples, h, 1.5 / samples).meanSubtracted();
+    }
+
+    /**
+     * A small 2-D cell (a square pillar in a 1.5 um cell, M = 3 each way) is drawn: its orders (p, q) light the map
+     * where the grating equation puts them in both directions, omega_r = -omega_i + (p, q) lambda / 1.5 um (x and y),
+     * and nothing lies between them; the orders' efficiencies are the cell solver's (texel (-p, -q) of the table).
+     */
+    @Test
+    void aSmallTwoDimensionalCellIsDrawnWithItsOrdersAtTheGratingEquation() {
+        HeightField cell = pillarCell(8, 3, 0.25);
+        assertTrue(!RigorousPatch.of(cell).oneDimensional());
+        BrdfSettings small = settings().with(b -> b.lambdaRangeNm(500, 600).lambdaStepNm(50)
+                .rigorous(RigorousSettings.DEFAULT.withResolution(new Resolution(3, 2, true))));
+        assertTrue(RigorousPatch.of(cell).refusal(small.rigorous().resolution(), 0.5).isEmpty());
+        assertTrue(Variant.RIGOROUS.heapMemory(cell, small, 20, 500, 600).bytes() > 0);
+        DiffractionBrdf rigorous = DiffractionBrdf.create(small, cell, null);
+        Direction wi = Direction.fromSphericalDeg(20, 30);
+        double lambdaNm = 550;
+        double step = lambdaNm * 1e-3 / 1.5;
+        diffract.optics.rigorous.CellEfficiencies solved = diffract.optics.rigorous.CellSolver.solve(
+                RigorousPatch.of(cell).relief(), small.illumination().material(), lambdaNm * 1e-3, -wi.x(), -wi.y(),
+                small.rigorous().resolution());
+        int lit = 0;
+        for (int p = -2; p <= 2; p++) {
+            for (int q = -2; q <= 2; q++) {
+                double x = -wi.x() + p * step;
+                double y = -wi.y() + q * step;
+                if (x * x + y * y >= 0.95) {
+                    continue;
+                }
+                double r = rigorous.relative(wi, Direction.fromProjected(x, y), lambdaNm);
+                double between = rigorous.relative(wi, Direction.fromProjected(x + 0.5 * step, y + 0.5 * step),
+                        lambdaNm);
+                String where = "order (" + p + ", " + q + ")";
+                // at 550 nm (a node) the lobe's peak is cos theta_i / R_0 eta_pq: the solver's unpolarised efficiency
+                double expected = wi.z() / small.illumination().material().normalReflectance()
+                        * solved.reflected(p, q);
+                assertEquals(expected, r, 1e-6 * expected + 1e-12, where);
+                assertTrue(between < 1e-9 * Math.max(r, 1e-3), "between the orders next to " + where);
+                if (p != 0 && q != 0 && solved.reflected(p, q) > 1e-5) {
+                    lit++;
+                }
+            }
+        }
+        assertTrue(lit >= 4, "orders off both axes are lit: " + lit);
+        // a small map: its brightest pixels off the specular sit on the grating equation
+        int size = 32;
+        double best = 0;
+        int[] at = null;
+        for (int row = 0; row < size; row++) {
+            for (int col = 0; col < size; col++) {
+                double x = BrdfMap.xOf(col, size);
+                double y = BrdfMap.yOf(row, size);
+                if (x * x + y * y >= 1 || Math.hypot(x + wi.x(), y + wi.y()) < 0.5 * step) {
+                    continue;
+                }
+                double v = rigorous.mapPixel(wi, col, row, size).y();
+                if (v > best) {
+                    best = v;
+                    at = new int[] {col, row};
+                }
+            }
+        }
+        assertTrue(best > 0, "the map is lit off the specular");
+        double x = BrdfMap.xOf(at[0], size);
+        double y = BrdfMap.yOf(at[1], size);
+        // within a pixel (2 / 32) and the band's spread (500-600 nm moves order 1 by 0.067) of some order
+        double nearest = Double.MAX_VALUE;
+        for (int p = -3; p <= 3; p++) {
+            for (int q = -3; q <= 3; q++) {
+                nearest = Math.min(nearest, Math.hypot(x - (-wi.x() + p * step), y - (-wi.y() + q * step)));
+            }
+        }
+        assertTrue(nearest < 0.15, "the brightest pixel off the specular is " + nearest + " from an order");
     }
 
     /**

@@ -100,12 +100,14 @@ public final class FourierModalMethod {
         double[][] reflected = new double[2][];
         double[][] transmitted = new double[2][];
         double[][] polarisations = {{sx, sy}, {px, py}};
+        double[] betas = new double[n];
+        java.util.Arrays.fill(betas, beta);
         for (int p = 0; p < 2; p++) {
             double[] source = new double[4 * n];
             source[2 * maxOrder] = polarisations[p][0];
             source[2 * (n + maxOrder)] = polarisations[p][1];
-            reflected[p] = efficiencies(s.s11(), source, air.kappa(), alpha, beta, kappa0, 1);
-            transmitted[p] = efficiencies(s.s21(), source, below.kappa(), alpha, beta, kappa0, -1);
+            reflected[p] = efficiencies(s.s11(), source, air.kappa(), alpha, betas, kappa0, 1);
+            transmitted[p] = efficiencies(s.s21(), source, below.kappa(), alpha, betas, kappa0, -1);
         }
         return new OrderEfficiencies(lambdaUm, -maxOrder, alpha, beta, reflected[0], reflected[1], transmitted[0],
                 transmitted[1]);
@@ -114,9 +116,10 @@ public final class FourierModalMethod {
     /**
      * Each order's share of the incident power: the order's field e = S source (tangential, W = I in a homogeneous
      * region), its normal component from div E = 0 ({@code up}: +1 for a wave going up, -1 down), and the power
-     * flux Re(kappa_m) |E_m|^2 over the incident kappa_0 |E_0|^2 (|E_0| = 1).
+     * flux Re(kappa_m) |E_m|^2 over the incident kappa_0 |E_0|^2 (|E_0| = 1). Harmonic m travels along
+     * (alpha_m, beta_m): a 1-D grating's beta_m are all the same, a 2-D cell's are not.
      */
-    private static double[] efficiencies(ZMatrixRMaj s, double[] source, double[] kappa, double[] alpha, double beta,
+    static double[] efficiencies(ZMatrixRMaj s, double[] source, double[] kappa, double[] alpha, double[] beta,
                                          double kappa0, int up) {
         int n = alpha.length;
         double[] field = new double[4 * n];
@@ -147,8 +150,8 @@ public final class FourierModalMethod {
             double eyr = field[2 * (n + m)];
             double eyi = field[2 * (n + m) + 1];
             // E_z = up (alpha E_x + beta E_y) / kappa
-            double nr = alpha[m] * exr + beta * eyr;
-            double ni = alpha[m] * exi + beta * eyi;
+            double nr = alpha[m] * exr + beta[m] * eyr;
+            double ni = alpha[m] * exi + beta[m] * eyi;
             double[] inv = Modes.inverse(kr, ki);
             double ezr = up * (nr * inv[0] - ni * inv[1]);
             double ezi = up * (nr * inv[1] + ni * inv[0]);

@@ -43,10 +43,20 @@ record Modes(ZMatrixRMaj w, ZMatrixRMaj v, double[] kappa) {
      * - beta^2) for both polarisations (the outgoing branch: Im kappa &gt;= 0, and Re kappa &gt;= 0 where it is real).
      */
     static Modes homogeneous(double epsRe, double epsIm, double[] alpha, double beta) {
+        double[] betas = new double[alpha.length];
+        java.util.Arrays.fill(betas, beta);
+        return homogeneous(epsRe, epsIm, alpha, betas);
+    }
+
+    /**
+     * The plane waves of a homogeneous medium with a direction cosine beta_m per harmonic (a 2-D cell's harmonics
+     * (p, q) flattened): as {@link #homogeneous(double, double, double[], double)} with beta replaced by diag(beta_m).
+     */
+    static Modes homogeneous(double epsRe, double epsIm, double[] alpha, double[] beta) {
         int n = alpha.length;
         double[] kappa = new double[4 * n];
         for (int m = 0; m < n; m++) {
-            double[] k = outgoing(epsRe - alpha[m] * alpha[m] - beta * beta, epsIm);
+            double[] k = outgoing(epsRe - alpha[m] * alpha[m] - beta[m] * beta[m], epsIm);
             kappa[2 * m] = k[0];
             kappa[2 * m + 1] = k[1];
             kappa[2 * (n + m)] = k[0];
@@ -57,10 +67,10 @@ record Modes(ZMatrixRMaj w, ZMatrixRMaj v, double[] kappa) {
         for (int m = 0; m < n; m++) {
             // Q's four diagonal blocks at harmonic m, divided by kappa_m and negated
             double[] inv = inverse(kappa[2 * m], kappa[2 * m + 1]);
-            set(v, m, m, -(-beta * alpha[m]), 0, inv);
+            set(v, m, m, -(-beta[m] * alpha[m]), 0, inv);
             set(v, m, n + m, -(alpha[m] * alpha[m] - epsRe), epsIm, inv);
-            set(v, n + m, m, -(epsRe - beta * beta), -epsIm, inv);
-            set(v, n + m, n + m, -(beta * alpha[m]), 0, inv);
+            set(v, n + m, m, -(epsRe - beta[m] * beta[m]), -epsIm, inv);
+            set(v, n + m, n + m, -(beta[m] * alpha[m]), 0, inv);
         }
         return new Modes(w, v, kappa);
     }

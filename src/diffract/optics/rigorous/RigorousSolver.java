@@ -29,7 +29,7 @@ public final class RigorousSolver {
     }
 
     /** fine + (fine - coarse) factor, kept &gt;= 0 (an order that is nearly dark may not turn negative). */
-    private static double[] extrapolated(double[] fine, double[] coarse, double factor) {
+    static double[] extrapolated(double[] fine, double[] coarse, double factor) {
         double[] out = new double[fine.length];
         for (int i = 0; i < fine.length; i++) {
             out[i] = Math.max(0, fine[i] + (fine[i] - coarse[i]) * factor);

@@ -74,7 +74,7 @@ public final class ReferencePanel extends JPanel {
     public enum Yardstick {
         /** The scalar model's exact reference. */
         REFERENCE("the scalar reference"),
-        /** Maxwell's equations: the rigorous method (1-D patches). */
+        /** Maxwell's equations: the rigorous method (1-D patches and small 2-D cells). */
         RIGOROUS("Maxwell's equations");
 
         private final String label;
