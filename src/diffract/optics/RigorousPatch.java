@@ -217,12 +217,13 @@ final class RigorousPatch {
             return Optional.empty();
         }
         return Optional.of(String.format(Locale.ROOT, "the rigorous method solves 1-D patches (every row, or every "
-                + "column, the same) and 2-D cells of up to %d complex unknowns per layer (2 (2 M + 1)^2 with "
-                + "--harmonics %d), and this is %s: at %.0f nm it would keep %d x %d harmonics, an eigenproblem of "
-                + "%d complex unknowns per layer (%s per matrix, about %.1g operations), for each of %d layers, every "
-                + "wavelength and direction; the ways out: fewer harmonics (--harmonics), a smaller cell (resample or "
-                + "crop the patch), the snake patches' ridges alone, which are 1-D (the named patches elaphe-ridge and "
-                + "xenopeltis-ridge), or the average ridge (diffract orders, --orders rigorous)",
+                + "column, the same) and 2-D cells of up to %d complex unknowns per layer (2 (2 M + 1)^2 with the "
+                + "highest harmonic M = %d), and this is %s: at %.0f nm it would keep %d x %d harmonics, an "
+                + "eigenproblem of %d complex unknowns per layer (%s per matrix, about %.1g operations), for each of "
+                + "%d layers, every wavelength and direction; the ways out: fewer harmonics (a lower highest "
+                + "harmonic), a smaller cell (resample or crop the patch), the snake patches' ridges alone, which are "
+                + "1-D (the named patches elaphe-ridge and xenopeltis-ridge), or their average ridge (the orders "
+                + "command, the lobes method's rigorous orders)",
                 MAX_UNKNOWNS, largestSquareOrder(), describe(), fromUm * 1e3, cost.harmonicsX(), cost.harmonicsY(),
                 cost.unknowns(), diffract.util.MemoryEstimate.size((long) cost.matrixBytes()), cost.operations(),
                 resolution.layers()));

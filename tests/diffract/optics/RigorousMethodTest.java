@@ -57,7 +57,7 @@ class RigorousMethodTest {
                 () -> DiffractionBrdf.create(settings(), rough, null));
         assertEquals(Quantity.VARIANT, e.quantity());
         assertTrue(e.getMessage().contains("1-D patches") && e.getMessage().contains("elaphe-ridge")
-                && e.getMessage().contains("--harmonics") && e.getMessage().contains("crop")
+                && e.getMessage().contains("fewer harmonics") && e.getMessage().contains("crop")
                 && e.getMessage().contains("up to " + RigorousPatch.MAX_UNKNOWNS + " complex unknowns"),
                 e.getMessage());
         RigorousPatch.Cost cost = RigorousPatch.twoDimensionalCost(rough.widthUm(), rough.heightExtentUm(),
