@@ -5,20 +5,26 @@
 # method with Rayleigh-Rice's gain, with Stam's and with the rigorous orders, each against the rigorous method) with an
 # empty cache of rigorous orders, so the times include the solves and the tables; times brdfmap's GPU path with the
 # rigorous orders; writes docs/rigorous-measurements.md and docs/images/rigorous-*.png. About an hour on 2 cores;
-# from anywhere: bash docs/rigorous.sh
+# from anywhere: bash docs/rigorous.sh (--report-only writes the page again from the last run's reports, timing
+# the GPU's maps where they were not timed yet)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=docs/rigorous-measurements.md
-rm -rf target/test-cache/rigorous-orders target/test-cache/order-corrections target/test-reports/rigorous
-rm -f target/test-reports/RigorousMeasurement.txt target/test-reports/GainModelsMeasurement.txt
-mvn -B -ntp -q test -Dtest='GainModelsMeasurement,RigorousMeasurement' -Ddiffract.measure=rigorous
-mkdir -p docs/images
-cp target/test-reports/rigorous/rigorous-*.png docs/images/
-# the GPU's map with the rigorous orders, after the table is in the user's cache (the first run solves it)
-./diffract brdfmap --patch elaphe-ridge --orders rigorous --theta-i 30 --size 64 --engine gpu -o out/rigorous-gpu.png \
-    --exposure auto --time > out/rigorous-gpu.txt 2>&1 || { cat out/rigorous-gpu.txt; exit 1; }
-./diffract brdfmap --patch elaphe-ridge --theta-i 30 --size 64 --engine gpu -o out/rigorous-gpu-scalar.png \
-    --exposure auto --time > out/rigorous-gpu-scalar.txt 2>&1 || { cat out/rigorous-gpu-scalar.txt; exit 1; }
+if [ "${1:-}" != --report-only ]; then
+    rm -rf target/test-cache/rigorous-orders target/test-cache/order-corrections target/test-reports/rigorous
+    rm -f target/test-reports/RigorousMeasurement.txt target/test-reports/GainModelsMeasurement.txt
+    mvn -B -ntp -q test -Dtest='GainModelsMeasurement,RigorousMeasurement' -Ddiffract.measure=rigorous
+    mkdir -p docs/images
+    cp target/test-reports/rigorous/rigorous-*.png docs/images/
+fi
+if [ "${1:-}" != --report-only ] || [ ! -s out/rigorous-gpu.txt ]; then
+    mkdir -p out
+    # the GPU's map with the rigorous orders, after the table is in the user's cache (the first run solves it)
+    ./diffract brdfmap --synthetic elaphe-ridge --variant lobes --orders rigorous --theta-i 30 --size 64 --engine gpu \
+        -o out/rigorous-gpu.png --exposure auto --time > out/rigorous-gpu.txt 2>&1 || { cat out/rigorous-gpu.txt; exit 1; }
+    ./diffract brdfmap --synthetic elaphe-ridge --variant lobes --theta-i 30 --size 64 --engine gpu \
+        -o out/rigorous-gpu-scalar.png --exposure auto --time > out/rigorous-gpu-scalar.txt 2>&1 || { cat out/rigorous-gpu-scalar.txt; exit 1; }
+fi
 {
     echo "# The scalar model's gain and the lobes method's orders against Maxwell's equations"
     echo
@@ -71,11 +77,11 @@ cp target/test-reports/rigorous/rigorous-*.png docs/images/
         echo
     done
     echo "On the GPU (\`brdfmap --engine gpu --time\`, the Elaphe-like ridge at 30 degrees, 64 x 64; GL time on"
-    echo "$(grep -o 'llvmpipe[^)]*' out/rigorous-gpu.txt | head -1 || echo 'the GPU'), the rigorous orders' table a 3-D texture):"
+    echo "$(grep -o 'llvmpipe ([^)]*)' out/rigorous-gpu.txt | head -1 || echo 'the GPU'), the rigorous orders' table a 3-D texture):"
     echo
     echo "- rigorous orders: $(grep -i 'gpu time\|median' out/rigorous-gpu.txt | head -1)"
     echo "- scalar orders: $(grep -i 'gpu time\|median' out/rigorous-gpu-scalar.txt | head -1)"
     echo
-    echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
+    echo "Load when this page was written: $(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
 } > "$out"
 echo "wrote $out"
