@@ -95,14 +95,9 @@ public final class CellFourierModalMethod {
         s = s.star(ScatteringMatrix.transmissionSide(below, gap));
 
         double kappa0 = Math.sqrt(incidentKappa2);
-        double rho = Math.hypot(alpha0, beta0);
-        double sx = rho > 1e-12 ? -beta0 / rho : 0;
-        double sy = rho > 1e-12 ? alpha0 / rho : 1;
-        double px = -kappa0 * sy;
-        double py = kappa0 * sx;
         double[][] reflected = new double[2][];
         double[][] transmitted = new double[2][];
-        double[][] polarisations = {{sx, sy}, {px, py}};
+        double[][] polarisations = FourierModalMethod.polarisations(alpha0, beta0, kappa0);
         int zero = maxY * nx + maxX;
         for (int pol = 0; pol < 2; pol++) {
             double[] source = new double[4 * n];

@@ -91,15 +91,9 @@ public final class FourierModalMethod {
         s = s.star(ScatteringMatrix.transmissionSide(below, gap));
 
         double kappa0 = Math.sqrt(incidentKappa2);
-        double rho = Math.hypot(alpha0, beta);
-        // s = (-beta, alpha0, 0) / rho (along the grooves, y, at normal incidence); p = k x s
-        double sx = rho > 1e-12 ? -beta / rho : 0;
-        double sy = rho > 1e-12 ? alpha0 / rho : 1;
-        double px = -kappa0 * sy;
-        double py = kappa0 * sx;
         double[][] reflected = new double[2][];
         double[][] transmitted = new double[2][];
-        double[][] polarisations = {{sx, sy}, {px, py}};
+        double[][] polarisations = polarisations(alpha0, beta, kappa0);
         double[] betas = new double[n];
         java.util.Arrays.fill(betas, beta);
         for (int p = 0; p < 2; p++) {
@@ -111,6 +105,18 @@ public final class FourierModalMethod {
         }
         return new OrderEfficiencies(lambdaUm, -maxOrder, alpha, beta, reflected[0], reflected[1], transmitted[0],
                 transmitted[1]);
+    }
+
+    /**
+     * The incident wave's tangential electric field for s and for p light, {{s_x, s_y}, {p_x, p_y}}: s = (-beta,
+     * alpha0, 0) / rho (along the grooves, y, at normal incidence), p = k x s, for the wave along (alpha0, beta,
+     * kappa0).
+     */
+    static double[][] polarisations(double alpha0, double beta, double kappa0) {
+        double rho = Math.hypot(alpha0, beta);
+        double sx = rho > 1e-12 ? -beta / rho : 0;
+        double sy = rho > 1e-12 ? alpha0 / rho : 1;
+        return new double[][] {{sx, sy}, {-kappa0 * sy, kappa0 * sx}};
     }
 
     /**
