@@ -202,35 +202,14 @@ public final class ScalarValidity {
         if (patch.oneDimensional()) {
             return new double[] {patch.profile().periodUm(), patch.profile().depthUm()};
         }
-        int rows = meanSubtracted.rows();
-        int cols = meanSubtracted.cols();
         double[] h = meanSubtracted.heightsUm();
-        double[] complex = new double[2 * h.length];
         double sumSquares = 0;
-        for (int i = 0; i < h.length; i++) {
-            complex[2 * i] = h[i];
-            sumSquares += h[i] * h[i];
+        for (double v : h) {
+            sumSquares += v * v;
         }
-        double[] spectrum = ShiftedDft.inverse(complex, rows, cols);
-        double best = -1;
-        double frequency = 0;
-        for (int r = 0; r < rows; r++) {
-            for (int c = 0; c < cols; c++) {
-                int my = r - rows / 2;
-                int mx = c - cols / 2;
-                if (mx == 0 && my == 0) {
-                    continue;
-                }
-                int p = 2 * (r * cols + c);
-                double power = spectrum[p] * spectrum[p] + spectrum[p + 1] * spectrum[p + 1];
-                if (power > best) {
-                    best = power;
-                    double fx = mx / meanSubtracted.widthUm();
-                    double fy = my / meanSubtracted.heightExtentUm();
-                    frequency = Math.hypot(fx, fy);
-                }
-            }
-        }
+        int[] dominant = OrderCorrection.dominantTexel(meanSubtracted);
+        double frequency = Math.hypot(dominant[0] / meanSubtracted.widthUm(),
+                dominant[1] / meanSubtracted.heightExtentUm());
         double rms = Math.sqrt(sumSquares / h.length);
         double period = frequency > 0 ? 1 / frequency : Math.max(meanSubtracted.widthUm(), meanSubtracted.heightExtentUm());
         return new double[] {period, 2 * Math.sqrt(2) * rms};
