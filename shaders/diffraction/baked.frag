@@ -61,9 +61,18 @@ void setSurfacePixel(vec2 dUvDx, vec2 dUvDy, vec3 wi) {
 #ifdef BAKED_DISC
 #include "baked_disc.glsl"
 
+#if defined(DISC_TABLE) && (!defined(STAGE) || !defined(ENVIRONMENT_LIGHTS) || defined(SKY_TABLE))
+// Only the disc reads the table here (a stage's environment lights, if any, read their own spread tables), and a
+// spread table's disc is never a point (discOn): the point lookup is left out rather than run beside the disc's for
+// every pixel, as a software rasteriser runs both sides of a choice.
+vec3 spectralXyz(vec3 uvw) {
+    return discTableXyz(footprintCovariance);
+}
+#else
 vec3 spectralXyz(vec3 uvw) {
     return discOn ? discTableXyz(footprintCovariance) : tableXyz(uvw, footprint);
 }
+#endif
 #else
 vec3 spectralXyz(vec3 uvw) {
     return tableXyz(uvw, footprint);

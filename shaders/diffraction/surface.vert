@@ -14,6 +14,9 @@ uniform mat3 normalMatrix;  // inverse transpose of the model's 3x3 part
 uniform vec3 cameraPosition;      // world space
 uniform vec3 lightDirection[ENGINE_MAX_LIGHTS];   // world space, towards the light; [0] is used
 
+// as engine/depth_prepass.vert computes it, so the shading pass's depth test keeps exactly the pre-pass's surface
+invariant gl_Position;
+
 out vec3 omegaITangent;
 out vec3 toViewerTangent;
 out vec2 surfaceTexcoord;

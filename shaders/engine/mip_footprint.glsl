@@ -36,12 +36,10 @@ MipFootprint mipFootprint(vec3 covarianceTexels) {
     return m;
 }
 
-// The texture at texcoord tc of layer `layer`, spread by the footprint; one lookup where the footprint is
-// isotropic (a BRDF map's pixel), whose two lookups would coincide.
+// The texture at texcoord tc of layer `layer`, spread by the footprint. An isotropic footprint's two lookups
+// coincide and average to the one exactly; they are not skipped by a branch, which a software rasteriser would run
+// beside the two lookups wherever one lane of a pixel block is anisotropic.
 vec4 textureFootprint(sampler2DArray s, vec2 tc, float layer, MipFootprint m) {
-    if (m.offsetTexels == vec2(0.0)) {
-        return textureLod(s, vec3(tc, layer), m.lod);
-    }
     vec2 offset = m.offsetTexels / vec2(textureSize(s, 0).xy);
     return 0.5 * (textureLod(s, vec3(tc + offset, layer), m.lod) + textureLod(s, vec3(tc - offset, layer), m.lod));
 }

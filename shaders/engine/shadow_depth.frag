@@ -1,4 +1,5 @@
 #version 330 core
-// Depth pass of diffract.jrtr.ShadowMap: the depth buffer is the output; no colour is written.
+// Depth passes (diffract.jrtr.ShadowMap's, GLRenderContext's pre-pass): the depth buffer is the output; no colour
+// is written.
 void main() {
 }

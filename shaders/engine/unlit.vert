@@ -11,7 +11,11 @@ uniform mat3 normalMatrix;
 
 out vec3 worldNormal;
 
+// as engine/depth_prepass.vert computes it, so the shading pass's depth test keeps exactly the pre-pass's surface
+invariant gl_Position;
+
 void main() {
     worldNormal = normalMatrix * normal;
-    gl_Position = projection * view * model * vec4(position, 1.0);
+    vec4 worldPosition = model * vec4(position, 1.0);
+    gl_Position = projection * view * worldPosition;
 }

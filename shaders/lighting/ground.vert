@@ -9,6 +9,9 @@ uniform mat4 projection;
 
 out vec3 groundWorldPosition;
 
+// as engine/depth_prepass.vert computes it, so the shading pass's depth test keeps exactly the pre-pass's surface
+invariant gl_Position;
+
 void main() {
     vec4 world = model * vec4(position, 1.0);
     groundWorldPosition = world.xyz;

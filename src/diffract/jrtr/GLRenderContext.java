@@ -22,6 +22,9 @@ public final class GLRenderContext implements RenderContext {
     private final GLInfo info;
     private final Map<Shape, GLMesh> meshes = new IdentityHashMap<>();
     private final Set<GpuResource> resources = new LinkedHashSet<>();
+    private final ShaderProgram prepassProgram = ShaderProgram.fromClasspath("engine/depth_prepass.vert",
+            "engine/shadow_depth.frag", Map.of());
+    private boolean depthPrepass = true;
     private boolean disposed;
 
     /**
@@ -95,12 +98,49 @@ public final class GLRenderContext implements RenderContext {
         gl.glClear(GL.GL_COLOR_BUFFER_BIT | GL.GL_DEPTH_BUFFER_BIT);
     }
 
+    /**
+     * Whether {@link #draw} first lays down the depths of the shapes whose programs match the pre-pass (on unless
+     * switched off). A shape hidden behind another then costs its vertices only, not its fragment shader: on a
+     * software rasteriser, where the fragments are the frame, a coiled snake over its ground shades each pixel once
+     * instead of once per surface behind it.
+     */
+    public void setDepthPrepass(boolean on) {
+        depthPrepass = on;
+    }
+
+    public boolean depthPrepass() {
+        return depthPrepass;
+    }
+
+    /**
+     * Draws every item with its material. With the depth pre-pass on, the items whose programs compute their
+     * positions as the pre-pass does ({@link ShaderProgram#matchesDepthPrepass}) have their depths laid down first
+     * and are then shaded where their depth equals the nearest one (GL_LEQUAL, depth writes off); other items are
+     * drawn as without it (GL_LESS, depth writes on), so a program that places its vertices another way (a
+     * full-screen quad) is never hidden by a depth it did not write.
+     */
     @Override
     public void draw(RenderList list, Camera camera, Frustum frustum) {
         requireAlive();
         gl.glEnable(GL.GL_DEPTH_TEST);
         Matrix4f view = camera.viewMatrix();
         Matrix4f projection = frustum.projectionMatrix();
+        Set<RenderItem> prepassed = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
+        if (depthPrepass) {
+            for (RenderItem item : list.items()) {
+                if (item.material() != null && item.material().program().matchesDepthPrepass()) {
+                    prepassed.add(item);
+                }
+            }
+        }
+        if (!prepassed.isEmpty()) {
+            gl.glColorMask(false, false, false, false);
+            gl.glDepthFunc(GL.GL_LESS);
+            gl.glDepthMask(true);
+            drawDepthOnly(list.items().stream().filter(prepassed::contains).toList(), prepassProgram, view,
+                    projection);
+            gl.glColorMask(true, true, true, true);
+        }
         List<DirectionalLight> lights = list.lights();
         if (lights.size() > MAX_LIGHTS) {
             throw new IllegalStateException(lights.size() + " lights; the engine passes at most " + MAX_LIGHTS);
@@ -117,6 +157,9 @@ public final class GLRenderContext implements RenderContext {
             if (material == null) {
                 throw new IllegalStateException(item.node() + " has no material");
             }
+            boolean afterPrepass = prepassed.contains(item);
+            gl.glDepthFunc(afterPrepass ? GL.GL_LEQUAL : GL.GL_LESS);
+            gl.glDepthMask(!afterPrepass);
             ShaderProgram program = material.program();
             program.use(gl);
             resources.add(program);
@@ -149,6 +192,8 @@ public final class GLRenderContext implements RenderContext {
             meshes.computeIfAbsent(item.shape(), shape -> GLMesh.upload(gl, shape.vertexData())).draw(gl);
             GLErrors.check(gl, "drawing " + item.node() + " with " + program);
         }
+        gl.glDepthFunc(GL.GL_LESS);
+        gl.glDepthMask(true);
     }
 
     /**
@@ -156,11 +201,15 @@ public final class GLRenderContext implements RenderContext {
      * given view and projection, with depth testing: for depth-only passes such as {@link ShadowMap}'s.
      */
     public void drawDepthOnly(RenderList list, ShaderProgram program, Matrix4f view, Matrix4f projection) {
+        drawDepthOnly(list.items(), program, view, projection);
+    }
+
+    private void drawDepthOnly(List<RenderItem> items, ShaderProgram program, Matrix4f view, Matrix4f projection) {
         requireAlive();
         gl.glEnable(GL.GL_DEPTH_TEST);
         program.use(gl);
         resources.add(program);
-        for (RenderItem item : list.items()) {
+        for (RenderItem item : items) {
             setMatrix(program, "model", item.modelMatrix());
             setMatrix(program, "view", view);
             setMatrix(program, "projection", projection);

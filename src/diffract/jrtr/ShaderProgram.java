@@ -87,6 +87,17 @@ public final class ShaderProgram extends GpuResource {
         return fragment;
     }
 
+    /**
+     * Whether the vertex stage declares {@code invariant gl_Position} and so computes its positions as the depth
+     * pre-pass does ({@code engine/depth_prepass.vert}: {@code projection * view * (model * position)}): only such
+     * programs may be drawn against the pre-pass's depths with an equal-passes test.
+     */
+    public boolean matchesDepthPrepass() {
+        return INVARIANT_POSITION.matcher(vertex.source().text()).find();
+    }
+
+    private static final Pattern INVARIANT_POSITION = Pattern.compile("(?m)^\\s*invariant\\s+gl_Position\\s*;");
+
     /** The uniforms the sources declare, in any branch of their {@code #ifdef}s. */
     public Set<String> declaredUniforms() {
         return declaredUniforms;
@@ -161,6 +172,9 @@ public final class ShaderProgram extends GpuResource {
         uniformLocations.clear();
     }
 
+    /** GL 4.2's type of an {@code atomic_uint} uniform (GL_UNSIGNED_INT_ATOMIC_COUNTER). */
+    private static final int UNSIGNED_INT_ATOMIC_COUNTER = 0x92DB;
+
     private static Set<String> activeUniforms(GL3 gl, int id) {
         int[] count = new int[1];
         gl.glGetProgramiv(id, GL2ES2.GL_ACTIVE_UNIFORMS, count, 0);
@@ -174,6 +188,9 @@ public final class ShaderProgram extends GpuResource {
         for (int i = 0; i < count[0]; i++) {
             gl.glGetActiveUniform(id, i, buffer.length, length, 0, size, 0, type, 0, buffer, 0);
             String uniform = new String(buffer, 0, length[0], StandardCharsets.UTF_8);
+            if (type[0] == UNSIGNED_INT_ATOMIC_COUNTER) {
+                continue; // a buffer's, bound by its binding point: no value a material sets
+            }
             names.add(uniform.endsWith("[0]") ? uniform.substring(0, uniform.length() - 3) : uniform);
         }
         return Collections.unmodifiableSet(names);

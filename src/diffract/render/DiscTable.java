@@ -22,10 +22,13 @@ import java.util.stream.IntStream;
  * a c_k ({@link #MEMBER_COS}), which depends on the light's size only (not on where it is: it is redone when the size
  * changes, never when the light moves). A pixel with cos theta_i = c reads the member of the largest c_k <= c and
  * adds the rest of its ellipse as a Gaussian of the remaining covariance, (a^2 / 4)(1 - c_k^2) along e and
- * (a^2 / 4)(c^2 - c_k^2) along r, through the table's mip-mapped footprint lookup; below the smallest c_k it reads
- * the point table with the disc's whole covariance, as a disc narrow next to the pixel does. Between two members the
- * pixel blends them over the upper {@link #BLEND_FRACTION} of the interval, so that the picture does not jump where
- * c crosses a c_k.
+ * (a^2 / 4)(c^2 - c_k^2) along r, through the table's mip-mapped footprint lookup. Member 0 (c_0 = 0) is the point
+ * table itself on the spread grid (averaged over a disc of half the grid's step, against aliasing: a variance of a
+ * sixteenth of a step squared, left out of the rest): below the smallest disc member a pixel reads it with the disc's
+ * whole covariance, as a disc narrow next to the pixel does. It lives in the members' texture rather than being read
+ * from the table's own, so that every pixel runs one lookup path: a software rasteriser runs every branch its
+ * pixels' lanes take, and two paths cost both everywhere. Between two members the pixel blends them over the upper
+ * {@link #BLEND_FRACTION} of the interval, so that the picture does not jump where c crosses a c_k.
  *
  * <p>What it leaves out against the per-pixel rows: the density 1 / (Omega d_z), the gain factor and w vary across the
  * disc and are taken at its centre, and an ellipse narrower than its member's round disc along r is the Gaussian's
@@ -36,8 +39,11 @@ import java.util.stream.IntStream;
  * member k's w slices at layers k wSamples .. (k + 1) wSamples - 1, the table's own w samples; mip-mapped per layer.
  */
 public final class DiscTable {
-    /** cos theta_i of the members: each holds the table spread by the round disc of radius sin R times it. */
-    static final double[] MEMBER_COS = {0.55, 0.7, 0.85, 1.0};
+    /**
+     * cos theta_i of the members: each holds the table spread by the round disc of radius sin R times it; member 0's
+     * disc is the point light's (the table resampled, {@link #memberRadiusUv}).
+     */
+    static final double[] MEMBER_COS = {0, 0.55, 0.7, 0.85, 1.0};
     /** The fraction of each interval between two members, at its top, over which a pixel blends the two. */
     public static final double BLEND_FRACTION = 0.25;
     /**
@@ -83,10 +89,28 @@ public final class DiscTable {
         return Math.sin(halfAngleRad) * 0.25 * (n - 1);
     }
 
-    /** The spread grid's samples per axis: {@link #RADIUS_SAMPLES} across sin R, at most the table's. */
+    /**
+     * The spread grid's samples per axis never go below this (or the table's, where fewer): the point member serves
+     * grazing light, whose ellipse is thin along r, at half the resolution of the 512-sample table at least.
+     */
+    public static final int MIN_SIDE = 257;
+
+    /**
+     * The spread grid's samples per axis: {@link #RADIUS_SAMPLES} across sin R and at least {@link #MIN_SIDE}, at most
+     * the table's.
+     */
     static int side(double halfAngleRad, int tableSamples) {
         int needed = (int) Math.ceil(RADIUS_SAMPLES / (0.25 * Math.sin(halfAngleRad))) + 1;
-        return Math.min(needed, tableSamples);
+        return Math.min(Math.max(needed, MIN_SIDE), tableSamples);
+    }
+
+    /**
+     * The radius in (u, v) of member m's round disc: sin R c_m, and for the point member (c_0 = 0) half the spread
+     * grid's step, the resampling's prefilter.
+     */
+    public static double memberRadiusUv(int m, double halfAngleRad, int side) {
+        double radius = Math.sin(halfAngleRad) * MEMBER_COS[m];
+        return radius > 0 ? radius : 0.5 * (BakedGrid.U_MAX - BakedGrid.U_MIN) / (side - 1);
     }
 
     /** The filtered table spread by the disc of half-angle {@code halfAngleRad} for every member. */
@@ -103,7 +127,6 @@ public final class DiscTable {
         int n = grid.uvSamples();
         int nw = grid.wSamples();
         int side = side(halfAngleRad, n);
-        double sinR = Math.sin(halfAngleRad);
         int members = MEMBER_COS.length;
         float[] out = new float[3 * side * side * nw * members];
         float[] values = table.values();
@@ -114,7 +137,8 @@ public final class DiscTable {
         IntStream.range(0, nw).parallel().forEach(k -> {
             Bands bands = Bands.of(values, n, k, Math.max(1, (n - 1) / (side - 1)));
             for (int member = 0; member < members; member++) {
-                bands.spread(sinR * MEMBER_COS[member], side, out, 3 * side * side * (member * nw + k));
+                bands.spread(memberRadiusUv(member, halfAngleRad, side), side, out,
+                        3 * side * side * (member * nw + k));
             }
             reporter.progress(task, done.incrementAndGet() / (double) nw);
         });

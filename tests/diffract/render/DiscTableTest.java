@@ -17,7 +17,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * {@link DiscTable}'s host side: each member is the table averaged over its round disc (a uniform table stays uniform,
  * a single cell becomes a disc of the member's radius with the cell's integral and the disc's variance rho^2 / 4), w
- * slices stay apart, and the grid and the choice between the spread table and the rows follow the disc's size.
+ * slices stay apart, member 0 is the table itself, and the grid and the choice between the spread table and the rows follow the disc's size.
  */
 class DiscTableTest {
     private static final int N = 129;     // table samples per (u, v) axis: spacing 1/32
@@ -34,9 +34,12 @@ class DiscTableTest {
             for (int k = 0; k < NW; k++) {
                 assertEquals(1.0, spread.xyzAt(m, mid, mid, k)[1], 1e-5, "member " + m + ", slice " + k);
             }
+            if (m == 0) {
+                continue; // the point member's disc lies within the edge cell: no strip beyond it
+            }
             // beyond its edge cells (half a sample past |u| = 2) the table is zero (unreachable): a disc about the
             // edge holds half of it and the strip of width h / 2 beyond, h / (pi rho)
-            double rho = Math.sin(HALF_ANGLE) * DiscTable.memberCos()[m];
+            double rho = DiscTable.memberRadiusUv(m, HALF_ANGLE, spread.side());
             double h = (BakedGrid.U_MAX - BakedGrid.U_MIN) / (N - 1);
             double edge = spread.xyzAt(m, 0, mid, 0)[1];
             assertEquals(0.5 + h / (Math.PI * rho), edge, 0.01, "member " + m + " at the table's edge");
@@ -53,8 +56,14 @@ class DiscTableTest {
         int side = spread.side();
         double step = (BakedGrid.U_MAX - BakedGrid.U_MIN) / (side - 1);
         double[] cos = DiscTable.memberCos();
-        for (int m = 0; m < cos.length; m++) {
-            double rho = Math.sin(HALF_ANGLE) * cos[m];
+        assertEquals(0, cos[0], "member 0 is the point light's");
+        assertEquals(N, side, "the point member keeps a 129-sample table's resolution");
+        // the point member: the table itself, its sample at the cell and nothing around (a disc of half a step)
+        assertEquals(1 / (h * h), spread.xyzAt(0, centre, centre, 1)[1], 1e-3 / (h * h), "the point member's cell");
+        assertEquals(0, spread.xyzAt(0, centre + 1, centre, 1)[1], 1e-6, "the point member's neighbour");
+        for (int m = 1; m < cos.length; m++) {
+            double rho = DiscTable.memberRadiusUv(m, HALF_ANGLE, side);
+            assertEquals(Math.sin(HALF_ANGLE) * cos[m], rho, 1e-15, "member " + m + "'s radius");
             double mass = 0;
             double second = 0;
             double inside = 0;
@@ -105,8 +114,10 @@ class DiscTableTest {
         assertFalse(DiscTable.applies(staged.with(b -> b.lightSizeDeg(0.53)), grid), "the sun: 0.6 samples");
         assertFalse(DiscTable.applies(staged.with(b -> b.lightProfile(LightProfile.GAUSSIAN)), grid),
                 "a Gaussian light is in the table already");
-        assertEquals(247, DiscTable.side(Math.toRadians(7.5), 512), "8 samples across sin 7.5 degrees");
-        assertEquals(38, DiscTable.side(Math.toRadians(60), 512), "8 samples across sin 60 degrees");
+        assertEquals(DiscTable.MIN_SIDE, DiscTable.side(Math.toRadians(7.5), 512),
+                "8 samples across sin 7.5 degrees (247) and half the table's for the point member");
+        assertEquals(DiscTable.MIN_SIDE, DiscTable.side(Math.toRadians(60), 512), "8 samples across sin 60 degrees: 38");
+        assertEquals(460, DiscTable.side(Math.toRadians(4), 512), "8 samples across sin 4 degrees");
         assertEquals(65, DiscTable.side(Math.toRadians(2), 65), "never finer than the table");
     }
 
