@@ -22,7 +22,7 @@ vec3 environmentIrradiance(vec3 n) {
 
 #ifdef SHADOW_MAP
 // diffract.jrtr.ShadowMap: world -> [0, 1]^3 of the key light's depth map, sampled with comparisons (GL_LEQUAL,
-// bilinear); diffract.jrtr.DepthBounds: (min, max) of its depths over blocks of 2^p texels at level p, level 0 the
+// bilinear); diffract.jrtr.textures.DepthBounds: (min, max) of its depths over blocks of 2^p texels at level p, level 0 the
 // raw depths.
 uniform sampler2DShadow shadowMap;
 uniform sampler2D shadowDepthBounds;

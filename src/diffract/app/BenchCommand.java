@@ -11,8 +11,8 @@ import diffract.bench.ReferenceSet;
 import diffract.bench.ResultsTable;
 import diffract.bench.SweepPlan;
 import diffract.bench.Targets;
-import diffract.jrtr.HeadlessGL;
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.HeadlessGL;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TermFormat;
 import diffract.optics.MapBand;
@@ -120,8 +120,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
 
     @Override
     public Integer call() throws IOException {
-        if (frames < diffract.jrtr.GpuTimer.MIN_FRAMES) {
-            throw new UserInputException("--frames takes at least " + diffract.jrtr.GpuTimer.MIN_FRAMES
+        if (frames < diffract.jrtr.gl.GpuTimer.MIN_FRAMES) {
+            throw new UserInputException("--frames takes at least " + diffract.jrtr.gl.GpuTimer.MIN_FRAMES
                     + " frames (their median is the time), got " + frames);
         }
         if (tiles.requested("which run of the sweep's configurations to measure")) {
@@ -365,8 +365,8 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
     /** What {@code submit} checks before it starts any worker: the options as one run would, and the split. */
     @Override
     public void validateSplit(int pieceCount) {
-        if (frames < diffract.jrtr.GpuTimer.MIN_FRAMES) {
-            throw new UserInputException("--frames takes at least " + diffract.jrtr.GpuTimer.MIN_FRAMES
+        if (frames < diffract.jrtr.gl.GpuTimer.MIN_FRAMES) {
+            throw new UserInputException("--frames takes at least " + diffract.jrtr.gl.GpuTimer.MIN_FRAMES
                     + " frames (their median is the time), got " + frames);
         }
         if (gpuSuite || filtering) {

@@ -3,7 +3,7 @@ package diffract.app;
 import diffract.bench.BenchConfig;
 import diffract.bench.BenchResult;
 import diffract.bench.MapError;
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.util.UserInputException;
 
 import java.util.ArrayList;

@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.contexts.HeadlessGL;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;

@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.contexts.HeadlessGL;
 import picocli.CommandLine.ITypeConverter;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.TypeConversionException;

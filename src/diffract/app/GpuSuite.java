@@ -7,7 +7,7 @@ import diffract.bench.ReferenceMaps;
 import diffract.bench.ReferenceSet;
 import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.OffscreenTarget;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;

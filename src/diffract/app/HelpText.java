@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.jrtr.GpuTimer;
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.gl.GpuTimer;
+import diffract.jrtr.contexts.HeadlessGL;
 import diffract.scene.LightDirection;
 import diffract.optics.LightSource;
 import diffract.util.DiskCache;

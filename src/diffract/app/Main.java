@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.jrtr.GLInfo;
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.contexts.GLInfo;
+import diffract.jrtr.contexts.HeadlessGL;
 import diffract.optics.InvalidSettingException;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.DiskCache;

@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.contexts.HeadlessGL;
 import diffract.util.DiskCache;
 
 import java.nio.file.Path;

@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.DisplayCheck;
+import diffract.jrtr.contexts.DisplayCheck;
 import diffract.optics.Methods;
 import diffract.scene.Scene;
 import diffract.scene.SceneSetup;

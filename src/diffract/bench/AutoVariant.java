@@ -1,6 +1,6 @@
 package diffract.bench;
 
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.contexts.HeadlessGL;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorExpansion;

@@ -1,6 +1,6 @@
 package diffract.bench;
 
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Direction;
 import diffract.optics.InvalidSettingException;

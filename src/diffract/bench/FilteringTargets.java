@@ -1,6 +1,6 @@
 package diffract.bench;
 
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.AutoExposure;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.BrdfSettings;

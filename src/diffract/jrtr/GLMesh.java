@@ -1,7 +1,10 @@
 package diffract.jrtr;
 
-import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
+import com.jogamp.opengl.GL;
+import diffract.jrtr.gl.GLErrors;
+import diffract.jrtr.scenegraph.VertexAttribute;
+import diffract.jrtr.scenegraph.VertexData;
 
 import java.nio.FloatBuffer;
 import java.nio.IntBuffer;

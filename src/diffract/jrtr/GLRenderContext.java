@@ -1,8 +1,23 @@
 package diffract.jrtr;
 
 import com.jogamp.common.util.VersionNumber;
-import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
+import com.jogamp.opengl.GL;
+import diffract.jrtr.contexts.GLInfo;
+import diffract.jrtr.gl.GLErrors;
+import diffract.jrtr.gl.GLVersionException;
+import diffract.jrtr.gl.GpuResource;
+import diffract.jrtr.gl.PixelRect;
+import diffract.jrtr.scenegraph.Camera;
+import diffract.jrtr.scenegraph.DirectionalLight;
+import diffract.jrtr.scenegraph.Frustum;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.RenderContext;
+import diffract.jrtr.scenegraph.RenderItem;
+import diffract.jrtr.scenegraph.RenderList;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.shaders.UniformValue;
 
 import javax.vecmath.Matrix3f;
 import javax.vecmath.Matrix4f;

@@ -3,6 +3,12 @@ package diffract.jrtr;
 import com.jogamp.opengl.GL3;
 import com.jogamp.opengl.GLAutoDrawable;
 import com.jogamp.opengl.GLEventListener;
+import diffract.jrtr.contexts.GLInfo;
+import diffract.jrtr.contexts.HeadlessGL;
+import diffract.jrtr.contexts.OffscreenContext;
+import diffract.jrtr.gl.GLVersionException;
+import diffract.jrtr.gl.GpuTimer;
+import diffract.jrtr.textures.FloatFramebuffer;
 
 import java.io.IOException;
 import java.nio.file.Path;

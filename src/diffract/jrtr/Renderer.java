@@ -2,6 +2,11 @@ package diffract.jrtr;
 
 import com.jogamp.opengl.GLAutoDrawable;
 import com.jogamp.opengl.GLEventListener;
+import diffract.jrtr.contexts.OnscreenWindow;
+import diffract.jrtr.gl.PixelRect;
+import diffract.jrtr.scenegraph.Camera;
+import diffract.jrtr.scenegraph.Frustum;
+import diffract.jrtr.scenegraph.Node;
 
 /**
  * Draws a scene graph seen through a camera and frustum. It is a plain JOGL {@link GLEventListener}, so the

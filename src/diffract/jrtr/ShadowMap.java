@@ -1,9 +1,15 @@
 package diffract.jrtr;
 
-import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL2ES2;
 import com.jogamp.opengl.GL2ES3;
 import com.jogamp.opengl.GL3;
+import com.jogamp.opengl.GL;
+import diffract.jrtr.gl.GLErrors;
+import diffract.jrtr.scenegraph.RenderItem;
+import diffract.jrtr.scenegraph.RenderList;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.textures.DepthBounds;
+import diffract.jrtr.textures.Texture;
 
 import javax.vecmath.Matrix4f;
 import javax.vecmath.Vector3f;

@@ -4,18 +4,18 @@
  * what the shaders compute.
  *
  * <ul>
- *   <li>Scene graph: {@link diffract.jrtr.Group}, {@link diffract.jrtr.TransformGroup},
- *       {@link diffract.jrtr.ShapeNode} (a {@link diffract.jrtr.Shape} drawn with a
- *       {@link diffract.jrtr.Material}), {@link diffract.jrtr.LightNode}; flattened by
- *       {@link diffract.jrtr.RenderList}.</li>
- *   <li>Viewing: {@link diffract.jrtr.Camera} (eye, look-at, up) and {@link diffract.jrtr.Frustum}.</li>
- *   <li>Shaders: {@link diffract.jrtr.ShaderProgram} from the classpath ({@code /shaders}) or a directory, with
+ *   <li>Scene graph: {@link diffract.jrtr.scenegraph.Group}, {@link diffract.jrtr.scenegraph.TransformGroup},
+ *       {@link diffract.jrtr.scenegraph.ShapeNode} (a {@link diffract.jrtr.scenegraph.Shape} drawn with a
+ *       {@link diffract.jrtr.scenegraph.Material}), {@link diffract.jrtr.scenegraph.LightNode}; flattened by
+ *       {@link diffract.jrtr.scenegraph.RenderList}.</li>
+ *   <li>Viewing: {@link diffract.jrtr.scenegraph.Camera} (eye, look-at, up) and {@link diffract.jrtr.scenegraph.Frustum}.</li>
+ *   <li>Shaders: {@link diffract.jrtr.scenegraph.ShaderProgram} from the classpath ({@code /shaders}) or a directory, with
  *       injected {@code #define}s, {@code #include "file.glsl"} and errors reported as {@code file.glsl:LINE}.</li>
- *   <li>Textures, uploaded once: {@link diffract.jrtr.Texture2D}, {@link diffract.jrtr.FloatTextureArray},
- *       {@link diffract.jrtr.FloatTexture1D}.</li>
+ *   <li>Textures, uploaded once: {@link diffract.jrtr.textures.Texture2D}, {@link diffract.jrtr.textures.FloatTextureArray},
+ *       {@link diffract.jrtr.textures.FloatTexture1D}.</li>
  *   <li>Drawing: {@link diffract.jrtr.Renderer} (a GLEventListener) into an
  *       {@link diffract.jrtr.OffscreenTarget} (RGBA32F, read back as floats) or an
- *       {@link diffract.jrtr.OnscreenWindow}; {@link diffract.jrtr.GpuTimer} measures GPU time.</li>
+ *       {@link diffract.jrtr.contexts.OnscreenWindow}; {@link diffract.jrtr.gl.GpuTimer} measures GPU time.</li>
  * </ul>
  *
  * <pre>{@code
@@ -27,8 +27,8 @@
  * }
  * }</pre>
  *
- * <p>Offscreen targets need no X server: {@link diffract.jrtr.HeadlessGL} gives them headless EGL (any GPU, or
+ * <p>Offscreen targets need no X server: {@link diffract.jrtr.contexts.HeadlessGL} gives them headless EGL (any GPU, or
  * Mesa's llvmpipe) and falls back to JOGL on the X display; windows need a display, which
- * {@link diffract.jrtr.DisplayCheck} checks in one line. See docs/headless-gl.md.
+ * {@link diffract.jrtr.contexts.DisplayCheck} checks in one line. See docs/headless-gl.md.
  */
 package diffract.jrtr;

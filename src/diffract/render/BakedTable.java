@@ -1,14 +1,14 @@
 package diffract.render;
 
-import diffract.jrtr.Camera;
-import diffract.jrtr.FloatTexture3D;
-import diffract.jrtr.Frustum;
-import diffract.jrtr.Group;
-import diffract.jrtr.Material;
+import diffract.jrtr.scenegraph.Camera;
+import diffract.jrtr.textures.FloatTexture3D;
+import diffract.jrtr.scenegraph.Frustum;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.Material;
 import diffract.jrtr.OffscreenTarget;
 import diffract.jrtr.Renderer;
-import diffract.jrtr.ShapeNode;
-import diffract.jrtr.Shapes;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;

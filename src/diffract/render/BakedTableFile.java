@@ -1,6 +1,6 @@
 package diffract.render;
 
-import diffract.jrtr.ShaderProgram;
+import diffract.jrtr.scenegraph.ShaderProgram;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;

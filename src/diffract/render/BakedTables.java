@@ -1,6 +1,6 @@
 package diffract.render;
 
-import diffract.jrtr.HeadlessGL;
+import diffract.jrtr.contexts.HeadlessGL;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.GainModel;

@@ -1,8 +1,8 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTexture3D;
-import diffract.jrtr.Material;
-import diffract.jrtr.Texture2D;
+import diffract.jrtr.textures.FloatTexture3D;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.textures.Texture2D;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Covariance2;
@@ -27,7 +27,7 @@ public final class DiffractionMaterials {
     }
 
     /**
-     * A BRDF-map material (draw it on {@link diffract.jrtr.Shapes#fullScreenQuad()}); set {@code omegaI} (and the
+     * A BRDF-map material (draw it on {@link diffract.jrtr.scenegraph.Shapes#fullScreenQuad()}); set {@code omegaI} (and the
      * lobes method's light) with {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm} when
      * monochromatic.
      */

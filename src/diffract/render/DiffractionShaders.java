@@ -1,7 +1,7 @@
 package diffract.render;
 
 import diffract.colour.Srgb;
-import diffract.jrtr.ShaderProgram;
+import diffract.jrtr.scenegraph.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.DiscFootprint;

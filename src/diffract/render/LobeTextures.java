@@ -1,8 +1,8 @@
 package diffract.render;
 
 import diffract.colour.HatFilteredSpectrum;
-import diffract.jrtr.FloatTexture1D;
-import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.textures.FloatTexture1D;
+import diffract.jrtr.textures.FloatTextureArray;
 import diffract.optics.BrdfSettings;
 import diffract.optics.InvalidSettingException;
 import diffract.optics.LobeQuadrature;
@@ -35,7 +35,7 @@ public final class LobeTextures {
     private FloatTextureArray sums;
     /** The rigorous orders' ratios ({@link OrderCorrection}), or null: the scalar orders. */
     private OrderCorrection orders;
-    private diffract.jrtr.FloatTexture3D orderRatios;
+    private diffract.jrtr.textures.FloatTexture3D orderRatios;
 
     LobeTextures(BiFunction<Double, Double, LobeWeightTable> weightSource, double extentXUm, double extentYUm) {
         this.weightSource = weightSource;
@@ -169,7 +169,7 @@ public final class LobeTextures {
      * across the ridges, z the order times |beta| along them), trilinear, made on first use: the red channel holds the
      * ratio.
      */
-    public synchronized diffract.jrtr.FloatTexture3D orderRatios() {
+    public synchronized diffract.jrtr.textures.FloatTexture3D orderRatios() {
         if (orders == null) {
             throw new IllegalStateException("no table of rigorous orders: the lobes take the scalar ones");
         }
@@ -179,8 +179,8 @@ public final class LobeTextures {
             for (int i = 0; i < ratio.length; i++) {
                 rgb[3 * i] = ratio[i];
             }
-            orderRatios = new diffract.jrtr.FloatTexture3D(orders.nodes(), orders.alphas(),
-                    (2 * orders.maxOrder() + 1) * orders.betas(), rgb, diffract.jrtr.FloatTexture3D.Precision.FLOAT32);
+            orderRatios = new diffract.jrtr.textures.FloatTexture3D(orders.nodes(), orders.alphas(),
+                    (2 * orders.maxOrder() + 1) * orders.betas(), rgb, diffract.jrtr.textures.FloatTexture3D.Precision.FLOAT32);
         }
         return orderRatios;
     }

@@ -1,7 +1,7 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTexture1D;
-import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.textures.FloatTexture1D;
+import diffract.jrtr.textures.FloatTextureArray;
 import diffract.optics.TaylorTerms;
 import diffract.precompute.ThesisExtrema;
 

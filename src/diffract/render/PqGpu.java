@@ -1,6 +1,6 @@
 package diffract.render;
 
-import diffract.jrtr.Material;
+import diffract.jrtr.scenegraph.Material;
 import diffract.optics.BrdfSettings;
 
 /**

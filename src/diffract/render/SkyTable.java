@@ -1,6 +1,6 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTexture3D;
+import diffract.jrtr.textures.FloatTexture3D;
 import diffract.lighting.ExtendedLight;
 import diffract.optics.BakedGrid;
 import diffract.optics.LightSource;

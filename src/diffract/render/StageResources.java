@@ -1,17 +1,17 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTexture2D;
+import diffract.jrtr.textures.FloatTexture2D;
 import diffract.jrtr.GLRenderContext;
-import diffract.jrtr.Material;
-import diffract.jrtr.RenderList;
-import diffract.jrtr.ShaderProgram;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.RenderList;
+import diffract.jrtr.scenegraph.ShaderProgram;
 import diffract.jrtr.ShadowMap;
-import diffract.jrtr.Shape;
-import diffract.jrtr.ShapeNode;
-import diffract.jrtr.Texture2D;
-import diffract.jrtr.UniformValue;
-import diffract.jrtr.VertexAttribute;
-import diffract.jrtr.VertexData;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.textures.Texture2D;
+import diffract.jrtr.shaders.UniformValue;
+import diffract.jrtr.scenegraph.VertexAttribute;
+import diffract.jrtr.scenegraph.VertexData;
 import diffract.lighting.Environment;
 import diffract.lighting.ExtendedLight;
 import diffract.optics.BrdfSettings;

@@ -1,7 +1,7 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTexture3D;
-import diffract.jrtr.Texture;
+import diffract.jrtr.textures.FloatTexture3D;
+import diffract.jrtr.textures.Texture;
 import diffract.util.Reporter;
 
 import java.util.ArrayList;

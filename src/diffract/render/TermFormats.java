@@ -1,6 +1,6 @@
 package diffract.render;
 
-import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.textures.FloatTextureArray;
 import diffract.optics.TermFormat;
 
 /** The engine's texture precision of each {@link TermFormat}. */

@@ -1,6 +1,6 @@
 package diffract.scene;
 
-import diffract.jrtr.Shape;
+import diffract.jrtr.scenegraph.Shape;
 import diffract.optics.OrderWeights;
 import diffract.optics.ScalarValidity;
 import diffract.util.Reporter;

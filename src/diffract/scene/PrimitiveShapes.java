@@ -2,8 +2,8 @@ package diffract.scene;
 
 import diffract.geometry.Mesh;
 import diffract.geometry.SnakeMesh;
-import diffract.jrtr.Shape;
-import diffract.jrtr.VertexData;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.VertexData;
 
 
 /**

@@ -1,7 +1,7 @@
 package diffract.scene;
 
-import diffract.jrtr.Shape;
-import diffract.jrtr.VertexAttribute;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.VertexAttribute;
 import diffract.optics.BrdfSettings;
 import diffract.optics.HeightField;
 import diffract.optics.InvalidSettingException;

@@ -4,9 +4,9 @@ import diffract.geometry.Mesh;
 import diffract.geometry.ObjReader;
 import diffract.geometry.SnakeMesh;
 import diffract.geometry.TangentSource;
-import diffract.jrtr.Shape;
-import diffract.jrtr.VertexAttribute;
-import diffract.jrtr.VertexData;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.VertexAttribute;
+import diffract.jrtr.scenegraph.VertexData;
 
 /**
  * The shape's constants manager: builds the mesh a scene names (the procedural snake, an OBJ file or a primitive

@@ -4,9 +4,9 @@ import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
 import com.jogamp.opengl.GLAutoDrawable;
 import com.jogamp.opengl.GLEventListener;
-import diffract.jrtr.FloatFramebuffer;
-import diffract.jrtr.PixelRect;
-import diffract.jrtr.TiledFrame;
+import diffract.jrtr.textures.FloatFramebuffer;
+import diffract.jrtr.gl.PixelRect;
+import diffract.jrtr.textures.TiledFrame;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
 import diffract.render.GpuMethods;
@@ -418,7 +418,7 @@ public final class RefiningRenderer implements GLEventListener {
         int height = windowHeight;
         gl.glBindFramebuffer(GL.GL_READ_FRAMEBUFFER, framebuffer);
         gl.glReadBuffer(framebuffer == 0 ? GL.GL_BACK : GL.GL_COLOR_ATTACHMENT0);
-        float[] topDown = diffract.jrtr.FloatFramebuffer.readBoundRgbaTopDown(gl, width, height);
+        float[] topDown = diffract.jrtr.textures.FloatFramebuffer.readBoundRgbaTopDown(gl, width, height);
         Shown shownNow = new Shown(topDown, width, height, status);
         for (; request != null; request = readBacks.poll()) {
             request.complete(shownNow);

@@ -1,8 +1,8 @@
 package diffract.viewer;
 
 import diffract.jrtr.GLRenderContext;
-import diffract.jrtr.Material;
-import diffract.jrtr.Texture2D;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.textures.Texture2D;
 import diffract.optics.BrdfSettings;
 import diffract.optics.TaylorTerms;
 import diffract.optics.Methods;

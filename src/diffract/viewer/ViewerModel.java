@@ -1,6 +1,6 @@
 package diffract.viewer;
 
-import diffract.jrtr.Shape;
+import diffract.jrtr.scenegraph.Shape;
 import diffract.optics.HeightField;
 import diffract.optics.TaylorTerms;
 

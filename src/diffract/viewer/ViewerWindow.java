@@ -3,7 +3,7 @@ package diffract.viewer;
 import com.jogamp.nativewindow.WindowClosingProtocol;
 import com.jogamp.newt.event.WindowAdapter;
 import com.jogamp.newt.event.WindowEvent;
-import diffract.jrtr.OnscreenWindow;
+import diffract.jrtr.contexts.OnscreenWindow;
 import diffract.util.ImageFiles;
 
 import java.io.IOException;

@@ -4,7 +4,7 @@ import diffract.bench.BenchConfig;
 import diffract.bench.BenchResult;
 import diffract.bench.MapError;
 import diffract.bench.ResultsTable;
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.GlTestSupport;
 import diffract.util.TestCache;
 import org.junit.jupiter.api.Test;

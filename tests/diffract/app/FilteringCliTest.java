@@ -49,7 +49,7 @@ class FilteringCliTest {
         float[][] maps = new float[2][];
         String[] engines = {"cpu", "gpu"};
         for (int e = 0; e < 2; e++) {
-            if (e == 1 && diffract.jrtr.HeadlessGL.problem().isPresent()) {
+            if (e == 1 && diffract.jrtr.contexts.HeadlessGL.problem().isPresent()) {
                 continue;
             }
             Path pfm = dir.resolve("disc-" + engines[e] + ".pfm");

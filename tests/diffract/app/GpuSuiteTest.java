@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.jrtr.GLInfo;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightSource;

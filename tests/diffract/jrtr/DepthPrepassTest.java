@@ -1,6 +1,13 @@
 package diffract.jrtr;
 
 import com.jogamp.opengl.GL3;
+import diffract.jrtr.contexts.GLInfo;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;

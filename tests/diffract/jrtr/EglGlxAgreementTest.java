@@ -1,5 +1,13 @@
 package diffract.jrtr;
 
+import diffract.jrtr.contexts.EglContext;
+import diffract.jrtr.contexts.EglDisplay;
+import diffract.jrtr.contexts.JoglOffscreenContext;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 

@@ -1,6 +1,7 @@
 package diffract.jrtr;
 
 import com.jogamp.common.util.VersionNumber;
+import diffract.jrtr.gl.GLVersionException;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertDoesNotThrow;

@@ -1,5 +1,11 @@
 package diffract.jrtr;
 
+import diffract.jrtr.contexts.DisplayCheck;
+import diffract.jrtr.contexts.HeadlessGL;
+import diffract.jrtr.scenegraph.Camera;
+import diffract.jrtr.scenegraph.Frustum;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.ShaderProgram;
 import org.junit.jupiter.api.Assumptions;
 
 import javax.vecmath.Point3f;
@@ -42,33 +48,33 @@ public final class GlTestSupport {
     }
 
     /** Eye (0,0,1) looking at the origin: with a 90 degree frustum, z = 0 shows exactly [-1,1] x [-1,1]. */
-    static Camera unitCamera() {
+    public static Camera unitCamera() {
         return new Camera(new Point3f(0, 0, 1), new Point3f(0, 0, 0), new Vector3f(0, 1, 0));
     }
 
-    static Frustum rightAngleFrustum() {
+    public static Frustum rightAngleFrustum() {
         return new Frustum(0.1f, 10f, 1f, 90f);
     }
 
-    static Material unlit(float r, float g, float b) {
+    public static Material unlit(float r, float g, float b) {
         return new Material(ShaderProgram.fromClasspath("engine/unlit.vert", "engine/unlit.frag", Map.of()))
                 .setVec4("color", r, g, b, 1);
     }
 
     /** RGBA of pixel (x, y), y counted from the top. */
-    static float[] pixel(float[] rgba, int width, int x, int y) {
+    public static float[] pixel(float[] rgba, int width, int x, int y) {
         int i = (y * width + x) * 4;
         return new float[] {rgba[i], rgba[i + 1], rgba[i + 2], rgba[i + 3]};
     }
 
-    static void write(Path dir, String relative, String text) throws IOException {
+    public static void write(Path dir, String relative, String text) throws IOException {
         Path file = dir.resolve(relative);
         Files.createDirectories(file.getParent());
         Files.writeString(file, text);
     }
 
     /** Vertex shader that puts the [-1,1]^2 quad straight into clip space: covers the viewport exactly. */
-    static final String PASS_THROUGH_VERTEX = String.join("\n",
+    public static final String PASS_THROUGH_VERTEX = String.join("\n",
             "#version 330 core",
             "in vec3 position;",
             "void main() { gl_Position = vec4(position.xy, 0.0, 1.0); }",

@@ -1,7 +1,18 @@
 package diffract.jrtr;
 
-import diffract.util.TestReport;
+import diffract.jrtr.scenegraph.Camera;
+import diffract.jrtr.scenegraph.Frustum;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.LightNode;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.Node;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
+import diffract.jrtr.scenegraph.TransformGroup;
 import diffract.util.ImageFiles;
+import diffract.util.TestReport;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;

@@ -1,7 +1,14 @@
 package diffract.jrtr;
 
-import com.jogamp.opengl.GL;
 import com.jogamp.opengl.GL3;
+import com.jogamp.opengl.GL;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
+import diffract.jrtr.textures.DepthBounds;
+import diffract.jrtr.textures.Texture;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;

@@ -1,6 +1,11 @@
 package diffract.jrtr;
 
 import com.jogamp.opengl.GLAutoDrawable;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.RenderList;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
+import diffract.jrtr.scenegraph.TransformGroup;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 

@@ -3,7 +3,7 @@ package diffract.render;
 import diffract.util.TestReport;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Xyz;
-import diffract.jrtr.FloatTexture3D;
+import diffract.jrtr.textures.FloatTexture3D;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfMap;
@@ -273,7 +273,7 @@ class BakedVariantTest {
         DiffractionTextures textures = DiffractionTextures.of(terms, baked());
         float exposure = 0.5f;
         float[] rgba = GpuFinitenessTest.render(DiffractionMaterials.surface(textures, baked(), exposure, null, 0),
-                new javax.vecmath.Vector3f(0, 0, 1), diffract.jrtr.Shapes.rectangle("square", -1, -1, 1, 1, 0), 33);
+                new javax.vecmath.Vector3f(0, 0, 1), diffract.jrtr.scenegraph.Shapes.rectangle("square", -1, -1, 1, 1, 0), 33);
         for (float v : rgba) {
             assertTrue(Float.isFinite(v) && v >= 0 && v <= 1, "surface value " + v);
         }
@@ -299,18 +299,18 @@ class BakedVariantTest {
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(9, 2)).with(b -> b.lambdaStepNm(20));
         BakedTables tables = new BakedTables();
         try (diffract.jrtr.OffscreenTarget outer = new diffract.jrtr.OffscreenTarget(new diffract.jrtr.Renderer(
-                new diffract.jrtr.Group("empty"), new diffract.jrtr.Camera(), new diffract.jrtr.Frustum()))) {
+                new diffract.jrtr.scenegraph.Group("empty"), new diffract.jrtr.scenegraph.Camera(), new diffract.jrtr.scenegraph.Frustum()))) {
             int[] bindings = outer.withContext(gl -> {
                 int[] framebuffer = new int[1];
                 gl.glGenFramebuffers(1, framebuffer, 0);
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, framebuffer[0]);
-                Object context = diffract.jrtr.HeadlessGL.currentContext();
+                Object context = diffract.jrtr.contexts.HeadlessGL.currentContext();
                 assertNotNull(context, "a context is current inside withContext");
                 tables.of(terms, settings, Reporter.SILENT);
                 int[] after = new int[3];
                 gl.glGetIntegerv(com.jogamp.opengl.GL2ES3.GL_DRAW_FRAMEBUFFER_BINDING, after, 0);
                 after[1] = framebuffer[0];
-                after[2] = context.equals(diffract.jrtr.HeadlessGL.currentContext()) ? 1 : 0;
+                after[2] = context.equals(diffract.jrtr.contexts.HeadlessGL.currentContext()) ? 1 : 0;
                 gl.glBindFramebuffer(com.jogamp.opengl.GL.GL_FRAMEBUFFER, 0);
                 gl.glDeleteFramebuffers(1, framebuffer, 0);
                 return after;

@@ -1,7 +1,7 @@
 package diffract.render;
 
 import diffract.colour.Srgb;
-import diffract.jrtr.ShaderProgram;
+import diffract.jrtr.scenegraph.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Variant;
 import diffract.util.UserInputException;
@@ -35,7 +35,7 @@ class DiffractionShadersTest {
             assertTrue(surface.fragmentShader().source().text().contains("#define PIGMENTATION 1"));
             // the engine's light arrays sized from RenderContext.MAX_LIGHTS, not by hand
             assertTrue(surface.vertexShader().source().text().contains("#define ENGINE_MAX_LIGHTS "
-                    + diffract.jrtr.RenderContext.MAX_LIGHTS));
+                    + diffract.jrtr.scenegraph.RenderContext.MAX_LIGHTS));
             assertTrue(surface.vertexShader().source().text().contains("lightDirection[ENGINE_MAX_LIGHTS]"));
             ShaderProgram mono = DiffractionShaders.program(settings, DiffractionShaders.Target.BRDF_MAP, true, false);
             assertTrue(mono.fragmentShader().source().text().contains("#define MONOCHROMATIC 1"));

@@ -1,7 +1,7 @@
 package diffract.render;
 
-import diffract.jrtr.Material;
-import diffract.jrtr.UniformValue;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.shaders.UniformValue;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.Variant;

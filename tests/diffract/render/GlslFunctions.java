@@ -1,15 +1,15 @@
 package diffract.render;
 
-import diffract.jrtr.Camera;
-import diffract.jrtr.Frustum;
-import diffract.jrtr.Group;
-import diffract.jrtr.Material;
+import diffract.jrtr.scenegraph.Camera;
+import diffract.jrtr.scenegraph.Frustum;
+import diffract.jrtr.scenegraph.Group;
+import diffract.jrtr.scenegraph.Material;
 import diffract.jrtr.OffscreenTarget;
 import diffract.jrtr.Renderer;
-import diffract.jrtr.ShaderProgram;
-import diffract.jrtr.ShaderSourceRoot;
-import diffract.jrtr.ShapeNode;
-import diffract.jrtr.Shapes;
+import diffract.jrtr.scenegraph.ShaderProgram;
+import diffract.jrtr.shaders.ShaderSourceRoot;
+import diffract.jrtr.scenegraph.ShapeNode;
+import diffract.jrtr.scenegraph.Shapes;
 
 import java.util.Map;
 import java.util.TreeMap;

@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.colour.ColourPath;
 import diffract.colour.Xyz;
-import diffract.jrtr.FloatTextureArray;
+import diffract.jrtr.textures.FloatTextureArray;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.AutoExposure;
 import diffract.optics.Direction;

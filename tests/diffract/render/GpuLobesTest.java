@@ -1,8 +1,8 @@
 package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
-import diffract.jrtr.Material;
-import diffract.jrtr.Shapes;
+import diffract.jrtr.scenegraph.Material;
+import diffract.jrtr.scenegraph.Shapes;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfMapDifference;
 import diffract.optics.SyntheticPatches;

@@ -5,7 +5,7 @@ import diffract.colour.Cie1931;
 import diffract.colour.D65;
 import diffract.colour.SpectralIntegrator;
 import diffract.colour.Trapezoid;
-import diffract.jrtr.FloatTexture1D;
+import diffract.jrtr.textures.FloatTexture1D;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Variant;
 import org.junit.jupiter.api.Test;

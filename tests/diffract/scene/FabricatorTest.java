@@ -1,7 +1,7 @@
 package diffract.scene;
 
 import diffract.colour.ToneMapping;
-import diffract.jrtr.VertexAttribute;
+import diffract.jrtr.scenegraph.VertexAttribute;
 import diffract.lighting.ExtendedLight;
 import diffract.lighting.LatLongMap;
 import diffract.lighting.RadianceHdr;

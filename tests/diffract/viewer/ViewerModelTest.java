@@ -1,9 +1,9 @@
 package diffract.viewer;
 
 import diffract.geometry.SnakeMesh;
-import diffract.jrtr.Shape;
-import diffract.jrtr.VertexAttribute;
-import diffract.jrtr.VertexData;
+import diffract.jrtr.scenegraph.Shape;
+import diffract.jrtr.scenegraph.VertexAttribute;
+import diffract.jrtr.scenegraph.VertexData;
 import diffract.optics.Variant;
 import diffract.scene.LightDirection;
 import diffract.scene.OrbitCamera;

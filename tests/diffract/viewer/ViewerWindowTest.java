@@ -47,7 +47,7 @@ class ViewerWindowTest {
 
     @BeforeAll
     static void open() {
-        if (diffract.jrtr.DisplayCheck.problem().isPresent()) {
+        if (diffract.jrtr.contexts.DisplayCheck.problem().isPresent()) {
             return;
         }
         model = ViewerTestSupport.model(ViewerTestSupport.gatedTerms(PRECOMPUTE_MAY_FINISH));

@@ -92,7 +92,7 @@ class ViewerFrameTest {
 
     @BeforeAll
     static void open() throws Exception {
-        if (diffract.jrtr.DisplayCheck.problem().isPresent()) {
+        if (diffract.jrtr.contexts.DisplayCheck.problem().isPresent()) {
             return;
         }
         Path file = dir.resolve("sphere.json");
