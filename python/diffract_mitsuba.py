@@ -89,7 +89,7 @@ class DiffractBSDF(mi.BSDF):
         return mi.Color3f(c[0], c[1], c[2])
 
     def rayleigh_rice(self, wl, wv):
-        """Rayleigh-Rice's gain, 4 cos^2 theta_i cos theta_r Q / (R_0 w^2) (diffract.optics.GainFactor.rayleighRice)."""
+        """Rayleigh-Rice's gain, 4 cos^2 theta_i cos theta_r Q / (R_0 w^2) (diffract.optics.illumination.GainFactor.rayleighRice)."""
         eps = self.n * self.n
         ci = _max(wl.z, 1e-30)
         cr = _max(wv.z, 1e-30)

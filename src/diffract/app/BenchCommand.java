@@ -14,7 +14,7 @@ import diffract.bench.Targets;
 import diffract.jrtr.contexts.HeadlessGL;
 import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.BrdfSettings;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.MapBand;
 import diffract.optics.Methods;
 import diffract.optics.Variant;
@@ -392,7 +392,7 @@ final class BenchCommand implements SplitCommand, Callable<Integer> {
             throw new UserInputException("--size of the filtering maps must be between 8 and 512 pixels");
         }
         for (double d : lightsDeg) {
-            new diffract.optics.LightSource(d); // a refused size fails before any work
+            new diffract.optics.illumination.LightSource(d); // a refused size fails before any work
         }
         List<BenchPatch> list = new ArrayList<>(BenchPatch.named(patches));
         Reporter reporter = quiet.reporter();

@@ -6,22 +6,22 @@ import diffract.bench.AutoVariant;
 import diffract.colour.ColourPath;
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
-import diffract.optics.AutoExposure;
+import diffract.optics.maps.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Methods;
-import diffract.optics.CoherenceWindow;
+import diffract.optics.windows.CoherenceWindow;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
 import diffract.optics.LightPolicy;
-import diffract.optics.LightSource;
+import diffract.optics.illumination.LightSource;
 import diffract.optics.MapBand;
-import diffract.optics.PixelFilter;
-import diffract.optics.ScalarValidity;
-import diffract.optics.Quantity;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.validity.ScalarValidity;
+import diffract.optics.settings.Quantity;
 import diffract.optics.Variant;
-import diffract.optics.WindowPlacement;
+import diffract.optics.windows.WindowPlacement;
 import diffract.optics.io.SamplingCheck;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;
@@ -525,7 +525,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
      * where the lobes already take their orders from Maxwell's equations.
      */
     private void warnWhereTheScalarModelFails(HeightField field, BrdfSettings settings, Reporter reporter) {
-        if (settings.rigorous().orders() == diffract.optics.OrderWeights.RIGOROUS) {
+        if (settings.rigorous().orders() == diffract.optics.settings.OrderWeights.RIGOROUS) {
             return;
         }
         ScalarValidity.Estimate e = ScalarValidity.shipped().estimate(field, thetaIDeg,
@@ -533,7 +533,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
         if (!e.visible()) {
             return;
         }
-        String how = diffract.optics.OrderComparison.refusal(field).isEmpty()
+        String how = diffract.optics.validity.OrderComparison.refusal(field).isEmpty()
                 ? "diffract brdfmap --variant rigorous " + patch.describe() + " --theta-i " + number(thetaIDeg)
                         + " draws it from Maxwell's equations, diffract orders lists its orders"
                 : "the rigorous method solves 1-D patches, such as a snake patch's ridges alone, and 2-D cells of about a "

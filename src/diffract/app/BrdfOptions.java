@@ -2,22 +2,22 @@ package diffract.app;
 
 import diffract.colour.MirrorNormalisation;
 import diffract.optics.BrdfSettings;
-import diffract.optics.GainModel;
-import diffract.optics.IlluminationSettings;
-import diffract.optics.LightProfile;
-import diffract.optics.PixelFilter;
-import diffract.optics.OrderWeights;
-import diffract.optics.Polarisation;
-import diffract.optics.RigorousSettings;
+import diffract.optics.settings.GainModel;
+import diffract.optics.illumination.IlluminationSettings;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.settings.Polarisation;
+import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.rigorous.Resolution;
-import diffract.optics.SpectralSettings;
-import diffract.optics.TaylorExpansion;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Quantity;
-import diffract.optics.ScanTiling;
-import diffract.optics.WindowPlacement;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+import diffract.optics.patches.ScanTiling;
+import diffract.optics.windows.WindowPlacement;
 import diffract.util.UserInputException;
 import picocli.CommandLine.ArgGroup;
 import picocli.CommandLine.Option;
@@ -57,7 +57,7 @@ final class BrdfOptions {
     @ArgGroup(exclusive = false, validate = false, heading = "Rigorous method:%n")
     Rigorous rigorous = new Rigorous();
 
-    /** {@link diffract.optics.TaylorSettings}. */
+    /** {@link diffract.optics.spectra.TaylorSettings}. */
     static final class Taylor {
         @Option(names = "--terms", paramLabel = "N") Integer highestOrder;
 
@@ -66,7 +66,7 @@ final class BrdfOptions {
         @Option(names = "--expansion", paramLabel = "E") TaylorExpansion expansion;
     }
 
-    /** {@link diffract.optics.WindowSettings}. */
+    /** {@link diffract.optics.spectra.WindowSettings}. */
     static final class Window {
         @Option(names = "--window-radius", paramLabel = "R|auto", converter = OptionTypes.WindowRadius.Converter.class)
         OptionTypes.WindowRadius radius;
@@ -132,7 +132,7 @@ final class BrdfOptions {
         OptionTypes.BakedSamples bakedSamples;
     }
 
-    /** {@link diffract.optics.RigorousSettings}. */
+    /** {@link diffract.optics.rigorous.RigorousSettings}. */
     static final class Rigorous {
         @Option(names = "--harmonics", paramLabel = "M|auto", converter = OptionTypes.Harmonics.Converter.class)
         OptionTypes.Harmonics harmonics;

@@ -2,7 +2,7 @@ package diffract.app;
 
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Command;

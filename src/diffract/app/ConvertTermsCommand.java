@@ -1,8 +1,8 @@
 package diffract.app;
 
-import diffract.optics.SpectralSettings;
-import diffract.optics.TaylorBound;
-import diffract.optics.TaylorTerms;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.spectra.TaylorBound;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.TermFolders;
 import diffract.precompute.TermSidecar;
 import diffract.precompute.TermStore;

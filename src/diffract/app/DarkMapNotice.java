@@ -1,8 +1,8 @@
 package diffract.app;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.CoherenceWindow;
-import diffract.optics.WindowRadii;
+import diffract.optics.windows.CoherenceWindow;
+import diffract.optics.windows.WindowRadii;
 
 import java.util.Locale;
 import java.util.Optional;

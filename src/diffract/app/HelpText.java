@@ -3,7 +3,7 @@ package diffract.app;
 import diffract.jrtr.gl.GpuTimer;
 import diffract.jrtr.contexts.HeadlessGL;
 import diffract.scene.LightDirection;
-import diffract.optics.LightSource;
+import diffract.optics.illumination.LightSource;
 import diffract.util.DiskCache;
 
 import java.io.IOException;

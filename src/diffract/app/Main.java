@@ -2,7 +2,7 @@ package diffract.app;
 
 import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.contexts.HeadlessGL;
-import diffract.optics.InvalidSettingException;
+import diffract.optics.settings.InvalidSettingException;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.DiskCache;
 import diffract.util.UserInputException;

@@ -2,9 +2,9 @@ package diffract.app;
 
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.optics.Methods;
-import diffract.optics.LobeWeightTable;
+import diffract.optics.lobes.LobeWeightTable;
 import diffract.optics.Variant;
 import diffract.util.MemoryEstimate;
 

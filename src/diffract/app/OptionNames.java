@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.optics.Quantity;
+import diffract.optics.settings.Quantity;
 
 import java.util.EnumMap;
 import java.util.Map;

@@ -1,13 +1,13 @@
 package diffract.app;
 
-import diffract.optics.GainModel;
-import diffract.optics.Levelling;
-import diffract.optics.LightProfile;
+import diffract.optics.settings.GainModel;
+import diffract.optics.patches.Levelling;
+import diffract.optics.settings.LightProfile;
 import diffract.optics.LobeQuadrature;
-import diffract.optics.PatchCatalogue;
-import diffract.optics.PixelFilter;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.settings.PixelFilter;
 import diffract.optics.Variant;
-import diffract.optics.WindowPlacement;
+import diffract.optics.windows.WindowPlacement;
 import diffract.precompute.ThesisFormat;
 import diffract.scene.Scene;
 import diffract.util.UserInputException;
@@ -234,7 +234,7 @@ final class OptionTypes {
         public GainModel convert(String text) {
             try {
                 return GainModel.parse(text);
-            } catch (diffract.optics.InvalidSettingException e) {
+            } catch (diffract.optics.settings.InvalidSettingException e) {
                 throw new picocli.CommandLine.TypeConversionException("'" + text + "' is not a gain model: use "
                         + String.join(", ", new GainNames()));
             }
@@ -245,8 +245,8 @@ final class OptionTypes {
     static final class OrderWeightsNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return java.util.Arrays.stream(diffract.optics.OrderWeights.values())
-                    .map(diffract.optics.OrderWeights::label).iterator();
+            return java.util.Arrays.stream(diffract.optics.settings.OrderWeights.values())
+                    .map(diffract.optics.settings.OrderWeights::label).iterator();
         }
     }
 
@@ -254,8 +254,8 @@ final class OptionTypes {
     static final class PolarisationNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
-            return java.util.Arrays.stream(diffract.optics.Polarisation.values())
-                    .map(diffract.optics.Polarisation::label).iterator();
+            return java.util.Arrays.stream(diffract.optics.settings.Polarisation.values())
+                    .map(diffract.optics.settings.Polarisation::label).iterator();
         }
     }
 

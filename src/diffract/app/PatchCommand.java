@@ -1,9 +1,9 @@
 package diffract.app;
 
-import diffract.optics.HeightField;
-import diffract.optics.Levelling;
-import diffract.optics.PatchCatalogue;
-import diffract.optics.ProceduralPatches;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.Levelling;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.patches.ProceduralPatches;
 import diffract.optics.io.GsfWriter;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.ScanFormat;

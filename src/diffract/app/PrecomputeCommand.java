@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.optics.HeightField;
-import diffract.optics.SpectralSettings;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.SpectralSettings;
 import diffract.optics.io.SamplingCheck;
 import diffract.pipeline.NamedPatch;
 import diffract.precompute.Precomputation;

@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.optics.PatchCatalogue;
-import diffract.optics.ProceduralPatches;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.patches.ProceduralPatches;
 import diffract.util.UserInputException;
 import picocli.CommandLine.Option;
 

@@ -1,7 +1,7 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
 

@@ -2,8 +2,8 @@ package diffract.bench;
 
 import diffract.jrtr.contexts.HeadlessGL;
 import diffract.optics.BrdfSettings;
-import diffract.optics.HeightField;
-import diffract.optics.TaylorExpansion;
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.TaylorExpansion;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;

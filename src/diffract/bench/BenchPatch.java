@@ -1,7 +1,7 @@
 package diffract.bench;
 
-import diffract.optics.HeightField;
-import diffract.optics.PatchCatalogue;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.PatchCatalogue;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -2,8 +2,8 @@ package diffract.bench;
 
 import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.InvalidSettingException;
+import diffract.optics.illumination.Direction;
+import diffract.optics.settings.InvalidSettingException;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;
 import diffract.render.GpuBrdfMap;

@@ -1,6 +1,6 @@
 package diffract.bench;
 
-import diffract.optics.IlluminationSettings;
+import diffract.optics.illumination.IlluminationSettings;
 
 import java.util.Locale;
 

@@ -1,12 +1,12 @@
 package diffract.bench;
 
 import diffract.jrtr.contexts.GLInfo;
-import diffract.optics.AutoExposure;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
+import diffract.optics.illumination.Direction;
 import diffract.optics.Methods;
-import diffract.optics.PixelFilter;
+import diffract.optics.settings.PixelFilter;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;
 import diffract.render.GpuBrdfMap;

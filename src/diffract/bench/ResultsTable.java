@@ -2,7 +2,7 @@ package diffract.bench;
 
 import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.BrdfSettings;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.UserInputException;

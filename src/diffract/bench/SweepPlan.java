@@ -1,9 +1,9 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.Quantity;
-import diffract.optics.TaylorExpansion;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
 
 import java.util.ArrayList;

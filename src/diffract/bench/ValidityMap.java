@@ -1,18 +1,18 @@
 package diffract.bench;
 
-import diffract.optics.AutoExposure;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.Direction;
-import diffract.optics.GainFactor;
-import diffract.optics.GainModel;
-import diffract.optics.HeightField;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.settings.GainModel;
+import diffract.optics.patches.HeightField;
 import diffract.optics.Methods;
-import diffract.optics.OrderComparison;
-import diffract.optics.PixelFilter;
-import diffract.optics.ProceduralPatches;
-import diffract.optics.RigorousSettings;
+import diffract.optics.validity.OrderComparison;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.patches.ProceduralPatches;
+import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.Variant;
 import diffract.optics.rigorous.Resolution;
 import diffract.colour.Xyz;
@@ -28,7 +28,7 @@ import java.util.Locale;
  * colour (mean CIEDE2000 over the lit pixels of a BRDF map) and in the orders' efficiencies (the largest relative
  * error on the orders that carry at least 5 % of the reflected power at 450, 550 and 650 nm). docs/validity.md holds
  * the map; {@code assets/validity/scalar-validity.csv} the table the commands' warnings read
- * ({@link diffract.optics.ScalarValidity}).
+ * ({@link diffract.optics.validity.ScalarValidity}).
  *
  * <p>The maps: a point light in the plane of the period (phi_i = 0), the row of an S x S map (S odd) through the
  * orders (all of a 1-D grating's orders lie on it), each pixel its box's average, the wavelength integral exact; the

@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.spectra.TaylorBound;
+
 /**
  * The sample grid of the BAKED variant's table XYZ(u, v, w): the spectral integral of 004 eq. finalexpression
  * (without the direction-dependent gain factor and shadowing) depends on omega_i and omega_r only through

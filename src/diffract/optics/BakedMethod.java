@@ -1,5 +1,11 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.TaylorTerms;
+
 import static diffract.optics.Variant.Capability.DRAWS_TABLE;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
 import static diffract.optics.Variant.Capability.GPU;

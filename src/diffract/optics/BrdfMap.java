@@ -1,6 +1,8 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.settings.PixelFilter;
 import diffract.util.Reporter;
 
 import java.util.concurrent.atomic.AtomicInteger;

@@ -1,6 +1,12 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.Footprint;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.numerics.Covariance2;
+import diffract.optics.numerics.GaussLegendre;
+import diffract.optics.settings.LightProfile;
 
 /**
  * The filtered reference under a disc light ({@link LightProfile#DISC}): the relative BRDF averaged uniformly over

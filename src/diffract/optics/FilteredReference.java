@@ -2,6 +2,18 @@ package diffract.optics;
 
 import diffract.colour.SpectralDensity;
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.Footprint;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.illumination.LobeGeometry;
+import diffract.optics.lobes.GaussianLobes;
+import diffract.optics.lobes.LobeWeights;
+import diffract.optics.numerics.Covariance2;
+import diffract.optics.numerics.GaussKronrod;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.spectra.ExactSpectrum;
+import diffract.optics.windows.CoherenceWindow;
 
 import java.util.function.DoubleFunction;
 

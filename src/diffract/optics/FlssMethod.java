@@ -1,5 +1,8 @@
 package diffract.optics;
 
+import diffract.optics.spectra.PatchSpectrum;
+import diffract.optics.spectra.TaylorTerms;
+
 import static diffract.optics.Variant.Capability.BAKEABLE;
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.GPU;

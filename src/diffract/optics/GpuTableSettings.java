@@ -1,5 +1,9 @@
 package diffract.optics;
 
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+import diffract.optics.settings.TermFormat;
+
 /**
  * What the GPU variants keep in textures: the Taylor terms' storage, and the baked variant's table resolution.
  *

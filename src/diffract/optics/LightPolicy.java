@@ -1,5 +1,11 @@
 package diffract.optics;
 
+import diffract.optics.illumination.DiscFootprint;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.settings.Quantity;
+
 import java.util.Optional;
 
 /**

@@ -1,6 +1,12 @@
 package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
+import diffract.optics.lobes.GaussianLobes;
+import diffract.optics.lobes.LobeWeightTable;
+import diffract.optics.numerics.GaussHermite;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+import diffract.optics.windows.CoherenceWindow;
 
 import java.util.LinkedHashMap;
 import java.util.List;

@@ -2,6 +2,20 @@ package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
 import diffract.colour.MirrorNormalisation;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.DiscFootprint;
+import diffract.optics.illumination.Footprint;
+import diffract.optics.illumination.LobeGeometry;
+import diffract.optics.lobes.GaussianLobes;
+import diffract.optics.lobes.LobeWeightTable;
+import diffract.optics.numerics.Covariance2;
+import diffract.optics.numerics.GaussHermite;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.spectra.TaylorTexels;
+import diffract.optics.spectra.TexelCoefficients;
+import diffract.optics.windows.CoherenceWindow;
 
 /**
  * The lobes method: the windowed spectrum's Gaussian lobes ({@link GaussianLobes}), each widened by the pixel's

@@ -1,5 +1,8 @@
 package diffract.optics;
 
+import diffract.optics.lobes.LobeWeightTable;
+import diffract.optics.windows.CoherenceWindow;
+
 /**
  * The lobes method's texel sums, for scans wider than about two thirds of the coherence length (docs/filtering.md,
  * section 6; docs/scans.md). There a pixel reaches hundreds of lobes, each closer to the next than its own width, and

@@ -1,5 +1,13 @@
 package diffract.optics;
 
+import diffract.optics.illumination.DiscFootprint;
+import diffract.optics.lobes.LobeWeightTable;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorTerms;
+
 import static diffract.optics.Variant.Capability.BAKEABLE;
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;

@@ -1,5 +1,8 @@
 package diffract.optics;
 
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;

@@ -1,5 +1,9 @@
 package diffract.optics;
 
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.PatchSpectrum;
+import diffract.optics.spectra.TaylorTerms;
+
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.GPU;
 import static diffract.optics.Variant.Capability.LOCAL_WINDOW;

@@ -1,7 +1,13 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.illumination.IlluminationSettings;
+import diffract.optics.numerics.ShiftedDft;
+import diffract.optics.patches.HeightField;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.Profile;
+import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSolver;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
@@ -138,7 +144,7 @@ public final class OrderCorrection {
     }
 
     /** The strongest texel of the height field's DFT, the DC aside: {cx, cy}. */
-    static int[] dominantTexel(HeightField meanSubtracted) {
+    public static int[] dominantTexel(HeightField meanSubtracted) {
         int rows = meanSubtracted.rows();
         int cols = meanSubtracted.cols();
         double[] h = meanSubtracted.heightsUm();

@@ -1,5 +1,8 @@
 package diffract.optics;
 
+import diffract.optics.spectra.PatchSpectrum;
+import diffract.optics.spectra.TaylorTerms;
+
 /**
  * Periodic replication and sinc interpolation (003 section 1.5.3, 004 "PQ factors"): the patch repeated so that the
  * window covers whole replicas, the DFT interpolated between texels by the sinc of the replicated extent.

@@ -1,6 +1,8 @@
 package diffract.optics;
 
 import diffract.colour.MirrorNormalisation;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.windows.CoherenceWindow;
 
 /**
  * The gain that turns the relative BRDF (004 eq. {@code cpterm}, a flat mirror's peak at normal incidence = 1) into

@@ -1,5 +1,10 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.ExactSpectrum;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.TaylorTerms;
+
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.FILTERS_LIGHT;
 

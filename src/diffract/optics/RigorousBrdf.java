@@ -1,6 +1,14 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.Footprint;
+import diffract.optics.illumination.IlluminationSettings;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.rigorous.RigorousPatch;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.settings.WavelengthSampling;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
 

@@ -1,10 +1,15 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.lobes.LobeWeights;
 import diffract.optics.rigorous.CellEfficiencies;
 import diffract.optics.rigorous.CellSolver;
 import diffract.optics.rigorous.ComplexIndex;
 import diffract.optics.rigorous.OrderEfficiencies;
+import diffract.optics.rigorous.RigorousPatch;
+import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.rigorous.RigorousSolver;
+import diffract.optics.settings.SpectralSettings;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
 

@@ -1,5 +1,14 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.Float32Cancellation;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.PhaseCentres;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 
 import java.util.Locale;

@@ -1,5 +1,11 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.PatchSpectrum;
+import diffract.optics.spectra.PhaseCentredSpectrum;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.TaylorTerms;
+
 import static diffract.optics.Variant.Capability.CPU;
 import static diffract.optics.Variant.Capability.GPU;
 import static diffract.optics.Variant.Capability.READS_TERMS;

@@ -1,5 +1,15 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.PatchSpectrum;
+import diffract.optics.spectra.PhaseCentredSpectrum;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorTerms;
+
 import java.util.List;
 import java.util.Locale;
 

@@ -1,17 +1,17 @@
 package diffract.pipeline;
 
 import diffract.optics.OrderCorrection;
-import diffract.optics.OrderWeights;
+import diffract.optics.settings.OrderWeights;
 import diffract.util.DiskCache;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.HeightField;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.PhaseCentredTerms;
-import diffract.optics.Quantity;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.settings.Quantity;
 import diffract.optics.TaylorEvaluation;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TaylorTermComputer;
 import diffract.render.BakedTables;

@@ -1,6 +1,6 @@
 package diffract.pipeline;
 
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 
 import java.util.Objects;
 

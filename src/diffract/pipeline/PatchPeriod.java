@@ -1,7 +1,7 @@
 package diffract.pipeline;
 
-import diffract.optics.HeightField;
-import diffract.optics.ShiftedDft;
+import diffract.optics.patches.HeightField;
+import diffract.optics.numerics.ShiftedDft;
 
 import java.util.Optional;
 

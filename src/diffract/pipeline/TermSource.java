@@ -1,6 +1,6 @@
 package diffract.pipeline;
 
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 
 /**

@@ -1,12 +1,12 @@
 package diffract.precompute;
 
-import diffract.optics.HeightField;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Quantity;
-import diffract.optics.TaylorBound;
-import diffract.optics.TaylorExpansion;
-import diffract.optics.TaylorSettings;
-import diffract.optics.TaylorTerms;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.TaylorBound;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorSettings;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.DiskCache;
 import diffract.util.FolderLock;
 import diffract.util.Reporter;

@@ -1,10 +1,10 @@
 package diffract.precompute;
 
-import diffract.optics.HeightField;
-import diffract.optics.PhaseCentredTerms;
-import diffract.optics.PhaseCentres;
-import diffract.optics.ShiftedDft;
-import diffract.optics.TaylorTerms;
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.PhaseCentres;
+import diffract.optics.numerics.ShiftedDft;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.MemoryEstimate;
 import diffract.util.Reporter;
 import pl.edu.icm.jlargearrays.ConcurrencyUtils;

@@ -25,7 +25,7 @@ public record TermSidecar(
 
     /**
      * @param source         the file the patch came from (informative only)
-     * @param sha256         {@link diffract.optics.HeightField#contentSha256()} of the mean-subtracted field
+     * @param sha256         {@link diffract.optics.patches.HeightField#contentSha256()} of the mean-subtracted field
      * @param maxHeightUm    grey 255 / 65535 height the user gave (images), or null
      * @param maxAbsHeightUm max |h| after mean subtraction
      */

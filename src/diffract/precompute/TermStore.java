@@ -2,7 +2,7 @@ package diffract.precompute;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.UserInputException;
 
 import java.io.IOException;

@@ -11,7 +11,7 @@ import java.util.List;
  *
  * @param heightUnit     always "um": diffract writes the extrema of term n in micrometres^n
  * @param source         the height field the terms came from (informative)
- * @param patchSha256    {@link diffract.optics.HeightField#contentSha256()} of the mean-subtracted field, or null
+ * @param patchSha256    {@link diffract.optics.patches.HeightField#contentSha256()} of the mean-subtracted field, or null
  *                       when the terms were converted from a folder without it
  * @param maxHeightUm    the user's --max-height, or null
  * @param maxAbsHeightUm max |h| after mean subtraction, exact

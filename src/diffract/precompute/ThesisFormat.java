@@ -1,6 +1,6 @@
 package diffract.precompute;
 
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 

@@ -2,7 +2,7 @@ package diffract.precompute;
 
 /**
  * Where the thesis' Octave script puts a frequency, and with which phase, compared with our own fftshifted layout
- * ({@link diffract.optics.TaylorTerms}: texel (r, c) holds frequency index (m_x, m_y) = (c - floor(C/2),
+ * ({@link diffract.optics.spectra.TaylorTerms}: texel (r, c) holds frequency index (m_x, m_y) = (c - floor(C/2),
  * r - floor(R/2)) of {@code ifft2((i h)^n)}, for an R x C field h).
  *
  * <p>The script rotates the R x C height field by -90 degrees before the transform and each output

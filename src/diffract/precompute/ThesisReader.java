@@ -1,9 +1,9 @@
 package diffract.precompute;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Quantity;
-import diffract.optics.TaylorTerms;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 

@@ -2,8 +2,8 @@ package diffract.precompute;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
-import diffract.optics.SpectralSettings;
-import diffract.optics.TaylorTerms;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
 import diffract.util.Version;

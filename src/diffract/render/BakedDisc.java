@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.DiscFootprint;
+import diffract.optics.illumination.DiscFootprint;
 
 /**
  * The baked table of the lobes method under a disc light ({@code baked_disc.glsl}, docs/filtering.md section 8): the

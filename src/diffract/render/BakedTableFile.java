@@ -3,8 +3,8 @@ package diffract.render;
 import diffract.jrtr.scenegraph.ShaderProgram;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.TaylorTerms;
-import diffract.optics.TermFormat;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
 

@@ -3,9 +3,9 @@ package diffract.render;
 import diffract.jrtr.contexts.HeadlessGL;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.GainModel;
-import diffract.optics.TaylorTerms;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.GainModel;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
@@ -260,7 +260,7 @@ public final class BakedTables {
     private static Key key(TaylorTerms terms, BrdfSettings settings) {
         return new Key(terms, BakedDisc.heldBy(settings).with(b -> b.variant(Variant.BAKED)
                 .termFormat(TermFormat.RG32F).gain(GainModel.STAM)
-                .rigorous(settings.rigorous().withOrders(diffract.optics.OrderWeights.SCALAR))), tabulated(terms, settings));
+                .rigorous(settings.rigorous().withOrders(diffract.optics.settings.OrderWeights.SCALAR))), tabulated(terms, settings));
     }
 
     /**

@@ -4,17 +4,17 @@ import diffract.colour.Srgb;
 import diffract.jrtr.scenegraph.ShaderProgram;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.DiscFootprint;
+import diffract.optics.illumination.DiscFootprint;
 import diffract.optics.LobeSpectrum;
 import diffract.optics.Methods;
-import diffract.optics.WindowPlacement;
-import diffract.optics.GainModel;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.LightSource;
-import diffract.optics.PhaseCentres;
-import diffract.optics.Quantity;
+import diffract.optics.windows.WindowPlacement;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.spectra.PhaseCentres;
+import diffract.optics.settings.Quantity;
 import diffract.optics.Variant;
-import diffract.optics.WindowRadii;
+import diffract.optics.windows.WindowRadii;
 
 import java.util.Locale;
 import java.util.Map;
@@ -117,7 +117,7 @@ public final class DiffractionShaders {
         // the texel sums' guard on their wavelength nodes (lobes_sum.glsl)
         defines.put("MAX_SUM_NODES", Integer.toString(LobeSpectrum.MAX_SUM_NODES));
         // the texels per side of the weight table's blocks of bounds (lobes_spectrum.glsl)
-        defines.put("LOBE_BLOCK", Integer.toString(diffract.optics.LobeWeightTable.BLOCK));
+        defines.put("LOBE_BLOCK", Integer.toString(diffract.optics.lobes.LobeWeightTable.BLOCK));
         defines.put("LOBE_ROWS_FACTOR", Integer.toString(LobeSpectrum.ROWS_FACTOR));
         defines.put("WIDEST_HAT_NM", Integer.toString(diffract.colour.HatFilteredSpectrum.WIDEST_HAT_NM));
         defines.put("XYZ_TO_LINEAR_SRGB", glslMat3(Srgb.xyzToLinearMatrix()));

@@ -11,13 +11,13 @@ import diffract.jrtr.scenegraph.ShapeNode;
 import diffract.jrtr.scenegraph.Shapes;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.InvalidSettingException;
+import diffract.optics.illumination.Direction;
+import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.LightPolicy;
-import diffract.optics.PhaseCentredTerms;
-import diffract.optics.Quantity;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.settings.Quantity;
 import diffract.optics.TaylorEvaluation;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 
@@ -83,10 +83,10 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /**
      * The local window's centre on the scan (um) and its footprint's covariance (um^2) for the maps that follow
-     * ({@link diffract.optics.WindowPlacement#LOCAL}: a map has no surface point; until placed, the window sits at
+     * ({@link diffract.optics.windows.WindowPlacement#LOCAL}: a map has no surface point; until placed, the window sits at
      * the scan's origin with no footprint); nothing for other placements.
      */
-    public GpuBrdfMap placeWindow(double centreXUm, double centreYUm, diffract.optics.Covariance2 footprintUm2) {
+    public GpuBrdfMap placeWindow(double centreXUm, double centreYUm, diffract.optics.numerics.Covariance2 footprintUm2) {
         DiffractionMaterials.placeMapWindow(xyzMaterial, settings, centreXUm, centreYUm, footprintUm2);
         return this;
     }

@@ -4,13 +4,13 @@ import diffract.colour.HatFilteredSpectrum;
 import diffract.jrtr.textures.FloatTexture1D;
 import diffract.jrtr.textures.FloatTextureArray;
 import diffract.optics.BrdfSettings;
-import diffract.optics.InvalidSettingException;
+import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.LobeSumTable;
-import diffract.optics.LobeWeightTable;
+import diffract.optics.lobes.LobeWeightTable;
 import diffract.optics.OrderCorrection;
-import diffract.optics.Quantity;
-import diffract.optics.SpectralSettings;
+import diffract.optics.settings.Quantity;
+import diffract.optics.settings.SpectralSettings;
 
 import java.util.function.BiFunction;
 
@@ -151,7 +151,7 @@ public final class LobeTextures {
         return sums;
     }
 
-    /** Makes the lobes take the rigorous orders' ratios ({@link diffract.optics.OrderWeights#RIGOROUS}). */
+    /** Makes the lobes take the rigorous orders' ratios ({@link diffract.optics.settings.OrderWeights#RIGOROUS}). */
     public synchronized void useOrders(OrderCorrection table) {
         if (orders != null && orders != table) {
             throw new IllegalStateException("these textures hold another table of rigorous orders; make new textures");

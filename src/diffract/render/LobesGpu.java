@@ -2,18 +2,18 @@ package diffract.render;
 
 import diffract.jrtr.scenegraph.Material;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Covariance2;
-import diffract.optics.Direction;
-import diffract.optics.GaussHermite;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.LightSource;
+import diffract.optics.numerics.Covariance2;
+import diffract.optics.illumination.Direction;
+import diffract.optics.numerics.GaussHermite;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.illumination.LightSource;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.LobeSumTable;
-import diffract.optics.LobeWeightTable;
+import diffract.optics.lobes.LobeWeightTable;
 import diffract.optics.OrderCorrection;
-import diffract.optics.OrderWeights;
-import diffract.optics.PixelFilter;
-import diffract.optics.Quantity;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.settings.Quantity;
 
 /**
  * The lobes method on the GPU ({@code lobes.frag} over {@code lobes_spectrum.glsl}, {@code lobes_footprint.glsl} and

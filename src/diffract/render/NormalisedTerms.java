@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.jrtr.textures.FloatTexture1D;
 import diffract.jrtr.textures.FloatTextureArray;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.ThesisExtrema;
 
 import java.util.ArrayList;

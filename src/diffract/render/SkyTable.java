@@ -3,7 +3,7 @@ package diffract.render;
 import diffract.jrtr.textures.FloatTexture3D;
 import diffract.lighting.ExtendedLight;
 import diffract.optics.BakedGrid;
-import diffract.optics.LightSource;
+import diffract.optics.illumination.LightSource;
 
 import java.util.List;
 import java.util.stream.IntStream;

@@ -1,7 +1,7 @@
 package diffract.render;
 
 import diffract.jrtr.textures.FloatTextureArray;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.TermFormat;
 
 /** The engine's texture precision of each {@link TermFormat}. */
 public final class TermFormats {

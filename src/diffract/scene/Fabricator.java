@@ -1,8 +1,8 @@
 package diffract.scene;
 
 import diffract.jrtr.scenegraph.Shape;
-import diffract.optics.OrderWeights;
-import diffract.optics.ScalarValidity;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.validity.ScalarValidity;
 import diffract.util.Reporter;
 
 import java.nio.file.Path;

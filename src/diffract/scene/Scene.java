@@ -4,8 +4,8 @@ import diffract.geometry.SnakeMesh;
 import diffract.geometry.SnakeSpecies;
 import diffract.geometry.TangentSource;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Levelling;
-import diffract.optics.ProceduralPatches;
+import diffract.optics.patches.Levelling;
+import diffract.optics.patches.ProceduralPatches;
 
 import java.nio.file.Path;
 
@@ -81,7 +81,7 @@ public record Scene(Path source, ImageSize image, CameraSpec camera, LightSpec l
     /**
      * A patch made by code.
      *
-     * @param name the catalogue name it starts from ({@link diffract.optics.PatchCatalogue})
+     * @param name the catalogue name it starts from ({@link diffract.optics.patches.PatchCatalogue})
      */
     public record ProceduralPatch(String name, ProceduralPatches.Spec spec) implements PatchSpec {
     }

@@ -1,7 +1,7 @@
 package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.PixelFilter;
+import diffract.optics.settings.PixelFilter;
 import diffract.optics.Methods;
 
 /**

@@ -8,7 +8,7 @@ import diffract.jrtr.textures.FloatFramebuffer;
 import diffract.jrtr.gl.PixelRect;
 import diffract.jrtr.textures.TiledFrame;
 import diffract.optics.BrdfSettings;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.render.GpuMethods;
 import diffract.render.ShortPixels;
 

@@ -1,7 +1,7 @@
 package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Methods;
 import diffract.optics.Variant;
 import diffract.render.BakedTables;

@@ -1,6 +1,6 @@
 package diffract.viewer;
 
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 
 import java.util.concurrent.ExecutorService;

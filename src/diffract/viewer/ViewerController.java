@@ -6,9 +6,9 @@ import com.jogamp.newt.event.MouseAdapter;
 import com.jogamp.newt.event.MouseEvent;
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightPolicy;
-import diffract.optics.LightProfile;
+import diffract.optics.settings.LightProfile;
 import diffract.scene.LightDirection;
-import diffract.optics.TaylorSettings;
+import diffract.optics.spectra.TaylorSettings;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
 
@@ -225,7 +225,7 @@ public final class ViewerController implements AutoCloseable {
     private java.util.Optional<ViewerState> changeSettings(java.util.function.Consumer<BrdfSettings.Builder> change) {
         try {
             return java.util.Optional.of(model.update(s -> s.withSettings(s.settings().with(change))));
-        } catch (diffract.optics.InvalidSettingException | IllegalArgumentException e) {
+        } catch (diffract.optics.settings.InvalidSettingException | IllegalArgumentException e) {
             model.update(s -> s.withNotice(Notice.forSeconds(e.getMessage(), NOTICE_SECONDS)));
             return java.util.Optional.empty();
         }

@@ -4,7 +4,7 @@ import diffract.jrtr.GLRenderContext;
 import diffract.jrtr.scenegraph.Material;
 import diffract.jrtr.textures.Texture2D;
 import diffract.optics.BrdfSettings;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Methods;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.render.DiffractionMaterials;

@@ -1,8 +1,8 @@
 package diffract.viewer;
 
 import diffract.jrtr.scenegraph.Shape;
-import diffract.optics.HeightField;
-import diffract.optics.TaylorTerms;
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.TaylorTerms;
 
 import diffract.pipeline.DiffractionPipeline;
 import diffract.scene.SceneSetup;

@@ -2,7 +2,7 @@ package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
 import diffract.optics.LightPolicy;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.scene.DisplayMode;
 import diffract.scene.LightDirection;
 import diffract.scene.OrbitCamera;

@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorTerms;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.io.GsfWriter;
 import diffract.precompute.TermStore;
 import diffract.util.ImageFiles;

@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.optics.SyntheticPatches;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import diffract.util.ImageFiles;
 import org.junit.jupiter.api.BeforeAll;

@@ -1,7 +1,7 @@
 package diffract.app;
 
 import diffract.jrtr.GlTestSupport;
-import diffract.optics.SyntheticPatches;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.io.GsfWriter;
 import diffract.util.ImageFiles;
 import org.junit.jupiter.api.BeforeAll;

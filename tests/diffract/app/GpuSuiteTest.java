@@ -3,7 +3,7 @@ package diffract.app;
 import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
-import diffract.optics.LightSource;
+import diffract.optics.illumination.LightSource;
 import diffract.scene.SceneFile;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Tag;

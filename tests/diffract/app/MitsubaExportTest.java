@@ -2,9 +2,9 @@ package diffract.app;
 
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
-import diffract.optics.AutoExposure;
-import diffract.optics.BrdfMapDifference;
-import diffract.optics.Direction;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
+import diffract.optics.illumination.Direction;
 import diffract.util.ImageFiles;
 import diffract.util.NpyFile;
 import org.junit.jupiter.api.BeforeAll;

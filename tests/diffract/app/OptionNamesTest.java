@@ -1,6 +1,6 @@
 package diffract.app;
 
-import diffract.optics.Quantity;
+import diffract.optics.settings.Quantity;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 

@@ -1,7 +1,7 @@
 package diffract.app;
 
-import diffract.optics.HeightField;
-import diffract.optics.Levelling;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.Levelling;
 import diffract.optics.io.HeightFieldReader;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;

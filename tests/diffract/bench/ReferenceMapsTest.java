@@ -1,8 +1,8 @@
 package diffract.bench;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.LightProfile;
-import diffract.optics.SyntheticPatches;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;

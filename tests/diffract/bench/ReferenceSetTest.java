@@ -1,8 +1,8 @@
 package diffract.bench;
 
-import diffract.optics.AutoExposure;
+import diffract.optics.maps.AutoExposure;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
+import diffract.optics.illumination.Direction;
 import diffract.optics.LobeQuadrature;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;

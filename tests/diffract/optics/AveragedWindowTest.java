@@ -1,6 +1,16 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.ExactSpectrum;
+import diffract.optics.spectra.PatchSpectrum;
+import diffract.optics.spectra.TaylorGaussianSpectrum;
+import diffract.optics.spectra.TaylorSincSpectrum;
+import diffract.optics.windows.CoherenceWindow;
+import diffract.optics.windows.WindowPlacement;
+import diffract.optics.windows.WindowRadii;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;

@@ -1,5 +1,11 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.settings.Quantity;
+import diffract.optics.windows.WindowPlacement;
 import org.junit.jupiter.api.Test;
 
 import java.util.Optional;

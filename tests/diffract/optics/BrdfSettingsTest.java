@@ -1,5 +1,18 @@
 package diffract.optics;
 
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.illumination.IlluminationSettings;
+import diffract.optics.rigorous.RigorousSettings;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.settings.Quantity;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.settings.TermFormat;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorSettings;
+import diffract.optics.spectra.WindowSettings;
+import diffract.optics.windows.WindowPlacement;
 import org.junit.jupiter.api.Test;
 
 import java.lang.reflect.RecordComponent;

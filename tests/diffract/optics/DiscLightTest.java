@@ -1,6 +1,17 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
+import diffract.optics.numerics.GaussLegendre;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.settings.PixelFilter;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;

@@ -1,6 +1,15 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.DiscFootprint;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;

@@ -1,8 +1,16 @@
 package diffract.optics;
 
-import diffract.util.TestReport;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.spectra.TaylorBound;
+import diffract.optics.spectra.TaylorGaussianSpectrum;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.windows.CoherenceWindow;
+import diffract.optics.windows.WindowPlacement;
+import diffract.optics.windows.WindowRadii;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
+import diffract.util.TestReport;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;

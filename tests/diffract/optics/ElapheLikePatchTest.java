@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.Test;
 

@@ -1,8 +1,9 @@
 package diffract.optics;
 
-import diffract.util.TestReport;
 import diffract.optics.io.HeightFieldReader;
+import diffract.optics.patches.HeightField;
 import diffract.util.Reporter;
+import diffract.util.TestReport;
 import org.junit.jupiter.api.Test;
 
 import java.nio.file.Path;

@@ -1,6 +1,13 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.PhaseCentres;
+import diffract.optics.spectra.TaylorSincSpectrum;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.windows.WindowPlacement;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;

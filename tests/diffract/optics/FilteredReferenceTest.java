@@ -2,9 +2,22 @@ package diffract.optics;
 
 import diffract.colour.SpectralDensity;
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.Footprint;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.illumination.LightSource;
+import diffract.optics.numerics.Covariance2;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.settings.SpectralSettings;
+import diffract.optics.settings.WavelengthSampling;
+import diffract.optics.spectra.ExactSpectrum;
+import diffract.optics.windows.CoherenceWindow;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
-import org.junit.jupiter.api.Test;
 
 import java.util.stream.IntStream;
 

@@ -2,6 +2,12 @@ package diffract.optics;
 
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.illumination.IlluminationSettings;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import org.junit.jupiter.params.ParameterizedTest;

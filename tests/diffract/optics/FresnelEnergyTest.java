@@ -1,5 +1,13 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.WavelengthSampling;
+import diffract.optics.spectra.ExactSpectrum;
+import diffract.optics.windows.CoherenceWindow;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;

@@ -1,10 +1,16 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.ProceduralPatches;
 import diffract.optics.rigorous.ComplexIndex;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.Profile;
 import diffract.optics.rigorous.Resolution;
+import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSolver;
+import diffract.optics.settings.GainModel;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;

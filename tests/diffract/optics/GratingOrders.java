@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+
 import java.util.ArrayList;
 import java.util.List;
 

@@ -1,6 +1,15 @@
 package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.Footprint;
+import diffract.optics.illumination.LobeGeometry;
+import diffract.optics.lobes.LobeWeightTable;
+import diffract.optics.numerics.Covariance2;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;

@@ -1,5 +1,6 @@
 package diffract.optics;
 
+import diffract.optics.settings.InvalidSettingException;
 import org.junit.jupiter.api.Test;
 
 import java.util.Map;

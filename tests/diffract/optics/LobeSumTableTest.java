@@ -1,5 +1,15 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.lobes.LobeWeightTable;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.windows.CoherenceWindow;
+import diffract.optics.windows.WindowPlacement;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;

@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+
 /** Textbook sums, written for clarity, that the fast code is checked against. */
 public final class NaiveDft {
     private NaiveDft() {

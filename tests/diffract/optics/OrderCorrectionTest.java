@@ -1,8 +1,18 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.illumination.GainFactor;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.Resolution;
+import diffract.optics.rigorous.RigorousPatch;
+import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.rigorous.RigorousSolver;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.settings.Quantity;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;

@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+
 /** Finds diffraction peaks along the incidence plane, as the thesis' grating-equation evaluation did (001 ch. 5). */
 final class PeakFinder {
     private static final int SAMPLES = 20001;

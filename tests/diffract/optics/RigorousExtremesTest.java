@@ -1,7 +1,12 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.rigorous.Resolution;
+import diffract.optics.rigorous.RigorousSettings;
+import diffract.optics.validity.OrderComparison;
 import org.junit.jupiter.api.Test;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;

@@ -1,5 +1,9 @@
 package diffract.optics;
 
+import diffract.optics.numerics.ShiftedDft;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.windows.CoherenceWindow;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 

@@ -1,5 +1,12 @@
 package diffract.optics;
 
+import diffract.optics.illumination.Direction;
+import diffract.optics.maps.AutoExposure;
+import diffract.optics.maps.BrdfMapDifference;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;

@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.TaylorBound;
 import diffract.precompute.TaylorTermComputer;
 import org.junit.jupiter.api.Test;
 

@@ -1,5 +1,7 @@
 package diffract.optics;
 
+import diffract.optics.patches.HeightField;
+
 /**
  * A scan as wide as the coherence window, for the tests of the averaged window on the CPU and the GPU: a ridge along
  * y whose period does not divide the scan (its orders spread over neighbouring texels, as a real scan's do), a weaker

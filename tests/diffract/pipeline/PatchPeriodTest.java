@@ -1,7 +1,7 @@
 package diffract.pipeline;
 
-import diffract.optics.HeightField;
-import diffract.optics.SyntheticPatches;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
 import org.junit.jupiter.api.Test;
 
 import java.util.Random;

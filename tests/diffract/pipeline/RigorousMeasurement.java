@@ -2,15 +2,15 @@ package diffract.pipeline;
 
 import diffract.colour.ColourPath;
 import diffract.colour.Xyz;
-import diffract.optics.AutoExposure;
+import diffract.optics.maps.AutoExposure;
 import diffract.optics.BrdfMap;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.GainModel;
-import diffract.optics.OrderWeights;
-import diffract.optics.PatchCatalogue;
-import diffract.optics.PixelFilter;
+import diffract.optics.illumination.Direction;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.settings.PixelFilter;
 import diffract.optics.Variant;
 import diffract.util.ImageFiles;
 import diffract.util.Reporter;
@@ -59,7 +59,7 @@ class RigorousMeasurement {
     private static void measure(String name, DiffractionPipeline pipeline, double thetaDeg, Path pictures)
             throws IOException {
         BrdfSettings lobes = BrdfSettings.thesis(Variant.LOBES).with(b -> b.pixelFilter(PixelFilter.BOX)
-                .lightSizeDeg(0.53).refractiveIndex(diffract.optics.GainFactor.KERATIN_REFRACTIVE_INDEX)
+                .lightSizeDeg(0.53).refractiveIndex(diffract.optics.illumination.GainFactor.KERATIN_REFRACTIVE_INDEX)
                 .gain(GainModel.RAYLEIGH_RICE));
         Direction wi = Direction.fromSphericalDeg(thetaDeg, PatchCatalogue.named(name).phiIDeg());
         long start = System.nanoTime();

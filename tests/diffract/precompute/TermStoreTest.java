@@ -1,8 +1,8 @@
 package diffract.precompute;
 
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.optics.NaiveDft;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.Test;

@@ -1,6 +1,6 @@
 package diffract.precompute;
 
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.optics.NaiveDft;
 
 import java.io.IOException;

@@ -1,9 +1,9 @@
 package diffract.precompute;
 
 import diffract.util.TestReport;
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.optics.NaiveDft;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;

@@ -1,18 +1,18 @@
 package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
-import diffract.optics.AutoExposure;
+import diffract.optics.maps.AutoExposure;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfMap;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.LightProfile;
-import diffract.optics.PatchCatalogue;
-import diffract.optics.PixelFilter;
-import diffract.optics.TaylorTerms;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.MeasureProperties;
 import diffract.util.Reporter;

@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.LightProfile;
+import diffract.optics.settings.LightProfile;
 import diffract.optics.Variant;
 import org.junit.jupiter.api.Test;
 

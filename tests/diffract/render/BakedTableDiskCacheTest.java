@@ -2,10 +2,10 @@ package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
-import diffract.optics.GainModel;
-import diffract.optics.PixelFilter;
-import diffract.optics.TaylorTerms;
-import diffract.optics.TermFormat;
+import diffract.optics.settings.GainModel;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;

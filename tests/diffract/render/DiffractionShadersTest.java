@@ -65,7 +65,7 @@ class DiffractionShadersTest {
         assertEquals("2", d.get("WINDOW_RADIUS_X"));
         assertEquals("2", d.get("WINDOW_RADIUS_Y"));
         // Per-axis radii (automatic ones need the patch, so the settings-only overload refuses them)
-        Map<String, String> perAxis = DiffractionShaders.defines(s, 9, new diffract.optics.WindowRadii(2, 0),
+        Map<String, String> perAxis = DiffractionShaders.defines(s, 9, new diffract.optics.windows.WindowRadii(2, 0),
                 DiffractionShaders.Target.BRDF_MAP, false, false);
         assertEquals("9", perAxis.get("TAYLOR_HIGHEST_ORDER"));
         assertEquals("2", perAxis.get("WINDOW_RADIUS"));

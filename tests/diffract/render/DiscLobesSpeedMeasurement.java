@@ -2,11 +2,11 @@ package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.LightProfile;
-import diffract.optics.PixelFilter;
-import diffract.optics.TaylorTerms;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.LightProfile;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.util.MeasureProperties;
 import diffract.util.TestReport;

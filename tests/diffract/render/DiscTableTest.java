@@ -3,7 +3,7 @@ package diffract.render;
 import diffract.jrtr.textures.FloatTexture3D;
 import diffract.optics.BakedGrid;
 import diffract.optics.BrdfSettings;
-import diffract.optics.LightProfile;
+import diffract.optics.settings.LightProfile;
 import diffract.optics.Variant;
 import org.junit.jupiter.api.Test;
 

@@ -1,7 +1,7 @@
 package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
-import diffract.optics.LightSource;
+import diffract.optics.illumination.LightSource;
 import diffract.optics.Variant;
 import diffract.scene.Fabricator;
 import diffract.scene.SceneSetup;

@@ -3,15 +3,15 @@ package diffract.render;
 import diffract.util.TestReport;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.SyntheticPatches;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.TaylorEvaluation;
-import diffract.optics.TaylorExpansion;
-import diffract.optics.TaylorTerms;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
@@ -174,8 +174,8 @@ class ExtremesReportTest {
             TaylorEvaluation centred = TaylorEvaluation.choose(TaylorExpansion.CENTRED, patch, terms, 30, 380,
                     (p, c) -> TaylorTermComputer.computeCentred(p, c, Reporter.SILENT), Reporter.SILENT);
             double a = 2 * 2 * Math.PI / 0.38;
-            double estimate = diffract.optics.Float32Cancellation.plainSeriesError(terms, 30, a);
-            boolean switches = !diffract.optics.Float32Cancellation.plainSeriesSuffices(terms, 30, 380);
+            double estimate = diffract.optics.spectra.Float32Cancellation.plainSeriesError(terms, 30, a);
+            boolean switches = !diffract.optics.spectra.Float32Cancellation.plainSeriesSuffices(terms, 30, 380);
             float[] ref = BrdfMap.monochromatic(DiffractionBrdf.create(settings.with(b -> b.variant(Variant.REFERENCE)), patch,
                     null), wi, 380, SIZE, Reporter.SILENT);
             double plainError;

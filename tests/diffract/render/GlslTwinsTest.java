@@ -2,10 +2,10 @@ package diffract.render;
 
 import diffract.colour.Srgb;
 import diffract.jrtr.GlTestSupport;
-import diffract.optics.BoxedEdge;
+import diffract.optics.illumination.BoxedEdge;
 import diffract.optics.BrdfSettings;
-import diffract.optics.ErrorFunction;
-import diffract.optics.PixelFilter;
+import diffract.optics.numerics.ErrorFunction;
+import diffract.optics.settings.PixelFilter;
 import diffract.optics.Variant;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.Test;

@@ -3,20 +3,20 @@ package diffract.render;
 import diffract.colour.MirrorNormalisation;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.PhaseCentredTerms;
-import diffract.optics.PhaseCentres;
-import diffract.optics.PixelFilter;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.PhaseCentres;
+import diffract.optics.settings.PixelFilter;
 import diffract.optics.TaylorEvaluation;
-import diffract.optics.TaylorExpansion;
-import diffract.optics.TaylorTerms;
-import diffract.optics.TermFormat;
+import diffract.optics.spectra.TaylorExpansion;
+import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.settings.TermFormat;
 import diffract.optics.Variant;
-import diffract.optics.WindowPlacement;
+import diffract.optics.windows.WindowPlacement;
 import diffract.precompute.TaylorTermComputer;
 import diffract.precompute.ThesisExtrema;
 import diffract.util.Reporter;
@@ -37,7 +37,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The GPU map equals the CPU map of the same variant, expansion, stored terms and early stop, as people see them:
- * both XYZ maps through the exposure {@link diffract.optics.AutoExposure} picks from the CPU map (the brightest
+ * both XYZ maps through the exposure {@link diffract.optics.maps.AutoExposure} picks from the CPU map (the brightest
  * diffracted pixel at Y = 1, so the orders fill the display range), compared in CIEDE2000 (D65 white) over the lit
  * pixels (exposed Y above 1 % of white in either map), where a wrong colour shows; most of a map is black in both.
  *
@@ -233,7 +233,7 @@ class GpuCpuAgreementTest {
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         PhaseCentredTerms centred = centredTerms(patch);
         BrdfSettings bytes = settings(Variant.FLSS, TermFormat.RG8, false);
-        assertThrows(diffract.optics.InvalidSettingException.class, () -> new GpuBrdfMap(centred, bytes).close());
+        assertThrows(diffract.optics.settings.InvalidSettingException.class, () -> new GpuBrdfMap(centred, bytes).close());
     }
 
     /**

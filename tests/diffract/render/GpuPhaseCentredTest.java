@@ -3,15 +3,15 @@ package diffract.render;
 import diffract.util.TestReport;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfMap;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.PhaseCentredTerms;
-import diffract.optics.PhaseCentres;
-import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorTerms;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.spectra.PhaseCentredTerms;
+import diffract.optics.spectra.PhaseCentres;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
@@ -62,7 +62,7 @@ class GpuPhaseCentredTest {
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED);
         PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
                 PhaseCentres.forPatch(patch.maxAbsHeightUm(), settings.spectral().lambdaMinNm()), Reporter.SILENT);
-        var refused = org.junit.jupiter.api.Assertions.assertThrows(diffract.optics.InvalidSettingException.class,
+        var refused = org.junit.jupiter.api.Assertions.assertThrows(diffract.optics.settings.InvalidSettingException.class,
                 () -> new GpuBrdfMap(centred, settings).close());
         assertTrue(refused.getMessage().contains("phase-centred expansion"), refused.getMessage());
     }

@@ -1,15 +1,15 @@
 package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
-import diffract.optics.AutoExposure;
+import diffract.optics.maps.AutoExposure;
 import diffract.optics.BrdfMap;
-import diffract.optics.BrdfMapDifference;
+import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.OrderWeights;
-import diffract.optics.PatchCatalogue;
-import diffract.optics.PixelFilter;
-import diffract.optics.RigorousSettings;
+import diffract.optics.illumination.Direction;
+import diffract.optics.settings.OrderWeights;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.Variant;
 import diffract.optics.rigorous.Resolution;
 import diffract.pipeline.DiffractionPipeline;

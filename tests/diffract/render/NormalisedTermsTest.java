@@ -1,7 +1,7 @@
 package diffract.render;
 
-import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorTerms;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.precompute.TaylorTermComputer;
 import diffract.precompute.ThesisExtrema;
 import diffract.util.Reporter;

@@ -1,10 +1,10 @@
 package diffract.render;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
-import diffract.optics.SyntheticPatches;
-import diffract.optics.TaylorTerms;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
@@ -55,12 +55,12 @@ final class RenderTestSupport {
     }
 
     /**
-     * Both maps through the exposure {@link diffract.optics.AutoExposure} picks for the first (the CPU's): its
+     * Both maps through the exposure {@link diffract.optics.maps.AutoExposure} picks for the first (the CPU's): its
      * brightest diffracted pixel maps to Y = 1, so the orders, not the specular peak, fill the display range.
      */
-    static diffract.optics.BrdfMapDifference difference(float[] cpuXyz, float[] gpuXyz, int size, Direction wi) {
-        double exposure = diffract.optics.AutoExposure.ofXyz(cpuXyz, wi, size);
-        return diffract.optics.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
+    static diffract.optics.maps.BrdfMapDifference difference(float[] cpuXyz, float[] gpuXyz, int size, Direction wi) {
+        double exposure = diffract.optics.maps.AutoExposure.ofXyz(cpuXyz, wi, size);
+        return diffract.optics.maps.BrdfMapDifference.of(cpuXyz, gpuXyz, size, exposure);
     }
 
     /** The XYZ of a size x size BRDF map drawn by the GPU under {@code settings}, in a GL context of its own. */

@@ -2,12 +2,12 @@ package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
-import diffract.optics.Direction;
-import diffract.optics.HeightField;
+import diffract.optics.illumination.Direction;
+import diffract.optics.patches.HeightField;
 import diffract.optics.LobeQuadrature;
-import diffract.optics.PatchCatalogue;
-import diffract.optics.PixelFilter;
-import diffract.optics.TaylorTerms;
+import diffract.optics.patches.PatchCatalogue;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;

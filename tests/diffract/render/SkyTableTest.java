@@ -4,7 +4,7 @@ import diffract.jrtr.textures.FloatTexture3D;
 import diffract.lighting.ExtendedLight;
 import diffract.optics.BakedGrid;
 import diffract.optics.Variant;
-import diffract.optics.LightSource;
+import diffract.optics.illumination.LightSource;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;

@@ -5,7 +5,7 @@ import diffract.jrtr.scenegraph.VertexAttribute;
 import diffract.lighting.ExtendedLight;
 import diffract.lighting.LatLongMap;
 import diffract.lighting.RadianceHdr;
-import diffract.optics.PixelFilter;
+import diffract.optics.settings.PixelFilter;
 import diffract.optics.Variant;
 import diffract.render.Stage;
 import diffract.util.Reporter;

@@ -67,10 +67,10 @@ class SceneFileTest {
     void theLightsProfileIsADiscUnlessTheSceneSaysGaussian() throws IOException {
         Path file = dir.resolve("ok.json");
         Files.writeString(file, valid(""));
-        assertEquals(diffract.optics.LightProfile.DISC,
+        assertEquals(diffract.optics.settings.LightProfile.DISC,
                 SceneFile.load(file).material().settings().illumination().light().profile());
         Files.writeString(file, valid("").replace("\"thetaDeg\": 30", "\"thetaDeg\": 30, \"profile\": \"gaussian\""));
-        assertEquals(diffract.optics.LightProfile.GAUSSIAN,
+        assertEquals(diffract.optics.settings.LightProfile.GAUSSIAN,
                 SceneFile.load(file).material().settings().illumination().light().profile());
         String m = message(valid("").replace("\"thetaDeg\": 30", "\"thetaDeg\": 30, \"profile\": \"tophat\""));
         assertTrue(m.startsWith("3: light.profile"), m);
@@ -114,12 +114,12 @@ class SceneFileTest {
     void theLocalWindowTakesTheScansTiling() throws IOException {
         Path file = dir.resolve("local.json");
         Files.writeString(file, valid(",\n    \"window\": \"local\", \"skinUmPerTexcoord\": [250, 400]"));
-        diffract.optics.WindowSettings w = SceneFile.load(file).material().settings().window();
-        assertEquals(diffract.optics.WindowPlacement.LOCAL, w.placement());
-        assertEquals(new diffract.optics.ScanTiling(250, 400, false), w.tiling());
+        diffract.optics.spectra.WindowSettings w = SceneFile.load(file).material().settings().window();
+        assertEquals(diffract.optics.windows.WindowPlacement.LOCAL, w.placement());
+        assertEquals(new diffract.optics.patches.ScanTiling(250, 400, false), w.tiling());
         Files.writeString(file, valid(",\n    \"window\": \"local\", \"skinUmPerTexcoord\": 300")
                 .replace("\"kind\": \"plane\"", "\"kind\": \"snake\""));
-        assertEquals(new diffract.optics.ScanTiling(300, 300, true),
+        assertEquals(new diffract.optics.patches.ScanTiling(300, 300, true),
                 SceneFile.load(file).material().settings().window().tiling());
         String m = message(valid(",\n    \"window\": \"local\""));
         assertTrue(m.startsWith("7: material.window: \"local\" needs \"skinUmPerTexcoord\""), m);
@@ -213,7 +213,7 @@ class SceneFileTest {
                 "{\"file\": \"scan.gwy\", \"channel\": \"ZSensor\", \"level\": \"rows\"}"));
         Scene.FilePatch patch = (Scene.FilePatch) SceneFile.load(file).material().patch();
         assertEquals(new Scene.FilePatch(dir.resolve("scan.gwy"), null, null, "ZSensor",
-                diffract.optics.Levelling.ROWS), patch);
+                diffract.optics.patches.Levelling.ROWS), patch);
 
         Files.writeString(file, valid("").replace("{\"procedural\": \"blazed\"}",
                 "{\"file\": \"scan.gwy\", \"channel\": 3}"));
@@ -281,8 +281,8 @@ class SceneFileTest {
         assertEquals(10, s.illumination().coherenceLengthUm(), 1e-12);
         assertEquals(1e-4, s.taylor().tolerance());
         assertEquals(12, s.taylor().highestOrder());
-        assertEquals(diffract.optics.TaylorExpansion.CENTRED, s.taylor().expansion());
-        assertEquals(diffract.optics.TermFormat.RG16F, s.gpu().termFormat());
+        assertEquals(diffract.optics.spectra.TaylorExpansion.CENTRED, s.taylor().expansion());
+        assertEquals(diffract.optics.settings.TermFormat.RG16F, s.gpu().termFormat());
         assertEquals(0, s.gpu().bakedUvSamples(), "automatic unless given");
         assertEquals("elaphe-like", ((Scene.ProceduralPatch) scene.material().patch()).name(),
                 "a camelCase name is the catalogue's patch");
@@ -296,17 +296,17 @@ class SceneFileTest {
                 + " \"polarisation\": \"s\", \"refractiveIndex\": 1.6, \"extinction\": 0.05")
                 .replace("\"flss\"", "\"lobes\""));
         diffract.optics.BrdfSettings s = SceneFile.load(file).material().settings();
-        assertEquals(diffract.optics.OrderWeights.RIGOROUS, s.rigorous().orders());
+        assertEquals(diffract.optics.settings.OrderWeights.RIGOROUS, s.rigorous().orders());
         assertEquals(new diffract.optics.rigorous.Resolution(30, 40, true), s.rigorous().resolution());
-        assertEquals(diffract.optics.Polarisation.S, s.rigorous().polarisation());
+        assertEquals(diffract.optics.settings.Polarisation.S, s.rigorous().polarisation());
         assertEquals(new diffract.optics.rigorous.ComplexIndex(1.6, 0.05), s.illumination().material());
 
         Path auto = dir.resolve("auto.json");
         Files.writeString(auto, valid(",\n    \"harmonics\": \"auto\", \"layers\": 7, \"layerExtrapolation\": false"));
         diffract.optics.BrdfSettings a = SceneFile.load(auto).material().settings();
         assertEquals(new diffract.optics.rigorous.Resolution(0, 7, false), a.rigorous().resolution());
-        assertEquals(diffract.optics.OrderWeights.SCALAR, a.rigorous().orders(), "the scalar orders by default");
-        assertEquals(diffract.optics.GainFactor.KERATIN_REFRACTIVE_INDEX, a.illumination().refractiveIndex());
+        assertEquals(diffract.optics.settings.OrderWeights.SCALAR, a.rigorous().orders(), "the scalar orders by default");
+        assertEquals(diffract.optics.illumination.GainFactor.KERATIN_REFRACTIVE_INDEX, a.illumination().refractiveIndex());
     }
 
     /** Each rigorous key's mistake is named at its key with the way out. */

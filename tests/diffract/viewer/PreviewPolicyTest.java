@@ -1,8 +1,8 @@
 package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.PixelFilter;
-import diffract.optics.TaylorExpansion;
+import diffract.optics.settings.PixelFilter;
+import diffract.optics.spectra.TaylorExpansion;
 import diffract.optics.Variant;
 import org.junit.jupiter.api.Test;
 

@@ -1,8 +1,8 @@
 package diffract.viewer;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.HeightField;
-import diffract.optics.SyntheticPatches;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.Variant;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;

@@ -1,7 +1,7 @@
 package diffract.optics.io;
 
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Quantity;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
 import diffract.util.Reporter;
 
 import java.nio.file.Path;

@@ -1,8 +1,8 @@
 package diffract.optics.io;
 
-import diffract.optics.HeightField;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Quantity;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.settings.Quantity;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 

@@ -1,10 +1,10 @@
 package diffract.optics.io;
 
-import diffract.optics.HeightField;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Levelling;
-import diffract.optics.Quantity;
-import diffract.optics.SpectralSettings;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.patches.Levelling;
+import diffract.optics.settings.Quantity;
+import diffract.optics.settings.SpectralSettings;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 

@@ -1,6 +1,6 @@
 package diffract.optics.io;
 
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.util.MemoryEstimate;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;

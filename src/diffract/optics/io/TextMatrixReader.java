@@ -1,6 +1,6 @@
 package diffract.optics.io;
 
-import diffract.optics.HeightField;
+import diffract.optics.patches.HeightField;
 import diffract.util.UserInputException;
 
 import java.nio.charset.StandardCharsets;

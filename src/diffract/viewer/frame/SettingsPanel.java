@@ -1,10 +1,10 @@
 package diffract.viewer.frame;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.LightProfile;
+import diffract.optics.settings.LightProfile;
 import diffract.optics.Methods;
-import diffract.optics.Quantity;
-import diffract.optics.TaylorSettings;
+import diffract.optics.settings.Quantity;
+import diffract.optics.spectra.TaylorSettings;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
 import diffract.scene.Scene;

@@ -1,9 +1,9 @@
 package diffract.optics.io;
 
-import diffract.optics.HeightField;
-import diffract.optics.InvalidSettingException;
-import diffract.optics.Levelling;
-import diffract.optics.Quantity;
+import diffract.optics.patches.HeightField;
+import diffract.optics.settings.InvalidSettingException;
+import diffract.optics.patches.Levelling;
+import diffract.optics.settings.Quantity;
 import diffract.util.Reporter;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -1,7 +1,7 @@
 package diffract.optics.io;
 
-import diffract.optics.HeightField;
-import diffract.optics.Levelling;
+import diffract.optics.patches.HeightField;
+import diffract.optics.patches.Levelling;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.Test;

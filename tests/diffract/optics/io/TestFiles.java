@@ -59,7 +59,7 @@ final class TestFiles {
     }
 
     /** Asserts that the loaded field holds expectedRaw (row-major) minus its mean. */
-    static void assertMeanSubtracted(double[] expectedRaw, diffract.optics.HeightField field) {
+    static void assertMeanSubtracted(double[] expectedRaw, diffract.optics.patches.HeightField field) {
         double mean = mean(expectedRaw);
         assertEquals(expectedRaw.length, field.sampleCount());
         for (int i = 0; i < expectedRaw.length; i++) {

@@ -213,7 +213,7 @@ class CellFourierModalMethodTest {
      */
     @Test
     void aSlabWhoseSchurIterationStallsIsStillSolved() {
-        diffract.optics.HeightField f = diffract.optics.SyntheticPatches.elapheLike(16, 8, 0.15, 0.3, 1)
+        diffract.optics.patches.HeightField f = diffract.optics.patches.SyntheticPatches.elapheLike(16, 8, 0.15, 0.3, 1)
                 .meanSubtracted();
         CellRelief relief = new CellRelief(f.widthUm(), f.heightExtentUm(), f.cols(), f.rows(), f.heightsUm());
         int m = 4;

@@ -5,7 +5,7 @@ import diffract.colour.DeltaEStatistics;
 import diffract.colour.Srgb;
 import diffract.jrtr.GlTestSupport;
 import diffract.jrtr.OffscreenTarget;
-import diffract.optics.LightProfile;
+import diffract.optics.settings.LightProfile;
 import diffract.optics.Variant;
 import diffract.scene.DisplayMode;
 import diffract.scene.Fabricator;
