@@ -163,7 +163,7 @@ public final class GainFactor {
     }
 
     /** cos of the angle between the half vector of omega_i and omega_r and the view direction omega_r. */
-    static double cosHalfToView(Direction wi, Direction wr) {
+    public static double cosHalfToView(Direction wi, Direction wr) {
         double hx = wi.x() + wr.x();
         double hy = wi.y() + wr.y();
         double hz = wi.z() + wr.z();

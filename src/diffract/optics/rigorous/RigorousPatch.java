@@ -165,7 +165,7 @@ public final class RigorousPatch {
     }
 
     /** The order of texel (cx, cy), or empty where no order of a 1-D patch lands. */
-    Optional<Integer> order(int cx, int cy) {
+    public Optional<Integer> order(int cx, int cy) {
         int along = axis == Axis.X ? cx : cy;
         int across = axis == Axis.X ? cy : cx;
         if (across != 0 || along % repeats != 0) {
@@ -192,7 +192,7 @@ public final class RigorousPatch {
      * iteration no longer converges. Each wavelength node solves every distinct slab of the staircase (a cell of few
      * heights has few), at L and L / 2 layers.
      */
-    static final long MAX_UNKNOWNS = 338;
+    public static final long MAX_UNKNOWNS = 338;
 
     /**
      * Why the rigorous method cannot solve this patch with the default resolution from {@link #ESTIMATE_LAMBDA_UM}
@@ -230,7 +230,7 @@ public final class RigorousPatch {
     }
 
     /** The largest M whose square set of harmonics stays within {@link #MAX_UNKNOWNS}. */
-    static int largestSquareOrder() {
+    public static int largestSquareOrder() {
         int m = 0;
         while (2L * (2 * m + 3) * (2 * m + 3) <= MAX_UNKNOWNS) {
             m++;

@@ -68,7 +68,7 @@ public final class TaylorSincSpectrum extends WindowedTaylorSpectrum {
      * sign. With s = m + f, the sines give (-1)^((R-1) m) sin(R pi f) / (R sin(pi f)); where both vanish
      * (|pi f| < 1e-6) the series 1 - (R^2 - 1)(pi f)^2 / 6 replaces the 0/0 (next term O((R pi f)^4) < 1e-16 R^4).
      */
-    static double normalisedDirichlet(double s, int replicas) {
+    public static double normalisedDirichlet(double s, int replicas) {
         if (replicas == 1) {
             return 1.0;
         }

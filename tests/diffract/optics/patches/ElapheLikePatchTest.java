@@ -1,7 +1,5 @@
-package diffract.optics;
+package diffract.optics.patches;
 
-import diffract.optics.patches.HeightField;
-import diffract.optics.patches.SyntheticPatches;
 import diffract.util.UserInputException;
 import org.junit.jupiter.api.Test;
 

@@ -1,10 +1,10 @@
-package diffract.optics;
+package diffract.optics.spectra;
 
+import diffract.optics.BrdfSettings;
+import diffract.optics.DiffractionBrdf;
+import diffract.optics.Variant;
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.SyntheticPatches;
-import diffract.optics.spectra.TaylorBound;
-import diffract.optics.spectra.TaylorGaussianSpectrum;
-import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.windows.CoherenceWindow;
 import diffract.optics.windows.WindowPlacement;
 import diffract.optics.windows.WindowRadii;

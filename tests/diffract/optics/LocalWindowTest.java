@@ -1,11 +1,14 @@
-package diffract.optics.windows;
+package diffract.optics;
 
-import diffract.optics.AveragedWindowTest;
-import diffract.optics.WideScan;
 import diffract.optics.patches.HeightField;
 import diffract.optics.spectra.PatchSpectrum;
 import diffract.optics.spectra.TaylorGaussianSpectrum;
 import diffract.optics.spectra.TaylorTerms;
+import diffract.optics.windows.CoherenceWindow;
+import diffract.optics.windows.LocalWindow;
+import diffract.optics.windows.SkinFootprint;
+import diffract.optics.windows.WindowPlacement;
+import diffract.optics.windows.WindowRadii;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;
