@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.app.options.QuietOption;
 import diffract.optics.io.ChannelChoice;
 import diffract.optics.io.HeightFieldReader;
 import diffract.optics.io.ScanChannel;

@@ -1,5 +1,6 @@
 package diffract.app;
 
+import diffract.app.options.QuietOption;
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
 import diffract.optics.maps.BrdfMapDifference;

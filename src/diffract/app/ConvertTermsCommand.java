@@ -1,5 +1,7 @@
 package diffract.app;
 
+import diffract.app.options.OptionTypes;
+import diffract.app.options.QuietOption;
 import diffract.optics.settings.SpectralSettings;
 import diffract.optics.spectra.TaylorBound;
 import diffract.optics.spectra.TaylorTerms;

@@ -1,5 +1,9 @@
 package diffract.app;
 
+import diffract.app.options.CacheOption;
+import diffract.app.options.GpuOption;
+import diffract.app.options.OptionTypes;
+import diffract.app.options.QuietOption;
 import diffract.jrtr.contexts.HeadlessGL;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;

@@ -1,9 +1,10 @@
 package diffract.app;
 
-import diffract.jrtr.gl.GpuTimer;
+import diffract.app.options.ProceduralOptions;
 import diffract.jrtr.contexts.HeadlessGL;
-import diffract.scene.LightDirection;
+import diffract.jrtr.gl.GpuTimer;
 import diffract.optics.illumination.LightSource;
+import diffract.scene.LightDirection;
 import diffract.util.DiskCache;
 
 import java.io.IOException;

@@ -1,5 +1,7 @@
 package diffract.app;
 
+import diffract.app.options.CacheOption;
+import diffract.app.options.OptionNames;
 import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.contexts.HeadlessGL;
 import diffract.optics.settings.InvalidSettingException;

@@ -1,5 +1,8 @@
 package diffract.app;
 
+import diffract.app.options.CacheOption;
+import diffract.app.options.GpuOption;
+import diffract.app.options.QuietOption;
 import diffract.bench.IridescenceStatistics;
 import diffract.jrtr.OffscreenTarget;
 import diffract.scene.Scene;

@@ -1,12 +1,15 @@
 package diffract.app;
 
+import diffract.app.jobs.PieceFolder;
+import diffract.app.jobs.PieceManifest;
+import diffract.app.options.QuietOption;
 import diffract.util.Reporter;
 import diffract.util.UserInputException;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine;
 
 import java.io.IOException;
 import java.nio.file.Path;

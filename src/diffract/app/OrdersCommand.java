@@ -2,12 +2,15 @@ package diffract.app;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
+import diffract.app.options.BrdfOptions;
+import diffract.app.options.PatchOptions;
+import diffract.app.options.QuietOption;
 import diffract.optics.BrdfSettings;
+import diffract.optics.Methods;
 import diffract.optics.illumination.Direction;
 import diffract.optics.patches.HeightField;
-import diffract.optics.Methods;
-import diffract.optics.validity.OrderComparison;
 import diffract.optics.rigorous.Resolution;
+import diffract.optics.validity.OrderComparison;
 import diffract.pipeline.NamedPatch;
 import diffract.scene.LightDirection;
 import diffract.util.OutputPaths;

@@ -1,12 +1,15 @@
 package diffract.app;
 
+import diffract.app.options.OptionTypes;
+import diffract.app.options.ProceduralOptions;
+import diffract.app.options.QuietOption;
+import diffract.optics.io.GsfWriter;
+import diffract.optics.io.HeightFieldReader;
+import diffract.optics.io.ScanFormat;
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.Levelling;
 import diffract.optics.patches.PatchCatalogue;
 import diffract.optics.patches.ProceduralPatches;
-import diffract.optics.io.GsfWriter;
-import diffract.optics.io.HeightFieldReader;
-import diffract.optics.io.ScanFormat;
 import diffract.util.MemoryEstimate;
 import diffract.util.OutputPaths;
 import diffract.util.UserInputException;

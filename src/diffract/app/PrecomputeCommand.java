@@ -1,8 +1,10 @@
 package diffract.app;
 
+import diffract.app.options.PatchOptions;
+import diffract.app.options.QuietOption;
+import diffract.optics.io.SamplingCheck;
 import diffract.optics.patches.HeightField;
 import diffract.optics.settings.SpectralSettings;
-import diffract.optics.io.SamplingCheck;
 import diffract.pipeline.NamedPatch;
 import diffract.precompute.Precomputation;
 import diffract.precompute.TermFolders;

@@ -1,5 +1,12 @@
 package diffract.app;
 
+import diffract.app.jobs.PieceFolder;
+import diffract.app.jobs.PieceManifest;
+import diffract.app.jobs.SplitCommand;
+import diffract.app.jobs.TileOptions;
+import diffract.app.options.CacheOption;
+import diffract.app.options.GpuOption;
+import diffract.app.options.QuietOption;
 import diffract.jrtr.OffscreenTarget;
 import diffract.render.FrameOutput;
 import diffract.render.ShortPixels;

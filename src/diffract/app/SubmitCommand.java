@@ -1,12 +1,17 @@
 package diffract.app;
 
+import diffract.app.jobs.Sbatch;
+import diffract.app.jobs.SlurmOptions;
+import diffract.app.jobs.SlurmScript;
+import diffract.app.jobs.SplitCommand;
+import diffract.app.jobs.TileOptions;
 import diffract.optics.MapBand;
 import diffract.util.UserInputException;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import picocli.CommandLine;
 
 import java.io.IOException;
 import java.nio.file.Files;

@@ -1,5 +1,7 @@
 package diffract.app;
 
+import diffract.app.options.CacheOption;
+import diffract.app.options.QuietOption;
 import diffract.bench.ValidityMap;
 import diffract.bench.ValidityReport;
 import diffract.util.OutputPaths;

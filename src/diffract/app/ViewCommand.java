@@ -1,5 +1,7 @@
 package diffract.app;
 
+import diffract.app.options.CacheOption;
+import diffract.app.options.QuietOption;
 import diffract.jrtr.contexts.DisplayCheck;
 import diffract.optics.Methods;
 import diffract.scene.Scene;

@@ -1,11 +1,14 @@
 package diffract.app;
 
+import diffract.app.jobs.PieceFolder;
+import diffract.app.jobs.PieceManifest;
+import diffract.app.jobs.TileOptions;
 import diffract.bench.BenchConfig;
 import diffract.bench.BenchResult;
 import diffract.bench.MapError;
 import diffract.bench.ResultsTable;
-import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.GlTestSupport;
+import diffract.jrtr.contexts.GLInfo;
 import diffract.util.TestCache;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -1,6 +1,7 @@
 package diffract.app;
 
 import com.code_intelligence.jazzer.junit.FuzzTest;
+import diffract.app.jobs.PieceFolder;
 import diffract.geometry.ObjReader;
 import diffract.geometry.TangentSource;
 import diffract.optics.io.HeightFieldReader;

@@ -1,5 +1,8 @@
 package diffract.app;
 
+import diffract.app.jobs.Sbatch;
+import diffract.app.jobs.SlurmOptions;
+import diffract.app.jobs.SlurmScript;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 

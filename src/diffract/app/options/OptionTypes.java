@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.optics.settings.GainModel;
 import diffract.optics.patches.Levelling;
@@ -24,7 +24,7 @@ import java.util.Locale;
  * value is picocli's one-line "Invalid value for option" with the reason), and the completion candidates of the
  * options whose values are names.
  */
-final class OptionTypes {
+public final class OptionTypes {
     private OptionTypes() {
     }
 
@@ -36,7 +36,7 @@ final class OptionTypes {
             return variant == null;
         }
 
-        static final class Converter implements ITypeConverter<VariantChoice> {
+        public static final class Converter implements ITypeConverter<VariantChoice> {
             @Override
             public VariantChoice convert(String text) {
                 if (text.trim().equalsIgnoreCase(AUTO)) {
@@ -69,11 +69,11 @@ final class OptionTypes {
 
     /** {@code --window-radius R|auto}: a fixed radius, or (null) the radius per axis from sigma_f. */
     record WindowRadius(Integer radius) {
-        boolean automatic() {
+        public boolean automatic() {
             return radius == null;
         }
 
-        static final class Converter implements ITypeConverter<WindowRadius> {
+        public static final class Converter implements ITypeConverter<WindowRadius> {
             @Override
             public WindowRadius convert(String text) {
                 if (text.trim().equalsIgnoreCase("auto")) {
@@ -86,7 +86,7 @@ final class OptionTypes {
 
     /** {@code --harmonics M|auto}: the rigorous method's highest harmonic, or (0) chosen per wavelength. */
     record Harmonics(int maxOrder) {
-        static final class Converter implements ITypeConverter<Harmonics> {
+        public static final class Converter implements ITypeConverter<Harmonics> {
             @Override
             public Harmonics convert(String text) {
                 if (text.trim().equalsIgnoreCase("auto")) {
@@ -111,12 +111,12 @@ final class OptionTypes {
     }
 
     /** {@code --exposure E|auto}: a positive factor, or (null) the brightest diffracted pixel mapped to 1. */
-    record Exposure(Double factor) {
-        boolean automatic() {
+    public record Exposure(Double factor) {
+        public boolean automatic() {
             return factor == null;
         }
 
-        static final class Converter implements ITypeConverter<Exposure> {
+        public static final class Converter implements ITypeConverter<Exposure> {
             @Override
             public Exposure convert(String text) {
                 if (text.trim().equalsIgnoreCase("auto")) {
@@ -131,12 +131,12 @@ final class OptionTypes {
      * {@code --size WxH} (or {@code S} for a square), {@value #MIN_PX}..{@value #MAX_PX} pixels per side: the one
      * form and range of every command's picture size (a BRDF map takes squares only, {@link Side}).
      */
-    record ImageSize(int width, int height) {
+    public record ImageSize(int width, int height) {
         static final int MIN_PX = Scene.ImageSize.MIN_PX;
         static final int MAX_PX = Scene.ImageSize.MAX_PX;
 
         /** The side of a square size (S or SxS): a BRDF map, whose pixels are directions over the unit disk. */
-        static final class Side implements ITypeConverter<Integer> {
+        public static final class Side implements ITypeConverter<Integer> {
             @Override
             public Integer convert(String text) {
                 ImageSize size = new Converter().convert(text);
@@ -148,7 +148,7 @@ final class OptionTypes {
             }
         }
 
-        static final class Converter implements ITypeConverter<ImageSize> {
+        public static final class Converter implements ITypeConverter<ImageSize> {
             @Override
             public ImageSize convert(String text) {
                 String[] parts = text.toLowerCase(Locale.ROOT).split("x", -1);
@@ -166,8 +166,8 @@ final class OptionTypes {
     }
 
     /** {@code --baked-samples UV,W}: the baked table's samples (0 = automatic). */
-    record BakedSamples(int uv, int w) {
-        static final class Converter implements ITypeConverter<BakedSamples> {
+    public record BakedSamples(int uv, int w) {
+        public static final class Converter implements ITypeConverter<BakedSamples> {
             @Override
             public BakedSamples convert(String text) {
                 String[] parts = text.split(",", -1);
@@ -188,7 +188,7 @@ final class OptionTypes {
             return q.withKnobs(values);
         }
 
-        static final class Converter implements ITypeConverter<LobeQuadratureChange> {
+        public static final class Converter implements ITypeConverter<LobeQuadratureChange> {
             @Override
             public LobeQuadratureChange convert(String text) {
                 java.util.Map<String, Double> values = new java.util.LinkedHashMap<>();
@@ -284,13 +284,13 @@ final class OptionTypes {
     }
 
     /** {@code --level plane|rows|none}. */
-    static final class LevellingNames implements Iterable<String> {
+    public static final class LevellingNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
             return java.util.Arrays.stream(Levelling.values()).map(Levelling::label).iterator();
         }
 
-        static final class Converter implements ITypeConverter<Levelling> {
+        public static final class Converter implements ITypeConverter<Levelling> {
             @Override
             public Levelling convert(String text) {
                 Levelling levelling = Levelling.fromLabel(text.trim());
@@ -303,8 +303,8 @@ final class OptionTypes {
     }
 
     /** {@code --tangent X,Y,Z}: a non-zero world direction. */
-    record Vector3(double x, double y, double z) {
-        static final class Converter implements ITypeConverter<Vector3> {
+    public record Vector3(double x, double y, double z) {
+        public static final class Converter implements ITypeConverter<Vector3> {
             @Override
             public Vector3 convert(String text) {
                 String[] parts = text.split(",", -1);
@@ -325,7 +325,7 @@ final class OptionTypes {
     }
 
     /** {@code --terms-height-unit auto|m|um}. */
-    static final class HeightUnitConverter implements ITypeConverter<ThesisFormat.HeightUnit> {
+    public static final class HeightUnitConverter implements ITypeConverter<ThesisFormat.HeightUnit> {
         @Override
         public ThesisFormat.HeightUnit convert(String text) {
             try {
@@ -337,7 +337,7 @@ final class OptionTypes {
     }
 
     /** The named patches of the {@link PatchCatalogue}. */
-    static final class PatchNames implements Iterable<String> {
+    public static final class PatchNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
             return PatchCatalogue.names().iterator();
@@ -345,7 +345,7 @@ final class OptionTypes {
     }
 
     /** The shapes a command line can name (an OBJ file needs a scene). */
-    static final class ShapeNames implements Iterable<String> {
+    public static final class ShapeNames implements Iterable<String> {
         @Override
         public Iterator<String> iterator() {
             List<String> names = new ArrayList<>();

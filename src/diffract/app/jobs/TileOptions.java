@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import diffract.util.OutputPaths;
 import diffract.util.UserInputException;
@@ -17,16 +17,16 @@ import java.util.List;
  * turns into the result. Long work can so be split over processes or machines; {@code diffract submit} does it on
  * this one or on a Slurm cluster.
  */
-final class TileOptions {
-    @Option(names = "--tile", paramLabel = "I/N", converter = Tile.Converter.class) Tile tile;
+public final class TileOptions {
+    @Option(names = "--tile", paramLabel = "I/N", converter = Tile.Converter.class) public Tile tile;
 
-    @Option(names = "--pieces", paramLabel = "DIR") Path pieces;
+    @Option(names = "--pieces", paramLabel = "DIR") public Path pieces;
 
     /**
      * Whether this run computes a piece: --tile given, with --pieces; --pieces without --tile is refused
      * ({@code piece} says what a piece is, e.g. "which band of rows to compute").
      */
-    boolean requested(String piece) {
+    public boolean requested(String piece) {
         if (tile == null) {
             if (pieces != null) {
                 throw new UserInputException("--pieces DIR goes with --tile I/N (" + piece + ")");
@@ -43,7 +43,7 @@ final class TileOptions {
      * Refuses more pieces than the result has items ({@code whole} says so, e.g. "a map of --size 16 has only 16
      * rows"), and a --pieces folder that cannot be written.
      */
-    void requireSplittable(int items, String whole) {
+    public void requireSplittable(int items, String whole) {
         if (tile.count() > items) {
             throw new UserInputException("--tile " + tile + ": " + whole + " to split");
         }
@@ -51,7 +51,7 @@ final class TileOptions {
     }
 
     /** What submit refuses: it chooses --tile and --pieces itself for the {@code command} it splits. */
-    void refuseForSubmit(String command) {
+    public void refuseForSubmit(String command) {
         if (tile != null || pieces != null) {
             throw new UserInputException("submit chooses --tile and --pieces itself: drop them from the " + command
                     + " options");
@@ -59,7 +59,7 @@ final class TileOptions {
     }
 
     /** The options a command was given, less --tile and --pieces: what merge parses to write the result. */
-    static List<String> argumentsWithoutTile(CommandSpec spec) {
+    public static List<String> argumentsWithoutTile(CommandSpec spec) {
         List<String> given = spec.commandLine().getParseResult().originalArgs();
         int from = given.indexOf(spec.name()) + 1;
         List<String> kept = new ArrayList<>();
@@ -75,9 +75,9 @@ final class TileOptions {
     }
 
     /** Piece {@code index} of {@code count}. */
-    record Tile(int index, int count) {
+    public record Tile(int index, int count) {
         /** The file names of this piece: {@code piece-I-of-N} and an extension. */
-        String fileName(String extension) {
+        public String fileName(String extension) {
             return "piece-" + index + "-of-" + count + extension;
         }
 

@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.optics.settings.Quantity;
 
@@ -10,7 +10,7 @@ import java.util.Map;
  * precompute) is shown with the option the user types, e.g. {@code --terms: the highest Taylor order N must be in
  * 0..100, got 150}. Scene files name the same quantities by their keys ({@code SceneFile.MATERIAL_KEYS}).
  */
-final class OptionNames {
+public final class OptionNames {
     private static final Map<Quantity, String> FLAGS = new EnumMap<>(Quantity.class);
 
     static {
@@ -50,7 +50,7 @@ final class OptionNames {
     }
 
     /** The option of a quantity (every quantity has one). */
-    static String of(Quantity quantity) {
+    public static String of(Quantity quantity) {
         String flag = FLAGS.get(quantity);
         if (flag == null) {
             throw new IllegalStateException("no option gives " + quantity);

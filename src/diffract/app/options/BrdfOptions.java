@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.colour.MirrorNormalisation;
 import diffract.optics.BrdfSettings;
@@ -29,12 +29,12 @@ import picocli.CommandLine.Option;
  * command line names the option of a refused value ({@link OptionNames}). A new group of settings is a new nested
  * group here, read in {@link #apply}.
  */
-final class BrdfOptions {
+public final class BrdfOptions {
     @Option(names = "--variant", paramLabel = "V", converter = OptionTypes.VariantChoice.Converter.class,
             completionCandidates = OptionTypes.VariantChoice.Candidates.class)
     OptionTypes.VariantChoice variant;
 
-    @Option(names = "--max-delta-e", paramLabel = "DE") Double maxDeltaE;
+    @Option(names = "--max-delta-e", paramLabel = "DE") public Double maxDeltaE;
 
     @ArgGroup(exclusive = false, validate = false, heading = "Taylor approximation:%n")
     Taylor taylor = new Taylor();
@@ -148,17 +148,17 @@ final class BrdfOptions {
         OrderWeights orders;
     }
 
-    boolean auto() {
+    public boolean auto() {
         return variant != null && variant.auto();
     }
 
     /** Whether N was given (it replaces a scene's tolerance-chosen N). */
-    boolean highestOrderGiven() {
+    public boolean highestOrderGiven() {
         return taylor.highestOrder != null;
     }
 
     /** Checks the options that go together: an accuracy target exactly with auto. */
-    void validate() {
+    public void validate() {
         if (auto() && maxDeltaE == null) {
             throw new UserInputException("--variant auto needs an accuracy target: --max-delta-e DE (mean CIEDE2000, e.g. 2)");
         }
@@ -174,7 +174,7 @@ final class BrdfOptions {
      * {@code base} with every setting that was given on the command line. With auto the variant stays the
      * base's until {@link diffract.bench.AutoVariant} resolves it (it needs the patch).
      */
-    BrdfSettings apply(BrdfSettings base) {
+    public BrdfSettings apply(BrdfSettings base) {
         BrdfSettings.Builder b = base.toBuilder();
         if (variant != null && !variant.auto()) {
             b.variant(variant.variant());
@@ -278,7 +278,7 @@ final class BrdfOptions {
     }
 
     /** The variant asked for, or {@code fallback} when none (or auto) was given. */
-    Variant variantOr(Variant fallback) {
+    public Variant variantOr(Variant fallback) {
         return variant == null || variant.auto() ? fallback : variant.variant();
     }
 }

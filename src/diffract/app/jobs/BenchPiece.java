@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import diffract.bench.BenchConfig;
 import diffract.bench.BenchResult;
@@ -21,8 +21,8 @@ import java.util.Map;
  * @param machine the piece's machine line (machine.txt)
  * @param gl      the OpenGL of its last configuration, as {@link GLInfo}'s components in order; empty if none ran
  */
-record BenchPiece(List<String> rows, String machine, List<String> gl) {
-    static BenchPiece of(List<BenchResult> results, String machine, GLInfo gl) {
+public record BenchPiece(List<String> rows, String machine, List<String> gl) {
+    public static BenchPiece of(List<BenchResult> results, String machine, GLInfo gl) {
         List<String> rows = new ArrayList<>();
         for (BenchResult r : results) {
             MapError e = r.error();
@@ -36,7 +36,7 @@ record BenchPiece(List<String> rows, String machine, List<String> gl) {
     }
 
     /** The rows as results of the configurations they name ({@code configs}: the piece's, by key). */
-    List<BenchResult> results(Map<String, BenchConfig> configs, String piece) {
+    public List<BenchResult> results(Map<String, BenchConfig> configs, String piece) {
         List<BenchResult> out = new ArrayList<>();
         for (String row : rows) {
             String[] f = row.split(" ", 6);
@@ -57,7 +57,7 @@ record BenchPiece(List<String> rows, String machine, List<String> gl) {
     }
 
     /** The OpenGL the piece ran on; null when it measured nothing. */
-    GLInfo glInfo() {
+    public GLInfo glInfo() {
         if (gl.isEmpty()) {
             return null;
         }

@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.jrtr.contexts.HeadlessGL;
 import picocli.CommandLine.ITypeConverter;
@@ -8,7 +8,7 @@ import picocli.CommandLine.TypeConversionException;
 import java.util.List;
 
 /** {@code --gpu N}: which EGL device the offscreen OpenGL of a command runs on (docs/headless-gl.md). */
-final class GpuOption {
+public final class GpuOption {
     private Integer index;
 
     @Option(names = "--gpu", paramLabel = "N", converter = DeviceIndex.class)
@@ -18,7 +18,7 @@ final class GpuOption {
     }
 
     /** The option as given, for a command that runs another: {@code --gpu N}, or nothing. */
-    List<String> arguments() {
+    public List<String> arguments() {
         return index == null ? List.of() : List.of("--gpu", Integer.toString(index));
     }
 

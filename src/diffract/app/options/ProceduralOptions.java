@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.optics.patches.PatchCatalogue;
 import diffract.optics.patches.ProceduralPatches;
@@ -9,7 +9,7 @@ import picocli.CommandLine.Option;
  * The parameters of a named patch made by code ({@code patch NAME}, {@code --synthetic NAME}), the scene file's
  * {@code material.patch} keys of the same names: each replaces the catalogue's value when given.
  */
-final class ProceduralOptions {
+public final class ProceduralOptions {
     @Option(names = "--period", paramLabel = "UM") Double periodUm;
 
     @Option(names = "--height", paramLabel = "UM") Double heightUm;
@@ -25,10 +25,10 @@ final class ProceduralOptions {
     @Option(names = "--size-px", paramLabel = "N") Integer sizePx;
 
     /** The largest snake patch made by code: an AFM scan's 2048 lines. */
-    static final int MAX_SIZE_PX = 2048;
+    public static final int MAX_SIZE_PX = 2048;
 
     /** Whether any parameter was given. */
-    boolean given() {
+    public boolean given() {
         return periodUm != null || heightUm != null || periods != null || samplesPerPeriod != null || rows != null
                 || seed != null || sizePx != null;
     }
@@ -54,7 +54,7 @@ final class ProceduralOptions {
     }
 
     /** The named patch with the parameters given in place of its own. */
-    ProceduralPatches.Spec spec(PatchCatalogue.Entry entry) {
+    public ProceduralPatches.Spec spec(PatchCatalogue.Entry entry) {
         ProceduralPatches.Spec d = entry.spec();
         boolean grating = d.kind().isGrating();
         if (!grating && (samplesPerPeriod != null || rows != null)) {

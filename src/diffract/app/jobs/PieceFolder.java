@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -32,7 +32,7 @@ import java.util.stream.Collectors;
  * in one line, a folder whose pieces are missing, twice there, damaged or of another result. The floats are written
  * before the manifest, each atomically, so a run that dies leaves no manifest that merge would accept.
  */
-final class PieceFolder {
+public final class PieceFolder {
     private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
     private static final String MANIFEST = ".json";
     private static final String FLOATS = ".f32";
@@ -44,11 +44,11 @@ final class PieceFolder {
      * The pieces of a result, assembled: the first manifest (all agree), all the result's floats, and every piece's
      * manifest, in order.
      */
-    record Assembled(PieceManifest manifest, float[] floats, List<PieceManifest> pieces) {
+    public record Assembled(PieceManifest manifest, float[] floats, List<PieceManifest> pieces) {
     }
 
     /** Writes a piece's floats, then its manifest (with the floats' name and hash filled in). */
-    static void write(Path dir, PieceManifest manifest, float[] floats) throws IOException {
+    public static void write(Path dir, PieceManifest manifest, float[] floats) throws IOException {
         if (floats.length != (long) (manifest.to() - manifest.from()) * manifest.floatsPerItem()) {
             throw new IllegalArgumentException("piece " + manifest.label() + " has " + floats.length + " floats, not "
                     + (manifest.to() - manifest.from()) + " x " + manifest.floatsPerItem());
@@ -63,7 +63,7 @@ final class PieceFolder {
     }
 
     /** Every piece in {@code dir}, checked against each other and their hashes, as one result. */
-    static Assembled read(Path dir) throws IOException {
+    public static Assembled read(Path dir) throws IOException {
         if (!Files.isDirectory(dir)) {
             throw refusal("merge: " + dir + " is not a folder of pieces (brdfmap, render or bench "
                     + "--tile I/N --pieces DIR writes one)");

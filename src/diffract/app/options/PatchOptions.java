@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.Levelling;
@@ -17,8 +17,8 @@ import java.nio.file.Path;
  * The options that name a height field, on every command that reads one: a file ({@code --patch} with the sizes
  * an image or text matrix lacks) or a named patch of the {@link PatchCatalogue} ({@code --synthetic}).
  */
-final class PatchOptions {
-    @Option(names = "--patch", paramLabel = "FILE") Path file;
+public final class PatchOptions {
+    @Option(names = "--patch", paramLabel = "FILE") public Path file;
 
     @Option(names = "--synthetic", paramLabel = "NAME", completionCandidates = OptionTypes.PatchNames.class)
     String synthetic;
@@ -35,12 +35,12 @@ final class PatchOptions {
             converter = OptionTypes.LevellingNames.Converter.class)
     Levelling level;
 
-    boolean given() {
+    public boolean given() {
         return file != null || synthetic != null;
     }
 
     /** Checks what needs no file: one source at most, a known name, sizes only with a file. */
-    void validate() {
+    public void validate() {
         if (file != null && synthetic != null) {
             throw new diffract.util.UserInputException("give --patch FILE or --synthetic NAME, not both");
         }
@@ -64,7 +64,7 @@ final class PatchOptions {
     }
 
     /** Like {@link #validate}, and one source is required. */
-    void validateRequired() {
+    public void validateRequired() {
         validate();
         if (!given()) {
             throw new diffract.util.UserInputException("give the height field: --patch FILE or --synthetic NAME");
@@ -72,7 +72,7 @@ final class PatchOptions {
     }
 
     /** The height field, mean-subtracted, with its name ({@code fallback} when none was given). */
-    NamedPatch load(String fallback, Reporter reporter) {
+    public NamedPatch load(String fallback, Reporter reporter) {
         if (file != null) {
             HeightField field = HeightFieldReader.load(file, maxHeightUm, pixelSizeUm, channel, levelling(), reporter);
             return new NamedPatch(file.getFileName().toString(), field.meanSubtracted(), maxHeightUm);
@@ -84,7 +84,7 @@ final class PatchOptions {
     }
 
     /** As a scene's patch ({@code fallback} when none was given). */
-    Scene.PatchSpec spec(String fallback) {
+    public Scene.PatchSpec spec(String fallback) {
         if (file != null) {
             return new Scene.FilePatch(file, maxHeightUm, pixelSizeUm, channel, levelling());
         }
@@ -98,7 +98,7 @@ final class PatchOptions {
     }
 
     /** The options that name the patch, as a user would give them again: "--synthetic elaphe-like", "--patch F". */
-    String describe() {
+    public String describe() {
         if (file != null) {
             return "--patch " + file + (maxHeightUm != null ? " --max-height " + maxHeightUm : "")
                     + (pixelSizeUm != null ? " --pixel-size " + pixelSizeUm : "") + (channel != null ? " --channel "
@@ -108,7 +108,7 @@ final class PatchOptions {
     }
 
     /** The light azimuth in the plane of the patch's period: the catalogue's for a named patch, else 0. */
-    double periodAzimuthDeg(String fallback) {
+    public double periodAzimuthDeg(String fallback) {
         return file != null ? 0 : PatchCatalogue.named(synthetic != null ? synthetic : fallback).phiIDeg();
     }
 }

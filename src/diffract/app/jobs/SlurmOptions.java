@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import diffract.util.UserInputException;
 import picocli.CommandLine.Option;
@@ -11,27 +11,27 @@ import java.util.List;
  * {@code submit --slurm}: the pieces as one Slurm job array, and what its tasks ask the scheduler for. Each option
  * becomes one {@code #SBATCH} line of the script ({@link SlurmScript}), so that the script alone resubmits the job.
  */
-final class SlurmOptions {
-    @Option(names = "--slurm") boolean slurm;
+public final class SlurmOptions {
+    @Option(names = "--slurm") public boolean slurm;
 
-    @Option(names = "--max-running", paramLabel = "T") Integer maxRunning;
+    @Option(names = "--max-running", paramLabel = "T") public Integer maxRunning;
 
-    @Option(names = "--cpus-per-task", paramLabel = "C") Integer cpusPerTask;
+    @Option(names = "--cpus-per-task", paramLabel = "C") public Integer cpusPerTask;
 
-    @Option(names = "--gpus-per-task", paramLabel = "G") Integer gpusPerTask;
+    @Option(names = "--gpus-per-task", paramLabel = "G") public Integer gpusPerTask;
 
-    @Option(names = "--cache-dir", paramLabel = "DIR") Path cacheDir;
+    @Option(names = "--cache-dir", paramLabel = "DIR") public Path cacheDir;
 
-    @Option(names = "--partition", paramLabel = "NAME") String partition;
+    @Option(names = "--partition", paramLabel = "NAME") public String partition;
 
-    @Option(names = "--time-limit", paramLabel = "TIME") String timeLimit;
+    @Option(names = "--time-limit", paramLabel = "TIME") public String timeLimit;
 
-    @Option(names = "--sbatch-option", paramLabel = "OPTION") List<String> sbatchOptions = new ArrayList<>();
+    @Option(names = "--sbatch-option", paramLabel = "OPTION") public List<String> sbatchOptions = new ArrayList<>();
 
-    @Option(names = "--no-wait") boolean noWait;
+    @Option(names = "--no-wait") public boolean noWait;
 
     /** Refuses options that only --slurm takes given without it, and values sbatch would refuse. */
-    void validate() {
+    public void validate() {
         if (!slurm) {
             List<String> given = new ArrayList<>();
             if (maxRunning != null) {

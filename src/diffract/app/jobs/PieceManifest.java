@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import com.fasterxml.jackson.annotation.JsonInclude;
 
@@ -30,14 +30,14 @@ import java.util.Map;
  * @param floatsSha256  their SHA-256
  * @param bench         a bench piece's measured rows ({@link BenchPiece}); absent from the pieces of floats
  */
-record PieceManifest(String format, String command, int piece, int pieces, int from, int to, int items,
+public record PieceManifest(String format, String command, int piece, int pieces, int from, int to, int items,
                      int floatsPerItem, String inputSha256, Map<String, String> settings, Map<String, String> picture,
                      List<String> arguments, String floatsFile, String floatsSha256,
                      @JsonInclude(JsonInclude.Include.NON_NULL) BenchPiece bench) {
-    static final String FORMAT = "diffract piece 2";
+    public static final String FORMAT = "diffract piece 2";
 
     /** The piece as merge names it: I/N. */
-    String label() {
+    public String label() {
         return piece + "/" + pieces;
     }
 
@@ -53,7 +53,7 @@ record PieceManifest(String format, String command, int piece, int pieces, int f
     }
 
     /** A setting that merge needs back as a number (a brdfmap piece's patch extent, its azimuth). */
-    double number(String key) {
+    public double number(String key) {
         String value = settings.get(key);
         if (value == null) {
             throw new diffract.util.UserInputException("merge: the pieces' manifests lack '" + key + "': compute them "

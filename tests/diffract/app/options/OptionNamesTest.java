@@ -1,5 +1,6 @@
-package diffract.app;
+package diffract.app.options;
 
+import diffract.app.Main;
 import diffract.optics.settings.Quantity;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;

@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -12,7 +12,7 @@ import java.util.function.Function;
  * (bands of a map's rows) and render with --turntable (runs of frames). {@code submit} runs any of them in pieces, on
  * this machine or as a Slurm job array, through this interface alone.
  */
-interface SplitCommand {
+public interface SplitCommand {
     /** Its --tile and --pieces, which submit chooses itself. */
     TileOptions tiles();
 
@@ -52,19 +52,19 @@ interface SplitCommand {
         }
 
         /** A result written to one file, {@code -o}. */
-        static Result to(Path output, int items, String itemsName, boolean quiet) {
+        public static Result to(Path output, int items, String itemsName, boolean quiet) {
             return new Result(items, itemsName, Map.of("-o", output), quiet);
         }
 
         /** The output options for merge, each path spelled by {@code path}. */
-        List<String> mergeOutputs(Function<Path, String> path) {
+        public List<String> mergeOutputs(Function<Path, String> path) {
             List<String> options = new ArrayList<>();
             outputs.forEach((option, file) -> options.addAll(List.of(option, path.apply(file))));
             return options;
         }
 
         /** What the command names first as its output. */
-        Path output() {
+        public Path output() {
             return outputs.values().iterator().next();
         }
     }

@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import diffract.jrtr.contexts.HeadlessGL;
 import diffract.util.DiskCache;
@@ -14,15 +14,15 @@ import java.util.stream.Collectors;
  * asked is an {@code #SBATCH} line, so that {@code sbatch DIR/job.sbatch} resubmits the job as it was (or
  * {@code sbatch --array=3,5 DIR/job.sbatch} the pieces that failed).
  */
-final class SlurmScript {
+public final class SlurmScript {
     /** The script's name in the pieces' folder. */
-    static final String FILE_NAME = "job.sbatch";
+    public static final String FILE_NAME = "job.sbatch";
 
     private SlurmScript() {
     }
 
     /** The log of piece I of N, beside its manifest (Slurm's %a is the task's index). */
-    static String logName(String index, int count) {
+    public static String logName(String index, int count) {
         return "piece-" + index + "-of-" + count + ".log";
     }
 
@@ -38,7 +38,7 @@ final class SlurmScript {
      * @param main    the class path and entry point
      * @param merge   the merge command that ends the run, for the header
      */
-    static String text(SlurmOptions slurm, String commandName, List<String> options, Path pieces, int count,
+    public static String text(SlurmOptions slurm, String commandName, List<String> options, Path pieces, int count,
             Path workDir,
             List<String> java, List<String> main, List<String> merge) {
         StringBuilder s = new StringBuilder();
@@ -106,12 +106,12 @@ final class SlurmScript {
     }
 
     /** A command line as the shell reads it back word for word. */
-    static String command(List<String> words) {
+    public static String command(List<String> words) {
         return words.stream().map(SlurmScript::quote).collect(Collectors.joining(" "));
     }
 
     /** One word for the shell: as it is when it holds nothing the shell would read, else in single quotes. */
-    static String quote(String word) {
+    public static String quote(String word) {
         if (!word.isEmpty() && word.matches("[A-Za-z0-9_@%+=:,./-]+")) {
             return word;
         }

@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.options;
 
 import diffract.util.ConsoleReporter;
 import diffract.util.Reporter;
@@ -9,11 +9,11 @@ import picocli.CommandLine.Option;
  * errors (a command's result on standard output stays). Without it, progress appears only for work that lasts
  * more than a couple of seconds ({@link diffract.util.Progress}).
  */
-final class QuietOption {
-    @Option(names = {"-q", "--quiet"}) boolean quiet;
+public final class QuietOption {
+    @Option(names = {"-q", "--quiet"}) public boolean quiet;
 
     /** Where the command's notes, warnings and progress go: a fresh reporter per run. */
-    Reporter reporter() {
+    public Reporter reporter() {
         return new ConsoleReporter(quiet);
     }
 }

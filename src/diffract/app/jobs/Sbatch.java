@@ -1,4 +1,4 @@
-package diffract.app;
+package diffract.app.jobs;
 
 import diffract.util.UserInputException;
 
@@ -17,12 +17,12 @@ import java.util.function.Consumer;
  * scheduler accepted it; with {@code --wait} it then returns when the whole array has ended, with the highest exit code
  * of its tasks.
  */
-final class Sbatch {
+public final class Sbatch {
     /** The program that submits; a test names one that is not there. */
-    static String program = "sbatch";
+    public static String program = "sbatch";
 
     /** How sbatch ended: the job's id (null if it was never accepted), its exit code and what it said on stderr. */
-    record Result(String jobId, int exitCode, String errors) {
+    public record Result(String jobId, int exitCode, String errors) {
     }
 
     private Sbatch() {
@@ -32,7 +32,7 @@ final class Sbatch {
      * Submits {@code script}; {@code submitted} hears the job's id as soon as sbatch prints it. Refuses, in one line,
      * a machine without sbatch and a script the scheduler does not accept.
      */
-    static Result submit(Path script, boolean wait, Consumer<String> submitted) throws IOException,
+    public static Result submit(Path script, boolean wait, Consumer<String> submitted) throws IOException,
             InterruptedException {
         List<String> command = new ArrayList<>(List.of(program, "--parsable"));
         if (wait) {
@@ -78,7 +78,7 @@ final class Sbatch {
     }
 
     /** The last line a program printed, or that it printed none. */
-    static String lastLine(String output) {
+    public static String lastLine(String output) {
         String[] lines = output.strip().split("\n");
         return lines.length == 0 || lines[lines.length - 1].isBlank() ? "(no output)" : lines[lines.length - 1].strip();
     }
