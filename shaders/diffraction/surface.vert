@@ -1,7 +1,7 @@
 #version 330 core
 // 003 Algorithm 2: omega_i and omega_r in the vertex's tangent frame, and p = P C^-1 M p_obj. The tangent frame's
 // x axis (T) runs along the height field's columns, y (B = N x T) along its rows, z is the normal, as in
-// diffract.optics.illumination.Direction.
+// diffract.optics.patches.Direction.
 in vec3 position;
 in vec3 normal;
 in vec3 tangent;

@@ -24,7 +24,7 @@ import diffract.optics.LightPolicy;
 import diffract.optics.MapBand;
 import diffract.optics.Methods;
 import diffract.optics.Variant;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.LightSource;
 import diffract.optics.io.SamplingCheck;
 import diffract.optics.maps.AutoExposure;

@@ -10,7 +10,7 @@ import diffract.colour.Srgb;
 import diffract.jrtr.contexts.GLInfo;
 import diffract.jrtr.OffscreenTarget;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.LightSource;
 import diffract.optics.Methods;
 import diffract.optics.settings.PixelFilter;

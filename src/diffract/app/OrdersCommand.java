@@ -7,7 +7,7 @@ import diffract.app.options.PatchOptions;
 import diffract.app.options.QuietOption;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Methods;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.rigorous.Resolution;
 import diffract.optics.validity.OrderComparison;

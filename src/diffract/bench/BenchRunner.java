@@ -2,7 +2,7 @@ package diffract.bench;
 
 import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;

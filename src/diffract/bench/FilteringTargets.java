@@ -4,7 +4,7 @@ import diffract.jrtr.contexts.GLInfo;
 import diffract.optics.maps.AutoExposure;
 import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.Methods;
 import diffract.optics.settings.PixelFilter;
 import diffract.pipeline.DiffractionPipeline;

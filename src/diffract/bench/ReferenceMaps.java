@@ -3,7 +3,7 @@ package diffract.bench;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.Methods;
 import diffract.pipeline.DiffractionPipeline;
 import diffract.pipeline.NamedPatch;

@@ -2,7 +2,7 @@ package diffract.bench;
 
 import diffract.optics.maps.AutoExposure;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.render.GpuBrdfMap;
 
 import java.util.ArrayList;

@@ -4,7 +4,7 @@ import diffract.optics.maps.AutoExposure;
 import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.GainFactor;
 import diffract.optics.settings.GainModel;
 import diffract.optics.patches.HeightField;

@@ -1,7 +1,7 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.Footprint;
 import diffract.optics.illumination.LightSource;
 import diffract.optics.numerics.Covariance2;

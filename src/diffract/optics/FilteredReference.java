@@ -2,7 +2,7 @@ package diffract.optics;
 
 import diffract.colour.SpectralDensity;
 import diffract.colour.Xyz;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.Footprint;
 import diffract.optics.illumination.LightSource;
 import diffract.optics.illumination.LobeGeometry;

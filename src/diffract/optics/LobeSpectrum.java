@@ -2,7 +2,7 @@ package diffract.optics;
 
 import diffract.colour.HatFilteredSpectrum;
 import diffract.colour.MirrorNormalisation;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.DiscFootprint;
 import diffract.optics.illumination.Footprint;
 import diffract.optics.illumination.LobeGeometry;

@@ -1,6 +1,6 @@
 package diffract.optics;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.GainFactor;
 import diffract.optics.illumination.IlluminationSettings;
 import diffract.optics.numerics.ShiftedDft;

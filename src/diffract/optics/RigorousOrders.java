@@ -1,6 +1,6 @@
 package diffract.optics;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.lobes.LobeWeights;
 import diffract.optics.rigorous.CellEfficiencies;
 import diffract.optics.rigorous.CellSolver;

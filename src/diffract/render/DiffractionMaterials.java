@@ -10,7 +10,7 @@ import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.Quantity;
 import diffract.optics.patches.ScanTiling;
 import diffract.optics.windows.WindowPlacement;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.spectra.PhaseCentres;
 import diffract.optics.settings.PixelFilter;
 import diffract.util.Reporter;

@@ -11,7 +11,7 @@ import diffract.jrtr.scenegraph.ShapeNode;
 import diffract.jrtr.scenegraph.Shapes;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.LightPolicy;
 import diffract.optics.spectra.PhaseCentredTerms;

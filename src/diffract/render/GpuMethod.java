@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.jrtr.scenegraph.Material;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 
 /**
  * A diffraction method's GPU side: the uniforms and textures its fragment shader declares beyond the ones every

@@ -3,7 +3,7 @@ package diffract.render;
 import diffract.jrtr.scenegraph.Material;
 import diffract.optics.BrdfSettings;
 import diffract.optics.numerics.Covariance2;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.numerics.GaussHermite;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.illumination.LightSource;

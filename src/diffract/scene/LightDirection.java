@@ -1,6 +1,6 @@
 package diffract.scene;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 
 /**
  * The direction towards the (distant) light in world coordinates: polar angle theta_i from the world +z axis (the

@@ -15,7 +15,7 @@ import diffract.jrtr.scenegraph.ShapeNode;
 import diffract.jrtr.scenegraph.Shapes;
 import diffract.jrtr.textures.Texture2D;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.render.DiffractionMaterials;
 import diffract.render.FrameOutput;
 import diffract.render.StageResources;

@@ -3,7 +3,7 @@ package diffract.app;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.Levelling;
 import diffract.optics.patches.PatchCatalogue;

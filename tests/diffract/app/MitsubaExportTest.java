@@ -4,7 +4,7 @@ import diffract.colour.Srgb;
 import diffract.colour.Xyz;
 import diffract.optics.maps.AutoExposure;
 import diffract.optics.maps.BrdfMapDifference;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.util.ImageFiles;
 import diffract.util.NpyFile;
 import org.junit.jupiter.api.BeforeAll;

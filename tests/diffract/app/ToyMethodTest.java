@@ -4,7 +4,7 @@ import diffract.colour.D65;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.Methods;
 import diffract.optics.spectra.PatchSpectrum;

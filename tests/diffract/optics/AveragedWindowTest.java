@@ -1,7 +1,7 @@
 package diffract.optics;
 
 import diffract.colour.Xyz;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.settings.PixelFilter;
 import diffract.optics.spectra.ExactSpectrum;

@@ -2,7 +2,7 @@ package diffract.optics;
 
 import diffract.colour.Srgb;
 import diffract.colour.Xyz;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.GainFactor;
 import diffract.optics.illumination.IlluminationSettings;
 import diffract.optics.patches.HeightField;

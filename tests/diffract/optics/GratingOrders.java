@@ -1,6 +1,6 @@
 package diffract.optics;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 
 import java.util.ArrayList;
 import java.util.List;

@@ -1,6 +1,6 @@
 package diffract.optics;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.maps.AutoExposure;
 import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.patches.HeightField;

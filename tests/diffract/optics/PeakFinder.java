@@ -1,6 +1,6 @@
 package diffract.optics;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 
 /** Finds diffraction peaks along the incidence plane, as the thesis' grating-equation evaluation did (001 ch. 5). */
 final class PeakFinder {

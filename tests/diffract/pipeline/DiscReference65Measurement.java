@@ -7,7 +7,7 @@ import diffract.optics.BrdfMap;
 import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiscLightAverage;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.settings.LightProfile;
 import diffract.optics.patches.PatchCatalogue;

@@ -4,7 +4,7 @@ import diffract.optics.maps.AutoExposure;
 import diffract.optics.BrdfMap;
 import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.settings.OrderWeights;
 import diffract.optics.patches.PatchCatalogue;
 import diffract.optics.settings.PixelFilter;

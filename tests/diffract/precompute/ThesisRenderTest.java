@@ -5,7 +5,7 @@ import diffract.app.Main;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.Levelling;
 import diffract.optics.patches.SyntheticPatches;

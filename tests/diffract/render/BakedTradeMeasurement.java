@@ -6,7 +6,7 @@ import diffract.optics.BrdfMap;
 import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.spectra.TaylorTerms;

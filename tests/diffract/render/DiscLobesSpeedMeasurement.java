@@ -2,7 +2,7 @@ package diffract.render;
 
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.settings.LightProfile;
 import diffract.optics.settings.PixelFilter;

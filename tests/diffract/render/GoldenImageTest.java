@@ -5,7 +5,7 @@ import diffract.colour.Xyz;
 import diffract.jrtr.textures.FloatTextureArray;
 import diffract.jrtr.GlTestSupport;
 import diffract.optics.maps.AutoExposure;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.BrdfSettings;
 import diffract.optics.Variant;

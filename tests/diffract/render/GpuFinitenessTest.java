@@ -19,7 +19,7 @@ import diffract.jrtr.scenegraph.TransformGroup;
 import diffract.jrtr.scenegraph.VertexData;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.spectra.TaylorTerms;
 import diffract.optics.Variant;

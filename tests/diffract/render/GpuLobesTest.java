@@ -8,7 +8,7 @@ import diffract.optics.maps.BrdfMapDifference;
 import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.LightProfile;

@@ -1,7 +1,7 @@
 package diffract.render;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.spectra.TaylorTerms;

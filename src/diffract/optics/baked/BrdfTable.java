@@ -5,7 +5,7 @@ import diffract.colour.Xyz;
 import diffract.optics.BakedGrid;
 import diffract.optics.DiffractionBrdf;
 import diffract.optics.LobeSpectrum;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.Footprint;
 import diffract.optics.illumination.GainFactor;
 import diffract.optics.numerics.Covariance2;

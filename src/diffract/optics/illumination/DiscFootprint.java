@@ -2,6 +2,7 @@ package diffract.optics.illumination;
 
 import diffract.optics.numerics.Covariance2;
 import diffract.optics.numerics.ErrorFunction;
+import diffract.optics.patches.Direction;
 import diffract.optics.settings.GainModel;
 
 /**

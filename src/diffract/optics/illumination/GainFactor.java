@@ -1,5 +1,6 @@
 package diffract.optics.illumination;
 
+import diffract.optics.patches.Direction;
 import diffract.optics.settings.GainModel;
 
 /**

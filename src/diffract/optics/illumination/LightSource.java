@@ -1,6 +1,7 @@
 package diffract.optics.illumination;
 
 import diffract.optics.numerics.Covariance2;
+import diffract.optics.patches.Direction;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.LightProfile;
 import diffract.optics.settings.Quantity;

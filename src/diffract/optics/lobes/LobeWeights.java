@@ -1,6 +1,6 @@
 package diffract.optics.lobes;
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.GainFactor;
 import diffract.optics.settings.GainModel;
 import diffract.optics.spectra.ExactSpectrum;

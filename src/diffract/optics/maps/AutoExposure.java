@@ -1,7 +1,7 @@
 package diffract.optics.maps;
 
 import diffract.optics.BrdfMap;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 
 /**
  * Picks a display exposure for a BRDF map (pixel convention of {@link BrdfMap}): the brightest diffracted pixel, ignoring the specular highlight (the

@@ -1,7 +1,7 @@
 package diffract.optics.rigorous;
 
 
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
 
 import java.util.Locale;

@@ -1,7 +1,7 @@
 package diffract.optics.validity;
 
 import diffract.optics.BrdfSettings;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.GainFactor;
 import diffract.optics.illumination.IlluminationSettings;
 import diffract.optics.patches.HeightField;

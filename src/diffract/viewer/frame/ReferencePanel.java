@@ -9,7 +9,7 @@ import diffract.colour.Xyz;
 import diffract.optics.BrdfMap;
 import diffract.optics.BrdfSettings;
 import diffract.optics.DiffractionBrdf;
-import diffract.optics.illumination.Direction;
+import diffract.optics.patches.Direction;
 import diffract.optics.illumination.LightSource;
 import diffract.optics.patches.HeightField;
 import diffract.optics.Methods;

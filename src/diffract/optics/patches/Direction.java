@@ -1,4 +1,4 @@
-package diffract.optics.illumination;
+package diffract.optics.patches;
 
 /**
  * A unit direction in the patch's tangent frame: x along the height field's columns, y along its rows, z the
