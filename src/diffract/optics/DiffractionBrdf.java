@@ -10,7 +10,6 @@ import diffract.optics.illumination.IlluminationSettings;
 import diffract.optics.illumination.LightSource;
 import diffract.optics.numerics.Covariance2;
 import diffract.optics.patches.HeightField;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.settings.GainModel;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.OrderWeights;

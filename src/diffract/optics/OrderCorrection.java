@@ -7,7 +7,6 @@ import diffract.optics.numerics.ShiftedDft;
 import diffract.optics.patches.HeightField;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.Profile;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSolver;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;

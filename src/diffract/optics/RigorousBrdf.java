@@ -5,7 +5,6 @@ import diffract.optics.patches.Direction;
 import diffract.optics.illumination.Footprint;
 import diffract.optics.illumination.IlluminationSettings;
 import diffract.optics.illumination.LightSource;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.settings.PixelFilter;
 import diffract.optics.settings.SpectralSettings;
 import diffract.optics.settings.WavelengthSampling;

@@ -1,7 +1,6 @@
 package diffract.optics;
 
 import diffract.optics.rigorous.Resolution;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.util.MemoryEstimate;
 
 import java.util.Locale;

@@ -1,7 +1,6 @@
 package diffract.optics;
 
 import diffract.optics.patches.HeightField;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.Quantity;

@@ -6,7 +6,6 @@ import diffract.optics.rigorous.CellEfficiencies;
 import diffract.optics.rigorous.CellSolver;
 import diffract.optics.rigorous.ComplexIndex;
 import diffract.optics.rigorous.OrderEfficiencies;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.rigorous.RigorousSolver;
 import diffract.optics.settings.SpectralSettings;

@@ -116,7 +116,7 @@ class LayersTest {
      * levelling, scan tiling) and {@code windows} (the coherence window and where it sits) use only those. On them
      * stand {@code spectra} (a patch's spectrum, exact or as a Taylor series, and the Taylor and window settings that
      * shape it), {@code io} (scans read into height fields) and {@code rigorous} (Maxwell's equations on a periodic
-     * cell, and the patch and settings it takes). {@code illumination} (light sources, their footprints in frequency
+     * cell, and its settings). {@code illumination} (light sources, their footprints in frequency
      * space, the gain, and the illumination settings, whose material is a complex index of refraction) needs the
      * coherence window and the rigorous solver's index; {@code lobes} (the Gaussian lobes and their weights) builds on
      * the spectra and the footprints. The package {@code diffract.optics} itself holds the BRDF and the methods with

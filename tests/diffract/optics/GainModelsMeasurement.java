@@ -8,7 +8,6 @@ import diffract.optics.rigorous.ComplexIndex;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.Profile;
 import diffract.optics.rigorous.Resolution;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSolver;
 import diffract.optics.settings.GainModel;
 import diffract.util.TestReport;

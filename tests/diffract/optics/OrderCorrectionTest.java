@@ -7,7 +7,6 @@ import diffract.optics.patches.PatchCatalogue;
 import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.rigorous.OrderEfficiencies;
 import diffract.optics.rigorous.Resolution;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.rigorous.RigorousSolver;
 import diffract.optics.settings.InvalidSettingException;

@@ -5,7 +5,6 @@ import diffract.optics.patches.HeightField;
 import diffract.optics.patches.PatchCatalogue;
 import diffract.optics.patches.SyntheticPatches;
 import diffract.optics.rigorous.Resolution;
-import diffract.optics.rigorous.RigorousPatch;
 import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.settings.GainModel;
 import diffract.optics.settings.InvalidSettingException;

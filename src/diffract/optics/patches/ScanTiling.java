@@ -2,10 +2,9 @@ package diffract.optics.patches;
 
 import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.Quantity;
-import diffract.optics.windows.WindowPlacement;
 
 /**
- * How a scan lies on a mesh's skin for the local window ({@link WindowPlacement#LOCAL}): the micrometres of skin one
+ * How a scan lies on a mesh's skin for the local window ({@link diffract.optics.windows.WindowPlacement#LOCAL}): the micrometres of skin one
  * unit of the mesh's texture coordinates spans along u and along v. The scan's periodic patch then repeats every
  * L_x / umPerTexcoordU along u, and a surface point at texture coordinates (u, v) sees the window centred at
  * x0 = (u umPerTexcoordU, v umPerTexcoordV) um on the scan (x along its columns, y along its rows), or, with

@@ -6,7 +6,7 @@ import diffract.optics.illumination.GainFactor;
 import diffract.optics.illumination.IlluminationSettings;
 import diffract.optics.patches.HeightField;
 import diffract.optics.rigorous.OrderEfficiencies;
-import diffract.optics.rigorous.RigorousPatch;
+import diffract.optics.RigorousPatch;
 import diffract.optics.rigorous.RigorousSettings;
 import diffract.optics.rigorous.RigorousSolver;
 import diffract.optics.settings.InvalidSettingException;

@@ -2,7 +2,7 @@ package diffract.optics.validity;
 
 import diffract.optics.OrderCorrection;
 import diffract.optics.patches.HeightField;
-import diffract.optics.rigorous.RigorousPatch;
+import diffract.optics.RigorousPatch;
 import diffract.optics.settings.GainModel;
 
 import java.io.BufferedReader;

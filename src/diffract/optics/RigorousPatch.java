@@ -1,8 +1,10 @@
-package diffract.optics.rigorous;
-
+package diffract.optics;
 
 import diffract.optics.patches.Direction;
 import diffract.optics.patches.HeightField;
+import diffract.optics.rigorous.CellRelief;
+import diffract.optics.rigorous.Profile;
+import diffract.optics.rigorous.Resolution;
 
 import java.util.Locale;
 import java.util.Optional;
@@ -132,11 +134,11 @@ public final class RigorousPatch {
     }
 
     /** How many periods of the profile the patch holds. */
-    public int repeats() {
+    int repeats() {
         return repeats;
     }
 
-    public HeightField field() {
+    HeightField field() {
         return field;
     }
 
@@ -152,7 +154,7 @@ public final class RigorousPatch {
     }
 
     /** The order (p, q) of texel (cx, cy), or empty where none lands (a 1-D patch's orders have q = 0). */
-    public Optional<int[]> orders(int cx, int cy) {
+    Optional<int[]> orders(int cx, int cy) {
         if (!oneDimensional()) {
             return Optional.of(new int[] {-cx, -cy});
         }
@@ -160,12 +162,12 @@ public final class RigorousPatch {
     }
 
     /** A 2-D cell's heights: the patch's samples over its whole extent. */
-    public CellRelief relief() {
+    CellRelief relief() {
         return new CellRelief(field.widthUm(), field.heightExtentUm(), field.cols(), field.rows(), field.heightsUm());
     }
 
     /** The order of texel (cx, cy), or empty where no order of a 1-D patch lands. */
-    public Optional<Integer> order(int cx, int cy) {
+    Optional<Integer> order(int cx, int cy) {
         int along = axis == Axis.X ? cx : cy;
         int across = axis == Axis.X ? cy : cx;
         if (across != 0 || along % repeats != 0) {
@@ -192,13 +194,13 @@ public final class RigorousPatch {
      * iteration no longer converges. Each wavelength node solves every distinct slab of the staircase (a cell of few
      * heights has few), at L and L / 2 layers.
      */
-    public static final long MAX_UNKNOWNS = 338;
+    static final long MAX_UNKNOWNS = 338;
 
     /**
      * Why the rigorous method cannot solve this patch with the default resolution from {@link #ESTIMATE_LAMBDA_UM}
      * (what a caller without settings, the viewer's A/B, asks), or empty where it can.
      */
-    public Optional<String> refusal() {
+    Optional<String> refusal() {
         return refusal(Resolution.DEFAULT, ESTIMATE_LAMBDA_UM);
     }
 
@@ -208,7 +210,7 @@ public final class RigorousPatch {
      * at most {@link #MAX_UNKNOWNS} complex unknowns. A larger cell is refused with the cost its solution would have,
      * estimated before any work ({@link #twoDimensionalCost}), and the ways out.
      */
-    public Optional<String> refusal(Resolution resolution, double fromUm) {
+    Optional<String> refusal(Resolution resolution, double fromUm) {
         if (oneDimensional()) {
             return Optional.empty();
         }
@@ -230,7 +232,7 @@ public final class RigorousPatch {
     }
 
     /** The largest M whose square set of harmonics stays within {@link #MAX_UNKNOWNS}. */
-    public static int largestSquareOrder() {
+    static int largestSquareOrder() {
         int m = 0;
         while (2L * (2 * m + 3) * (2 * m + 3) <= MAX_UNKNOWNS) {
             m++;
@@ -242,7 +244,7 @@ public final class RigorousPatch {
      * What one staircase layer of a 2-D cell of {@code widthUm} x {@code heightUm} would cost the Fourier modal
      * method at {@link #ESTIMATE_LAMBDA_UM}, at the default resolution.
      */
-    public static Cost twoDimensionalCost(double widthUm, double heightUm) {
+    static Cost twoDimensionalCost(double widthUm, double heightUm) {
         return twoDimensionalCost(widthUm, heightUm, Resolution.DEFAULT, ESTIMATE_LAMBDA_UM);
     }
 
@@ -252,7 +254,7 @@ public final class RigorousPatch {
      * complex unknowns (E_x and E_y of every harmonic), solved as its real twin of 4N (as {@code ComplexEigen} does):
      * 16 (2N)^2 bytes per complex matrix and about 10 (4N)^3 floating-point operations for the real QR algorithm.
      */
-    public static Cost twoDimensionalCost(double widthUm, double heightUm, Resolution resolution, double lambdaUm) {
+    static Cost twoDimensionalCost(double widthUm, double heightUm, Resolution resolution, double lambdaUm) {
         int nx = 2 * resolution.maxOrder(widthUm, lambdaUm) + 1;
         int ny = 2 * resolution.maxOrder(heightUm, lambdaUm) + 1;
         long unknowns = 2L * nx * ny;
@@ -261,7 +263,7 @@ public final class RigorousPatch {
     }
 
     /** One layer's eigenproblem: harmonics along x and y, complex unknowns, bytes per matrix, operations. */
-    public record Cost(int harmonicsX, int harmonicsY, long unknowns, double matrixBytes, double operations) {
+    record Cost(int harmonicsX, int harmonicsY, long unknowns, double matrixBytes, double operations) {
     }
 
     /** "a 1-D grating: x profile of 25 samples (repeated 26 times in the patch), period 2.5 um" or "a 2-D cell". */
