@@ -41,6 +41,7 @@ class DiscLobesTest {
     }
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole maps under discs: a long test
     void lobesFollowTheDiscWhereTheGaussianProfileDoesNot() {
         HeightField patch = DiscLightTest.grating();
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);

@@ -33,6 +33,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * a third narrower differs from the rows by more than 2.5 times as much (measured 0.97).
  */
 @Tag("gl")
+@Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole staged frames: a long test
 class DiscTableSceneTest {
     static final int W = 320;
     static final int H = 200;

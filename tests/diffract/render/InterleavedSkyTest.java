@@ -36,6 +36,7 @@ class InterleavedSkyTest {
     Path dir;
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole staged frames for each number of lights: a long test
     void theBakedSkyStaysWithinOneOfTheLobesMethodsForAnyNumberOfLights() throws IOException {
         GlTestSupport.assumeOffscreenGl();
         for (int lights : new int[] {1, 2, 8}) {
