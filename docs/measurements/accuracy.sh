@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The accuracy table of docs/accuracy.md: each CPU variant's colour BRDF map against the exact reference (CIEDE2000 over the
-# unit disk, after the display exposure). Run from anywhere: bash docs/accuracy.sh
+# The accuracy table of docs/measurements/accuracy.md: each CPU variant's colour BRDF map against the exact reference (CIEDE2000 over the
+# unit disk, after the display exposure). Run from anywhere: bash docs/measurements/accuracy.sh
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 out=out/accuracy
 mkdir -p "$out"
 ./diffract patch blazed --period 2.5 --height 0.2 --samples-per-period 25 --periods 26 --rows 16 -o "$out/blazed.gsf" >/dev/null

@@ -2,13 +2,13 @@
 # The lobes method and its baked table under disc lights of 0.53, 2, 10 and 20 degrees against the reference's exact
 # disc at the thesis' 65 um coherence, on every bench patch and the Elaphe scan (DiscReference65Measurement): the
 # reference on at most 10 lit pixels of the map's line through the orders, 64 x 64 maps at theta_i = 30 degrees;
-# writes docs/bench/disc-65.md. About an hour and a half on 2 cores; from anywhere: bash docs/disc-65.sh
-# (PATCHES=elaphe-like DISCS=2 bash docs/disc-65.sh for a part; PIXELS=N at most N pixels per map, WIDE_SCAN_PIXELS=M
+# writes docs/measurements/bench/disc-65.md. About an hour and a half on 2 cores; from anywhere: bash docs/measurements/disc-65.sh
+# (PATCHES=elaphe-like DISCS=2 bash docs/measurements/disc-65.sh for a part; PIXELS=N at most N pixels per map, WIDE_SCAN_PIXELS=M
 # at most M on the scan's 10- and 20-degree discs, whose reference takes 4 to 11 minutes a pixel; APPEND=1 adds to the
 # lines target/disc-65.txt holds instead of starting anew; REPORT_ONLY=1 writes the page from those lines, e.g. after
 # a run stopped part way).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 patches=${PATCHES:-blazed-10um,elaphe-like,xenopeltis-like,tall,elaphe-measured,elaphe-scan}
 discs=${DISCS:-0.53,2,10,20}
 pixels=${PIXELS:-8}
@@ -36,11 +36,11 @@ if [ -z "${REPORT_ONLY:-}" ]; then
         fi
     done
 fi
-out=docs/bench/disc-65.md
+out=docs/measurements/bench/disc-65.md
 {
     echo "# Disc lights at 65 um against the reference's disc"
     echo
-    echo "Made by \`bash docs/disc-65.sh\` (\`DiscReference65Measurement\`): 64 x 64 maps at theta_i = 30 degrees in"
+    echo "Made by \`bash docs/measurements/disc-65.sh\` (\`DiscReference65Measurement\`): 64 x 64 maps at theta_i = 30 degrees in"
     echo "the plane of each patch's period, the thesis' 65 um coherence, pixels averaged over their boxes. A whole map"
     echo "of the reference's disc (\`DiscLightAverage\`) takes hours to days on 2 cores, so the reference is evaluated"
     echo "on at most ${pixels} lit pixels of the map's line through the orders (${wide_scan_pixels} on the scan under 10 and 20"

@@ -1,22 +1,22 @@
 #!/usr/bin/env bash
-# The table of docs/filtering.md, "The disc against the Gaussian": CIEDE2000 (mean / p95 over the lit pixels, at the
+# The table of docs/measurements/filtering.md, "The disc against the Gaussian": CIEDE2000 (mean / p95 over the lit pixels, at the
 # Gaussian map's auto exposure) between the reference under a disc light and under the Gaussian profile of the same
 # diameter, for the blazed grating (blazed-10um) and the Elaphe-like patch, at 0.53, 2, 10 and 20 degrees; theta_i =
 # 30 degrees in the plane of each patch's period. SIZE (default 16) and COHERENCE_UM (default 10) keep the run to a
 # few minutes on 2 cores: the disc integrates every direction by the reference, so its cost grows with the light's
 # size and the coherence length. PATCHES and LIGHTS choose the rows (default: both patches, all four sizes); APPEND=1
-# adds rows to the table instead of starting it. Writes docs/bench/disc-light.md. Run from anywhere:
-# bash docs/disc-light.sh
+# adds rows to the table instead of starting it. Writes docs/measurements/bench/disc-light.md. Run from anywhere:
+# bash docs/measurements/disc-light.sh
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 SIZE=${SIZE:-16}
 COHERENCE_UM=${COHERENCE_UM:-10}
 PATCHES=${PATCHES:-"blazed-10um elaphe-like"}
 LIGHTS=${LIGHTS:-"0.53 2 10 20"}
 APPEND=${APPEND:-0}
 tmp=out/disc-light
-mkdir -p "$tmp" docs/bench
-table=docs/bench/disc-light.md
+mkdir -p "$tmp" docs/measurements/bench
+table=docs/measurements/bench/disc-light.md
 ./diffract patch blazed-10um -o "$tmp/blazed-10um.gsf" >/dev/null
 ./diffract patch elaphe-like -o "$tmp/elaphe-like.gsf" >/dev/null
 [ "$APPEND" = 1 ] || {

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# The lobes method under a disc light against the reference's exact disc (docs/filtering.md, section 9, "The lobes
+# The lobes method under a disc light against the reference's exact disc (docs/measurements/filtering.md, section 9, "The lobes
 # method under a disc"): runs DiscLobesTest's measurement (the blazed grating at a 10 um coherence length,
 # 64 x 64 maps at theta_i = 30 degrees, 0.53, 2, 10 and 20-degree discs; the reference's disc takes minutes on 2 cores),
 # GpuDiscLobesTest (GPU = CPU, the baked table), BakedDiscMeasurement (the baked table by its grid) and
 # DiscLobesSpeedMeasurement (GL time of the lobes shader under the disc and under the Gaussian profile against FLSS,
-# 64 x 64 maps at 65 um), and writes their measurements into docs/bench/disc-lobes.md. About 20 minutes on 2 cores,
-# and an hour more for the reference's discs; from anywhere: bash docs/disc-lobes.sh (KEEP_CPU=1 runs the GPU parts
+# 64 x 64 maps at 65 um), and writes their measurements into docs/measurements/bench/disc-lobes.md. About 20 minutes on 2 cores,
+# and an hour more for the reference's discs; from anywhere: bash docs/measurements/disc-lobes.sh (KEEP_CPU=1 runs the GPU parts
 # alone and keeps DiscLobesTest's table and lines from the page as it is, for a change that leaves the CPU alone).
 set -euo pipefail
-cd "$(dirname "$0")/.."
-out=docs/bench/disc-lobes.md
+cd "$(dirname "$0")/../.."
+out=docs/measurements/bench/disc-lobes.md
 rm -f target/test-reports/GpuDiscLobesTest.txt target/test-reports/DiscLobesSpeedMeasurement.txt \
     target/test-reports/BakedDiscMeasurement.txt
 if [ -n "${KEEP_CPU:-}" ]; then
@@ -32,7 +32,7 @@ mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-spe
 {
     echo "# The lobes method under a disc light"
     echo
-    echo "Made by \`bash docs/disc-lobes.sh\` (\`DiscLobesTest\` with the long tests, \`GpuDiscLobesTest\`): CIEDE2000"
+    echo "Made by \`bash docs/measurements/disc-lobes.sh\` (\`DiscLobesTest\` with the long tests, \`GpuDiscLobesTest\`): CIEDE2000"
     echo "mean / p95 over the lit pixels at the reference's auto exposure; the lobes method under the disc and under the"
     echo "Gaussian profile of the same diameter, both against the reference's disc (\`DiscLightAverage\`)."
     echo
@@ -59,8 +59,8 @@ mvn -B -ntp -q test -Dtest=DiscLobesSpeedMeasurement -Ddiffract.measure=disc-spe
     echo
     echo "$(nproc) CPU cores ($(sed -n 's/^model name\s*: //p' /proc/cpuinfo | head -1)), load average $(cut -d' ' -f1-3 /proc/loadavg)"
 } >"$out"
-# the baked table's means into docs/filtering.md's table (section 8), between its markers
-python3 - target/test-reports/BakedDiscMeasurement.txt docs/filtering.md <<'PY'
+# the baked table's means into docs/measurements/filtering.md's table (section 8), between its markers
+python3 - target/test-reports/BakedDiscMeasurement.txt docs/measurements/filtering.md <<'PY'
 import re, sys
 lines, page = open(sys.argv[1]).read(), open(sys.argv[2]).read()
 cells, grids = {}, {}
@@ -85,7 +85,7 @@ table = "\n".join("  " + r for r in rows)
 page, n = re.subn(r"(<!-- baked-disc table -->\n).*?(\n *<!-- end baked-disc table -->)",
                   lambda m: m.group(1) + table + m.group(2), page, flags=re.S)
 if n != 1:
-    sys.exit("docs/filtering.md: no baked-disc table between markers")
+    sys.exit("docs/measurements/filtering.md: no baked-disc table between markers")
 open(sys.argv[2], "w").write(page)
 PY
 cat "$out"

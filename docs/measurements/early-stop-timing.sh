@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # GPU ms/frame and CIEDE2000 to the CPU reference of FLSS in the thesis' configuration, with the
 # per-lookup Taylor early stop, with the automatic window, and with both (128 x 128 maps, theta_i 30, the patches of
-# docs/gpu-figures.sh). Prints a markdown table. Run from the repository root: bash docs/early-stop-timing.sh
+# docs/measurements/gpu-figures.sh). Prints a markdown table. Run from the repository root: bash docs/measurements/early-stop-timing.sh
 set -euo pipefail
 run() { ./diffract "$@"; }
 mkdir -p out/early-stop

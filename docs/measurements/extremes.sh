@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
 # Reruns the extremes matrix (tests/diffract/render/ExtremesReportTest.java) and writes
-# docs/extremes.md from its two tables (target/extremes-threshold.md, target/extremes.md). Needs Xvfb + Mesa.
+# docs/measurements/extremes.md from its two tables (target/extremes-threshold.md, target/extremes.md). Needs Xvfb + Mesa.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 xvfb-run -a -s "-screen 0 1280x1024x24" mvn -B -ntp -q test -Dtest=ExtremesReportTest -Ddiffract.excludedGroups=none > /dev/null
 {
 cat <<'INTRO'
 # Numerical stability at the extremes
 
-Made by `bash docs/extremes.sh` (it runs `ExtremesReportTest`, which also fails if any map holds a NaN, an Inf or a
+Made by `bash docs/measurements/extremes.sh` (it runs `ExtremesReportTest`, which also fails if any map holds a NaN, an Inf or a
 negative value, or if FLSS on the automatic expansion misses the reference by more than mean CIEDE2000 1 or 10 %
 of the monochromatic peak).
 
@@ -41,7 +41,7 @@ Columns: "expansion" is what `--expansion auto` chose (centred: centres x orders
 CPU reference, colour maps as mean CIEDE2000 over the unit disk (and over the lit pixels) after the reference's
 automatic exposure, monochromatic maps as max |rho - rho_ref| / max rho_ref. "GPU error, plain series" is the
 thesis' series around 0 on the GPU for the cases where the switch chose the centred one. NMM's and PQ's own errors
-(NMM's nodes on a 10 um patch, PQ's sinc and replication) are the variants', not the extremes' (docs/accuracy.md).
+(NMM's nodes on a 10 um patch, PQ's sinc and replication) are the variants', not the extremes' (docs/measurements/accuracy.md).
 
 MATRIX
 cat target/extremes.md
@@ -60,5 +60,5 @@ BIG
 cat target/extremes-4096.md
 echo
 echo "GL: $(cat target/extremes-renderer.txt) (llvmpipe runs the shaders on the CPU, in float32 as a GPU does)."
-} > docs/extremes.md
-echo "wrote docs/extremes.md"
+} > docs/measurements/extremes.md
+echo "wrote docs/measurements/extremes.md"

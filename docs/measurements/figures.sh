@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Regenerates the BRDF-map pictures of README.md and docs/accuracy.md from the repository root: bash docs/figures.sh
+# Regenerates the BRDF-map pictures of README.md and docs/measurements/accuracy.md from the repository root: bash docs/measurements/figures.sh
 # The Elaphe pictures show the measured patch of assets/patches. They are drawn at a 10 um
 # coherence, where the thesis' point-sampling approximations are valid, with pixels sampled at their centres as the
-# thesis' maps are (docs/filtering.md has the 65 um pictures, pixels averaged).
+# thesis' maps are (docs/measurements/filtering.md has the 65 um pictures, pixels averaged).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 mkdir -p docs/images out/figures
 run() { echo "+ ./diffract $*" >&2; ./diffract "$@" >/dev/null; }
 

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The pictures of docs/filtering.md: 64 x 64 BRDF maps at the thesis' 65 um coherence, theta_i = 30 degrees, of the
+# The pictures of docs/measurements/filtering.md: 64 x 64 BRDF maps at the thesis' 65 um coherence, theta_i = 30 degrees, of the
 # Elaphe-like patch and (when present) the measured Elaphe patch: the filtered reference, FLSS in the thesis'
 # configuration (point-sampled), the lobes method, the lobes method at 512 x 512, and the reference under a 2-degree
 # light, all at the reference's auto exposure; for the README, 128 x 128 maps of the measured patch by FLSS in the
-# thesis' configuration, the lobes method and the reference. Run from anywhere: bash docs/filtering-figures.sh
+# thesis' configuration, the lobes method and the reference. Run from anywhere: bash docs/measurements/filtering-figures.sh
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 out=docs/images
 tmp=out/filtering-figures
 mkdir -p "$tmp" "$out"

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The long fuzzing run of docs/fuzzing.md: each target of ParsersFuzzTest fuzzed in turn by Jazzer (JAZZER_FUZZ=1)
+# The long fuzzing run of docs/measurements/fuzzing.md: each target of ParsersFuzzTest fuzzed in turn by Jazzer (JAZZER_FUZZ=1)
 # until its maxExecutions (500 000 inputs for the height-field readers, 100 000 for each other parser), in a JVM of
 # its own (the surefire execution fuzz-corpus). Prints one line per target: the inputs run, the seconds, and whether
-# it ended without a finding. Findings are written beside the corpus by Jazzer (docs/fuzzing.md says where to move
+# it ended without a finding. Findings are written beside the corpus by Jazzer (docs/measurements/fuzzing.md says where to move
 # them). Logs: target/fuzz-TARGET.log.
 set -uo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 mvn -B -ntp -q test-compile > /dev/null
 status=0
 for target in heightFields sceneFiles objMeshes termFolders cacheEntries pieceManifests; do

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Regenerates the pictures and the numbers of docs/gpu.md from the repository root: bash docs/gpu-figures.sh
-# Needs OpenGL 3.3 (without a display the GPU commands run on headless EGL, docs/headless-gl.md).
-# Prints the table of docs/gpu.md (ms/frame on this machine's GL, CIEDE2000 against the CPU reference) to stdout.
+# Regenerates the pictures and the numbers of docs/measurements/gpu.md from the repository root: bash docs/measurements/gpu-figures.sh
+# Needs OpenGL 3.3 (without a display the GPU commands run on headless EGL, docs/guide/headless-gl.md).
+# Prints the table of docs/measurements/gpu.md (ms/frame on this machine's GL, CIEDE2000 against the CPU reference) to stdout.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 mkdir -p docs/images out/figures
 run() { echo "+ ./diffract $*" >&2; ./diffract "$@"; }
 
@@ -14,7 +14,7 @@ run patch elaphe-like -o out/figures/elaphe-like.gsf >/dev/null
 SIZE=256
 echo "| patch | variant | GPU ms/frame (${SIZE}x${SIZE}) | CIEDE2000 mean | p95 | lit pixels | CIEDE2000 mean (lit) | p95 (lit) |"
 echo "|---|---|---|---|---|---|---|---|"
-# name, exposure, light: the same views as docs/figures.sh (theta_i = 30 degrees in the plane of the period)
+# name, exposure, light: the same views as docs/measurements/figures.sh (theta_i = 30 degrees in the plane of the period)
 for spec in "blazed 15 0" "elaphe-like 25 90"; do
     read -r name exposure phi <<<"$spec"
     common=(--patch "out/figures/$name.gsf" --theta-i 30 --phi-i "$phi" --exposure "$exposure" --size "$SIZE")

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The precompute figures of docs/bench.md: a 512 x 512 patch, 40 Taylor orders (41 FFTs), first run and cached rerun,
-# wall-clock time of the whole ./diffract command (JVM start included). Run: bash docs/precompute-timing.sh
+# The precompute figures of docs/measurements/bench.md: a 512 x 512 patch, 40 Taylor orders (41 FFTs), first run and cached rerun,
+# wall-clock time of the whole ./diffract command (JVM start included). Run: bash docs/measurements/precompute-timing.sh
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 out=out/timing
 rm -rf "$out" && mkdir -p "$out"
 ./diffract patch sinusoid --period 1.0 --height 0.3 --samples-per-period 32 --periods 16 --rows 512 -o "$out/p512.gsf" >/dev/null

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Writes docs/rigorous-crosscheck.md: diffract's Fourier modal method against meent, nannos and inkstone on the same
+# Writes docs/measurements/rigorous-crosscheck.md: diffract's Fourier modal method against meent, nannos and inkstone on the same
 # staircases (it runs IndependentSolverTest with inkstone added, and tests/python/rigorous_crosscheck.py under it).
 # Needs python3 with meent 0.13.2, nannos 2.6.5 and inkstone 0.3.15 (.ci/install-deps --tests installs them).
-# Run from anywhere: bash docs/rigorous-crosscheck.sh
+# Run from anywhere: bash docs/measurements/rigorous-crosscheck.sh
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 found=$(python3 tests/python/rigorous_crosscheck.py --check 2>/dev/null || true)
 for solver in meent nannos inkstone; do
     if ! grep -q "\"$solver\": \"" <<<"$found"; then
@@ -43,7 +43,7 @@ PY
 cat <<'INTRO'
 # The rigorous solver against independent implementations
 
-Made by `bash docs/rigorous-crosscheck.sh`: it runs `IndependentSolverTest` with inkstone added
+Made by `bash docs/measurements/rigorous-crosscheck.sh`: it runs `IndependentSolverTest` with inkstone added
 (`-Ddiffract.crosscheck.solvers=meent,nannos,inkstone`), which hands the cases to
 `tests/python/rigorous_crosscheck.py` and compares. The test itself (in `mvn test`, wherever python3 has meent)
 holds every reflected order that carries at least 5 % of the reflected power, for s and for p light, to 1 % of
@@ -90,5 +90,5 @@ echo
 cat "$report"
 echo
 echo "Machine: $(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg) at the end of the run (timings on a busy machine are 2-5x the idle ones)."
-} > docs/rigorous-crosscheck.md
-echo "wrote docs/rigorous-crosscheck.md" >&2
+} > docs/measurements/rigorous-crosscheck.md
+echo "wrote docs/measurements/rigorous-crosscheck.md" >&2

@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# The fast path against Maxwell's equations (docs/rigorous.md): runs GainModelsMeasurement (the cheap gains against
+# The fast path against Maxwell's equations (docs/design/rigorous.md): runs GainModelsMeasurement (the cheap gains against
 # the rigorous orders) and RigorousMeasurement (64 x 64 maps of the
 # Elaphe-like and Xenopeltis-like ridges and of the blazed grating under the sun's disc at 0 and 30 degrees: the lobes
 # method with Rayleigh-Rice's gain, with Stam's and with the rigorous orders, each against the rigorous method) with an
 # empty cache of rigorous orders, so the times include the solves and the tables; times brdfmap's GPU path with the
-# rigorous orders; writes docs/rigorous-measurements.md and docs/images/rigorous-*.png. About an hour on 2 cores;
-# from anywhere: bash docs/rigorous.sh (--report-only writes the page again from the last run's reports, timing
+# rigorous orders; writes docs/measurements/rigorous-measurements.md and docs/images/rigorous-*.png. About an hour on 2 cores;
+# from anywhere: bash docs/measurements/rigorous.sh (--report-only writes the page again from the last run's reports, timing
 # the GPU's maps where they were not timed yet)
 set -euo pipefail
-cd "$(dirname "$0")/.."
-out=docs/rigorous-measurements.md
+cd "$(dirname "$0")/../.."
+out=docs/measurements/rigorous-measurements.md
 if [ "${1:-}" != --report-only ]; then
     rm -rf target/test-cache/rigorous-orders target/test-cache/order-corrections target/test-reports/rigorous
     rm -f target/test-reports/RigorousMeasurement.txt target/test-reports/GainModelsMeasurement.txt
@@ -28,7 +28,7 @@ fi
 {
     echo "# The scalar model's gain and the lobes method's orders against Maxwell's equations"
     echo
-    echo "Made by \`bash docs/rigorous.sh\` (\`RigorousMeasurement\`): 64 x 64 BRDF maps under the sun's disc (0.53"
+    echo "Made by \`bash docs/measurements/rigorous.sh\` (\`RigorousMeasurement\`): 64 x 64 BRDF maps under the sun's disc (0.53"
     echo "degrees, pixel boxes, 380-780 nm, n = 1.56), the light at 0 and 30 degrees in the plane of the period, at the"
     echo "default resolution (harmonics up to 2 period / lambda + 12, 24 layers extrapolated from 12). Each of the lobes"
     echo "method's maps against the rigorous method's: CIEDE2000 over the lit pixels at the rigorous map's auto exposure,"
@@ -73,7 +73,7 @@ fi
     echo
     for f in target/test-reports/rigorous/rigorous-*.png; do
         b=$(basename "$f" .png)
-        echo "![${b#rigorous-}](images/$b.png)"
+        echo "![${b#rigorous-}](../images/$b.png)"
         echo
     done
     echo "On the GPU (\`brdfmap --engine gpu --time\`, the Elaphe-like ridge at 30 degrees, 64 x 64; GL time on"

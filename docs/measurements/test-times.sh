@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# Runs README's test command and then the long tests (as .ci/run does), and writes docs/test-times.md: the wall
+# Runs README's test command and then the long tests (as .ci/run does), and writes docs/measurements/test-times.md: the wall
 # time of each run and every test class's time, slowest first, from surefire's reports.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 times() {  # class and seconds of every report in target/surefire-reports, slowest first
     for f in target/surefire-reports/TEST-*.xml; do
         t=$(grep -o '<testsuite [^>]*' "$f" | grep -o ' time="[0-9.]*"' | head -1 | tr -dc '0-9.')
@@ -26,7 +26,7 @@ cores=$(nproc)
 {
     echo "# Test times"
     echo
-    echo "Made by \`bash docs/test-times.sh\` on $cores cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs))."
+    echo "Made by \`bash docs/measurements/test-times.sh\` on $cores cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs))."
     echo "A busy machine takes 2-5 times longer; no test depends on how long anything takes."
     echo
     echo "README's test command, \`mvn -B -ntp test\`: $main_s s in all (compiling included), $(echo "$main" | awk '{n += $2} END {print n}') tests."
@@ -37,5 +37,5 @@ cores=$(nproc)
     echo "\`mvn -B -ntp test -Dgroups=long -Ddiffract.excludedGroups=none\`: $long_s s in all."
     echo
     echo "$long" | table
-} > docs/test-times.md
-cat docs/test-times.md | head -8
+} > docs/measurements/test-times.md
+cat docs/measurements/test-times.md | head -8

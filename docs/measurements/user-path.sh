@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Times the user's path as README shows it, from an empty disk cache (a temporary DIFFRACT_CACHE), each command run
-# twice: the demo without a screen, and the Elaphe scene rendered at 320 x 200. Writes docs/user-path.md.
+# twice: the demo without a screen, and the Elaphe scene rendered at 320 x 200. Writes docs/measurements/user-path.md.
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 ./diffract --version > /dev/null  # builds the jar first, outside the timings
 cache=$(mktemp -d)
 out=$(mktemp -d)
@@ -28,7 +28,7 @@ timed "render, second run" ./diffract render assets/scenes/snake-elaphe.json --s
 {
     echo "# The user's path, timed"
     echo
-    echo "Made by \`bash docs/user-path.sh\` on $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)),"
+    echo "Made by \`bash docs/measurements/user-path.sh\` on $(nproc) cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | xargs)),"
     echo "$(java -jar target/diffract.jar --version 2>/dev/null | head -1), DISPLAY unset, from an empty disk cache."
     echo "Seconds of wall time per command, the JVM's start included; a busy machine takes 2-5 times longer."
     echo
@@ -37,6 +37,6 @@ timed "render, second run" ./diffract render assets/scenes/snake-elaphe.json --s
     printf '%s\n' "${rows[@]}"
     echo
     echo "The first run bakes the lobes method's table of the scene's patch (with its progress and time left) and"
-    echo "stores it in the disk cache ([faults.md](faults.md#the-disk-cache)); later runs load it."
-} > docs/user-path.md
-cat docs/user-path.md
+    echo "stores it in the disk cache ([faults.md](../guide/faults.md#the-disk-cache)); later runs load it."
+} > docs/measurements/user-path.md
+cat docs/measurements/user-path.md

@@ -4,7 +4,7 @@
 # BRDF-map inset drawn saves what the view shows (glReadPixels, as the S key does) and what the screen shows of the
 # frame.
 set -euo pipefail
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 cd "$ROOT"
 ./diffract warm-up >/dev/null 2>&1 || true   # builds the jar when sources changed
 shots="$(mktemp -d)"
