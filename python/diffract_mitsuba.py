@@ -3,7 +3,7 @@
 The table holds the lobes method's spectral factor in linear sRGB over (u, v, w) = -omega_i - omega_r (both
 directions pointing away from the surface, in the surface's local frame: x along the height field's columns, y along
 its rows); the gain factor, Stam's shadowing and the Fresnel term stay analytic here because they vary fast near the
-horizon. Usage (docs/mitsuba.md):
+horizon. Usage (docs/guide/mitsuba.md):
 
     import mitsuba as mi
     mi.set_variant("scalar_rgb")

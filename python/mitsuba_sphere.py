@@ -4,7 +4,7 @@
 
 The sphere's shading frame is Mitsuba's (x along dp/du, the longitude); the sphere is turned so that its poles lie on
 the world's y axis, so the patch's columns run round it horizontally, as on diffract's own sphere with its tangent
-projected from x (docs/mitsuba-figure.sh renders both).
+projected from x (docs/measurements/mitsuba-figure.sh renders both).
 The PNG is sRGB-encoded at the exposure, clipped; the specular highlight saturates so that the orders show.
 """
 import argparse

@@ -1,4 +1,4 @@
-// The baked table of the lobes method under a disc light (BAKED_DISC; BakedDisc, docs/filtering.md section 8): the
+// The baked table of the lobes method under a disc light (BAKED_DISC; BakedDisc, docs/measurements/filtering.md section 8): the
 // table (bakedLayers) holds the point light's cell averages and bakedRowSums the running sums of its rows along u
 // (BakedDisc.rowSums: at sample i the integral of the table from u_min to u_i, linear between samples). A lookup
 // integrates the disc itself: the ellipse its directions d form in (u, v) = -d.xy - omega_r.xy (DiscFootprint: centre

@@ -2,7 +2,7 @@
 // LOBES: the windowed spectrum as a sum of Gaussian lobes, one per DFT texel m (pairs m != m' are below the
 // pair threshold for the patches this shader is given: DiffractionTextures refuses others), each widened by the
 // pixel's footprint and the light and integrated over wavelength by a rule fitted to its passage. Mirrors
-// diffract.optics.LobeSpectrum step for step (docs/filtering.md, section 4):
+// diffract.optics.LobeSpectrum step for step (docs/design/filtering.md, section 4):
 //   1. march over the texels near the segment s(lambda) = (u L_x, v L_y) / lambda along its major axis; a texel's
 //      lobe sits at mu(lambda) = lambda m / L in (u, v) and comes within reach of the footprint over an interval of
 //      wavelengths (a linear inequality per axis); texels out of reach are skipped before any fetch;

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Diffraction efficiencies of 1-D staircase gratings from independent rigorous solvers, for comparison with
-diffract's Fourier modal method (IndependentSolverTest, docs/rigorous-crosscheck.sh).
+diffract's Fourier modal method (IndependentSolverTest, docs/measurements/rigorous-crosscheck.sh).
 
 Reads cases as JSON from a file named on the command line, or from standard input ("-" or no argument), and writes
 two lines of JSON to standard output: the solvers' versions, then the results. A case:

@@ -341,7 +341,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
      * The bands farthest from the map's middle row first, alternating top and bottom. Their pixels lie nearest the
      * horizon's rim, which the CPU's filtered pixels refine where their boxes cross it, and their directions are the
      * most grazing: an outer band of a 256 x 256 reference map in 8 pieces works 1.6 to 1.9 times as long as a middle
-     * one (docs/pieces.md). Taken first, they leave the cheap middle bands to even out the workers' ends, and each
+     * one (docs/measurements/pieces.md). Taken first, they leave the cheap middle bands to even out the workers' ends, and each
      * worker's start is paid beside its longest piece.
      */
     @Override
@@ -527,11 +527,11 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
 
     /**
      * Where the patch lies outside the region where the scalar model is within a visible difference of Maxwell's
-     * equations, one line says how far (docs/validity.md) and the command that draws it rigorously: this map with
+     * equations, one line says how far (docs/measurements/validity.md) and the command that draws it rigorously: this map with
      * --variant rigorous for a 1-D patch, its ridges' cross-section for a 2-D one.
      */
     /**
-     * One line where the scalar model is expected visibly off Maxwell's equations on this patch (docs/validity.md): the
+     * One line where the scalar model is expected visibly off Maxwell's equations on this patch (docs/measurements/validity.md): the
      * expected error, the rigorous command that would tell and, for the lobes method, the orders that close it. None
      * where the lobes already take their orders from Maxwell's equations.
      */
@@ -551,7 +551,7 @@ final class BrdfMapCommand implements SplitCommand, Callable<Integer> {
                         + "micrometre: diffract orders "
                         + "--synthetic elaphe-ridge --theta-i " + number(thetaIDeg);
         String fix = settings.variant().takesRigorousOrders() ? "; --orders rigorous takes the lobes' orders from "
-                + "Maxwell's equations (docs/rigorous.md)" : "";
+                + "Maxwell's equations (docs/design/rigorous.md)" : "";
         reporter.warn(e.describe() + ": " + how + fix);
     }
 

@@ -48,7 +48,7 @@ final class DemoCommand implements Callable<Integer> {
 
     /**
      * The view: the default scene {@code assets/scenes/snake-elaphe.json}, a coiled corn snake with scales, its
-     * pigment, a clear sky as 8 extended lights, a ground with the key light's shadow (docs/staging.md). A 10 um
+     * pigment, a clear sky as 8 extended lights, a ground with the key light's shadow (docs/guide/staging.md). A 10 um
      * coherence length (sigma_s = 2.5 um, a less coherent source than sunlight's 65 um) widens the orders of the 9 um
      * periodic patch into bands that a 640 x 400 picture resolves (with 65 um they are a fraction of a pixel wide).
      */

@@ -34,7 +34,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.Callable;
 
-/** {@code diffract export --mitsuba}: the BRDF of a patch as a table that Mitsuba 3 renders (docs/mitsuba.md). */
+/** {@code diffract export --mitsuba}: the BRDF of a patch as a table that Mitsuba 3 renders (docs/guide/mitsuba.md). */
 @Command(name = "export", mixinStandardHelpOptions = true, abbreviateSynopsis = true)
 final class ExportCommand implements Callable<Integer> {
     /** The header's format name; the plugin refuses any other. */

@@ -155,7 +155,7 @@ final class GpuSuite {
 
     /**
      * The same physics as {@code s}, converged: for a filtering variant the lobes method (exact in wavelength; within
-     * CIEDE2000 1 of the filtered reference on BRDF maps, docs/bench/filtering.md), else FLSS at 1 nm; with at least
+     * CIEDE2000 1 of the filtered reference on BRDF maps, docs/measurements/bench/filtering.md), else FLSS at 1 nm; with at least
      * {@link #REFERENCE_ORDER} terms.
      */
     static BrdfSettings converged(BrdfSettings s) {
@@ -271,7 +271,7 @@ final class GpuSuite {
      * The settings the BRDF map rows draw: the scene's, under the sun's disc where the scene's light is wider (a staged
      * scene's soft key light). The CPU reference integrates a disc by the point reference over its directions
      * ({@code DiscLightAverage}): a disc many pixels wide takes its finest rule at every pixel, 32 x 96 point
-     * references, where the sun takes a few (docs/headless-gl.md, "The GPU suite").
+     * references, where the sun takes a few (docs/guide/headless-gl.md, "The GPU suite").
      */
     static BrdfSettings mapSettings(BrdfSettings scene) {
         return scene.illumination().light().angularDiameterDeg() > LightSource.SUN_DEG

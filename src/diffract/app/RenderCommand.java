@@ -58,7 +58,7 @@ final class RenderCommand implements Callable<Integer>, SplitCommand {
 
     /** What draws a scene's pixels whole where the GL ended the lobes shader's loops early ({@link ShortPixels}). */
     static final String SHORT_PIXELS_REMEDY = "draw it on a GPU, with --variant baked, or with a coarser "
-            + "--lobe-quadrature (docs/filtering.md)";
+            + "--lobe-quadrature (docs/design/filtering.md)";
 
     /** One frame drawn by {@code target}, RGB, with a warning where its pixels of {@code what} were left short. */
     static float[] frameRgb(OffscreenTarget target, int width, int height, String what, Reporter reporter) {

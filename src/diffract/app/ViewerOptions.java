@@ -322,7 +322,7 @@ final class ViewerOptions {
     /**
      * {@code view}'s first look at a shape without a scene, where the options do not say otherwise: under the sun a
      * grating's orders are as thin as the sun, and the sphere showed 0.5 % of its window in saturated structural
-     * colour; under a 15-degree soft light, closer, 5.9 % (docs/viewer.md). Before {@link #validate}.
+     * colour; under a 15-degree soft light, closer, 5.9 % (docs/guide/viewer.md). Before {@link #validate}.
      */
     void firstLook() {
         defaultLightDeg = FIRST_LOOK_LIGHT_DEG;

@@ -13,7 +13,7 @@ import java.util.stream.Stream;
  * so that the launcher can record the classes a typical run loads into a class-data-sharing archive right after a
  * build. Later starts map those classes instead of loading them (about 0.6 -> 0.4 s for a cached precompute).
  * It leaves out the reference map: with the classes of a reference map's run in the archive, Java 17 ran the
- * reference map five times slower (42.7 s against 8.2 s for the 64^2 map of docs/pieces.sh's patch, same output).
+ * reference map five times slower (42.7 s against 8.2 s for the 64^2 map of docs/measurements/pieces.sh's patch, same output).
  */
 @Command(name = "warm-up", hidden = true)
 final class WarmUpCommand implements Callable<Integer> {

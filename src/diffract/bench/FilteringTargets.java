@@ -18,7 +18,7 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * The filtering targets at the thesis' own coherence (docs/filtering.md): per patch and light size, a BRDF map at
+ * The filtering targets at the thesis' own coherence (docs/measurements/filtering.md): per patch and light size, a BRDF map at
  * theta_i = 30 degrees (light azimuth in the plane of the patch's period) whose pixels average their squares, from
  * <ul>
  *   <li>the filtered reference ({@link Methods.Role#EXACT} with {@link PixelFilter#BOX} and the light's size, cached
@@ -180,7 +180,7 @@ public final class FilteringTargets {
         return s.toString();
     }
 
-    /** The table of docs/bench/filtering.md: one row per patch and light. */
+    /** The table of docs/measurements/bench/filtering.md: one row per patch and light. */
     public static String markdown(List<Row> rows, int sizePx, BrdfSettings lobes) {
         StringBuilder s = new StringBuilder(String.format(Locale.ROOT, "%d x %d BRDF maps, theta_i = %.0f degrees, "
                         + "coherence length %s um; CIEDE2000 mean / p95 over lit pixels against the filtered reference\n\n",

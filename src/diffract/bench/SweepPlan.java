@@ -38,7 +38,7 @@ public final class SweepPlan {
     }
 
     /**
-     * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (docs/baked.md
+     * The Taylor tolerance of the "lean" points: each lookup's loop stops at its own Lagrange bound (docs/measurements/baked.md
      * measures 1e-4 as invisible in CIEDE2000 at 17-40 % less work), with the automatic window.
      */
     public static final double LEAN_TAYLOR_TOLERANCE = 1e-4;
@@ -87,7 +87,7 @@ public final class SweepPlan {
 
     /**
      * The variants a sweep measures, in the registry's order. {@code quick} leaves out those that draw a table (and so
-     * left out of auto's calibration): a table first bakes, 30 to 70 s per patch on llvmpipe (docs/baked.md), which
+     * left out of auto's calibration): a table first bakes, 30 to 70 s per patch on llvmpipe (docs/measurements/baked.md), which
      * alone would exceed the quick sweep's budget of a few minutes.
      */
     public static List<Variant> sweptVariants(boolean quick) {

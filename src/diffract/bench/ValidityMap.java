@@ -26,7 +26,7 @@ import java.util.Locale;
  * Where Stam's scalar model holds: 1-D reliefs of three shapes over their period, depth and the light's angle, each
  * drawn by the scalar model (its default gain, Rayleigh-Rice's, and Stam's) and by the rigorous method, compared in
  * colour (mean CIEDE2000 over the lit pixels of a BRDF map) and in the orders' efficiencies (the largest relative
- * error on the orders that carry at least 5 % of the reflected power at 450, 550 and 650 nm). docs/validity.md holds
+ * error on the orders that carry at least 5 % of the reflected power at 450, 550 and 650 nm). docs/measurements/validity.md holds
  * the map; {@code assets/validity/scalar-validity.csv} the table the commands' warnings read
  * ({@link diffract.optics.validity.ScalarValidity}).
  *

@@ -35,7 +35,7 @@ public final class ValidityReport {
 
     /** The CSV of the results, with a comment line saying what made it. */
     public static String csv(List<ValidityMap.Result> results, String command) {
-        StringBuilder s = new StringBuilder("# the scalar model against Maxwell's equations (docs/validity.md), by `")
+        StringBuilder s = new StringBuilder("# the scalar model against Maxwell's equations (docs/measurements/validity.md), by `")
                 .append(command).append("`\n").append(HEADER).append('\n');
         for (ValidityMap.Result r : results) {
             ValidityMap.Case c = r.c();
@@ -154,8 +154,8 @@ public final class ValidityReport {
         StringBuilder s = new StringBuilder();
         s.append("# Where the scalar model holds: the validity map\n\n");
         s.append("Measured by `").append(command).append("` (").append(String.format(Locale.ROOT, "%.0f min", seconds
-                / 60)).append(" on this machine; `bash docs/validity.sh` reruns it and copies its files here and into "
-                + "`assets/validity/`). docs/rigorous.md says what the rigorous method is and how to read these numbers."
+                / 60)).append(" on this machine; `bash docs/measurements/validity.sh` reruns it and copies its files here and into "
+                + "`assets/validity/`). docs/design/rigorous.md says what the rigorous method is and how to read these numbers."
                 + "\n\n");
         s.append("Each case is a 1-D relief of one shape, period and peak-to-valley height on keratin (n = 1.56), lit "
                 + "by a point light in the plane of its period. The scalar model (Stam's, with its default gain, "

@@ -29,6 +29,6 @@
  *
  * <p>Offscreen targets need no X server: {@link diffract.jrtr.contexts.HeadlessGL} gives them headless EGL (any GPU, or
  * Mesa's llvmpipe) and falls back to JOGL on the X display; windows need a display, which
- * {@link diffract.jrtr.contexts.DisplayCheck} checks in one line. See docs/headless-gl.md.
+ * {@link diffract.jrtr.contexts.DisplayCheck} checks in one line. See docs/guide/headless-gl.md.
  */
 package diffract.jrtr;

@@ -17,7 +17,7 @@ import diffract.optics.spectra.TaylorBound;
  * twice the largest Taylor phase x = k_max |w| max|h| of {@link TaylorBound#maxPhase}. Linear interpolation of a
  * cosine sampled every d radians errs by up to d^2 / 8 of its amplitude, so {@link #W_SAMPLES_PER_PAIR_RADIAN} = 2
  * (d = 0.5) holds a pair's term to 3 %; on a measured scan, whose many pairs of unrelated heights all turn at once,
- * half that density leaves CIEDE2000 above 1 under a 20-degree disc (docs/filtering.md, section 8).
+ * half that density leaves CIEDE2000 above 1 under a 20-degree disc (docs/design/filtering.md, section 8).
  */
 public record BakedGrid(int uvSamples, int wSamples) {
     /** The largest table edge accepted (GL 3.3 guarantees 3-D textures of 256 only; drivers go to 2048+). */

@@ -29,7 +29,7 @@ import java.util.function.Consumer;
  * thesis' configuration (001 implementation notes; 003 sec. 1.3.2): 30 Taylor terms, a 3 x 3 window, 5 nm steps over
  * 380-780 nm, 4 sigma_s = 65 um, float32 terms, a point light and point-sampled map pixels; where the physics measured
  * since says otherwise, the surface is keratin (n = 1.56, the thesis took 1.5) and the gain model Rayleigh-Rice's
- * ({@link GainModel}; docs/rigorous.md). The reference reads only the spectral range and the illumination.
+ * ({@link GainModel}; docs/design/rigorous.md). The reference reads only the spectral range and the illumination.
  *
  * <p>A new setting goes into the group of its concern (a new group into this record and {@link Builder}); a new
  * variant into {@link Variant}.

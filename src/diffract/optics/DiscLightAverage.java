@@ -14,7 +14,7 @@ import diffract.optics.settings.LightProfile;
  * w, u, v) evaluated at each incident direction by the point-light reference ({@link FilteredReference}, with its
  * pixel box and exact wavelength integral).
  *
- * <p>Why uniform over solid angle: the relative BRDF is f cos theta_i up to a constant (docs/theory.md), so a light
+ * <p>Why uniform over solid angle: the relative BRDF is f cos theta_i up to a constant (docs/design/theory.md), so a light
  * of uniform radiance L over the cone reflects L integral f cos theta_i d omega = L Omega times the solid-angle
  * average of the relative BRDF; divided by L Omega, the light's strength as a point light of the same L Omega would
  * carry, the map keeps the point light's scale and the incident cosine enters per direction through C.

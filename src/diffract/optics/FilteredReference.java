@@ -19,7 +19,7 @@ import java.util.function.DoubleFunction;
 
 /**
  * The filtered reference: the defined value of a pixel, i.e. the relative BRDF averaged over the pixel's footprint
- * and the light's directions and integrated over wavelength against D65 x CIE 1931 exactly (docs/filtering.md),
+ * and the light's directions and integrated over wavelength against D65 x CIE 1931 exactly (docs/design/filtering.md),
  * from the exact coefficients of {@link ExactSpectrum} (no Taylor series, no float32, no window truncation):
  * <pre>
  *   XYZ = sum_c integral d lambda f(lambda) average over the footprint of [C S W_c(k w) lobe_c],

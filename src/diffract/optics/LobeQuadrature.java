@@ -14,7 +14,7 @@ import java.util.Map;
 
 /**
  * The accuracy knobs of the lobes method ({@link LobeSpectrum}, {@code lobes.frag}), a group of {@link BrdfSettings};
- * docs/filtering.md measures each. Every knob has one range, checked here ({@link Quantity#LOBE_QUADRATURE}).
+ * docs/design/filtering.md measures each. Every knob has one range, checked here ({@link Quantity#LOBE_QUADRATURE}).
  *
  * @param pairThreshold  with the window fixed at the DFT's origin, texel pairs m != m' are summed while their window
  *                       weight exp(-|m - m'|^2_sigma / 4) is at least this (relative to the product of their
@@ -34,7 +34,7 @@ import java.util.Map;
  * @param cutoff         a lobe is skipped, before its weight is read, when it can add at most this much to a pixel's
  *                       tristimulus values (D65 white = 1, before the gain factor): its weight table's bound over the
  *                       lobe's phases times the spectral weights' bound over its wavelengths times a bound on its
- *                       footprint average summed over its nodes (docs/filtering.md, "The march and the cutoff");
+ *                       footprint average summed over its nodes (docs/design/filtering.md, "The march and the cutoff");
  *                       in [0, 1e-2], 0 keeps every lobe; a quadrature {@link #shownAt shown} at an exposure holds
  *                       the cutoff scaled to it
  * @param weightTolerance the interpolation error of the tabulated lobe weights W_m(k w) ({@link LobeWeightTable}),
@@ -80,7 +80,7 @@ public record LobeQuadrature(double pairThreshold, double nodesPerSigma, double 
     }
 
     /**
-     * The exposure at which the default cutoff is a third of a display step (docs/bench/cutoff.md): shown brighter, a
+     * The exposure at which the default cutoff is a third of a display step (docs/measurements/bench/cutoff.md): shown brighter, a
      * skipped lobe is that much brighter on the display.
      */
     public static final double CUTOFF_EXPOSURE = 30;

@@ -19,7 +19,7 @@ import diffract.optics.windows.CoherenceWindow;
 
 /**
  * The lobes method: the windowed spectrum's Gaussian lobes ({@link GaussianLobes}), each widened by the pixel's
- * footprint and the light and integrated over wavelength by a rule fitted to the lobe (docs/filtering.md, section
+ * footprint and the light and integrated over wavelength by a rule fitted to the lobe (docs/design/filtering.md, section
  * 4). The CPU mirror of {@code shaders/diffraction/lobes.frag}, step for step, in double.
  *
  * <p>Per fragment, with (u, v, w) at the footprint's centre:
@@ -553,7 +553,7 @@ public final class LobeSpectrum {
      * How many times as many texels the order of their bounds must test before rows are taken instead: a row's texel
      * goes through the whole test, while the order rejects a texel outside the segment's reach by its wavelength
      * interval alone. 2 keeps the 52 um scan within 10 % of the order alone and halves a thin segment's time
-     * (docs/filtering.md).
+     * (docs/design/filtering.md).
      */
     public static final int ROWS_FACTOR = 2;
 

@@ -4,10 +4,10 @@ import diffract.optics.lobes.LobeWeightTable;
 import diffract.optics.windows.CoherenceWindow;
 
 /**
- * The lobes method's texel sums, for scans wider than about two thirds of the coherence length (docs/filtering.md,
- * section 6; docs/scans.md). There a pixel reaches hundreds of lobes, each closer to the next than its own width, and
+ * The lobes method's texel sums, for scans wider than about two thirds of the coherence length (docs/design/filtering.md,
+ * section 6; docs/measurements/scans.md). There a pixel reaches hundreds of lobes, each closer to the next than its own width, and
  * marching over them one by one costs more than the thesis' FLSS; instead the averaged window's |P|^2 =
- * sum_m W_m(a) exp(-|s - m|^2 / sigma_f^2) (docs/theory.md, the window averaged over its position) is integrated over
+ * sum_m W_m(a) exp(-|s - m|^2 / sigma_f^2) (docs/design/theory.md, the window averaged over its position) is integrated over
  * the footprint's box in s = (u L_x, v L_y) / lambda with each lobe's mass spread over its texel's cell
  * [m - 1/2, m + 1/2]^2, so that a box's integral is four corners of a summed-area table.
  *

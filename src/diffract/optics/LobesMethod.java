@@ -21,7 +21,7 @@ import java.util.Set;
 
 /**
  * The windowed spectrum's Gaussian lobes, each widened by the pixel's footprint and the light and integrated over
- * wavelength by a rule fitted to its passage ({@link LobeSpectrum}, {@code lobes.frag}; docs/filtering.md): valid at
+ * wavelength by a rule fitted to its passage ({@link LobeSpectrum}, {@code lobes.frag}; docs/design/filtering.md): valid at
  * the true coherence length.
  *
  * <table>

@@ -21,7 +21,7 @@ import java.util.stream.IntStream;
 /**
  * The rigorous orders for the fast path: per order of a patch's ridge, the ratio of its efficiency from Maxwell's
  * equations to the scalar model's, tabulated over the wavelength and the light's direction, by which the lobes method
- * multiplies each lobe's weight W_m (docs/rigorous.md, "The rigorous orders on the fast path"). On a 1-D patch the
+ * multiplies each lobe's weight W_m (docs/design/rigorous.md, "The rigorous orders on the fast path"). On a 1-D patch the
  * corrected lobe carries the rigorous order exactly at the table's nodes; on a 2-D snake patch each texel takes the
  * ratio of the ridge order it belongs to, measured on the patch's average ridge.
  *
@@ -269,7 +269,7 @@ public final class OrderCorrection {
 
     /**
      * |T_m(a)|^2 of the ridge's samples: the DFT coefficient of exp(i a h) at the frequency of order m, which is
-     * texel -m (docs/theory.md's sign: exp(i a h) = sum_c T_c exp(-2 pi i c x / L)), as the patch's own texels are.
+     * texel -m (docs/design/theory.md's sign: exp(i a h) = sum_c T_c exp(-2 pi i c x / L)), as the patch's own texels are.
      */
     static double coefficientPower(double[] samples, double a, int m) {
         int n = samples.length;

@@ -21,7 +21,7 @@ import java.util.Set;
  * polarisations, the material's complex index), and drawn into maps exactly as the reference draws its orders
  * (coherence window averaged over its position, pixel box, light, wavelength integral; {@link RigorousOrders}). The
  * yardstick beside the reference where Stam's scalar model is in doubt: deep reliefs and periods near the
- * wavelength (docs/rigorous.md). A 2-D patch is one crossed cell ({@link diffract.optics.rigorous.CellSolver}).
+ * wavelength (docs/design/rigorous.md). A 2-D patch is one crossed cell ({@link diffract.optics.rigorous.CellSolver}).
  * CPU only.
  *
  * <table>

@@ -28,7 +28,7 @@ import java.util.stream.IntStream;
  * </pre>
  * integrated over the pixel, the light and the wavelengths as the reference integrates its lobes
  * ({@link FilteredReference}). Each order's lobe has unit integral over the projected solid angle divided by
- * pi (lambda sigma_f)^2, so the lobe carries eta_m of the light (docs/rigorous.md; the design note's
+ * pi (lambda sigma_f)^2, so the lobe carries eta_m of the light (docs/design/rigorous.md; the design note's
  * f = sum eta_pq K_lambda); cos theta_i / R_0 puts it on the relative BRDF's scale, where a flat mirror at normal
  * incidence (eta_0 = R_0) peaks at 1. The scalar model's lobes carry C S |T_m|^2 in its place.
  *

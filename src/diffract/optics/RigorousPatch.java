@@ -18,7 +18,7 @@ import java.util.Optional;
  *
  * <p>The orders map onto the texels of the scalar model: order m of a period along x leaves at
  * omega_r.x = -omega_i.x + m lambda / period (the grating equation), where texel c's lobe sits at
- * -omega_i.x - lambda c / L (docs/theory.md): texel c = -m P. A 2-D cell's order (p, q) leaves at
+ * -omega_i.x - lambda c / L (docs/design/theory.md): texel c = -m P. A 2-D cell's order (p, q) leaves at
  * (-omega_i.x + p lambda / L_x, -omega_i.y + q lambda / L_y): texel (-p, -q).
  */
 public final class RigorousPatch {

@@ -5,7 +5,7 @@ import diffract.optics.BrdfSettings;
 import diffract.optics.illumination.DiscFootprint;
 
 /**
- * The baked table of the lobes method under a disc light ({@code baked_disc.glsl}, docs/filtering.md section 8): the
+ * The baked table of the lobes method under a disc light ({@code baked_disc.glsl}, docs/measurements/filtering.md section 8): the
  * table holds the point light's cell averages, and a lookup integrates the disc itself, per pixel, over the running
  * sums of the table's rows along u ({@link #rowSums}). So one table serves every disc size and direction, and the
  * oblique light's ellipse, its density 1 / (Omega d_z), the gain factor, the shadowing and w follow the disc's
@@ -22,7 +22,7 @@ import diffract.optics.illumination.DiscFootprint;
  * narrower than {@link #BOX_BELOW} footprint spreads: there the rows are averaged over the map pixel's box, by the
  * midpoint rule on nodes at most {@link #BOX_NODE_TEXELS} samples apart along u and v, read at level 0 where the
  * running sums plus half a sample of the table give the integral up to a cell's edge, exact between the edges
- * (docs/filtering.md, section 8).
+ * (docs/design/filtering.md, section 8).
  *
  * <table>
  *   <caption>Its defines (DiffractionShaders) and uniforms (DiffractionMaterials)</caption>
@@ -51,7 +51,7 @@ public final class BakedDisc {
      * coarser, so that it takes at most this many rows (and at least half as many): the midpoint rule across v sums
      * a level's linear interpolant exactly where the rows are its texels apart, and the level's blur of 2^L samples
      * is small next to the disc. At 513 samples a 20-degree disc takes 20 to 23 rows instead of 39 to 45: 1.7 to 2.3
-     * times faster on llvmpipe, 0.04 to 0.13 further from the CPU lobes method (docs/filtering.md, section 8).
+     * times faster on llvmpipe, 0.04 to 0.13 further from the CPU lobes method (docs/design/filtering.md, section 8).
      */
     public static final int FINE_ROWS_MAX = 24;
     /** The most pieces a row is cut into. */
@@ -67,14 +67,14 @@ public final class BakedDisc {
      * In a BRDF map, above this b / s the disc is cut into rows; between, the two are blended. Lower than the lobes
      * method's ({@code DiscFootprint}), whose Gaussian takes a map pixel's box exactly: the table's Gaussian of the
      * disc and the box together spreads a disc as wide as a pixel over its neighbours, where the rows keep its edge
-     * (docs/bench/disc-lobes.md).
+     * (docs/measurements/bench/disc-lobes.md).
      */
     public static final double EDGE_ABOVE = 1.5;
     /**
      * Below this b / s a BRDF map's rows average the pixel's box over nodes instead of reading it as a Gaussian: a
      * disc this narrow is under about three pixels across, its edge runs through the pixels beside each order, and
      * there the box's Gaussian and the box part most (the Gaussian reads a grating's specular order on the corner of
-     * four pixels 12 % dim, and misplaces a 4-degree disc's edge in a 64 px map: docs/filtering.md, section 8).
+     * four pixels 12 % dim, and misplaces a 4-degree disc's edge in a 64 px map: docs/design/filtering.md, section 8).
      * Above it the box is a small part of the disc, and its nodes would multiply the cost of every row.
      */
     public static final double BOX_BELOW = 5;
@@ -83,7 +83,7 @@ public final class BakedDisc {
     /**
      * The box's nodes are at most this many table samples apart along each axis, and at least 2 (a 64 px map's pixel
      * is 4 samples of a 513 table wide: 2 x 2 nodes). Nodes 1 sample apart measured no better on the bench patches and
-     * cost 4 times the lookups (docs/filtering.md, section 8).
+     * cost 4 times the lookups (docs/design/filtering.md, section 8).
      */
     public static final double BOX_NODE_TEXELS = 2;
 
@@ -95,7 +95,7 @@ public final class BakedDisc {
      * pixel footprint is a Gaussian, which the lobes method takes too: there the table blends as {@code DiscFootprint}
      * does, from 1 to 3, and draws the viewer's sphere under the sun at 800 x 600 closer to the lobes method
      * (CIEDE2000 0.26 against 0.41 blended from 0.5 to 1.5) in about 100 ms a frame instead of 166 on llvmpipe
-     * (docs/filtering.md, section 8).
+     * (docs/design/filtering.md, section 8).
      */
     public static double gaussianBelow(boolean mapPixel) {
         return mapPixel ? GAUSSIAN_BELOW : DiscFootprint.GAUSSIAN_BELOW;

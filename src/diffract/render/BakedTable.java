@@ -26,7 +26,7 @@ import java.util.Locale;
  * float32) and looked up trilinearly per fragment. The host keeps the float32 values (to upload into any GL
  * context); the GPU holds them as RGB16F by default: half precision rounds to 2^-11 relative (BakedVariantTest
  * holds the specular sample to 1e-3 of the CPU's FLSS), far below what the trilinear interpolation of narrow orders
- * costs (docs/baked.md).
+ * costs (docs/measurements/baked.md).
  */
 public final class BakedTable {
     /** The GPU format of the table. */
@@ -78,7 +78,7 @@ public final class BakedTable {
      * (the lobes method) holds each sample averaged over its cell of the table (a box of 4 / (n - 1) in u and v) and
      * over the settings' Gaussian light (isotropic, sigma_a; the table does not know omega_i; a disc is left to the
      * lookup, which integrates it: the table holds the point light, {@link BakedDisc#heldBy}), and is mip-mapped for
-     * lookups that average over a pixel's footprint (docs/filtering.md, section 8).
+     * lookups that average over a pixel's footprint (docs/design/filtering.md, section 8).
      */
     public static BakedTable bake(TaylorTerms terms, BrdfSettings settings, Variant tabulated,
                                   FloatTexture3D.Precision precision, Reporter reporter) {

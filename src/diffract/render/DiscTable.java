@@ -33,7 +33,7 @@ import java.util.stream.IntStream;
  * <p>What it leaves out against the per-pixel rows: the density 1 / (Omega d_z), the gain factor and w vary across the
  * disc and are taken at its centre, and an ellipse narrower than its member's round disc along r is the Gaussian's
  * approximation. The GPU suite measures the staged scenes against the lobes method's still under the same disc
- * (docs/viewer.md).
+ * (docs/design/viewer.md).
  *
  * <p>Layout: side x side RGB samples over the table's (u, v) range (samples at both ends, as {@link BakedGrid}),
  * member k's w slices at layers k wSamples .. (k + 1) wSamples - 1, the table's own w samples; mip-mapped per layer.

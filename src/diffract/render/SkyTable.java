@@ -21,7 +21,7 @@ import java.util.stream.IntStream;
  * staged scenes' surfaces face: variance sigma_a^2 (1 + cos^2 theta) / 2 per axis, the mean of the true covariance's
  * two axes. The table's own light (sigma_a of the settings, isotropic), the pooling of table cells and the lookup's
  * bilinear tent are taken off that variance. What this costs against the footprint lookup of the lobes method's
- * still is measured by the GPU suite (docs/viewer.md).
+ * still is measured by the GPU suite (docs/design/viewer.md).
  *
  * <p>Layout: a 2-D array of side x side RGB samples per layer, light k's w slices at layers k wSamples ..
  * (k + 1) wSamples - 1, each over the table's (u, v) range at side samples per axis; the w slices are W_OVERSAMPLING

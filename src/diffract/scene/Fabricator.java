@@ -24,7 +24,7 @@ public final class Fabricator {
 
     /**
      * Where the patch lies outside the region where the scalar model is within a visible difference of Maxwell's
-     * equations (docs/validity.md), one line says how far, and what solves it rigorously, at the light's polar angle.
+     * equations (docs/measurements/validity.md), one line says how far, and what solves it rigorously, at the light's polar angle.
      */
     private static void warnWhereTheScalarModelFails(MaterialManager material, Scene scene, Reporter reporter) {
         double[] d = scene.light().towardsLight();
@@ -37,7 +37,7 @@ public final class Fabricator {
                 material.settings().illumination().gain());
         if (e.visible()) {
             String fix = material.settings().variant().takesRigorousOrders() ? "; \"orders\": \"rigorous\" in the "
-                    + "material takes the lobes' orders from Maxwell's equations (docs/rigorous.md)" : "";
+                    + "material takes the lobes' orders from Maxwell's equations (docs/design/rigorous.md)" : "";
             reporter.warn(e.describe() + ": the rigorous method (diffract orders, diffract brdfmap with the variant "
                     + "rigorous) solves 1-D patches such as the snake patches' ridges alone, elaphe-ridge and "
                     + "xenopeltis-ridge, and 2-D cells of about a micrometre" + fix);

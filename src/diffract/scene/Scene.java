@@ -11,7 +11,7 @@ import java.nio.file.Path;
 
 /**
  * A scene file, parsed and checked (every range, every file): what {@link Fabricator} turns into a viewer setup.
- * The schema is {@code docs/scene-format.md}; {@link SceneFile} reads it.
+ * The schema is {@code docs/guide/scene-format.md}; {@link SceneFile} reads it.
  *
  * @param source the file it was read from (messages name it)
  */

@@ -47,7 +47,7 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Reads a scene file ({@code docs/scene-format.md}) into a checked {@link Scene}. Every problem is one
+ * Reads a scene file ({@code docs/guide/scene-format.md}) into a checked {@link Scene}. Every problem is one
  * {@link UserInputException} line {@code FILE:LINE: key.path: what is wrong (and the fix)}: malformed JSON,
  * unknown keys (with the nearest known key), missing keys, wrong types, values out of range, files that do not
  * exist (paths are relative to the scene file's folder). Nothing else escapes, whatever the text.

@@ -24,7 +24,7 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * Writes a {@link Scene} as the scene file {@link SceneFile} reads ({@code docs/scene-format.md}): every key spelled
+ * Writes a {@link Scene} as the scene file {@link SceneFile} reads ({@code docs/guide/scene-format.md}): every key spelled
  * out, defaults included, so that the file says all that the picture depends on; paths absolute, so that it reads
  * the same from any folder. Reading it back gives the same scene, and writing that again the same text.
  */

@@ -10,7 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * Reads the scene keys of the stage and the scales ({@code docs/scene-format.md}): "environment", "ground",
+ * Reads the scene keys of the stage and the scales ({@code docs/guide/scene-format.md}): "environment", "ground",
  * "toneMapping" at the top level; "pose" and "scales" of a snake shape.
  */
 final class StageKeys {

@@ -7,7 +7,7 @@ import diffract.geometry.SnakeSpecies;
 import java.nio.file.Path;
 
 /**
- * The scene's staging keys, parsed ({@link StageKeys}; schema in {@code docs/scene-format.md}): environment light,
+ * The scene's staging keys, parsed ({@link StageKeys}; schema in {@code docs/guide/scene-format.md}): environment light,
  * ground and shadow, tone mapping. Absent keys stage nothing.
  *
  * @param environment the environment, or null

@@ -144,7 +144,7 @@ public final class KeyBindings {
         return line.toString();
     }
 
-    /** The table of docs/viewer.md. */
+    /** The table of docs/guide/viewer.md. */
     public static String markdownTable() {
         StringBuilder table = new StringBuilder("| input | action |\n|---|---|\n");
         for (Binding binding : ALL) {

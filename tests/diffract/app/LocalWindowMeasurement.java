@@ -19,8 +19,8 @@ import java.util.List;
 import java.util.Locale;
 
 /**
- * The measurements of docs/scans.md, "Close-ups: the window under each surface point" (not a test: it asserts
- * nothing and runs only with {@code -Ddiffract.measure=glints}; {@code bash docs/local-window.sh} runs it). The scene
+ * The measurements of docs/measurements/scans.md, "Close-ups: the window under each surface point" (not a test: it asserts
+ * nothing and runs only with {@code -Ddiffract.measure=glints}; {@code bash docs/measurements/local-window.sh} runs it). The scene
  * of {@link LocalWindowSceneTest} (the 52 um scan on a plane between the mirror and the first order, FLSS, the
  * automatic window radius): the viewer's GPU time per frame (GL timer queries, median of 10 frames after a warm-up)
  * of the close-up under the local window against the same view under the averaged window, in alternating rounds so
@@ -63,7 +63,7 @@ class LocalWindowMeasurement {
         List<String> lines = new ArrayList<>();
         lines.add("# The local window's cost");
         lines.add("");
-        lines.add("Written by `bash docs/local-window.sh` (`tests/diffract/app/LocalWindowMeasurement.java`) on " + gl
+        lines.add("Written by `bash docs/measurements/local-window.sh` (`tests/diffract/app/LocalWindowMeasurement.java`) on " + gl
                 + ": the close-up scene of `LocalWindowSceneTest` (the 52 um `elaphe-scan` on a plane, FLSS, N = 30,"
                 + " 5 nm, 65 um, window radius auto), GPU ms per " + TIMED_PX + " x " + TIMED_PX + " frame (median of"
                 + " 10 frames), " + ROUNDS + " alternating rounds.");

@@ -25,7 +25,7 @@ import java.util.stream.Stream;
  * (a {@link UserInputException} whose message is a single line); any other exception, an error (a stack overflow,
  * an exhausted heap) or a multi-line message is a failure. Jazzer's JUnit integration replays the committed corpus,
  * {@code tests/fuzz/diffract/app/ParsersFuzzTestInputs/METHOD/}, under the README's test command (regression mode);
- * {@code JAZZER_FUZZ=1} fuzzes (docs/fuzzing.md has the long run's command and what it found).
+ * {@code JAZZER_FUZZ=1} fuzzes (docs/measurements/fuzzing.md has the long run's command and what it found).
  *
  * <p>Targets: every height-field reader (the last byte of an input picks the file's extension, so that both
  * recognition by content and the extension's fallback are fuzzed), scene files, OBJ meshes, folders of Taylor terms

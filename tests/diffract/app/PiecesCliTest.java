@@ -1,6 +1,7 @@
 package diffract.app;
 
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -153,6 +154,7 @@ class PiecesCliTest {
 
     /** Worker processes (the test run's class path) compute the pieces; the outputs are the whole map's. */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a whole map by two worker processes: a long test
     void submitWithTwoLocalWorkersWritesTheWholeMapsFiles() throws Exception {
         Path png = dir.resolve("submitted.png");
         Path pfm = dir.resolve("submitted.pfm");

@@ -13,7 +13,7 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
- * The one-line warning where the scalar model is visibly off Maxwell's equations (docs/validity.md), on both sides of
+ * The one-line warning where the scalar model is visibly off Maxwell's equations (docs/measurements/validity.md), on both sides of
  * the boundary, from brdfmap and from a scene: the Elaphe-like ridge at 30 degrees is warned of with the expected error
  * and the rigorous commands; a shallow 2.5 um sinusoid near the normal is not; the lobes with the rigorous orders are
  * not warned of.

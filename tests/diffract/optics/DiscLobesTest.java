@@ -50,6 +50,7 @@ class DiscLobesTest {
     }
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole maps under discs: a long test
     void lobesFollowTheDiscWhereTheGaussianProfileDoesNot() {
         HeightField patch = DiscLightTest.grating();
         TaylorTerms terms = TaylorTermComputer.compute(patch, 30, Reporter.SILENT);
@@ -83,7 +84,7 @@ class DiscLobesTest {
     }
 
     /**
-     * The table of docs/filtering.md ("The lobes method under a disc"), measured on request by docs/disc-lobes.sh
+     * The table of docs/measurements/filtering.md ("The lobes method under a disc"), measured on request by docs/measurements/disc-lobes.sh
      * ({@code -Ddiffract.measure=disc-maps}: about 15 minutes on two cores): 64 x 64 maps at 0.53 (the sun), 2, 10
      * and 20 degrees.
      */

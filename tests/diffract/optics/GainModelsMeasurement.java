@@ -20,7 +20,7 @@ import java.util.Locale;
 
 /**
  * The cheap corrections of the scalar model's gain against Maxwell's equations, a measurement run on request
- * (docs/rigorous.sh, {@code -Ddiffract.measure=rigorous}): for keratin gratings of the validity map's shapes and the
+ * (docs/measurements/rigorous.sh, {@code -Ddiffract.measure=rigorous}): for keratin gratings of the validity map's shapes and the
  * snakes' ridges, lit at 0, 30 and 60 degrees, at 450, 550 and 650 nm, each order that carries at least 5 % of the
  * diffracted power, the scalar efficiency R_0 C |T_m|^2 / cos theta_i with each candidate factor C against the
  * rigorous efficiency; the worst and the median relative error per relief. The candidates: Stam's factor with

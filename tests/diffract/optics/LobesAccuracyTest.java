@@ -18,7 +18,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 /**
  * The lobes method against the filtered reference on BRDF maps at the thesis' 65 um coherence, theta_i = 30
  * degrees, CIEDE2000 over the lit pixels at the reference's auto exposure: the target is a mean of at most
- * 1 (docs/filtering.md measures every bench patch), the bounds here are near what is measured: the blazed grating and the Elaphe-like patch, 64 x 64, with a
+ * 1 (docs/measurements/filtering.md measures every bench patch), the bounds here are near what is measured: the blazed grating and the Elaphe-like patch, 64 x 64, with a
  * point light and a 2-degree light. Only the four rows (columns) around the line of orders are computed: every lit
  * pixel lies there, and the rest of the map is black in both.
  */

@@ -12,6 +12,7 @@ import diffract.optics.settings.Quantity;
 import diffract.optics.validity.OrderComparison;
 import diffract.util.DiskCache;
 import diffract.util.Reporter;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -259,6 +260,7 @@ class RigorousMethodTest {
     }
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a whole order table: a long test
     void theOrdersAreKeptInTheDiskCache(@TempDir Path dir) {
         DiskCache cache = DiskCache.at(dir);
         Direction wi = Direction.fromSphericalDeg(20, 0);

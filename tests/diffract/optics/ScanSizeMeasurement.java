@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 import java.util.Locale;
 
 /**
- * The measurements of docs/scans.md, "How wide a scan must be" (not a test: it asserts nothing and runs only with
+ * The measurements of docs/measurements/scans.md, "How wide a scan must be" (not a test: it asserts nothing and runs only with
  * {@code -Ddiffract.measure=scans}). How well does a scan of width L estimate the BRDF of the skin it was cut from,
  * at the thesis' 65 um coherence, with the window averaged over its position, fixed at the DFT's origin, and averaged
  * over a Tukey-tapered scan (the apodisation against the leakage of the scan's non-matching edges)?

@@ -28,7 +28,7 @@ import java.util.Locale;
 import java.util.Map;
 
 /**
- * The fast path against Maxwell's equations on the snakes' ridges, a measurement run on request (docs/rigorous.sh,
+ * The fast path against Maxwell's equations on the snakes' ridges, a measurement run on request (docs/measurements/rigorous.sh,
  * {@code -Ddiffract.measure=rigorous}): 64 x 64 maps under the sun's disc (0.53 degrees, pixel boxes, 380-780 nm) of
  * the Elaphe-like and Xenopeltis-like ridges and of the blazed grating (where the scalar model holds), the light at 0
  * and 30 degrees in the plane of the period, at the default resolution. Each of the lobes method's maps (Rayleigh-Rice's

@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 
 /**
- * What the baked table loses under a disc light, a measurement run on request (docs/disc-lobes.sh,
+ * What the baked table loses under a disc light, a measurement run on request (docs/measurements/disc-lobes.sh,
  * {@code -Ddiffract.measure=baked-disc}): the table (of the point light, the disc integrated by the lookup,
  * {@link BakedDisc}) against the CPU lobes method under the same disc, 64 x 64 maps of the Elaphe-like patch, the
  * 10 um blazed grating and the Elaphe-like skin at AFM size (elaphe-scan) at 0.53, 2, 4, 10 and 20 degrees,

@@ -20,10 +20,10 @@ import org.junit.jupiter.api.Test;
 import java.util.Locale;
 
 /**
- * The measurements of docs/baked.md (not a test: it asserts nothing and runs only with
+ * The measurements of docs/measurements/baked.md (not a test: it asserts nothing and runs only with
  * {@code -Ddiffract.measure=baked}): memory, bake time, CIEDE2000 against the CPU reference map (theta_i 0, 45,
  * 75) and GPU ms/frame of the baked table against FLSS in the thesis' configuration (30 terms, 5 nm, 3 x 3) on
- * the same run, for the blazed grating and the Elaphe-like patch of docs/gpu-figures.sh, at the thesis'
+ * the same run, for the blazed grating and the Elaphe-like patch of docs/measurements/gpu-figures.sh, at the thesis'
  * coherence length (65 um) and at 10 um. Prints markdown rows.
  *
  * <pre>xvfb-run -a mvn -q test -Dtest=BakedTradeMeasurement -Ddiffract.measure=baked</pre>

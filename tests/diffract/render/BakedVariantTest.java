@@ -126,6 +126,7 @@ class BakedVariantTest {
     static final double MAX_LIT_MEAN = 7.5;
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // bakes and draws maps of several methods: a long test
     void bakedMapsAgreeWithFlssAndTheReference() {
         GlTestSupport.assumeOffscreenGl();
         Worst worst = compareMaps(baked(), true, RenderTestSupport.BLAZED, RenderTestSupport.ELAPHE_LIKE);

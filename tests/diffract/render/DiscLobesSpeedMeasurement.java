@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Test;
 import java.util.Arrays;
 
 /**
- * What a disc light costs the lobes shader, a measurement run on request (docs/disc-lobes.sh,
+ * What a disc light costs the lobes shader, a measurement run on request (docs/measurements/disc-lobes.sh,
  * {@code -Ddiffract.measure=disc-speed}): GL time per 64 x 64 map at the thesis' 65 um coherence, theta_i = 30
  * degrees, of the lobes method under a disc and under the Gaussian profile of the same diameter and of the baked
  * table under the disc (what the commands take at 65 um: 513 samples along u and v, the automatic w grid, 25 on the

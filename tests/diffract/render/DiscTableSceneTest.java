@@ -29,10 +29,11 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * ({@link DiscTable}) against the same table integrated over the disc per pixel, row by row ({@code baked_disc.glsl}),
  * at 320 x 200 with the sky taken out, so that the comparison sees the key light alone: mean CIEDE2000 over the frame
  * at most 0.5 (measured 0.27, p95 1.7; at 800 x 600 with the sky, against the lobes method's picture, the GPU suite
- * measures 0.76 where the rows measure 0.54, docs/viewer.md). The comparison sees the disc: the spread table of a disc
+ * measures 0.76 where the rows measure 0.54, docs/design/viewer.md). The comparison sees the disc: the spread table of a disc
  * a third narrower differs from the rows by more than 2.5 times as much (measured 0.97).
  */
 @Tag("gl")
+@Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole staged frames: a long test
 class DiscTableSceneTest {
     static final int W = 320;
     static final int H = 200;

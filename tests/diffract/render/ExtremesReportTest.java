@@ -29,10 +29,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 /**
  * The extremes matrix, measured against the CPU reference on the CPU and on the GPU, and written as the
- * table of {@code docs/extremes.md} ({@code bash docs/extremes.sh} reruns it and copies
+ * table of {@code docs/measurements/extremes.md} ({@code bash docs/measurements/extremes.sh} reruns it and copies
  * {@code target/extremes.md} there). Every map (colour, and monochromatic at 380 and 780 nm) of every variant on
  * every engine must be finite and non-negative; FLSS on the automatic expansion must meet the reference (the other
- * variants' errors are their own, measured and reported, see docs/accuracy.md).
+ * variants' errors are their own, measured and reported, see docs/measurements/accuracy.md).
  *
  * <p>Cases: blazed gratings (period 2.5 um, 20 pixels of 0.125 um, 4 periods, 8 rows) with max|h| 0.01, 0.1, 0.5,
  * 1 and 2 um (x = 2 k max|h| up to 66 at 380 nm), a flat (constant) patch, a 1 x 1 patch, an odd non-square
@@ -51,7 +51,7 @@ class ExtremesReportTest {
      * FLSS on the automatic path against the reference. Monochromatic: max |rho - rho_ref| / max rho_ref; the
      * (2R+1)^2 = 9 texel window against the reference's full window costs up to 2e-2 here (sigma_f = 0.64
      * texels: the window's weight beyond 1.5 texels is 6 %, partly inside the stored band). Colour: mean CIEDE2000
-     * over the disk <= 1 (about one just-noticeable difference). Measured: see docs/extremes.md.
+     * over the disk <= 1 (about one just-noticeable difference). Measured: see docs/measurements/extremes.md.
      */
     private static final double FLSS_MAX_RELATIVE = 0.1;
     private static final double FLSS_MAX_MEAN_DE = 1.0;

@@ -101,7 +101,7 @@ class GpuDiscLobesTest {
      */
     static final double MAX_NEIGHBOUR_ROWS = 1e-3;
     /**
-     * Measured 0.54 (the rows read over the box's Gaussian: 2.1; the disc's Gaussian: 4.4), docs/filtering.md
+     * Measured 0.54 (the rows read over the box's Gaussian: 2.1; the disc's Gaussian: 4.4), docs/design/filtering.md
      * section 8.
      */
     static final double MAX_PIXEL_WIDE_DISC_LIT_MEAN = 1.0;
@@ -158,7 +158,7 @@ class GpuDiscLobesTest {
     }
 
     /**
-     * Measured 0.82 lit mean, p95 2.9 (docs/bench/disc-lobes.md); the rows read over the box's Gaussian instead, as
+     * Measured 0.82 lit mean, p95 2.9 (docs/measurements/bench/disc-lobes.md); the rows read over the box's Gaussian instead, as
      * above BakedDisc.BOX_BELOW: 2.8, p95 10.
      */
     static final double MAX_TWO_PIXEL_DISC_LIT_MEAN = 1.2;
@@ -190,7 +190,7 @@ class GpuDiscLobesTest {
 
     /**
      * Measured 0.94 lit mean, p95 2.5 with the rows read two samples apart at level 1, 0.90 / 2.5 a sample apart at
-     * level 0 (docs/bench/disc-lobes.md).
+     * level 0 (docs/measurements/bench/disc-lobes.md).
      */
     static final double MAX_WIDE_DISC_LIT_MEAN = 1.2;
     static final double MAX_WIDE_DISC_LIT_P95 = 3.5;

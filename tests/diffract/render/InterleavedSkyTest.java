@@ -26,7 +26,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * of the same demo scene, where every pixel reads every sky light over its footprint, for 1, 2 and 8 sky lights, at
  * 96 x 60: mean CIEDE2000 over the frame at most 1.5 (measured 1.06 to 1.18; with the sky read as the lobes method
  * reads it, the key light's glints alone differ by 0.93 at this size, where a pixel spans 8 of the 800 x 600 view's,
- * whose whole difference is 0.5, docs/viewer.md). The comparison sees the sky: against a sky twice as bright in the
+ * whose whole difference is 0.5, docs/design/viewer.md). The comparison sees the sky: against a sky twice as bright in the
  * lobes method's picture the mean is 4.2. The key light is the scene's under the Gaussian profile, which both read
  * alike, so that the comparison sees the sky.
  */
@@ -36,6 +36,7 @@ class InterleavedSkyTest {
     Path dir;
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole staged frames for each number of lights: a long test
     void theBakedSkyStaysWithinOneOfTheLobesMethodsForAnyNumberOfLights() throws IOException {
         GlTestSupport.assumeOffscreenGl();
         for (int lights : new int[] {1, 2, 8}) {

@@ -39,7 +39,7 @@ class NormalisedTermsGpuTest {
                         gpu.xyz(wi, SIZE), SIZE, wi);
                 TestReport.line(NormalisedTermsGpuTest.class, "RG8 GPU vs CPU of de-normalised terms, theta_i " + thetaI + ": " + c.summary());
                 // measured on llvmpipe: mean 0.000, p99 <= 0.007 (float32 against double sums); 10x that as margin,
-                // far below the RG8 quantisation's own error against float terms (mean ~1, docs/bench.md)
+                // far below the RG8 quantisation's own error against float terms (mean ~1, docs/measurements/bench.md)
                 assertTrue(c.litPixels() >= 20, c.summary());
                 assertTrue(c.disk().mean() <= 0.01, c.summary());
                 assertTrue(c.disk().p99() <= 0.07, c.summary());

@@ -16,7 +16,7 @@ import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 
 /**
- * What the lobes method's cutoff buys on the 52 um scan, a measurement run on request (docs/scans.md,
+ * What the lobes method's cutoff buys on the 52 um scan, a measurement run on request (docs/measurements/scans.md,
  * {@code -Ddiffract.measure=scan-cutoff}): GL time per 256 x 256 map (whose pixels are marched lobe by lobe) at 65 um,
  * theta_i = 30, a point light, of the lobes method at its default cutoff (1e-6 of white) and at 3, 10 and 100 times
  * it, against FLSS in the thesis' configuration on the same context (medians of alternating rounds). No

@@ -22,6 +22,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
  * directions, the same on a flat mesh up to float rounding); a frame map that tilts changes it.
  */
 @Tag("gl")
+@Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole staged frames: a long test
 class StagedSurfaceTest {
     static final int W = 96;
     static final int H = 60;

@@ -19,8 +19,8 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 class KeyBindingsTest {
     @Test
     void theDocsShowTheTable() throws IOException {
-        String doc = Files.readString(Path.of("docs", "viewer.md"), StandardCharsets.UTF_8);
-        assertTrue(doc.contains(KeyBindings.markdownTable()), "docs/viewer.md's controls differ from KeyBindings:\n"
+        String doc = Files.readString(Path.of("docs", "guide", "viewer.md"), StandardCharsets.UTF_8);
+        assertTrue(doc.contains(KeyBindings.markdownTable()), "docs/guide/viewer.md's controls differ from KeyBindings:\n"
                 + KeyBindings.markdownTable());
     }
 

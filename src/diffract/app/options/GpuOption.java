@@ -7,7 +7,7 @@ import picocli.CommandLine.TypeConversionException;
 
 import java.util.List;
 
-/** {@code --gpu N}: which EGL device the offscreen OpenGL of a command runs on (docs/headless-gl.md). */
+/** {@code --gpu N}: which EGL device the offscreen OpenGL of a command runs on (docs/guide/headless-gl.md). */
 public final class GpuOption {
     private Integer index;
 

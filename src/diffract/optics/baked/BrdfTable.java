@@ -17,7 +17,7 @@ import java.util.stream.IntStream;
 
 /**
  * The lobes method's spectral factor of a patch, tabulated on the CPU over the baked table's grid ({@link BakedGrid}:
- * (u, v, w) = -omega_i - omega_r) in linear sRGB, for renderers outside diffract (Mitsuba 3, docs/mitsuba.md). The
+ * (u, v, w) = -omega_i - omega_r) in linear sRGB, for renderers outside diffract (Mitsuba 3, docs/guide/mitsuba.md). The
  * factor depends on the two directions only through (u, v, w), so one table serves every incident direction; the
  * gain factor and shadowing, which vary fast near the horizon, stay analytic ({@link #relative}).
  *

@@ -6,7 +6,7 @@ import diffract.optics.patches.Direction;
 import diffract.optics.settings.GainModel;
 
 /**
- * A disc light as the lobes method averages over it (docs/filtering.md, "The disc in the lobes method"): uniform
+ * A disc light as the lobes method averages over it (docs/design/filtering.md, "The disc in the lobes method"): uniform
  * radiance over the cone of half-angle R about omega_i, seen from one pixel direction omega_r.
  *
  * <p><b>Where the disc lies in (u, v).</b> The cone's directions d project onto the (x, y) plane as the inside of the

@@ -115,7 +115,7 @@ public final class GainFactor {
      * c = cos theta, s = sin theta, r = sqrt(eps - s^2), phi the azimuth of omega_r from the specular direction's,
      * eps = n^2. At the specular direction q_ss and q_pp are Fresnel's r_s and r_p, so C_RR is the mirror's exact
      * Fresnel reflectance R(theta_i) cos theta_i / R_0, as Stam's C is with Schlick's. The Fourier modal method
-     * confirms it for shallow gratings of any period and angle (docs/rigorous.md); Stam's geometric term
+     * confirms it for shallow gratings of any period and angle (docs/design/rigorous.md); Stam's geometric term
      * (1 + omega_i . omega_r)^2 / (w^2 cos theta_r) and Schlick's reflectance at the half vector miss it by 15-20 %
      * there. There is no shadowing term: a shallow relief shadows nothing, and Stam's V-cavity term made the deep
      * ones worse, not better. 0 at or below either horizon.

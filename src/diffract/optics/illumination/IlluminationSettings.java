@@ -11,7 +11,7 @@ import diffract.optics.windows.CoherenceWindow;
  * light (004, "Spatial Coherence and Windowing": 4 sigma_s, 65 um for filtered sunlight), the light's angular size
  * ({@link LightSource}: a Gaussian of sigma D / 4 per axis), what a BRDF-map pixel shows ({@link PixelFilter}), and
  * the gain factor's Fresnel term (004 eq. {@code gainfactor}: Schlick's with refractive index n, counted as
- * {@link GainModel} says). docs/filtering.md defines the light and the pixel.
+ * {@link GainModel} says). docs/design/filtering.md defines the light and the pixel.
  *
  * @param sigmaSpatialUm  sigma_s of the Gaussian coherence window; 4 sigma_s is the coherence length
  * @param refractiveIndex n of the surface (1.5 for snake skin)

@@ -23,7 +23,7 @@ import diffract.optics.settings.Quantity;
  * e e^T), r = (cos p, sin p), e = (-sin p, cos p): an ellipse cos(theta_i) times shorter in the plane of incidence.
  * The gain factor, the shadowing and w stay at the light's centre. Against the disc it differs by the disc's flat
  * top (a Gaussian of equal variance puts 13.5 % of its power outside the diameter) and by the linearisation, of
- * relative size sigma_a: docs/filtering.md measures the two apart.
+ * relative size sigma_a: docs/measurements/filtering.md measures the two apart.
  */
 public record LightSource(double angularDiameterDeg, LightProfile profile) {
     /** The sun seen from the earth: 0.53 degrees. */

@@ -17,7 +17,7 @@ import java.util.Locale;
 /**
  * Loads a nanostructure height field from a file, levels it and returns it mean-subtracted, as the thesis'
  * precompute uses it. Formats, chosen by content (PNG, BMP, TIFF, GSF, GWY and Igor signatures) and otherwise by
- * extension (docs/formats.md describes each):
+ * extension (docs/guide/formats.md describes each):
  * <ul>
  *   <li>grey images (.png, .bmp, .tif, .tiff; 8 or 16 bits, colour via luminance): grey 0..max maps linearly
  *       to 0..{@code maxHeightUm}; needs {@code maxHeightUm} and {@code pixelSizeUm};</li>

@@ -7,7 +7,7 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The windowed power spectrum as a finite sum of Gaussian lobes (docs/filtering.md, section 1). With the Gaussian
+ * The windowed power spectrum as a finite sum of Gaussian lobes (docs/design/filtering.md, section 1). With the Gaussian
  * window G(d) = exp(-sum_i d_i^2 / (2 sigma_i^2)) the product of two texels' windows is a Gaussian about their
  * midpoint c = (m + m') / 2,
  * G(s - m) G(s - m') = exp(-|m - m'|^2_sigma / 4) exp(-|s - c|^2_sigma), |d|^2_sigma = sum_i d_i^2 / sigma_i^2, so

@@ -8,7 +8,7 @@ import diffract.optics.spectra.TexelCoefficients;
 
 /**
  * Each texel's lobe weight W_m(a) = |T_m(a)|^2 tabulated over the phase factor a = k w, for the lobes method
- * (docs/filtering.md, section 6). T_m depends on the wavelength and on w only through a, and a = k w &lt;= 0 lies in
+ * (docs/design/filtering.md, section 6). T_m depends on the wavelength and on w only through a, and a = k w &lt;= 0 lies in
  * [-p_max, 0] with p_max = 2 k_max = 4 pi / lambda_min (|w| &lt;= 2); the table holds W and p-derivative at K
  * equally spaced magnitudes p = -a, and a lookup interpolates between the two neighbouring samples by the cubic
  * Hermite polynomial. One lookup replaces reading the texel's N + 1 Taylor terms and summing the series.

@@ -11,7 +11,7 @@ import diffract.optics.spectra.ExactSpectrum;
  * gain factor C and the shadowing S at each direction), or the orders' efficiencies from Maxwell's equations
  * ({@link diffract.optics.RigorousOrders}: eta_m(lambda), times cos theta_i / R_0). The lobes' places and shapes, the pixel's box, the
  * light and the wavelength integral are the drawing's, the same for both: a map of one against the other measures
- * the physics alone (docs/rigorous.md).
+ * the physics alone (docs/design/rigorous.md).
  */
 public interface LobeWeights {
     /** Whether lobes also sit on half texels (pairs of texels: the window fixed at the DFT's origin). */

@@ -5,7 +5,7 @@ import java.util.Locale;
 /**
  * How the scalar model weighs light scattered from omega_i into omega_r: the factor in front of |P|^2 (the gain factor
  * C of 004 eq. {@code cfact} and what goes with it), measured against the orders' efficiencies from Maxwell's
- * equations (docs/rigorous.md).
+ * equations (docs/design/rigorous.md).
  *
  * <ul>
  *   <li>{@link #RAYLEIGH_RICE} (the default): the factor that first-order perturbation theory gives a shallow relief,

@@ -3,7 +3,7 @@ package diffract.optics.settings;
 import java.util.Locale;
 
 /**
- * How a light of angular diameter D spreads its radiance over its directions (docs/filtering.md, "Light of angular
+ * How a light of angular diameter D spreads its radiance over its directions (docs/design/filtering.md, "Light of angular
  * diameter D").
  */
 public enum LightProfile {

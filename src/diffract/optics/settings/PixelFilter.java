@@ -2,7 +2,7 @@ package diffract.optics.settings;
 
 import java.util.Locale;
 
-/** What one BRDF-map pixel shows (docs/filtering.md). */
+/** What one BRDF-map pixel shows (docs/design/filtering.md). */
 public enum PixelFilter {
     /** The BRDF at the pixel's centre direction, the thesis' way (aliases orders narrower than a pixel). */
     POINT,

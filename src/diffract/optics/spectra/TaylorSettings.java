@@ -15,7 +15,7 @@ import diffract.optics.settings.Quantity;
 public record TaylorSettings(int highestOrder, double tolerance, TaylorExpansion expansion) {
     /**
      * The one limit on N for every command and scene. Float32 sums of tall patches' terms overflow long before it
-     * (docs/limits.md); patches that would need more use the phase-centred expansion, whose orders stay small.
+     * (docs/guide/limits.md); patches that would need more use the phase-centred expansion, whose orders stay small.
      */
     public static final int MAX_HIGHEST_ORDER = 100;
 

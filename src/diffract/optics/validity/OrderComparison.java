@@ -21,7 +21,7 @@ import java.util.List;
  * The reflected orders of a 1-D patch at one wavelength and light, from Maxwell's equations and from the scalar
  * model side by side: what a biologist asks when a colour must be explained, and what the validity map measures.
  *
- * <p>The scalar model's efficiency of the order on texel c is what its lobe carries (docs/rigorous.md): the lobe
+ * <p>The scalar model's efficiency of the order on texel c is what its lobe carries (docs/design/rigorous.md): the lobe
  * integrates to C S |T_c(k w)|^2 pi (lambda sigma_f)^2 over the projected solid angle, and a mirror's
  * R_0 / (pi (lambda sigma_f)^2 cos theta_i) turns that into a fraction of the incident power,
  * eta_c = R_0 C S |T_c(k w)|^2 / cos theta_i, with C S the settings' gain model at the order's direction and T_c the

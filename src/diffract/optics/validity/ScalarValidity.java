@@ -20,7 +20,7 @@ import java.util.TreeSet;
 
 /**
  * How far the scalar model is expected to be from Maxwell's equations on a patch: the validity map measured by
- * {@code diffract validity} (docs/validity.md), shipped as {@code assets/validity/scalar-validity.csv}, looked up at the
+ * {@code diffract validity} (docs/measurements/validity.md), shipped as {@code assets/validity/scalar-validity.csv}, looked up at the
  * patch's period and depth and the light's angle. The commands say so in one line where the expected CIEDE2000
  * exceeds {@link #VISIBLE}.
  *
@@ -44,11 +44,11 @@ public final class ScalarValidity {
 
         /**
          * "the scalar model is expected about CIEDE2000 6.3 from Maxwell's equations on this patch (period 1.14 um,
-         * 0.3 um deep, light at 30 degrees; docs/validity.md)"; "at least" where the patch lies beyond the table.
+         * 0.3 um deep, light at 30 degrees; docs/measurements/validity.md)"; "at least" where the patch lies beyond the table.
          */
         public String describe() {
             return String.format(java.util.Locale.ROOT, "the scalar model is expected %s CIEDE2000 %.2g from Maxwell's "
-                    + "equations on this patch (period %.3g um, %.2g um deep, light at %.0f degrees; docs/validity.md)",
+                    + "equations on this patch (period %.3g um, %.2g um deep, light at %.0f degrees; docs/measurements/validity.md)",
                     outsideTable ? "at least" : "about", deltaE, periodUm, depthUm, thetaDeg);
         }
     }

@@ -2,7 +2,7 @@ package diffract.optics.windows;
 
 /**
  * The coherence window under one surface point, averaged over the pixel's footprint on the skin
- * ({@link WindowPlacement#LOCAL}; docs/theory.md, "The window under each surface point"). With the scan periodic of
+ * ({@link WindowPlacement#LOCAL}; docs/design/theory.md, "The window under each surface point"). With the scan periodic of
  * extent L, a window centred at x0 gives, up to a global phase, P(s; x0) = sum_m G(s - m) T_m exp(2 pi i m . x0 / L),
  * so
  * <pre>

@@ -6,7 +6,7 @@ import diffract.optics.numerics.Covariance2;
  * What a pixel covers of the skin, as the distribution of the coherence window's centre x0 over it, seen through its
  * characteristic function: averaging a texel pair's phase exp(2 pi i (m - m') . x0 / L) over x0 = x0_c + t multiplies
  * it by E[exp(2 pi i k . t)] at the pair's spatial frequency k = (m - m') / L (cycles per um), which is what
- * {@link #pairFactor} returns ({@link LocalWindow}; docs/theory.md, "The window under each surface point").
+ * {@link #pairFactor} returns ({@link LocalWindow}; docs/design/theory.md, "The window under each surface point").
  *
  * <p>Three shapes: a point (every factor 1: the fixed window at x0), a Gaussian of covariance Sigma (factor
  * exp(-2 pi^2 k^T Sigma k), what the shaders use: a pixel's box has the covariance (J_x J_x^T + J_y J_y^T) / 12 of

@@ -6,7 +6,7 @@ import diffract.optics.settings.Quantity;
 import java.util.Locale;
 
 /**
- * Where the Gaussian coherence window sits on the patch (docs/theory.md, "The window averaged over its position").
+ * Where the Gaussian coherence window sits on the patch (docs/design/theory.md, "The window averaged over its position").
  *
  * <p>The thesis reads the DFT through one window at a fixed place, P(s) = sum_m G(s - m) T_m (004 eq.
  * {@code finalexpression}): the window centred where the DFT's phases are zero. A window centred at x0 instead

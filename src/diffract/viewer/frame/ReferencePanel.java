@@ -52,7 +52,7 @@ import java.util.function.Supplier;
  * {@code compare} counts). The reference is computed in the background with its progress and time left, and kept in
  * the disk cache ({@link DiskCache}, kind reference-maps), so a second look at the same light is at once. A light wider
  * than the sun's disc is refused with the reason: the CPU reference integrates a disc many pixels wide at every pixel
- * (hours to days, docs/headless-gl.md).
+ * (hours to days, docs/guide/headless-gl.md).
  */
 public final class ReferencePanel extends JPanel {
     /** Pixels per side of the compared maps. */

@@ -1,5 +1,6 @@
 package diffract.optics.rigorous;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;
@@ -142,6 +143,7 @@ class CellFourierModalMethodTest {
      * faintest orders of a pillar, Laurent's rule converging slowly).
      */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a sweep over mounts: a long test
     void reciprocity() {
         Cell cell = Cell.of(pillar(1.0, 1.2, 8, 8, 3, 0.3), 1, KERATIN);
         double lambda = 0.5;

@@ -1,5 +1,6 @@
 package diffract.optics.rigorous;
 
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 import java.util.List;
@@ -95,6 +96,7 @@ class FourierModalMethodTest {
      * unpolarised, 1e-4 for p, falling as M grows
      */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a sweep over mounts: a long test
     void reciprocity() {
         Grating g = Grating.of(Profile.triangle(1.3, 0.35, 0.8), 10, KERATIN);
         double lambda = 0.5;

@@ -41,7 +41,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
  * matrices lose that on wide periods with many orders, where nannos stands in.
  *
  * <p>inkstone 0.3.15 joins when {@code -Ddiffract.crosscheck.solvers=meent,nannos,inkstone} asks for it
- * (docs/rigorous-crosscheck.sh): it is reported but not held to 1 %, since it takes Laurent's rule for every field
+ * (docs/measurements/rigorous-crosscheck.sh): it is reported but not held to 1 %, since it takes Laurent's rule for every field
  * component, under which p converges slowly with the harmonics (about 1 % off at M = 30).
  *
  * <p>Skips where python3 or meent is missing ({@code .ci/install-deps --tests} installs them). The cases' table goes
