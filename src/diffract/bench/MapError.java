@@ -7,8 +7,8 @@ import java.util.List;
 
 /**
  * The error of a variant's BRDF maps against the reference maps of the same lights, pooled over the lights:
- * every map is multiplied by its light's display exposure (the reference's {@link diffract.optics.maps.AutoExposure}), then
- * CIEDE2000 (D65 white) per pixel, over the lit pixels of all maps together (exposed Y above
+ * every map is multiplied by its light's display exposure (the reference's {@link diffract.optics.maps.AutoExposure}),
+ * then CIEDE2000 (D65 white) per pixel, over the lit pixels of all maps together (exposed Y above
  * {@link BrdfMapDifference#LIT_Y} in either map: what one sees; most of a BRDF map is black in both and would
  * dilute the mean) and over the whole unit disks.
  *

@@ -17,9 +17,9 @@ import java.util.Locale;
 import java.util.Optional;
 
 /**
- * The validity map's files: the table of every case (CSV, also what {@link diffract.optics.validity.ScalarValidity} reads from
- * {@code assets/validity/}), the heat maps of CIEDE2000 per relief (one panel per light angle, periods across, depths
- * up; XChart) and the Markdown that shows them with the tables of numbers.
+ * The validity map's files: the table of every case (CSV, also what {@link diffract.optics.validity.ScalarValidity}
+ * reads from {@code assets/validity/}), the heat maps of CIEDE2000 per relief (one panel per light angle, periods
+ * across, depths up; XChart) and the Markdown that shows them with the tables of numbers.
  */
 public final class ValidityReport {
     /** The CSV's columns. */

@@ -8,11 +8,13 @@
  *       {@link diffract.jrtr.scenegraph.ShapeNode} (a {@link diffract.jrtr.scenegraph.Shape} drawn with a
  *       {@link diffract.jrtr.scenegraph.Material}), {@link diffract.jrtr.scenegraph.LightNode}; flattened by
  *       {@link diffract.jrtr.scenegraph.RenderList}.</li>
- *   <li>Viewing: {@link diffract.jrtr.scenegraph.Camera} (eye, look-at, up) and {@link diffract.jrtr.scenegraph.Frustum}.</li>
- *   <li>Shaders: {@link diffract.jrtr.scenegraph.ShaderProgram} from the classpath ({@code /shaders}) or a directory, with
- *       injected {@code #define}s, {@code #include "file.glsl"} and errors reported as {@code file.glsl:LINE}.</li>
- *   <li>Textures, uploaded once: {@link diffract.jrtr.textures.Texture2D}, {@link diffract.jrtr.textures.FloatTextureArray},
- *       {@link diffract.jrtr.textures.FloatTexture1D}.</li>
+ *   <li>Viewing: {@link diffract.jrtr.scenegraph.Camera} (eye, look-at, up) and
+ *       {@link diffract.jrtr.scenegraph.Frustum}.</li>
+ *   <li>Shaders: {@link diffract.jrtr.scenegraph.ShaderProgram} from the classpath ({@code /shaders}) or a directory,
+ *       with injected {@code #define}s, {@code #include "file.glsl"} and errors reported as
+ *       {@code file.glsl:LINE}.</li>
+ *   <li>Textures, uploaded once: {@link diffract.jrtr.textures.Texture2D},
+ *       {@link diffract.jrtr.textures.FloatTextureArray}, {@link diffract.jrtr.textures.FloatTexture1D}.</li>
  *   <li>Drawing: {@link diffract.jrtr.Renderer} (a GLEventListener) into an
  *       {@link diffract.jrtr.OffscreenTarget} (RGBA32F, read back as floats) or an
  *       {@link diffract.jrtr.contexts.OnscreenWindow}; {@link diffract.jrtr.gl.GpuTimer} measures GPU time.</li>

@@ -11,8 +11,8 @@ import java.util.List;
  *
  * @param heightUnit     always "um": diffract writes the extrema of term n in micrometres^n
  * @param source         the height field the terms came from (informative)
- * @param patchSha256    {@link diffract.optics.patches.HeightField#contentSha256()} of the mean-subtracted field, or null
- *                       when the terms were converted from a folder without it
+ * @param patchSha256    {@link diffract.optics.patches.HeightField#contentSha256()} of the mean-subtracted field, or
+ *                       null when the terms were converted from a folder without it
  * @param maxHeightUm    the user's --max-height, or null
  * @param maxAbsHeightUm max |h| after mean subtraction, exact
  * @param extrema        the exact double extrema the normalisation used (extrema.txt has them to 35 decimals only)

@@ -260,7 +260,8 @@ public final class BakedTables {
     private static Key key(TaylorTerms terms, BrdfSettings settings) {
         return new Key(terms, BakedDisc.heldBy(settings).with(b -> b.variant(Variant.BAKED)
                 .termFormat(TermFormat.RG32F).gain(GainModel.STAM)
-                .rigorous(settings.rigorous().withOrders(diffract.optics.settings.OrderWeights.SCALAR))), tabulated(terms, settings));
+                .rigorous(settings.rigorous().withOrders(diffract.optics.settings.OrderWeights.SCALAR))),
+                tabulated(terms, settings));
     }
 
     /**

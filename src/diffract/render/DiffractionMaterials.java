@@ -27,9 +27,9 @@ public final class DiffractionMaterials {
     }
 
     /**
-     * A BRDF-map material (draw it on {@link diffract.jrtr.scenegraph.Shapes#fullScreenQuad()}); set {@code omegaI} (and the
-     * lobes method's light) with {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm} when
-     * monochromatic.
+     * A BRDF-map material (draw it on {@link diffract.jrtr.scenegraph.Shapes#fullScreenQuad()}); set {@code omegaI}
+     * (and the lobes method's light) with {@link #setLight} and {@code mapSizePx} before drawing, and {@code lambdaNm}
+     * when monochromatic.
      */
     public static Material brdfMap(DiffractionTextures textures, BrdfSettings settings, boolean monochromatic) {
         Material m = new Material(DiffractionShaders.program(settings, textures, DiffractionShaders.Target.BRDF_MAP,

@@ -83,10 +83,11 @@ public final class GpuBrdfMap implements AutoCloseable {
 
     /**
      * The local window's centre on the scan (um) and its footprint's covariance (um^2) for the maps that follow
-     * ({@link diffract.optics.windows.WindowPlacement#LOCAL}: a map has no surface point; until placed, the window sits at
-     * the scan's origin with no footprint); nothing for other placements.
+     * ({@link diffract.optics.windows.WindowPlacement#LOCAL}: a map has no surface point; until placed, the window sits
+     * at the scan's origin with no footprint); nothing for other placements.
      */
-    public GpuBrdfMap placeWindow(double centreXUm, double centreYUm, diffract.optics.numerics.Covariance2 footprintUm2) {
+    public GpuBrdfMap placeWindow(double centreXUm, double centreYUm,
+            diffract.optics.numerics.Covariance2 footprintUm2) {
         DiffractionMaterials.placeMapWindow(xyzMaterial, settings, centreXUm, centreYUm, footprintUm2);
         return this;
     }

@@ -180,7 +180,8 @@ public final class LobeTextures {
                 rgb[3 * i] = ratio[i];
             }
             orderRatios = new diffract.jrtr.textures.FloatTexture3D(orders.nodes(), orders.alphas(),
-                    (2 * orders.maxOrder() + 1) * orders.betas(), rgb, diffract.jrtr.textures.FloatTexture3D.Precision.FLOAT32);
+                    (2 * orders.maxOrder() + 1) * orders.betas(), rgb,
+                    diffract.jrtr.textures.FloatTexture3D.Precision.FLOAT32);
         }
         return orderRatios;
     }

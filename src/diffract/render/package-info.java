@@ -7,7 +7,8 @@
  *       uses and its compile-time {@code #define}s.</li>
  *   <li>{@link diffract.render.DiffractionTextures}: the Taylor terms as an RG32F (or RG16F) texture array and
  *       the spectral lookup tables, uploaded once.</li>
- *   <li>{@link diffract.render.DiffractionMaterials}: {@link diffract.jrtr.scenegraph.Material}s for BRDF maps and meshes.</li>
+ *   <li>{@link diffract.render.DiffractionMaterials}: {@link diffract.jrtr.scenegraph.Material}s for BRDF maps and
+ *       meshes.</li>
  *   <li>{@link diffract.render.GpuBrdfMap}: a BRDF map rendered offscreen with the pixel convention of
  *       {@link diffract.optics.BrdfMap}, returned as float XYZ (or the monochromatic relative BRDF) for the same
  *       colour pipeline as the CPU's maps, and its GPU time per frame.</li>

@@ -274,7 +274,8 @@ class BakedVariantTest {
         DiffractionTextures textures = DiffractionTextures.of(terms, baked());
         float exposure = 0.5f;
         float[] rgba = GpuFinitenessTest.render(DiffractionMaterials.surface(textures, baked(), exposure, null, 0),
-                new javax.vecmath.Vector3f(0, 0, 1), diffract.jrtr.scenegraph.Shapes.rectangle("square", -1, -1, 1, 1, 0), 33);
+                new javax.vecmath.Vector3f(0, 0, 1),
+                diffract.jrtr.scenegraph.Shapes.rectangle("square", -1, -1, 1, 1, 0), 33);
         for (float v : rgba) {
             assertTrue(Float.isFinite(v) && v >= 0 && v <= 1, "surface value " + v);
         }
@@ -300,7 +301,8 @@ class BakedVariantTest {
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED).with(b -> b.bakedSamples(9, 2)).with(b -> b.lambdaStepNm(20));
         BakedTables tables = new BakedTables();
         try (diffract.jrtr.OffscreenTarget outer = new diffract.jrtr.OffscreenTarget(new diffract.jrtr.Renderer(
-                new diffract.jrtr.scenegraph.Group("empty"), new diffract.jrtr.scenegraph.Camera(), new diffract.jrtr.scenegraph.Frustum()))) {
+                new diffract.jrtr.scenegraph.Group("empty"), new diffract.jrtr.scenegraph.Camera(),
+                new diffract.jrtr.scenegraph.Frustum()))) {
             int[] bindings = outer.withContext(gl -> {
                 int[] framebuffer = new int[1];
                 gl.glGenFramebuffers(1, framebuffer, 0);

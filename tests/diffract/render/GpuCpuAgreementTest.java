@@ -233,7 +233,8 @@ class GpuCpuAgreementTest {
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
         PhaseCentredTerms centred = centredTerms(patch);
         BrdfSettings bytes = settings(Variant.FLSS, TermFormat.RG8, false);
-        assertThrows(diffract.optics.settings.InvalidSettingException.class, () -> new GpuBrdfMap(centred, bytes).close());
+        assertThrows(diffract.optics.settings.InvalidSettingException.class,
+                () -> new GpuBrdfMap(centred, bytes).close());
     }
 
     /**

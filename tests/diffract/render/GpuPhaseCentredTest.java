@@ -62,7 +62,8 @@ class GpuPhaseCentredTest {
         BrdfSettings settings = RenderTestSupport.settings(Variant.BAKED);
         PhaseCentredTerms centred = TaylorTermComputer.computeCentred(patch,
                 PhaseCentres.forPatch(patch.maxAbsHeightUm(), settings.spectral().lambdaMinNm()), Reporter.SILENT);
-        var refused = org.junit.jupiter.api.Assertions.assertThrows(diffract.optics.settings.InvalidSettingException.class,
+        var refused = org.junit.jupiter.api.Assertions.assertThrows(
+                diffract.optics.settings.InvalidSettingException.class,
                 () -> new GpuBrdfMap(centred, settings).close());
         assertTrue(refused.getMessage().contains("phase-centred expansion"), refused.getMessage());
     }

@@ -305,8 +305,10 @@ class SceneFileTest {
         Files.writeString(auto, valid(",\n    \"harmonics\": \"auto\", \"layers\": 7, \"layerExtrapolation\": false"));
         diffract.optics.BrdfSettings a = SceneFile.load(auto).material().settings();
         assertEquals(new diffract.optics.rigorous.Resolution(0, 7, false), a.rigorous().resolution());
-        assertEquals(diffract.optics.settings.OrderWeights.SCALAR, a.rigorous().orders(), "the scalar orders by default");
-        assertEquals(diffract.optics.illumination.GainFactor.KERATIN_REFRACTIVE_INDEX, a.illumination().refractiveIndex());
+        assertEquals(diffract.optics.settings.OrderWeights.SCALAR, a.rigorous().orders(),
+                "the scalar orders by default");
+        assertEquals(diffract.optics.illumination.GainFactor.KERATIN_REFRACTIVE_INDEX,
+                a.illumination().refractiveIndex());
     }
 
     /** Each rigorous key's mistake is named at its key with the way out. */

@@ -11,8 +11,8 @@ import java.util.regex.Pattern;
 
 /**
  * What the driver says about itself, and which platform gave the context: for logs, reports and error messages.
- * Every {@link diffract.jrtr.GLRenderContext} hands its info to the listener set with {@link #reportTo} (the command line prints
- * it once per renderer); nothing is reported without one.
+ * Every {@link diffract.jrtr.GLRenderContext} hands its info to the listener set with {@link #reportTo} (the command
+ * line prints it once per renderer); nothing is reported without one.
  */
 public record GLInfo(String version, String renderer, String vendor, String glslVersion, boolean coreProfile,
                      String platform) {

@@ -4,10 +4,10 @@ import diffract.optics.numerics.Covariance2;
 import diffract.optics.numerics.ErrorFunction;
 
 /**
- * Where a Gaussian lobe is and what a footprint sees of it, in the (u, v) plane (docs/design/filtering.md, sections 1-3).
- * Lobe c of {@link diffract.optics.lobes.GaussianLobes} sits at mu(lambda) = lambda (c_x / L_x, c_y / L_y): a point moving on a ray from
- * the specular direction as the wavelength grows, with isotropic variance sigma_uv^2 / 2, sigma_uv = lambda sigma_f,
- * and peak 1 (the window's). Shared by the filtered reference and the lobes method.
+ * Where a Gaussian lobe is and what a footprint sees of it, in the (u, v) plane (docs/design/filtering.md, sections
+ * 1-3). Lobe c of {@link diffract.optics.lobes.GaussianLobes} sits at mu(lambda) = lambda (c_x / L_x, c_y / L_y): a
+ * point moving on a ray from the specular direction as the wavelength grows, with isotropic variance sigma_uv^2 / 2,
+ * sigma_uv = lambda sigma_f, and peak 1 (the window's). Shared by the filtered reference and the lobes method.
  */
 public final class LobeGeometry {
     private static final double SQRT_PI = Math.sqrt(Math.PI);
@@ -43,8 +43,8 @@ public final class LobeGeometry {
      * {2 c_x min, 2 c_x max, 2 c_y min, 2 c_y max}: c = lambda^-1 (u L_x, v L_y) +- reach L / lambda, spanned by the
      * band's two ends (a box around the segment in texel space; {@link #lambdaIntervalNm} sorts out each lobe).
      */
-    public static int[] candidateRange(double u, double v, double reachU, double reachV, double extentXUm, double extentYUm,
-                                double lambdaMinNm, double lambdaMaxNm) {
+    public static int[] candidateRange(double u, double v, double reachU, double reachV, double extentXUm,
+                                       double extentYUm, double lambdaMinNm, double lambdaMaxNm) {
         double shortest = lambdaMinNm * 1e-3;
         double longest = lambdaMaxNm * 1e-3;
         double xLo = Math.min((u - reachU) * extentXUm / shortest, (u - reachU) * extentXUm / longest);

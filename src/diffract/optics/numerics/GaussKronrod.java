@@ -42,8 +42,8 @@ public final class GaussKronrod {
      *
      * @param dimension the length of the arrays f returns
      */
-    public static double[] integrate(DoubleFunction<double[]> f, int dimension, double a, double b, double relativeTolerance,
-                              double absoluteFloor) {
+    public static double[] integrate(DoubleFunction<double[]> f, int dimension, double a, double b,
+                                     double relativeTolerance, double absoluteFloor) {
         double[] total = new double[dimension];
         if (!(b > a)) {
             return total;

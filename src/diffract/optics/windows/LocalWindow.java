@@ -37,7 +37,8 @@ public record LocalWindow(double centreXUm, double centreYUm, SkinFootprint foot
      * A_k = (re[k], im[k]) at texel offsets (offX[k], offY[k]) from the window's anchor: only differences of texels
      * enter, so the anchor's own index drops out and the phases stay small.
      */
-    public double power(double[] re, double[] im, int[] offX, int[] offY, int count, double extentXUm, double extentYUm) {
+    public double power(double[] re, double[] im, int[] offX, int[] offY, int count, double extentXUm,
+                        double extentYUm) {
         double fx = centreXUm / extentXUm;
         double fy = centreYUm / extentYUm;
         double sum = 0;
