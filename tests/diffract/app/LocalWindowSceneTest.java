@@ -68,6 +68,7 @@ class LocalWindowSceneTest {
             """;
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // whole scenes: a long test
     void aCloseUpShowsTheCoherenceAreasAndAFarViewConvergesToTheAveragedWindow() throws IOException {
         GlTestSupport.assumeOffscreenGl();
         Path scene = dir.resolve("plane.json");

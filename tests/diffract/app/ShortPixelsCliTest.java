@@ -77,6 +77,7 @@ class ShortPixelsCliTest {
     }
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a turntable of frames: a long test
     void aTurntableCountsThemOverItsFramesOnce() {
         GlTestSupport.assumeOffscreenGl();
         Object[] result = render("24x24", "--lobe-quadrature", EVERY_LOBE, "--turntable", "2", "-o",

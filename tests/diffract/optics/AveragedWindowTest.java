@@ -14,6 +14,7 @@ import diffract.optics.windows.WindowRadii;
 import diffract.precompute.TaylorTermComputer;
 import diffract.util.Reporter;
 import diffract.util.TestReport;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -185,6 +186,7 @@ class AveragedWindowTest {
      * their phase and weigh exp(-4^2 / (4 sigma^2)) = 1e-20).
      */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a brute-force map: a long test
     void theFilteredReferenceAveragesAsTheBruteForceDoes() {
         HeightField scan = wideScan(48, 0.625);
         int size = 64;

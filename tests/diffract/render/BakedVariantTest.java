@@ -234,6 +234,7 @@ class BakedVariantTest {
      * sample) equals the CPU's FLSS to half precision, 1e-3.
      */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // bakes a table: a long test
     void finiteAtGrazingLightAndExactAtTheSpecularSample() {
         GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;
@@ -267,6 +268,7 @@ class BakedVariantTest {
      * table sample: its display sRGB equals that of the CPU's FLSS there (to 2/255), and every pixel is in [0, 1].
      */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // bakes a table: a long test
     void surfacePathReadsTheTable() {
         GlTestSupport.assumeOffscreenGl();
         HeightField patch = RenderTestSupport.ELAPHE_LIKE;

@@ -184,6 +184,7 @@ class CellFourierModalMethodTest {
      * ({@link CellSolver}). The specular order moves by less than 2 % between the two finest of each.
      */
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a convergence sweep: a long test
     void theHarmonicsAndTheLayersConverge() {
         CellRelief bump = bump(1.1, 1.1, 12, 12, 0.25);
         double[] in = direction(20, 30);

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 import java.io.BufferedReader;
@@ -28,6 +29,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
  * power (unpolarised) agrees to 1 %. Against meent's own Li's rules for crossed gratings the difference (Laurent's
  * slower convergence) is printed, not held. Skips where python3 or meent is missing.
  */
+@Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a cross-check against other solvers: a long test
 class CellIndependentSolverTest {
     static final Path SCRIPT = Path.of("tests", "python", "cell_crosscheck.py");
 

@@ -61,6 +61,7 @@ class FourierModalMethodTest {
     }
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a sweep over mounts: a long test
     void losslessGratingsConserveEnergyInEveryMount() {
         List<Profile> profiles = List.of(Profile.sinusoid(1.0, 0.3), Profile.sinusoid(0.65, 0.1),
                 Profile.triangle(2.5, 0.4, 0.9), Profile.triangle(1.144, 0.3, 0.7));
@@ -155,6 +156,7 @@ class FourierModalMethodTest {
     }
 
     @Test
+    @Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a convergence sweep: a long test
     void theHarmonicsAndTheStaircaseConverge() {
         Profile p = Profile.sinusoid(1.0, 0.3);
         double alpha0 = 0.5;

@@ -6,6 +6,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import diffract.util.TestReport;
 import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestFactory;
 
@@ -47,6 +48,7 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
  * <p>Skips where python3 or meent is missing ({@code .ci/install-deps --tests} installs them). The cases' table goes
  * to {@code target/test-reports/IndependentSolverTest.txt}.
  */
+@Tag(diffract.jrtr.GlTestSupport.LONG_TAG) // a cross-check against other solvers: a long test
 class IndependentSolverTest {
     static final Path SCRIPT = Path.of("tests", "python", "rigorous_crosscheck.py");
     /** Cells per period of the raster every solver's staircase is drawn on. */
