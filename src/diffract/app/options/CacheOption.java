@@ -8,7 +8,7 @@ import java.util.List;
 /**
  * {@code --no-cache}, shared by the commands that use the disk cache ({@link DiskCache}: Taylor terms, baked tables,
  * calibrations of {@code auto}, reference maps): the command neither reads nor writes it, and computes everything
- * afresh, in memory. It applies to the one command: {@link diffract.app.Main#execute} switches the cache by whether the
+ * afresh, in memory. It applies to the one command: {@code Main.execute} switches the cache by whether the
  * command it runs was given the flag (parsing alone switches nothing), and back when the command ends.
  */
 public final class CacheOption {

@@ -20,7 +20,7 @@ import java.util.Locale;
  * A desktop OpenGL 3.3+ core context without a window or an X server: EGL through LWJGL's bindings, on the display
  * {@link EglDisplay} chooses (a GPU through EGL_EXT_platform_device, or Mesa's surfaceless platform), made current
  * with no surface at all ({@code EGL_KHR_surfaceless_context}; a 1 x 1 pbuffer where that is missing). It draws only
- * into framebuffer objects, which is all {@link diffract.jrtr.OffscreenTarget} needs. Its GL is JOGL's {@link GL3}
+ * into framebuffer objects, which is all {@code OffscreenTarget} needs. Its GL is JOGL's {@link GL3}
  * interface answered by LWJGL ({@link LwjglGL3}), so the engine's code runs on it unchanged.
  */
 public final class EglContext implements OffscreenContext {

@@ -11,7 +11,7 @@ import java.util.regex.Pattern;
 
 /**
  * What the driver says about itself, and which platform gave the context: for logs, reports and error messages.
- * Every {@link diffract.jrtr.GLRenderContext} hands its info to the listener set with {@link #reportTo} (the command
+ * Every {@code GLRenderContext} hands its info to the listener set with {@link #reportTo} (the command
  * line prints it once per renderer); nothing is reported without one.
  */
 public record GLInfo(String version, String renderer, String vendor, String glslVersion, boolean coreProfile,
@@ -70,7 +70,7 @@ public record GLInfo(String version, String renderer, String vendor, String glsl
         listener = newListener == null ? info -> { } : newListener;
     }
 
-    /** Hands {@code info} to the listener ({@link diffract.jrtr.GLRenderContext} calls it for every new context). */
+    /** Hands {@code info} to the listener ({@code GLRenderContext} calls it for every new context). */
     public static void report(GLInfo info) {
         listener.accept(info);
     }

@@ -4,7 +4,7 @@ import com.jogamp.opengl.GL3;
 import com.jogamp.opengl.GLAutoDrawable;
 
 /**
- * The GL context behind an {@link diffract.jrtr.OffscreenTarget}: headless EGL ({@link EglContext}) or a hidden JOGL
+ * The GL context behind an {@code OffscreenTarget}: headless EGL ({@link EglContext}) or a hidden JOGL
  * drawable ({@link JoglOffscreenContext}, which on Linux needs an X display). {@link HeadlessGL#newContext} chooses.
  */
 public interface OffscreenContext {

@@ -9,8 +9,8 @@ import diffract.jrtr.textures.FloatFramebuffer;
 
 
 /**
- * A NEWT window showing a {@link GLEventListener} (usually a {@link diffract.jrtr.Renderer}, the same one
- * {@link diffract.jrtr.OffscreenTarget} drives). Input listeners attach to {@link #glWindow()} ({@code addKeyListener},
+ * A NEWT window showing a {@link GLEventListener} (usually a {@code Renderer}, the same one
+ * {@code OffscreenTarget} drives). Input listeners attach to {@link #glWindow()} ({@code addKeyListener},
  * {@code addMouseListener}); {@link #setTitle} changes the caption, e.g. to show frame times. The caller drives
  * drawing: {@link #display} draws one frame on the calling thread (a render loop of the caller's, which decides
  * between frames what to do).

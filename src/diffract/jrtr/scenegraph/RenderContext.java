@@ -7,7 +7,7 @@ import diffract.jrtr.gl.PixelRect;
  * Draws scenes into whatever framebuffer is bound (a window or an offscreen target). Implementations upload
  * each shape's geometry once, compile each material's program and upload its textures on first use, and free
  * all of it in {@link #dispose}. All methods must be called with the context's GL context current (inside a
- * {@code GLEventListener} callback, or via {@link diffract.jrtr.OffscreenTarget#withContext}).
+ * {@code GLEventListener} callback, or via {@code OffscreenTarget.withContext}).
  *
  * <p>Per draw the engine sets these uniforms when the program declares them: {@code mat4 model, view,
  * projection}, {@code mat3 normalMatrix} (inverse transpose of the model's 3x3 part), {@code vec3

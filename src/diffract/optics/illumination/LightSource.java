@@ -11,7 +11,7 @@ import diffract.optics.settings.Quantity;
  *
  * <p>{@link LightProfile#DISC} (the default): uniform radiance over the cone of half-angle D / 2 around omega_i, what
  * a scene's sun, lamp or softbox is. The reference averages the relative BRDF over the cone's directions, each
- * evaluated exactly ({@link diffract.optics.DiscLightAverage}); the lobes method averages each lobe over the cone's
+ * evaluated exactly ({@code DiscLightAverage}); the lobes method averages each lobe over the cone's
  * ellipse in (u, v) with C, S and w per direction ({@link DiscFootprint}).
  *
  * <p>{@link LightProfile#GAUSSIAN} (kept for comparisons, and the profile of an environment's lights): a Gaussian over
@@ -89,7 +89,7 @@ public record LightSource(double angularDiameterDeg, LightProfile profile) {
 
     /**
      * The covariance in (u, v) of the Gaussian profile's directions around omega_i (see the class comment); a disc
-     * light has none (the reference integrates its directions, {@link diffract.optics.DiscLightAverage}) and gives
+     * light has none (the reference integrates its directions, {@code DiscLightAverage}) and gives
      * zero.
      */
     public Covariance2 uvCovariance(Direction wi) {

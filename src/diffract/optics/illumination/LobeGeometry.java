@@ -5,7 +5,7 @@ import diffract.optics.numerics.ErrorFunction;
 
 /**
  * Where a Gaussian lobe is and what a footprint sees of it, in the (u, v) plane (docs/design/filtering.md, sections
- * 1-3). Lobe c of {@link diffract.optics.lobes.GaussianLobes} sits at mu(lambda) = lambda (c_x / L_x, c_y / L_y): a
+ * 1-3). Lobe c of {@code GaussianLobes} sits at mu(lambda) = lambda (c_x / L_x, c_y / L_y): a
  * point moving on a ray from the specular direction as the wavelength grows, with isotropic variance sigma_uv^2 / 2,
  * sigma_uv = lambda sigma_f, and peak 1 (the window's). Shared by the filtered reference and the lobes method.
  */

@@ -21,7 +21,7 @@ import diffract.optics.spectra.TexelCoefficients;
  *
  * <p><b>Bounds.</b> For each of {@link #BINS} equal bins of p the table also holds the largest value its interpolant
  * takes there (endpoints and the cubic's interior extrema, exactly), so the lobes method can skip a texel whose lobe
- * cannot reach a given size before reading its weight ({@link diffract.optics.LobeQuadrature#cutoff}). Blocks of {@link
+ * cannot reach a given size before reading its weight ({@code LobeQuadrature.cutoff}). Blocks of {@link
  * #BLOCK} x {@link #BLOCK} texels hold the largest of their texels' bounds per bin, so that a march over the texels
  * skips a block none of whose lobes can reach the cutoff with one test instead of one per texel: a wide scan's halo is
  * mostly such blocks.

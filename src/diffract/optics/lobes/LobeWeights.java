@@ -6,10 +6,10 @@ import diffract.optics.settings.GainModel;
 import diffract.optics.spectra.ExactSpectrum;
 
 /**
- * What the filtered drawing of orders ({@link diffract.optics.FilteredReference}) weighs each Gaussian lobe with, and
+ * What the filtered drawing of orders ({@code FilteredReference}) weighs each Gaussian lobe with, and
  * the direction factor in front of them: Stam's scalar model ({@link #scalar}: |T_m(k w)|^2 of the exact coefficients,
  * times the gain factor C and the shadowing S at each direction), or the orders' efficiencies from Maxwell's equations
- * ({@link diffract.optics.RigorousOrders}: eta_m(lambda), times cos theta_i / R_0). The lobes' places and shapes, the
+ * ({@code RigorousOrders}: eta_m(lambda), times cos theta_i / R_0). The lobes' places and shapes, the
  * pixel's box, the light and the wavelength integral are the drawing's, the same for both: a map of one against the
  * other measures the physics alone (docs/design/rigorous.md).
  */

@@ -4,7 +4,7 @@ import diffract.optics.settings.InvalidSettingException;
 import diffract.optics.settings.Quantity;
 
 /**
- * How a scan lies on a mesh's skin for the local window ({@link diffract.optics.windows.WindowPlacement#LOCAL}): the
+ * How a scan lies on a mesh's skin for the local window ({@code WindowPlacement.LOCAL}): the
  * micrometres of skin one unit of the mesh's texture coordinates spans along u and along v. The scan's periodic patch
  * then repeats every L_x / umPerTexcoordU along u, and a surface point at texture coordinates (u, v) sees the window
  * centred at x0 = (u umPerTexcoordU, v umPerTexcoordV) um on the scan (x along its columns, y along its rows), or, with

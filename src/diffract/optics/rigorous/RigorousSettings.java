@@ -8,7 +8,7 @@ import diffract.optics.settings.Polarisation;
  * The settings of Maxwell's equations: how finely the Fourier modal method resolves the patch ({@link Resolution}:
  * the harmonics kept, the staircase's layers and its extrapolation), the light's polarisation, and whether the lobes
  * method takes its orders from them ({@link OrderWeights}). The material's complex index is the illumination's
- * ({@link diffract.optics.illumination.IlluminationSettings#material}); the rigorous method's wavelength nodes are the
+ * ({@code IlluminationSettings.material}); the rigorous method's wavelength nodes are the
  * spectral settings' step. Other methods ignore these.
  *
  * @param resolution   harmonics and layers

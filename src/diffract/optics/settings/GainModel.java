@@ -10,7 +10,7 @@ import java.util.Locale;
  * <ul>
  *   <li>{@link #RAYLEIGH_RICE} (the default): the factor that first-order perturbation theory gives a shallow relief,
  *       C = 4 cos^2 theta_i cos theta_r Q / (R_0 w^2) with Rayleigh-Rice's polarisation factor Q for unpolarised
- *       light ({@link diffract.optics.illumination.GainFactor#rayleighRice}). The Fourier modal method agrees with it
+ *       light ({@code GainFactor.rayleighRice}). The Fourier modal method agrees with it
  *       to 1 % on shallow gratings of any period and angle; it is the mirror's exact Fresnel reflectance at the
  *       specular direction. No shadowing term.</li>
  *   <li>{@link #STAM}: Stam's C = R (1 + omega_i . omega_r)^2 / (R_0 w^2 cos theta_r) with Schlick's reflectance R at

@@ -9,15 +9,15 @@ import java.util.Locale;
 public enum LightProfile {
     /**
      * Uniform radiance over the cone of half-angle D / 2 around the light's direction: what a scene's sun or lamp
-     * is, and the default. The reference integrates it, every direction exactly ({@link
-     * diffract.optics.DiscLightAverage}); the lobes method averages each lobe over it ({@link
-     * diffract.optics.illumination.DiscFootprint}); its baked table holds the point light and the lookup integrates the
+     * is, and the default. The reference integrates it, every direction exactly ({@code
+     * DiscLightAverage}); the lobes method averages each lobe over it ({@code
+     * DiscFootprint}); its baked table holds the point light and the lookup integrates the
      * disc over the table's rows.
      */
     DISC,
     /**
      * A Gaussian of per-axis angular standard deviation D / 4 (the disc's), linearised about the light's centre
-     * ({@link diffract.optics.illumination.LightSource#uvCovariance}): kept for comparisons, and the profile of an
+     * ({@code LightSource.uvCovariance}): kept for comparisons, and the profile of an
      * environment's lights.
      */
     GAUSSIAN;

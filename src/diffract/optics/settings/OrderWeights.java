@@ -4,7 +4,7 @@ import java.util.Locale;
 
 /**
  * What weighs the lobes method's orders: the scalar model (|T_m|^2 times the gain model, the default), or the
- * patch's orders from Maxwell's equations ({@link diffract.optics.OrderCorrection}: each lobe times its order's ratio
+ * patch's orders from Maxwell's equations ({@code OrderCorrection}: each lobe times its order's ratio
  * of rigorous to scalar efficiency, from a table solved once per patch and kept in the disk cache; a 1-D patch's own
  * orders, a 2-D snake patch's through its average ridge). The reference, FLSS, NMM and PQ draw the scalar model; the
  * rigorous method is Maxwell's equations throughout.

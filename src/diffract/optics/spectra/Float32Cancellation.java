@@ -9,7 +9,7 @@ package diffract.optics.spectra;
  * x = ln(tolerance / 2^-24) the result is rounding noise that still looks plausible. The CPU variants sum the same
  * float32 terms in double and are limited only by the terms' own rounding (2^-24 |DFT_n| each, the same order).
  * Tests measure the actual error of a float32 sum against the exact transform and hold it to this estimate.
- * {@link diffract.optics.TaylorEvaluation} uses {@link #plainSeriesError} to switch a scene to the phase-centred
+ * {@code TaylorEvaluation} uses {@link #plainSeriesError} to switch a scene to the phase-centred
  * expansion ({@link PhaseCentres}), whose float32 error stays near 2^-24 e^2 at every height.
  */
 public final class Float32Cancellation {

@@ -1,6 +1,6 @@
 package diffract.optics.spectra;
 
-/** Which Taylor expansion of exp(i k w h) FLSS, NMM and PQ sum ({@link diffract.optics.TaylorEvaluation}). */
+/** Which Taylor expansion of exp(i k w h) FLSS, NMM and PQ sum ({@code TaylorEvaluation}). */
 public enum TaylorExpansion {
     /** The thesis' series around 0 where the patch lets it reach {@link Float32Cancellation#TOLERANCE_IN_P}, else centred. */
     AUTO,

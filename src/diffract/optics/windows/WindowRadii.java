@@ -3,7 +3,7 @@ package diffract.optics.windows;
 /**
  * The half-widths of the coherence window's texel neighbourhood per axis: the window covers the
  * (2 x + 1) x (2 y + 1) texels around the nearest texel round(s) (003 eq. 1.9, anchored as in
- * {@link diffract.optics.spectra.TaylorGaussianSpectrum}). The thesis fixed 3 x 3 (x = y = 1) whatever sigma_f; {@link
+ * {@code TaylorGaussianSpectrum}). The thesis fixed 3 x 3 (x = y = 1) whatever sigma_f; {@link
  * #automatic} follows sigma_f = L / (2 pi sigma_s) texels ({@link CoherenceWindow#sigmaTexels}) instead.
  */
 public record WindowRadii(int x, int y) {
