@@ -123,10 +123,6 @@ public final class GLRenderContext implements RenderContext {
         depthPrepass = on;
     }
 
-    public boolean depthPrepass() {
-        return depthPrepass;
-    }
-
     /**
      * Draws every item with its material. With the depth pre-pass on, the items whose programs compute their
      * positions as the pre-pass does ({@link ShaderProgram#matchesDepthPrepass}) have their depths laid down first
@@ -140,20 +136,13 @@ public final class GLRenderContext implements RenderContext {
         gl.glEnable(GL.GL_DEPTH_TEST);
         Matrix4f view = camera.viewMatrix();
         Matrix4f projection = frustum.projectionMatrix();
-        Set<RenderItem> prepassed = java.util.Collections.newSetFromMap(new IdentityHashMap<>());
-        if (depthPrepass) {
-            for (RenderItem item : list.items()) {
-                if (item.material() != null && item.material().program().matchesDepthPrepass()) {
-                    prepassed.add(item);
-                }
-            }
-        }
+        List<RenderItem> prepassed = depthPrepass
+                ? list.items().stream().filter(GLRenderContext::matchesPrepass).toList() : List.of();
         if (!prepassed.isEmpty()) {
             gl.glColorMask(false, false, false, false);
             gl.glDepthFunc(GL.GL_LESS);
             gl.glDepthMask(true);
-            drawDepthOnly(list.items().stream().filter(prepassed::contains).toList(), prepassProgram, view,
-                    projection);
+            drawDepthOnly(prepassed, prepassProgram, view, projection);
             gl.glColorMask(true, true, true, true);
         }
         List<DirectionalLight> lights = list.lights();
@@ -172,7 +161,7 @@ public final class GLRenderContext implements RenderContext {
             if (material == null) {
                 throw new IllegalStateException(item.node() + " has no material");
             }
-            boolean afterPrepass = prepassed.contains(item);
+            boolean afterPrepass = depthPrepass && matchesPrepass(item);
             gl.glDepthFunc(afterPrepass ? GL.GL_LEQUAL : GL.GL_LESS);
             gl.glDepthMask(!afterPrepass);
             ShaderProgram program = material.program();
@@ -209,6 +198,10 @@ public final class GLRenderContext implements RenderContext {
         }
         gl.glDepthFunc(GL.GL_LESS);
         gl.glDepthMask(true);
+    }
+
+    private static boolean matchesPrepass(RenderItem item) {
+        return item.material() != null && item.material().program().matchesDepthPrepass();
     }
 
     /**

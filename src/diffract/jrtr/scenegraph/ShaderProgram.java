@@ -36,6 +36,8 @@ public final class ShaderProgram extends GpuResource {
     private final Shader vertex;
     private final Shader fragment;
     private final Set<String> declaredUniforms;
+    /** Read once from the source: every frame asks it of every item drawn. */
+    private final boolean matchesDepthPrepass;
     private final Map<String, Integer> uniformLocations = new HashMap<>();
     private Set<String> activeUniforms = Set.of();
     private int program;
@@ -55,6 +57,7 @@ public final class ShaderProgram extends GpuResource {
             }
         }
         this.declaredUniforms = Collections.unmodifiableSet(declared);
+        this.matchesDepthPrepass = INVARIANT_POSITION.matcher(vertex.source().text()).find();
     }
 
     /** The engine's own defines, in every program: the size of its light arrays ({@link RenderContext#MAX_LIGHTS}). */
@@ -100,7 +103,7 @@ public final class ShaderProgram extends GpuResource {
      * programs may be drawn against the pre-pass's depths with an equal-passes test.
      */
     public boolean matchesDepthPrepass() {
-        return INVARIANT_POSITION.matcher(vertex.source().text()).find();
+        return matchesDepthPrepass;
     }
 
     private static final Pattern INVARIANT_POSITION = Pattern.compile("(?m)^\\s*invariant\\s+gl_Position\\s*;");
